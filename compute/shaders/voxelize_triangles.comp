@@ -1,0 +1,96 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Triangle mode: every voxel of a triangle's bounding box that passes triangle_overlaps_voxel. This is a
+// line-by-line port of voxelize_cpu.cpp: the same operations in the same order, all `precise` (no fused
+// multiply-add, no reassociation), and Vulkan rounds OpFAdd/OpFSub/OpFMul correctly, so every comparison
+// comes out as on the CPU. No division anywhere.
+#include "common.glsl"
+
+const float kHalf = 0.5;                      // h: half extent of the test cube [i - eps, i + 1 - eps]
+const float kOffset = 0.5 - kEpsilon;         // centre - i, exact in binary
+
+precise float dot3(vec3 a, vec3 b) {
+  precise float r = a.x * b.x + a.y * b.y + a.z * b.z;  // left to right, as the CPU
+  return r;
+}
+
+precise float abs_sum(vec3 a) {
+  precise float r = abs(a.x) + abs(a.y) + abs(a.z);
+  return r;
+}
+
+// True when the projections p0..p2 lie outside [-r, r].
+bool separated(float p0, float p1, float p2, float r) {
+  const float lo = min(min(p0, p1), p2);
+  const float hi = max(max(p0, p1), p2);
+  return lo > r || hi < -r;
+}
+
+bool axis_separates(vec3 axis, vec3 v0, vec3 v1, vec3 v2) {
+  precise float r = kHalf * abs_sum(axis);
+  return separated(dot3(axis, v0), dot3(axis, v1), dot3(axis, v2), r);
+}
+
+bool triangle_overlaps_voxel(vec3 a, vec3 b, vec3 c, int x, int y, int z) {
+  precise vec3 centre = vec3(float(x) + kOffset, float(y) + kOffset, float(z) + kOffset);
+  precise vec3 v0 = a - centre;
+  precise vec3 v1 = b - centre;
+  precise vec3 v2 = c - centre;
+  // The box's own axes.
+  if (separated(v0.x, v1.x, v2.x, kHalf) || separated(v0.y, v1.y, v2.y, kHalf) || separated(v0.z, v1.z, v2.z, kHalf))
+    return false;
+  // The nine cross products of box axes and triangle edges, in the CPU's order.
+  precise vec3 e0 = v1 - v0;
+  precise vec3 e1 = v2 - v1;
+  precise vec3 e2 = v0 - v2;
+  // Unrolled: no loop counts against lavapipe's per-invocation iteration budget.
+  if (axis_separates(vec3(0.0, -e0.z, e0.y), v0, v1, v2)) return false;
+  if (axis_separates(vec3(e0.z, 0.0, -e0.x), v0, v1, v2)) return false;
+  if (axis_separates(vec3(-e0.y, e0.x, 0.0), v0, v1, v2)) return false;
+  if (axis_separates(vec3(0.0, -e1.z, e1.y), v0, v1, v2)) return false;
+  if (axis_separates(vec3(e1.z, 0.0, -e1.x), v0, v1, v2)) return false;
+  if (axis_separates(vec3(-e1.y, e1.x, 0.0), v0, v1, v2)) return false;
+  if (axis_separates(vec3(0.0, -e2.z, e2.y), v0, v1, v2)) return false;
+  if (axis_separates(vec3(e2.z, 0.0, -e2.x), v0, v1, v2)) return false;
+  if (axis_separates(vec3(-e2.y, e2.x, 0.0), v0, v1, v2)) return false;
+  // The triangle's plane.
+  precise vec3 n = vec3(e0.y * e1.z - e0.z * e1.y, e0.z * e1.x - e0.x * e1.z, e0.x * e1.y - e0.y * e1.x);
+  precise float d = dot3(n, v0);
+  precise float r = kHalf * abs_sum(n);
+  return !(d > r || d < -r);
+}
+
+// Work item (t, chunk): voxels [chunk * kChunkVoxels, (chunk + 1) * kChunkVoxels) of triangle t's bounding
+// box, numbered y fastest, then x, then z. The host lists one item per kChunkVoxels of each box (a box of one
+// voxel is marked without a test), so a big triangle is spread over many invocations and no
+// invocation loops more than kChunkVoxels times. kChunkVoxels must match vulkan_voxel_stage.cpp.
+const uint kChunkVoxels = 512u;
+
+void main() {
+  const uint item = item_index();
+  if (item >= pc.work_count) return;
+  const uint t = indices[pc.work_offset + 2u * item];
+  const uint chunk = indices[pc.work_offset + 2u * item + 1u];
+  const vec3 a = vertex_at(indices[3u * t]);
+  const vec3 b = vertex_at(indices[3u * t + 1u]);
+  const vec3 c = vertex_at(indices[3u * t + 2u]);
+  const vec3 lo = min(min(a, b), c);
+  const vec3 hi = max(max(a, b), c);
+  const int x0 = box_index(lo.x, pc.nx), x1 = box_index(hi.x, pc.nx);
+  const int y0 = box_index(lo.y, pc.ny), y1 = box_index(hi.y, pc.ny);
+  const int z0 = box_index(lo.z, pc.nz), z1 = box_index(hi.z, pc.nz);
+  const uint sy = uint(y1 - y0 + 1), sx = uint(x1 - x0 + 1), sz = uint(z1 - z0 + 1);
+  const uint volume = sy * sx * sz;
+  if (volume == 1u) {  // inside one test cube: no test needed, as on the CPU
+    mark_voxel(voxel_index(x0, y0, z0));
+    return;
+  }
+  const uint end = min(volume, (chunk + 1u) * kChunkVoxels);
+  for (uint v = chunk * kChunkVoxels; v < end; ++v) {
+    const int y = y0 + int(v % sy);
+    const int x = x0 + int((v / sy) % sx);
+    const int z = z0 + int(v / (sy * sx));
+    const uint index = voxel_index(x, y, z);
+    if (!voxel_marked(index) && triangle_overlaps_voxel(a, b, c, x, y, z)) mark_voxel(index);
+  }
+}

@@ -1,0 +1,89 @@
+// The backend factory. Auto is conservative: Vulkan only on a real GPU and a grid past the crossover
+// (kVulkanCrossoverVoxels, compute/README.md); lavapipe never wins against the CPU path.
+#include "roomsense/backend.h"
+
+#include "roomsense/error.h"
+#include "roomsense/vulkan_voxel_stage.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <string>
+
+namespace roomsense {
+namespace {
+
+std::string lower(std::string_view text) {
+  std::string s(text);
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return s;
+}
+
+void set(std::string* note, std::string text) {
+  if (note != nullptr) *note = std::move(text);
+}
+
+}  // namespace
+
+Backend parse_backend(std::string_view text) {
+  const std::string s = lower(text);
+  if (s == "auto") return Backend::Auto;
+  if (s == "cpu") return Backend::Cpu;
+  if (s == "vulkan") return Backend::Vulkan;
+  throw Error(ErrorCode::BadParameter, "unknown backend '" + std::string(text) + "' (expected auto, cpu or vulkan)");
+}
+
+const char* to_string(Backend backend) {
+  switch (backend) {
+    case Backend::Cpu: return "cpu";
+    case Backend::Vulkan: return "vulkan";
+    default: return "auto";
+  }
+}
+
+Backend backend_from_environment(Backend fallback, std::string* note) {
+  const char* env = std::getenv("ROOMSENSE_BACKEND");
+  if (env == nullptr || *env == '\0') return fallback;
+  try {
+    return parse_backend(env);
+  } catch (const Error& e) {
+    set(note, std::string("ROOMSENSE_BACKEND ignored: ") + e.what());
+    return fallback;
+  }
+}
+
+std::unique_ptr<VoxelStage> make_voxel_stage(Backend backend, std::size_t problem_size_hint, std::string* note) {
+  if (backend == Backend::Cpu) {
+    set(note, "cpu: requested");
+    return std::make_unique<CpuVoxelStage>();
+  }
+  if (backend == Backend::Auto) {
+    if (problem_size_hint < kVulkanCrossoverVoxels) {
+      set(note, "cpu: auto, " + std::to_string(problem_size_hint) + " voxels is below the Vulkan crossover of " +
+                    std::to_string(kVulkanCrossoverVoxels));
+      return std::make_unique<CpuVoxelStage>();
+    }
+    std::string why;
+    const std::optional<VulkanDeviceInfo> device = probe_vulkan_device(&why);
+    if (!device) {
+      set(note, "cpu: auto, Vulkan unavailable: " + why);
+      return std::make_unique<CpuVoxelStage>();
+    }
+    if (device->kind != GpuKind::Discrete && device->kind != GpuKind::Integrated) {
+      set(note, "cpu: auto, the best Vulkan device (" + device->name + ", " + to_string(device->kind) +
+                    ") is slower than the CPU path");
+      return std::make_unique<CpuVoxelStage>();
+    }
+  }
+  std::string why;
+  std::unique_ptr<VulkanVoxelStage> stage = VulkanVoxelStage::create({}, &why);
+  if (!stage) {
+    set(note, "cpu: Vulkan unavailable: " + why);
+    return std::make_unique<CpuVoxelStage>();
+  }
+  set(note, std::string("vulkan: ") + (backend == Backend::Auto ? "auto" : "requested") + ", on " + stage->device().name +
+                " (" + to_string(stage->device().kind) + ")");
+  return stage;
+}
+
+}  // namespace roomsense

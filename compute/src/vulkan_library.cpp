@@ -1,0 +1,43 @@
+#include "vulkan_library.h"
+
+#include <dlfcn.h>
+
+namespace roomsense::compute {
+
+VulkanLibrary::~VulkanLibrary() {
+  if (handle_ != nullptr) dlclose(handle_);
+}
+
+VulkanLibrary::VulkanLibrary() {
+  handle_ = dlopen("libvulkan.so.1", RTLD_NOW | RTLD_LOCAL);
+  if (handle_ == nullptr) {
+    const char* err = dlerror();
+    error_ = std::string("cannot load libvulkan.so.1 (is a Vulkan loader installed?): ") +
+             (err != nullptr ? err : "unknown error");
+    return;
+  }
+  auto& f = functions_;
+  f.vkGetInstanceProcAddr = reinterpret_cast<PFN_vkGetInstanceProcAddr>(dlsym(handle_, "vkGetInstanceProcAddr"));
+  if (f.vkGetInstanceProcAddr == nullptr) {
+    error_ = "libvulkan.so.1 has no vkGetInstanceProcAddr";
+    return;
+  }
+#define ROOMSENSE_VK_LOAD(name) f.name = reinterpret_cast<PFN_##name>(f.vkGetInstanceProcAddr(VK_NULL_HANDLE, #name));
+  ROOMSENSE_VK_GLOBAL_FUNCTIONS(ROOMSENSE_VK_LOAD)
+#undef ROOMSENSE_VK_LOAD
+  // vkEnumerateInstanceVersion is missing only from a Vulkan 1.0 loader; the shaders need 1.1.
+  if (f.vkCreateInstance == nullptr || f.vkEnumerateInstanceVersion == nullptr)
+    error_ = "the Vulkan loader is older than Vulkan 1.1";
+}
+
+const VulkanLibrary* VulkanLibrary::get(std::string* why) {
+  // Opened on first use, thread-safely (a function-local static), and reported the same way every time.
+  static const VulkanLibrary library;
+  if (!library.error_.empty()) {
+    if (why != nullptr) *why = library.error_;
+    return nullptr;
+  }
+  return &library;
+}
+
+}  // namespace roomsense::compute

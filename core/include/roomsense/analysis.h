@@ -1,0 +1,68 @@
+// The whole pipeline on one scan: input hygiene, voxel stage, room features, bounds, with stage timings.
+#pragma once
+#include "roomsense/bounds.h"
+#include "roomsense/features.h"
+#include "roomsense/grid.h"
+#include "roomsense/input.h"
+#include "roomsense/scan.h"
+#include "roomsense/voxelize.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace roomsense {
+
+struct AnalysisOptions {
+  float voxel_size = kDefaultVoxelSize;
+  std::optional<VoxelMode> mode;  // default: triangles when the scan has indices, else vertices
+  std::size_t voxel_budget = kDefaultVoxelBudget;
+  bool reject_outliers = true;
+  unsigned threads = 0;           // 0: one per hardware thread; results do not depend on it
+  FeatureParams features;
+  VoxelStage* voxel_stage = nullptr;  // not owned; nullptr: the CPU stage
+};
+
+enum class AnalysisStatus {
+  Ok,
+  NoFloorCeiling,  // no two horizontal levels at least min_floor_ceiling apart: no room to analyse
+};
+
+struct Storey {
+  float floor_y = 0.0f;
+  float ceiling_y = 0.0f;
+};
+
+struct StageTimings {  // milliseconds
+  double prepare = 0, voxelize = 0, features = 0, areas = 0, reduce = 0, classify = 0, bounds = 0, total = 0;
+};
+
+struct InputStats {
+  std::size_t vertices = 0, triangles = 0;  // as given
+  std::size_t skipped_vertices = 0;         // NaN / Inf
+  std::size_t outlier_vertices = 0;
+  std::size_t dropped_triangles = 0;        // touching a skipped or outlier vertex
+};
+
+struct AnalysisResult {
+  AnalysisStatus status = AnalysisStatus::Ok;
+  std::string status_message;     // one line, for people
+  std::vector<std::string> warnings;
+  InputStats input;
+  VoxelMode mode = VoxelMode::Triangles;
+  std::string backend;
+  VoxelStageResult voxels;        // V, level and column counts
+  std::optional<RoomFeatures> features;  // present when status is Ok
+  float floor_y = 0.0f;           // metres; the scanned floor surface of the main storey
+  float ceiling_y = 0.0f;
+  std::vector<Storey> storeys;    // main storey first; empty when status is not Ok
+  BoundsMesh bounds;
+  StageTimings timings;
+  bool ok() const { return status == AnalysisStatus::Ok; }
+};
+
+// Throws Error for bad input (see input.h and grid.h). A scan without a floor/ceiling pair is no error:
+// it returns status NoFloorCeiling with the grid and counts filled in.
+AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options = {});
+
+}  // namespace roomsense

@@ -1,0 +1,95 @@
+// Voxelization (thesis §3.1, Eq. 3.6/3.7) and the column statistics of §3.2 that both backends compute:
+// level counts |V_y| (Eq. 3.8), floor/ceiling choice (Eq. 3.9/3.10), column counts |V_xz| (Eq. 3.11) and the
+// any-voxel-in-column mask behind B_Room (Eq. 3.12). The Vulkan backend (compute/) implements the same
+// VoxelStage interface and must give bit-identical results.
+#pragma once
+#include "roomsense/grid.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace roomsense {
+
+enum class VoxelMode {
+  Vertices,   // the thesis: a voxel is active when a vertex lies in it
+  Triangles,  // ours: every voxel a triangle passes through
+};
+
+// Vertex positions in grid units: (v - origin) / voxel_size, computed once on the CPU so that every backend
+// starts from the same floats. Voxel (x,y,z) is the cube [x, x+1) x [y, y+1) x [z, z+1) in these units.
+std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const GridSpec& spec);
+
+// The triangle/voxel test used by triangle mode (separating axis theorem, Akenine-Möller 2001). Voxel i is
+// tested as the closed cube [i - eps, i + 1 - eps] (per axis, eps = kVoxelTestEpsilon): neighbours touch,
+// so no face can slip between them, and a face lying exactly on a voxel boundary lands in the upper voxel,
+// as a vertex does under Eq. 3.6. A triangle's voxel range per axis is box_index(min) .. box_index(max).
+// Only +, -, * and comparisons, in a fixed order: IEEE single precision gives every backend the same answer.
+inline constexpr float kVoxelTestEpsilon = 1.0f / 1024.0f;
+// The voxel whose test cube holds coordinate v (grid units), clamped to [0, n).
+int box_index(float v, int n);
+bool triangle_overlaps_voxel(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, int x, int y, int z);
+
+struct FloorCeiling {
+  int floor = 0;         // I_Floor: the top of the floor's band of levels
+  int ceiling = 0;       // I_Ceiling: the bottom of the ceiling's band
+  int floor_peak = 0;    // the fullest floor level, floor_peak <= floor
+  int ceiling_peak = 0;  // the fullest ceiling level, ceiling_peak >= ceiling
+};
+
+// Eq. 3.9/3.10: the two fullest levels at least `min_separation` levels apart. Ties go to the lower level.
+// Nothing when no two non-empty levels are that far apart.
+// Beyond the thesis: a real floor is seldom flat to the voxel. When it straddles a level boundary, the level
+// above the floor's peak holds a large share of it too, and the thesis would read those voxels as furniture
+// (Eq. 3.13) and deny the free floor (Eq. 3.14) wherever they are. So when the level above the floor's peak
+// holds at least 1/kSurfaceBandDivisor of the peak's count, I_Floor is that level; likewise below the ceiling.
+inline constexpr std::uint64_t kSurfaceBandDivisor = 4;
+std::optional<FloorCeiling> select_floor_ceiling(std::span<const std::uint32_t> level_counts, int min_separation);
+
+struct VoxelizeRequest {
+  GridSpec spec;
+  std::span<const glm::vec3> grid_vertices;  // from to_grid_units
+  std::span<const std::uint32_t> indices;    // validated: every index < grid_vertices.size()
+  VoxelMode mode = VoxelMode::Triangles;
+  int min_separation_levels = 15;            // 1.5 m at 0.1 m voxels
+};
+
+struct VoxelStageResult {
+  VoxelGrid grid;                            // V
+  std::vector<std::uint32_t> level_counts;   // |V_y| for y in [0, ny)
+  std::optional<FloorCeiling> levels;        // Eq. 3.9/3.10 on level_counts
+  std::vector<std::uint32_t> column_counts;  // |V_xz| for y in [floor, ceiling], per GridSpec::column; all 0 without levels
+  std::vector<std::uint8_t> column_any;      // 1 where any voxel lies in y in [floor, ceiling]; all 0 without levels
+};
+
+// A backend for the voxel stage. Implementations are not required to be thread-safe.
+class VoxelStage {
+ public:
+  virtual ~VoxelStage() = default;
+  virtual std::string name() const = 0;
+  virtual VoxelStageResult run(const VoxelizeRequest& request) = 0;
+};
+
+// The reference implementation, on the CPU.
+class CpuVoxelStage final : public VoxelStage {
+ public:
+  explicit CpuVoxelStage(unsigned threads = 0) : threads_(threads) {}
+  std::string name() const override { return "cpu"; }
+  VoxelStageResult run(const VoxelizeRequest& request) override;
+
+ private:
+  unsigned threads_;
+};
+
+// The pieces of CpuVoxelStage, for tests and for backends that do part of the work on the CPU.
+VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads = 0);
+std::vector<std::uint32_t> count_levels(const VoxelGrid& grid);
+void count_columns(const VoxelGrid& grid, const std::optional<FloorCeiling>& levels,
+                   std::vector<std::uint32_t>& column_counts, std::vector<std::uint8_t>& column_any);
+
+}  // namespace roomsense

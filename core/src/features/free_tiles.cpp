@@ -1,0 +1,39 @@
+// Free floor tiles D (Eq. 3.14) and free ceiling tiles E (Eq. 3.15).
+#include "roomsense/features.h"
+
+#include <algorithm>
+
+namespace roomsense {
+namespace {
+
+// 1 where the column is no wall, lies in the room, and has no active voxel in [from, to].
+std::vector<std::uint8_t> clear_columns(const VoxelGrid& grid, int from, int to, const std::vector<std::uint8_t>& walls,
+                                        const std::vector<std::uint8_t>& room) {
+  const GridSpec& s = grid.spec;
+  from = std::max(from, 0);
+  to = std::min(to, s.ny - 1);
+  std::vector<std::uint8_t> out(s.column_count(), 0);
+  for (std::size_t col = 0; col < out.size(); ++col) {
+    if (walls[col] || !room[col]) continue;
+    const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
+    out[col] = std::none_of(v + from, v + to + 1, [](std::uint8_t c) { return c != 0; }) ? 1 : 0;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> detect_free_floor(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
+                                            const std::vector<std::uint8_t>& walls,
+                                            const std::vector<std::uint8_t>& room) {
+  return clear_columns(grid, levels.floor + 1, y_end, walls, room);
+}
+
+std::vector<std::uint8_t> detect_free_ceiling(const VoxelGrid& grid, const FloorCeiling& levels, int clear_levels,
+                                              const std::vector<std::uint8_t>& walls,
+                                              const std::vector<std::uint8_t>& room) {
+  // DESIGN.md's reading of the garbled Eq. 3.15: y in [I_yStart, I_Ceiling - 1], I_yStart = I_Ceiling - ⌊1/S⌋.
+  return clear_columns(grid, levels.ceiling - clear_levels, levels.ceiling - 1, walls, room);
+}
+
+}  // namespace roomsense

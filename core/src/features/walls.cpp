@@ -1,0 +1,34 @@
+// Wall columns A (Eq. 3.11) and the room mask B (Eq. 3.12).
+#include "roomsense/features.h"
+
+#include <cmath>
+
+namespace roomsense {
+
+int voxels_for(float metres, float voxel_size) { return int(std::floor(metres / voxel_size + 1e-4f)); }
+
+std::vector<std::uint8_t> detect_walls(const GridSpec& spec, const std::vector<std::uint32_t>& column_counts,
+                                       const FloorCeiling& levels, float wall_fill) {
+  // |V_xz| > (I_Ceiling - I_Floor) * 0.5, compared in double to keep the thesis's strict inequality exact.
+  const double threshold = double(levels.ceiling - levels.floor) * double(wall_fill);
+  std::vector<std::uint8_t> walls(spec.column_count(), 0);
+  for (std::size_t c = 0; c < walls.size(); ++c) walls[c] = double(column_counts[c]) > threshold ? 1 : 0;
+  return walls;
+}
+
+std::vector<std::uint8_t> detect_room(const GridSpec& spec, const std::vector<std::uint8_t>& column_any) {
+  // First case of Eq. 3.12 is column_any; the second fills a hole with >= 3 of 4 active neighbours. The
+  // neighbours are read from the first case, not from cells filled in the same pass, so the order of the
+  // pass does not matter.
+  std::vector<std::uint8_t> room = column_any;
+  const auto any = [&](int x, int z) {
+    return x >= 0 && z >= 0 && x < spec.nx && z < spec.nz ? int(column_any[spec.column(x, z)]) : 0;
+  };
+  for (int z = 0; z < spec.nz; ++z)
+    for (int x = 0; x < spec.nx; ++x)
+      if (!column_any[spec.column(x, z)] && any(x + 1, z) + any(x - 1, z) + any(x, z + 1) + any(x, z - 1) >= 3)
+        room[spec.column(x, z)] = 1;
+  return room;
+}
+
+}  // namespace roomsense

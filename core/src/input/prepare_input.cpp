@@ -1,0 +1,103 @@
+#include "roomsense/error.h"
+#include "roomsense/input.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace roomsense {
+namespace {
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// The [q, 1-q] quantiles of one axis, widened by the outlier margin.
+std::pair<float, float> robust_range(const std::vector<glm::vec3>& vertices, const std::vector<std::uint8_t>& keep, int axis) {
+  std::vector<float> values;
+  values.reserve(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    if (keep[i]) values.push_back(vertices[i][axis]);
+  const std::size_t lo_k = std::size_t(double(values.size() - 1) * kOutlierQuantile);
+  const std::size_t hi_k = values.size() - 1 - lo_k;
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(lo_k), values.end());
+  const float lo = values[lo_k];
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(hi_k), values.end());
+  const float hi = values[hi_k];
+  const float margin = std::max(kOutlierMinMargin, hi - lo);
+  return {lo - margin, hi + margin};
+}
+
+}  // namespace
+
+PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
+  if (scan.vertices.empty()) throw Error(ErrorCode::EmptyInput, "the scan has no vertices");
+  if (scan.vertices.size() > std::numeric_limits<std::uint32_t>::max())
+    throw Error(ErrorCode::BadIndices, "the scan has more vertices than 32-bit indices can address");
+  if (scan.indices.size() % 3 != 0)
+    throw Error(ErrorCode::BadIndices,
+                "the index count " + std::to_string(scan.indices.size()) + " is not a multiple of 3");
+  for (std::size_t i = 0; i < scan.indices.size(); ++i)
+    if (scan.indices[i] >= scan.vertices.size())
+      throw Error(ErrorCode::BadIndices, "index " + std::to_string(scan.indices[i]) + " of triangle " +
+                                             std::to_string(i / 3) + " is out of range (" +
+                                             std::to_string(scan.vertices.size()) + " vertices)");
+  PreparedInput out;
+  out.input_vertices = scan.vertices.size();
+  out.input_triangles = scan.indices.size() / 3;
+
+  std::vector<std::uint8_t> keep(scan.vertices.size(), 0);
+  std::size_t finite_count = 0;
+  for (std::size_t i = 0; i < scan.vertices.size(); ++i) {
+    keep[i] = finite(scan.vertices[i]) ? 1 : 0;
+    finite_count += keep[i];
+  }
+  out.skipped_vertices = scan.vertices.size() - finite_count;
+
+  if (reject_outliers && finite_count >= kOutlierMinVertices) {
+    std::pair<float, float> range[3];
+    for (int axis = 0; axis < 3; ++axis) range[axis] = robust_range(scan.vertices, keep, axis);
+    for (std::size_t i = 0; i < scan.vertices.size(); ++i) {
+      if (!keep[i]) continue;
+      for (int axis = 0; axis < 3; ++axis) {
+        const float v = scan.vertices[i][axis];
+        if (v < range[axis].first || v > range[axis].second) {
+          keep[i] = 0;
+          ++out.outlier_vertices;
+          break;
+        }
+      }
+    }
+  }
+
+  constexpr std::uint32_t kRemoved = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> remap(scan.vertices.size(), kRemoved);
+  out.vertices.reserve(scan.vertices.size() - out.skipped_vertices - out.outlier_vertices);
+  for (std::size_t i = 0; i < scan.vertices.size(); ++i) {
+    if (!keep[i]) continue;
+    remap[i] = std::uint32_t(out.vertices.size());
+    out.vertices.push_back(scan.vertices[i]);
+  }
+  if (out.vertices.empty())
+    throw Error(ErrorCode::NoValidVertices, "no usable vertex: all " + std::to_string(out.input_vertices) +
+                                                " are NaN, Inf or outliers");
+
+  out.indices.reserve(scan.indices.size());
+  for (std::size_t t = 0; t < out.input_triangles; ++t) {
+    const std::uint32_t a = remap[scan.indices[3 * t]], b = remap[scan.indices[3 * t + 1]],
+                        c = remap[scan.indices[3 * t + 2]];
+    if (a == kRemoved || b == kRemoved || c == kRemoved) {
+      ++out.dropped_triangles;
+      continue;
+    }
+    out.indices.insert(out.indices.end(), {a, b, c});
+  }
+
+  out.lo = out.hi = out.vertices.front();
+  for (const glm::vec3& v : out.vertices) {
+    out.lo = glm::min(out.lo, v);
+    out.hi = glm::max(out.hi, v);
+  }
+  return out;
+}
+
+}  // namespace roomsense

@@ -1,0 +1,79 @@
+// The pipeline of thesis chapter 3 in the order of DESIGN.md's data flow.
+#include "roomsense/analysis.h"
+#include "roomsense/error.h"
+#include "surface_heights.h"
+
+#include <chrono>
+
+namespace roomsense {
+namespace {
+
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - last_).count();
+    last_ = now;
+    return ms;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
+  Stopwatch clock;
+  AnalysisResult r;
+  const PreparedInput in = prepare_input(scan, options.reject_outliers);
+  r.input = {in.input_vertices, in.input_triangles, in.skipped_vertices, in.outlier_vertices, in.dropped_triangles};
+  if (in.skipped_vertices > 0)
+    r.warnings.push_back(std::to_string(in.skipped_vertices) + " vertices with NaN or Inf coordinates skipped");
+  if (in.outlier_vertices > 0)
+    r.warnings.push_back(std::to_string(in.outlier_vertices) + " outlier vertices far from the room rejected");
+  if (in.dropped_triangles > 0)
+    r.warnings.push_back(std::to_string(in.dropped_triangles) + " triangles touching skipped vertices dropped");
+
+  r.mode = options.mode.value_or(in.indices.empty() ? VoxelMode::Vertices : VoxelMode::Triangles);
+  if (r.mode == VoxelMode::Triangles && in.indices.empty()) {
+    r.mode = VoxelMode::Vertices;
+    r.warnings.push_back("triangle mode asked for a scan without triangles: vertex mode used");
+  }
+  const GridSpec spec = make_grid_spec(in.lo, in.hi, options.voxel_size, options.voxel_budget);
+  const std::vector<glm::vec3> grid_vertices = to_grid_units(in.vertices, spec);
+  const int min_separation = voxels_for(options.features.min_floor_ceiling, spec.voxel_size);
+  r.timings.prepare = clock.lap();
+
+  CpuVoxelStage cpu(options.threads);
+  VoxelStage& stage = options.voxel_stage != nullptr ? *options.voxel_stage : cpu;
+  r.backend = stage.name();
+  r.voxels = stage.run({spec, grid_vertices, in.indices, r.mode, min_separation});
+  r.timings.voxelize = clock.lap();
+
+  if (!r.voxels.levels) {
+    r.status = AnalysisStatus::NoFloorCeiling;
+    r.status_message = "no floor and ceiling found: no two horizontal levels are at least " +
+                       std::to_string(options.features.min_floor_ceiling) + " m apart (" +
+                       std::to_string(spec.ny) + " levels scanned)";
+    r.timings.total = r.timings.prepare + r.timings.voxelize;
+    return r;
+  }
+  const FloorCeiling& levels = *r.voxels.levels;
+  r.features = detect_features(r.voxels, options.features, options.threads);
+  r.floor_y = detail::surface_height(spec, in.vertices, in.indices, levels.floor_peak, levels.floor);
+  r.ceiling_y = detail::surface_height(spec, in.vertices, in.indices, levels.ceiling, levels.ceiling_peak);
+  r.storeys.push_back({r.floor_y, r.ceiling_y});
+  for (const FloorCeiling& other : detail::other_storeys(r.voxels.level_counts, levels, min_separation))
+    r.storeys.push_back({detail::surface_height(spec, in.vertices, in.indices, other.floor_peak, other.floor),
+                         detail::surface_height(spec, in.vertices, in.indices, other.ceiling, other.ceiling_peak)});
+  r.status_message = "ok";
+  r.timings.features = clock.lap();
+
+  r.bounds = build_bounds(r.voxels.grid, levels, r.features->y_end, r.features->room);
+  r.timings.bounds = clock.lap();
+  r.timings.total = r.timings.prepare + r.timings.voxelize + r.timings.features + r.timings.bounds;
+  return r;
+}
+
+}  // namespace roomsense

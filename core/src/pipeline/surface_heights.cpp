@@ -1,0 +1,57 @@
+#include "surface_heights.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace roomsense::detail {
+
+float surface_height(const GridSpec& spec, std::span<const glm::vec3> vertices,
+                     std::span<const std::uint32_t> indices, int lo, int hi) {
+  // The band's levels as triangle mode sees them: test cubes sit kVoxelTestEpsilon below the voxels.
+  const float y_lo = spec.origin.y + (float(lo) - kVoxelTestEpsilon) * spec.voxel_size;
+  const float y_hi = spec.origin.y + (float(hi + 1) - kVoxelTestEpsilon) * spec.voxel_size;
+  const auto in_band = [&](float y) { return y >= y_lo && y < y_hi; };
+  double weighted = 0.0, weight = 0.0;
+  if (!indices.empty()) {
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+      const glm::vec3 &a = vertices[indices[t]], &b = vertices[indices[t + 1]], &c = vertices[indices[t + 2]];
+      const glm::vec3 n = glm::cross(b - a, c - a);
+      const float area2 = glm::length(n);
+      const float cy = (a.y + b.y + c.y) / 3.0f;
+      // Near-horizontal (within ~25°) either way up: scans disagree on winding.
+      if (area2 <= 0.0f || std::fabs(n.y) < 0.9f * area2 || !in_band(cy)) continue;
+      weighted += double(cy) * area2;
+      weight += area2;
+    }
+  } else {
+    for (const glm::vec3& v : vertices)
+      if (in_band(v.y)) {
+        weighted += v.y;
+        weight += 1.0;
+      }
+  }
+  if (weight > 0.0) return float(weighted / weight);
+  return 0.5f * (y_lo + y_hi);
+}
+
+std::vector<FloorCeiling> other_storeys(std::span<const std::uint32_t> counts, const FloorCeiling& main,
+                                        int min_separation) {
+  std::vector<FloorCeiling> out;
+  const std::uint32_t main_count = counts[std::size_t(main.floor_peak)];
+  const auto search = [&](std::size_t begin, std::size_t end) {
+    if (end <= begin) return;
+    std::vector<std::uint32_t> part(counts.begin() + std::ptrdiff_t(begin), counts.begin() + std::ptrdiff_t(end));
+    for (std::uint32_t& c : part)
+      if (4 * std::uint64_t(c) < main_count) c = 0;
+    if (auto fc = select_floor_ceiling(part, min_separation)) {
+      const int shift = int(begin);
+      out.push_back({fc->floor + shift, fc->ceiling + shift, fc->floor_peak + shift, fc->ceiling_peak + shift});
+    }
+  };
+  search(std::size_t(main.ceiling_peak + 1), counts.size());
+  search(0, std::size_t(main.floor_peak));
+  return out;
+}
+
+}  // namespace roomsense::detail

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages roomsense needs (only those missing), then configures and builds.
+# Usage: scripts/setup.sh [BUILD_DIR] [extra cmake arguments...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build_dir=${1:-build}
+shift || true
+
+packages=(cmake g++ ninja-build pkg-config
+          libopenxr-dev libopenxr-loader1 openxr-layer-corevalidation libopenxr-utils
+          libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools glslang-dev
+          libglm-dev nlohmann-json3-dev libassimp-dev libgtest-dev libbenchmark-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo=sudo
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE="${ROOMSENSE_BUILD_TYPE:-Release}" "$@" >/dev/null
+cmake --build "$build_dir" -j"$(nproc)"

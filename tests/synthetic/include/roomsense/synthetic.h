@@ -1,0 +1,84 @@
+// Synthetic rooms with known ground truth: floor, ceiling, walls (at any angle), furniture boxes, tables with
+// open space below, window openings, scan holes and noise, and walls of a few large triangles. Tests check
+// every pipeline stage against the truth kept here; the CLI serves them as built-in rooms (synthetic:NAME).
+#pragma once
+#include "roomsense/scan.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace roomsense::synth {
+
+// A solid box standing on the floor, e.g. a cabinet or a sofa. Footprint centre (x, z), size, yaw (radians).
+struct Box {
+  glm::vec2 centre{0.0f};
+  glm::vec2 size{0.5f};
+  float height = 0.5f;
+  float yaw = 0.0f;
+};
+
+// A table: a thin top at `height` on four legs, open below.
+struct Table {
+  glm::vec2 centre{0.0f};
+  glm::vec2 size{1.2f, 0.8f};
+  float height = 0.75f;
+  float yaw = 0.0f;
+};
+
+// A window opening in wall `wall` (the edge from outline[wall] to outline[wall + 1]); u runs along the wall
+// from its start, in metres; y is the height above the floor.
+struct Window {
+  int wall = 0;
+  float u0 = 1.0f, u1 = 2.0f;
+  float y0 = 0.9f, y1 = 2.0f;
+};
+
+// A patch the scanner missed: triangles whose centroid lies within `radius` of `centre` are left out.
+struct Hole {
+  glm::vec3 centre{0.0f};
+  float radius = 0.3f;
+};
+
+struct RoomSpec {
+  std::string name = "room";
+  std::vector<glm::vec2> outline;  // convex floor polygon in (x, z), counter-clockwise seen from above (+Y)
+  float floor_y = 0.0f;
+  float ceiling_y = 2.6f;
+  std::vector<Box> boxes;
+  std::vector<Table> tables;
+  std::vector<Window> windows;
+  std::vector<Hole> holes;
+  float cell = 0.05f;    // triangle size; 0: every planar piece is two large triangles
+  float noise = 0.0f;    // standard deviation of the vertex jitter, metres
+  std::uint32_t seed = 1;
+};
+
+// A rectangular outline of width (x) by depth (z), centred at the origin, turned by yaw radians.
+std::vector<glm::vec2> rectangle(float width, float depth, float yaw = 0.0f);
+
+Scan generate(const RoomSpec& spec);
+
+// Ground-truth queries.
+bool inside_outline(const RoomSpec& spec, glm::vec2 p);
+float distance_to_walls(const RoomSpec& spec, glm::vec2 p);
+// The furniture (box or table top) whose footprint covers p: its top height above floor_y, if any.
+std::optional<float> furniture_top_at(const RoomSpec& spec, glm::vec2 p);
+// Distance from p to the nearest furniture footprint edge (0 inside one).
+float distance_to_furniture(const RoomSpec& spec, glm::vec2 p);
+
+// Built-in rooms.
+RoomSpec default_room();                 // 5 x 4 m, table, sofa, cabinet, window, light noise
+RoomSpec large_triangle_room();          // the thesis's failing room 4: walls and floor of a few big triangles
+RoomSpec rotated_room(float yaw_degrees);  // default_room turned about +Y: walls off the axes
+RoomSpec pentagon_room();                // walls at five different angles
+RoomSpec hall_room(float width = 20.0f, float depth = 14.0f);  // a large hall with furniture rows
+RoomSpec thesis_room1();                 // about 78k vertices, the size of the thesis's room 1
+std::optional<RoomSpec> builtin(const std::string& name);
+std::vector<std::string> builtin_names();
+
+}  // namespace roomsense::synth

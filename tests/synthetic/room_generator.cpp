@@ -1,0 +1,324 @@
+// Builds the triangles of a synthetic room. Every planar piece is a rectangle (o, U, V) meshed as a grid of
+// cells; its front face (counter-clockwise) faces U x V: walls face into the room, the floor up, the
+// ceiling down, furniture outwards.
+#include "roomsense/synthetic.h"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace roomsense::synth {
+namespace {
+
+glm::vec2 rotate(glm::vec2 p, float yaw) {
+  const float c = std::cos(yaw), s = std::sin(yaw);
+  return {c * p.x - s * p.y, s * p.x + c * p.y};
+}
+
+class MeshBuilder {
+ public:
+  explicit MeshBuilder(const RoomSpec& spec) : spec_(spec), rng_(spec.seed), jitter_(0.0f, 1.0f) {}
+
+  // A rectangle o + s U + t V, s,t in [0,1]; `keep(s, t)` can veto cells (by their centre) for openings.
+  template <class Keep>
+  void rectangle(glm::vec3 o, glm::vec3 u, glm::vec3 v, Keep&& keep) {
+    const int nu = cells(glm::length(u)), nv = cells(glm::length(v));
+    const std::uint32_t base = std::uint32_t(scan_.vertices.size());
+    for (int j = 0; j <= nv; ++j)
+      for (int i = 0; i <= nu; ++i) scan_.vertices.push_back(o + u * (float(i) / float(nu)) + v * (float(j) / float(nv)));
+    const auto at = [&](int i, int j) { return base + std::uint32_t(j * (nu + 1) + i); };
+    for (int j = 0; j < nv; ++j)
+      for (int i = 0; i < nu; ++i) {
+        const float s = (float(i) + 0.5f) / float(nu), t = (float(j) + 0.5f) / float(nv);
+        if (!keep(s, t) || in_hole(o + u * s + v * t)) continue;
+        scan_.indices.insert(scan_.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+        scan_.indices.insert(scan_.indices.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+  }
+  void rectangle(glm::vec3 o, glm::vec3 u, glm::vec3 v) {
+    rectangle(o, u, v, [](float, float) { return true; });
+  }
+
+  // A convex polygon as a fan, counter-clockwise as given.
+  void fan(const std::vector<glm::vec3>& ring) {
+    const std::uint32_t base = std::uint32_t(scan_.vertices.size());
+    scan_.vertices.insert(scan_.vertices.end(), ring.begin(), ring.end());
+    for (std::uint32_t i = 1; i + 1 < ring.size(); ++i) scan_.indices.insert(scan_.indices.end(), {base, base + i, base + i + 1});
+  }
+
+  // An upright box without a bottom, faces outwards.
+  void box(glm::vec2 centre, glm::vec2 size, float yaw, float y0, float y1) {
+    const glm::vec2 ax = rotate({size.x, 0.0f}, yaw), az = rotate({0.0f, size.y}, yaw);
+    const glm::vec2 c0 = centre - 0.5f * ax - 0.5f * az;
+    const glm::vec3 X(ax.x, 0.0f, ax.y), Z(az.x, 0.0f, az.y), Y(0.0f, y1 - y0, 0.0f);
+    const glm::vec3 o(c0.x, y0, c0.y);
+    rectangle(o + Y, Z, X);             // top, facing +Y
+    rectangle(o, Y, X);                 // Y x X = -Z: the side at the footprint's start
+    rectangle(o + Z, X, Y);             // X x Y = +Z
+    rectangle(o, Z, Y);                 // Z x Y = -X
+    rectangle(o + X, Y, Z);             // Y x Z = +X
+  }
+
+  Scan finish() {
+    if (spec_.noise > 0.0f)
+      for (glm::vec3& p : scan_.vertices) p += spec_.noise * glm::vec3(jitter_(rng_), jitter_(rng_), jitter_(rng_));
+    return std::move(scan_);
+  }
+
+ private:
+  int cells(float length) const {
+    if (spec_.cell <= 0.0f) return 1;
+    return std::max(1, int(std::lround(length / spec_.cell)));
+  }
+  bool in_hole(glm::vec3 p) const {
+    return std::any_of(spec_.holes.begin(), spec_.holes.end(),
+                       [&](const Hole& h) { return glm::length(p - h.centre) < h.radius; });
+  }
+
+  const RoomSpec& spec_;
+  Scan scan_;
+  std::mt19937 rng_;
+  std::normal_distribution<float> jitter_;
+};
+
+// Splits [0, 1] at the given cuts, so a coarse mesh still follows window edges.
+std::vector<float> breakpoints(std::vector<float> cuts) {
+  cuts.push_back(0.0f);
+  cuts.push_back(1.0f);
+  for (float& c : cuts) c = std::clamp(c, 0.0f, 1.0f);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  return cuts;
+}
+
+void add_floor_or_ceiling(MeshBuilder& mesh, const RoomSpec& spec, float y, bool ceiling) {
+  if (spec.cell <= 0.0f) {
+    // Few large triangles: a fan over the convex outline, which turns counter-clockwise seen from above.
+    std::vector<glm::vec3> ring;
+    for (glm::vec2 p : spec.outline) ring.emplace_back(p.x, y, p.y);
+    if (ceiling) std::reverse(ring.begin(), ring.end());
+    mesh.fan(ring);
+    return;
+  }
+  glm::vec2 lo = spec.outline.front(), hi = lo;
+  for (glm::vec2 p : spec.outline) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const glm::vec3 o(lo.x, y, lo.y), X(hi.x - lo.x, 0.0f, 0.0f), Z(0.0f, 0.0f, hi.y - lo.y);
+  const auto inside = [&](float sx, float sz) {
+    return inside_outline(spec, {lo.x + sx * (hi.x - lo.x), lo.y + sz * (hi.y - lo.y)});
+  };
+  if (ceiling) mesh.rectangle(o, X, Z, [&](float s, float t) { return inside(s, t); });  // X x Z = -Y
+  else mesh.rectangle(o, Z, X, [&](float s, float t) { return inside(t, s); });          // Z x X = +Y
+}
+
+void add_wall(MeshBuilder& mesh, const RoomSpec& spec, int wall) {
+  const glm::vec2 a = spec.outline[std::size_t(wall)];
+  const glm::vec2 b = spec.outline[(std::size_t(wall) + 1) % spec.outline.size()];
+  const float length = glm::length(b - a), height = spec.ceiling_y - spec.floor_y;
+  // Seen from above the outline runs counter-clockwise, so the room lies to the left of a -> b; with U along
+  // the wall and V up, U x V points to the right. Walk b -> a instead so the wall faces into the room.
+  const glm::vec3 o(b.x, spec.floor_y, b.y), U(a.x - b.x, 0.0f, a.y - b.y), V(0.0f, height, 0.0f);
+  std::vector<float> us, vs;
+  std::vector<Window> windows;
+  for (const Window& w : spec.windows)
+    if (w.wall == wall) {
+      windows.push_back(w);
+      us.push_back(1.0f - w.u1 / length);
+      us.push_back(1.0f - w.u0 / length);
+      vs.push_back(w.y0 / height);
+      vs.push_back(w.y1 / height);
+    }
+  const auto open = [&](float s, float t) {
+    const float u = (1.0f - s) * length, y = t * height;
+    return std::any_of(windows.begin(), windows.end(),
+                       [&](const Window& w) { return u > w.u0 && u < w.u1 && y > w.y0 && y < w.y1; });
+  };
+  // Mesh each piece between window edges on its own, so even two-triangle pieces follow the openings.
+  const std::vector<float> su = breakpoints(us), sv = breakpoints(vs);
+  for (std::size_t i = 0; i + 1 < su.size(); ++i)
+    for (std::size_t j = 0; j + 1 < sv.size(); ++j) {
+      const float s0 = su[i], s1 = su[i + 1], t0 = sv[j], t1 = sv[j + 1];
+      if (open(0.5f * (s0 + s1), 0.5f * (t0 + t1))) continue;
+      mesh.rectangle(o + U * s0 + V * t0, U * (s1 - s0), V * (t1 - t0));
+    }
+}
+
+float cross2(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
+
+// Corners of a yawed rectangle footprint, counter-clockwise seen from above (+Y): in (x, z) that is the
+// negative sense, since +Z points towards the viewer's bottom when looking down on the X-Z plane.
+std::vector<glm::vec2> footprint(glm::vec2 centre, glm::vec2 size, float yaw) {
+  std::vector<glm::vec2> out;
+  for (glm::vec2 c : {glm::vec2(-0.5f, -0.5f), glm::vec2(-0.5f, 0.5f), glm::vec2(0.5f, 0.5f), glm::vec2(0.5f, -0.5f)})
+    out.push_back(centre + rotate(c * size, yaw));
+  return out;
+}
+
+bool inside_convex(const std::vector<glm::vec2>& poly, glm::vec2 p) {
+  bool pos = false, neg = false;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const float c = cross2(poly[(i + 1) % poly.size()] - poly[i], p - poly[i]);
+    pos = pos || c > 0.0f;
+    neg = neg || c < 0.0f;
+  }
+  return !(pos && neg);
+}
+
+float distance_to_segment(glm::vec2 p, glm::vec2 a, glm::vec2 b) {
+  const glm::vec2 ab = b - a;
+  const float t = std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0f, 1.0f);
+  return glm::length(p - (a + t * ab));
+}
+
+float distance_to_polygon_edges(const std::vector<glm::vec2>& poly, glm::vec2 p) {
+  float d = INFINITY;
+  for (std::size_t i = 0; i < poly.size(); ++i) d = std::min(d, distance_to_segment(p, poly[i], poly[(i + 1) % poly.size()]));
+  return d;
+}
+
+}  // namespace
+
+std::vector<glm::vec2> rectangle(float width, float depth, float yaw) {
+  return footprint(glm::vec2(0.0f), {width, depth}, yaw);
+}
+
+Scan generate(const RoomSpec& spec) {
+  MeshBuilder mesh(spec);
+  add_floor_or_ceiling(mesh, spec, spec.floor_y, false);
+  add_floor_or_ceiling(mesh, spec, spec.ceiling_y, true);
+  for (int w = 0; w < int(spec.outline.size()); ++w) add_wall(mesh, spec, w);
+  for (const Box& b : spec.boxes) mesh.box(b.centre, b.size, b.yaw, spec.floor_y, spec.floor_y + b.height);
+  constexpr float kTop = 0.04f, kLeg = 0.05f;
+  for (const Table& t : spec.tables) {
+    mesh.box(t.centre, t.size, t.yaw, spec.floor_y + t.height - kTop, spec.floor_y + t.height);
+    for (glm::vec2 corner : footprint(t.centre, t.size - glm::vec2(3.0f * kLeg), t.yaw))
+      mesh.box(corner, glm::vec2(kLeg), t.yaw, spec.floor_y, spec.floor_y + t.height - kTop);
+  }
+  return mesh.finish();
+}
+
+bool inside_outline(const RoomSpec& spec, glm::vec2 p) { return inside_convex(spec.outline, p); }
+
+float distance_to_walls(const RoomSpec& spec, glm::vec2 p) { return distance_to_polygon_edges(spec.outline, p); }
+
+std::optional<float> furniture_top_at(const RoomSpec& spec, glm::vec2 p) {
+  std::optional<float> top;
+  for (const Box& b : spec.boxes)
+    if (inside_convex(footprint(b.centre, b.size, b.yaw), p)) top = std::max(top.value_or(0.0f), b.height);
+  for (const Table& t : spec.tables)
+    if (inside_convex(footprint(t.centre, t.size, t.yaw), p)) top = std::max(top.value_or(0.0f), t.height);
+  return top;
+}
+
+float distance_to_furniture(const RoomSpec& spec, glm::vec2 p) {
+  float d = INFINITY;
+  const auto consider = [&](const std::vector<glm::vec2>& f) {
+    d = std::min(d, inside_convex(f, p) ? 0.0f : distance_to_polygon_edges(f, p));
+  };
+  for (const Box& b : spec.boxes) consider(footprint(b.centre, b.size, b.yaw));
+  for (const Table& t : spec.tables) consider(footprint(t.centre, t.size, t.yaw));
+  return d;
+}
+
+RoomSpec default_room() {
+  RoomSpec r;
+  r.name = "default";
+  r.outline = rectangle(5.0f, 4.0f);
+  r.ceiling_y = 2.6f;
+  r.tables.push_back({{0.6f, 0.4f}, {1.4f, 0.8f}, 0.75f, 0.0f});
+  r.boxes.push_back({{-1.3f, -1.4f}, {2.0f, 0.9f}, 0.45f, 0.0f});   // sofa along the back wall
+  r.boxes.push_back({{2.15f, -1.5f}, {0.6f, 0.5f}, 2.0f, 0.0f});   // tall cabinet: reads as wall
+  r.windows.push_back({1, 1.0f, 2.6f, 0.7f, 2.3f});                // in the +Z wall, 1.6 m tall
+  r.holes.push_back({{-2.5f, 1.6f, 1.0f}, 0.25f});                  // a scan gap in the -X wall
+  r.noise = 0.005f;
+  r.seed = 7;
+  return r;
+}
+
+RoomSpec large_triangle_room() {
+  RoomSpec r = default_room();
+  r.name = "large-triangles";
+  r.cell = 0.0f;
+  r.noise = 0.0f;
+  r.holes.clear();
+  return r;
+}
+
+RoomSpec rotated_room(float yaw_degrees) {
+  RoomSpec r = default_room();
+  r.name = "rotated-" + std::to_string(int(yaw_degrees));
+  const float yaw = glm::radians(yaw_degrees);
+  for (glm::vec2& p : r.outline) p = rotate(p, yaw);
+  for (Box& b : r.boxes) {
+    b.centre = rotate(b.centre, yaw);
+    b.yaw += yaw;
+  }
+  for (Table& t : r.tables) {
+    t.centre = rotate(t.centre, yaw);
+    t.yaw += yaw;
+  }
+  for (Hole& h : r.holes) {
+    const glm::vec2 c = rotate({h.centre.x, h.centre.z}, yaw);
+    h.centre = {c.x, h.centre.y, c.y};
+  }
+  return r;
+}
+
+RoomSpec pentagon_room() {
+  RoomSpec r;
+  r.name = "pentagon";
+  for (int i = 0; i < 5; ++i) {
+    const float a = glm::radians(90.0f + 72.0f * float(i));
+    r.outline.emplace_back(3.2f * std::cos(a), -3.2f * std::sin(a));  // counter-clockwise seen from +Y
+  }
+  r.ceiling_y = 2.8f;
+  r.tables.push_back({{0.0f, 0.0f}, {1.0f, 1.0f}, 0.72f, glm::radians(20.0f)});
+  r.noise = 0.004f;
+  r.seed = 11;
+  return r;
+}
+
+RoomSpec hall_room(float width, float depth) {
+  RoomSpec r;
+  r.name = "hall";
+  r.outline = rectangle(width, depth);
+  r.ceiling_y = 3.5f;
+  r.cell = 0.1f;
+  for (int i = 0; i < 4; ++i) {
+    r.tables.push_back({{-width / 4.0f, -depth / 3.0f + float(i) * depth / 5.0f}, {2.0f, 0.9f}, 0.75f, 0.0f});
+    r.boxes.push_back({{width / 4.0f, -depth / 3.0f + float(i) * depth / 5.0f}, {1.6f, 0.8f}, 1.1f, 0.0f});
+  }
+  r.windows.push_back({0, 2.0f, 6.0f, 1.0f, 2.5f});
+  r.noise = 0.005f;
+  r.seed = 3;
+  return r;
+}
+
+RoomSpec thesis_room1() {
+  RoomSpec r = default_room();
+  r.name = "thesis-room1";
+  r.outline = rectangle(6.0f, 7.0f);
+  r.ceiling_y = 2.7f;
+  r.boxes[1].centre = {2.65f, -3.0f};
+  r.cell = 0.047f;  // about 78k vertices
+  return r;
+}
+
+std::optional<RoomSpec> builtin(const std::string& name) {
+  if (name == "default") return default_room();
+  if (name == "large-triangles") return large_triangle_room();
+  if (name == "rotated") return rotated_room(30.0f);
+  if (name == "pentagon") return pentagon_room();
+  if (name == "hall") return hall_room();
+  if (name == "thesis-room1") return thesis_room1();
+  return std::nullopt;
+}
+
+std::vector<std::string> builtin_names() { return {"default", "large-triangles", "rotated", "pentagon", "hall", "thesis-room1"}; }
+
+}  // namespace roomsense::synth

@@ -1,0 +1,160 @@
+// Voxelization (Eq. 3.6/3.7, triangle mode), levels (Eq. 3.8-3.10) and their determinism.
+#include "roomsense/analysis.h"
+#include "roomsense/synthetic.h"
+#include "roomsense/voxelize.h"
+#include "synthetic_fixture.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace roomsense {
+namespace {
+
+VoxelGrid voxelize(const GridSpec& spec, const std::vector<glm::vec3>& world, const std::vector<std::uint32_t>& indices,
+                   VoxelMode mode, unsigned threads = 1) {
+  const std::vector<glm::vec3> g = to_grid_units(world, spec);
+  return voxelize_cpu({spec, g, indices, mode, 15}, threads);
+}
+
+TEST(Voxelize, VertexModeFollowsEq36) {
+  const GridSpec spec = make_grid_spec({0, 0, 0}, {1, 1, 1}, 0.25f);
+  EXPECT_EQ(spec.nx, 5);  // Eq. 3.4: floor(1 / 0.25) + 1
+  const VoxelGrid grid = voxelize(spec, {{0.05f, 0.55f, 0.95f}, {1, 1, 1}}, {}, VoxelMode::Vertices);
+  EXPECT_EQ(grid.at(0, 2, 3), 1);
+  EXPECT_EQ(grid.at(4, 4, 4), 1);
+  EXPECT_EQ(std::count(grid.cells.begin(), grid.cells.end(), 1), 2);
+}
+
+TEST(Voxelize, TriangleModeMarksEveryVoxelATrianglePassesThrough) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(0.0f, 3.0f);
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::vector<glm::vec3> tri = {{u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}};
+    const GridSpec spec = make_grid_spec({0, 0, 0}, {3, 3, 3}, 0.1f);
+    const VoxelGrid grid = voxelize(spec, tri, {0, 1, 2}, VoxelMode::Triangles);
+    // Every point of the triangle lies in a marked voxel...
+    for (int i = 0; i <= 60; ++i)
+      for (int j = 0; i + j <= 60; ++j) {
+        const glm::vec3 p = tri[0] + (tri[1] - tri[0]) * (float(i) / 60) + (tri[2] - tri[0]) * (float(j) / 60);
+        const glm::ivec3 v = glm::ivec3(glm::floor(p / 0.1f));
+        if (spec.contains(v.x, v.y, v.z)) { ASSERT_EQ(grid.at(v.x, v.y, v.z), 1) << "trial " << trial; }
+      }
+    // ...and every marked voxel touches the triangle (SAT is exact; check by the test itself).
+    const std::vector<glm::vec3> g = to_grid_units(tri, spec);
+    for (int z = 0; z < spec.nz; ++z)
+      for (int x = 0; x < spec.nx; ++x)
+        for (int y = 0; y < spec.ny; ++y)
+          if (grid.at(x, y, z) && !triangle_overlaps_voxel(g[0], g[1], g[2], x, y, z)) {
+            const glm::ivec3 a = glm::ivec3(glm::floor(g[0])), b = glm::ivec3(glm::floor(g[1])), c = glm::ivec3(glm::floor(g[2]));
+            const glm::ivec3 here(x, y, z);
+            ASSERT_TRUE(here == a || here == b || here == c) << "marked voxel off the triangle";
+          }
+  }
+}
+
+TEST(Voxelize, AFaceOnAVoxelBoundaryLandsInTheUpperVoxelOnly) {
+  // A floor exactly at y = 1.0 with voxels of 0.25 m (exact in binary): level 4, as a vertex would be.
+  const GridSpec spec = make_grid_spec({0, 0, 0}, {2, 2, 2}, 0.25f);
+  const VoxelGrid grid = voxelize(spec, {{0, 1, 0}, {2, 1, 0}, {2, 1, 2}, {0, 1, 2}}, {0, 2, 1, 0, 3, 2},
+                                  VoxelMode::Triangles);
+  const std::vector<std::uint32_t> levels = count_levels(grid);
+  EXPECT_EQ(levels[4], std::uint32_t(spec.nx * spec.nz));
+  EXPECT_EQ(levels[3], 0u);
+}
+
+TEST(Voxelize, LargeTriangleRoomWorksInTriangleModeOnly) {
+  // The thesis's room 4: walls and floor of a few large triangles leave vertex mode with only corners.
+  const Scan scan = synth::generate(synth::large_triangle_room());
+  EXPECT_LT(scan.indices.size() / 3, 200u);
+  const AnalysisResult tri = analyze(scan);
+  ASSERT_TRUE(tri.ok()) << tri.status_message;
+  EXPECT_NEAR(tri.floor_y, 0.0f, 0.05f);
+  EXPECT_NEAR(tri.ceiling_y, 2.6f, 0.05f);
+  EXPECT_GT(std::count(tri.features->free_floor.begin(), tri.features->free_floor.end(), 1), 1000);
+  AnalysisOptions vertices;
+  vertices.mode = VoxelMode::Vertices;
+  const AnalysisResult vtx = analyze(scan, vertices);
+  const bool vertex_mode_fails = !vtx.ok() || std::count(vtx.features->free_floor.begin(), vtx.features->free_floor.end(), 1) < 100;
+  EXPECT_TRUE(vertex_mode_fails);
+}
+
+TEST(Levels, SelectionFollowsEq39And310) {
+  std::vector<std::uint32_t> counts(40, 0);
+  counts[3] = 100;
+  counts[10] = 90;  // too close to 3
+  counts[30] = 80;
+  auto fc = select_floor_ceiling(counts, 15);
+  ASSERT_TRUE(fc);
+  EXPECT_EQ(fc->floor, 3);
+  EXPECT_EQ(fc->ceiling, 30);
+  counts[30] = 0;
+  counts[25] = 0;
+  EXPECT_FALSE(select_floor_ceiling(counts, 15));  // nothing 1.5 m from the fullest level
+  EXPECT_FALSE(select_floor_ceiling(std::vector<std::uint32_t>(10, 0), 15));
+}
+
+TEST(Levels, AFloorStraddlingALevelBoundaryIsOneBand) {
+  std::vector<std::uint32_t> counts(40, 1);
+  counts[3] = 100;
+  counts[4] = 40;  // the same floor, a voxel higher in places
+  counts[30] = 80;
+  counts[29] = 10;  // below the share: not part of the ceiling
+  const auto fc = select_floor_ceiling(counts, 15);
+  ASSERT_TRUE(fc);
+  EXPECT_EQ(fc->floor_peak, 3);
+  EXPECT_EQ(fc->floor, 4);
+  EXPECT_EQ(fc->ceiling, 30);
+}
+
+TEST(Levels, SyntheticRoomsMatchTheirFloorAndCeiling) {
+  for (const std::string& name : synth::builtin_names()) {
+    const test::AnalysedRoom& room = test::analysed(*synth::builtin(name));
+    ASSERT_TRUE(room.result.ok()) << name << ": " << room.result.status_message;
+    EXPECT_NEAR(room.result.floor_y, room.spec.floor_y, 0.03f) << name;
+    EXPECT_NEAR(room.result.ceiling_y, room.spec.ceiling_y, 0.03f) << name;
+    EXPECT_EQ(room.result.storeys.size(), 1u) << name;
+  }
+}
+
+TEST(Levels, NoCeilingIsAStatusNotACrash) {
+  synth::RoomSpec flat = synth::default_room();
+  Scan scan = synth::generate(flat);
+  // Keep only the floor: vertices above 0.2 m go, with their triangles.
+  Scan floor_only;
+  std::vector<std::uint32_t> remap(scan.vertices.size(), UINT32_MAX);
+  for (std::size_t i = 0; i < scan.vertices.size(); ++i)
+    if (scan.vertices[i].y < 0.2f) {
+      remap[i] = std::uint32_t(floor_only.vertices.size());
+      floor_only.vertices.push_back(scan.vertices[i]);
+    }
+  for (std::size_t t = 0; t < scan.indices.size(); t += 3) {
+    const std::uint32_t a = remap[scan.indices[t]], b = remap[scan.indices[t + 1]], c = remap[scan.indices[t + 2]];
+    if (a != UINT32_MAX && b != UINT32_MAX && c != UINT32_MAX) floor_only.indices.insert(floor_only.indices.end(), {a, b, c});
+  }
+  const AnalysisResult r = analyze(floor_only);
+  EXPECT_EQ(r.status, AnalysisStatus::NoFloorCeiling);
+  EXPECT_FALSE(r.status_message.empty());
+  EXPECT_TRUE(r.bounds.indices.empty());
+}
+
+TEST(Determinism, ResultsDoNotDependOnTheThreadCount) {
+  const Scan scan = synth::generate(synth::rotated_room(30.0f));
+  AnalysisOptions one, many;
+  one.threads = 1;
+  many.threads = 7;
+  const AnalysisResult a = analyze(scan, one), b = analyze(scan, many), c = analyze(scan, many);
+  EXPECT_EQ(a.voxels.grid.cells, b.voxels.grid.cells);
+  EXPECT_EQ(a.voxels.column_counts, b.voxels.column_counts);
+  EXPECT_EQ(a.features->walls, b.features->walls);
+  EXPECT_EQ(a.features->furniture, b.features->furniture);
+  EXPECT_EQ(a.features->free_floor, b.features->free_floor);
+  EXPECT_EQ(a.features->free_ceiling, b.features->free_ceiling);
+  EXPECT_EQ(a.features->normals, b.features->normals);
+  EXPECT_EQ(a.bounds.vertices, b.bounds.vertices);
+  EXPECT_EQ(a.bounds.indices, b.bounds.indices);
+  EXPECT_EQ(b.bounds.indices, c.bounds.indices);
+}
+
+}  // namespace
+}  // namespace roomsense

@@ -1,0 +1,127 @@
+#include "analyze_command.h"
+
+#include "options.h"
+#include "roomsense/analysis.h"
+#include "roomsense/error.h"
+#include "roomsense/export.h"
+#include "roomsense/scanio.h"
+#include "roomsense/synthetic.h"
+#include "summary.h"
+#if ROOMSENSE_HAVE_COMPUTE
+#include "roomsense/backend.h"
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+
+namespace roomsense::cli {
+namespace {
+
+constexpr const char* kSyntheticPrefix = "synthetic:";
+
+Scan load_scan(const std::string& source) {
+  if (source.rfind(kSyntheticPrefix, 0) == 0) {
+    const std::string name = source.substr(std::string(kSyntheticPrefix).size());
+    const auto spec = synth::builtin(name);
+    if (!spec) {
+      std::string names;
+      for (const std::string& n : synth::builtin_names()) names += (names.empty() ? "" : ", ") + n;
+      throw Error(ErrorCode::BadParameter, "no built-in room '" + name + "' (there are: " + names + ")");
+    }
+    return synth::generate(*spec);
+  }
+  return scanio::load_mesh_file(source);
+}
+
+std::string resolve_backend(const std::string& flag) {
+  if (!flag.empty()) return flag;
+  const char* env = std::getenv("ROOMSENSE_BACKEND");
+  if (env == nullptr || *env == '\0') return "auto";
+  const std::string v = env;
+  if (v != "auto" && v != "cpu" && v != "vulkan")
+    throw std::invalid_argument("ROOMSENSE_BACKEND takes auto, cpu or vulkan, not '" + v + "'");
+  return v;
+}
+
+#if ROOMSENSE_HAVE_COMPUTE
+// The grid's voxel count from the scan's finite extents, for `auto`'s choice (outliers aside).
+std::size_t estimated_voxels(const Scan& scan, float voxel_size) {
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::vec3& v : scan.vertices)
+    if (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) {
+      lo = glm::min(lo, v);
+      hi = glm::max(hi, v);
+    }
+  if (!(lo.x <= hi.x) || !(voxel_size > 0.0f)) return 0;
+  const glm::dvec3 n = glm::dvec3(hi - lo) / double(voxel_size) + 1.0;
+  return std::size_t(std::min(n.x * n.y * n.z, 1e18));
+}
+#endif
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream file(path);
+  if (!file || !(file << text << '\n')) throw Error(ErrorCode::Io, "cannot write '" + path + "'");
+}
+
+}  // namespace
+
+int analyze_command(const std::vector<std::string>& args) {
+  AnalyzeOptions options;
+  std::string backend;
+  try {
+    options = parse_analyze_options(args);
+    backend = resolve_backend(options.backend);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "roomsense analyze: %s (see roomsense analyze --help)\n", e.what());
+    return 2;
+  }
+  try {
+    const auto start = std::chrono::steady_clock::now();
+    Scan scan = load_scan(options.scan);
+    convert_to_roomsense_frame(scan, options.frame);
+    const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+    AnalysisOptions analysis;
+    analysis.voxel_size = options.voxel_size;
+    analysis.threads = options.threads;
+    if (options.mode) analysis.mode = *options.mode == "vertices" ? VoxelMode::Vertices : VoxelMode::Triangles;
+    std::unique_ptr<VoxelStage> stage;
+#if ROOMSENSE_HAVE_COMPUTE
+    std::string note;
+    stage = make_voxel_stage(parse_backend(backend), estimated_voxels(scan, options.voxel_size), &note);
+    // Say why only when Vulkan was asked for and not given; auto's choice is in the JSON's grid.backend.
+    if (backend == "vulkan" && stage->name() != "vulkan") std::fprintf(stderr, "roomsense analyze: %s\n", note.c_str());
+#else
+    if (backend == "vulkan")
+      throw Error(ErrorCode::BadParameter, "this build has no Vulkan backend (use --backend cpu)");
+#endif
+    analysis.voxel_stage = stage.get();
+    const AnalysisResult result = analyze(scan, analysis);
+
+    if (options.bounds_path) {
+      if (!result.ok()) throw Error(ErrorCode::BadParameter, "no bounds to write: " + result.status_message);
+      write_bounds(result.bounds, *options.bounds_path);
+    }
+    if (options.json_path) write_text(*options.json_path, analysis_json(result, {options.scan, load_ms}));
+    else std::fputs(summary(result, options.scan, load_ms).c_str(), stdout);
+    if (!result.ok()) {
+      std::fprintf(stderr, "roomsense analyze: %s: %s\n", options.scan.c_str(), result.status_message.c_str());
+      return 1;
+    }
+    return 0;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "roomsense analyze: %s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "roomsense analyze: out of memory\n");
+    return 1;
+  }
+}
+
+}  // namespace roomsense::cli

@@ -1,0 +1,92 @@
+#include "options.h"
+
+#include <charconv>
+#include <stdexcept>
+
+namespace roomsense::cli {
+
+const char* const kUsage = R"(usage: roomsense analyze SCAN [options]
+
+Finds the floor, ceiling, walls, furniture tops and free tiles of a room scan and builds a closed,
+simplified room-bounds mesh (the voxel pipeline of the thesis, chapter 3).
+
+SCAN                  an OBJ, PLY, glTF or GLB file, or synthetic:NAME for a built-in room
+                      (NAME: default, large-triangles, rotated, pentagon, hall, thesis-room1)
+options:
+  --json OUT.json     write the analysis (schema roomsense.analysis/1); without it, print a summary
+  --bounds OUT.obj    write the room-bounds mesh (.obj or .glb)
+  --up y|z            the scan's up axis (default y)
+  --units m|cm|mm     the scan's length unit (default m)
+  --left-handed       the scan is left-handed (Unity with --up y, Unreal with --up z)
+  --voxel SIZE        voxel edge in metres (default 0.1, range 0.01 to 1)
+  --mode vertices|triangles
+                      voxelize vertices only (the thesis) or whole triangles (default when the
+                      scan has triangles)
+  --backend auto|cpu|vulkan
+                      voxelization backend (default auto; also ROOMSENSE_BACKEND)
+  --threads N         worker threads (default: one per core); results do not depend on it
+  -h, --help          this text
+
+Output coordinates are in the scan's frame after --up/--units/--left-handed conversion:
+right-handed, +Y up, metres. Exit status: 0 on success, 1 on bad input, 2 on bad usage.
+)";
+
+namespace {
+
+float parse_float(const std::string& flag, const std::string& value) {
+  try {
+    std::size_t used = 0;
+    const float v = std::stof(value, &used);
+    if (used == value.size()) return v;
+  } catch (const std::exception&) {
+  }
+  throw std::invalid_argument(flag + " needs a number, not '" + value + "'");
+}
+
+}  // namespace
+
+AnalyzeOptions parse_analyze_options(const std::vector<std::string>& args) {
+  AnalyzeOptions o;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    const auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw std::invalid_argument(a + " needs a value");
+      return args[++i];
+    };
+    if (a == "--json") o.json_path = value();
+    else if (a == "--bounds") o.bounds_path = value();
+    else if (a == "--up") {
+      const std::string& v = value();
+      if (v == "y") o.frame.up = UpAxis::Y;
+      else if (v == "z") o.frame.up = UpAxis::Z;
+      else throw std::invalid_argument("--up takes y or z, not '" + v + "'");
+    } else if (a == "--units") {
+      const std::string& v = value();
+      if (v == "m") o.frame.units = Units::Metres;
+      else if (v == "cm") o.frame.units = Units::Centimetres;
+      else if (v == "mm") o.frame.units = Units::Millimetres;
+      else throw std::invalid_argument("--units takes m, cm or mm, not '" + v + "'");
+    } else if (a == "--left-handed") o.frame.left_handed = true;
+    else if (a == "--voxel") o.voxel_size = parse_float(a, value());
+    else if (a == "--backend") {
+      o.backend = value();
+      if (o.backend != "auto" && o.backend != "cpu" && o.backend != "vulkan")
+        throw std::invalid_argument("--backend takes auto, cpu or vulkan, not '" + o.backend + "'");
+    } else if (a == "--mode") {
+      o.mode = value();
+      if (*o.mode != "vertices" && *o.mode != "triangles")
+        throw std::invalid_argument("--mode takes vertices or triangles, not '" + *o.mode + "'");
+    } else if (a == "--threads") {
+      const std::string& v = value();
+      const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), o.threads);
+      if (ec != std::errc() || end != v.data() + v.size() || o.threads > 256)
+        throw std::invalid_argument("--threads needs a count from 0 to 256, not '" + v + "'");
+    } else if (!a.empty() && a[0] == '-') throw std::invalid_argument("unknown option '" + a + "'");
+    else if (o.scan.empty()) o.scan = a;
+    else throw std::invalid_argument("one SCAN only; '" + a + "' is extra");
+  }
+  if (o.scan.empty()) throw std::invalid_argument("analyze needs a SCAN (a mesh file or synthetic:NAME)");
+  return o;
+}
+
+}  // namespace roomsense::cli

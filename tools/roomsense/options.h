@@ -1,0 +1,27 @@
+// Command-line options of `roomsense analyze`.
+#pragma once
+#include "roomsense/scan.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace roomsense::cli {
+
+struct AnalyzeOptions {
+  std::string scan;  // a file, or synthetic:NAME
+  std::optional<std::string> json_path;
+  std::optional<std::string> bounds_path;
+  SourceFrame frame;
+  float voxel_size = 0.10f;
+  std::string backend;  // empty: ROOMSENSE_BACKEND, else auto
+  std::optional<std::string> mode;  // "vertices" | "triangles"
+  unsigned threads = 0;
+};
+
+// Throws std::invalid_argument with a one-line message for the user.
+AnalyzeOptions parse_analyze_options(const std::vector<std::string>& args);
+
+extern const char* const kUsage;
+
+}  // namespace roomsense::cli

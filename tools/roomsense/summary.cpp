@@ -1,0 +1,59 @@
+#include "summary.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+
+namespace roomsense::cli {
+namespace {
+
+template <class... Args>
+std::string format(const char* fmt, Args... args) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf, fmt, args...);
+  return buf;
+}
+
+std::size_t count_set(const std::vector<std::uint8_t>& v) { return std::size_t(std::count(v.begin(), v.end(), 1)); }
+
+}  // namespace
+
+std::string summary(const AnalysisResult& r, const std::string& source, double load_ms) {
+  const GridSpec& g = r.voxels.grid.spec;
+  const double tile = double(g.voxel_size) * double(g.voxel_size);
+  std::string out = "roomsense analysis of " + source + "\n";
+  out += format("  input     %zu vertices, %zu triangles (%s mode)\n", r.input.vertices, r.input.triangles,
+                r.mode == VoxelMode::Triangles ? "triangle" : "vertex");
+  for (const std::string& w : r.warnings) out += "  warning   " + w + "\n";
+  out += format("  grid      %d x %d x %d voxels of %.2f m (%s backend)\n", g.nx, g.ny, g.nz, double(g.voxel_size),
+                r.backend.c_str());
+  if (!r.ok()) return out + "  status    " + r.status_message + "\n";
+  const RoomFeatures& f = *r.features;
+  out += format("  floor     y = %.2f m\n  ceiling   y = %.2f m (room height %.2f m)\n", double(r.floor_y),
+                double(r.ceiling_y), double(r.ceiling_y - r.floor_y));
+  if (r.storeys.size() > 1) {
+    out += format("  storeys   %zu:", r.storeys.size());
+    for (const Storey& s : r.storeys) out += format(" [%.2f, %.2f]", double(s.floor_y), double(s.ceiling_y));
+    out += "\n";
+  }
+  const std::size_t furniture =
+      std::size_t(std::count_if(f.furniture.begin(), f.furniture.end(), [](int c) { return c != kNoFurniture; }));
+  const std::size_t normals =
+      std::size_t(std::count_if(f.normals.begin(), f.normals.end(), [](std::uint8_t n) { return n != 0; }));
+  out += format("  room      %.1f m2 inside the walls\n", double(count_set(f.room)) * tile);
+  out += format("  walls     %zu wall columns, %zu voxels facing into the room\n", count_set(f.walls), normals);
+  out += format("  floor     %.1f m2 free floor (1.5 m clear above)\n", double(count_set(f.free_floor)) * tile);
+  out += format("  ceiling   %.1f m2 free ceiling (1 m clear below)\n", double(count_set(f.free_ceiling)) * tile);
+  out += format("  furniture %.1f m2 of furniture tops below 1.5 m\n", double(furniture) * tile);
+  const std::size_t bt = r.bounds.indices.size() / 3;
+  out += format("  bounds    %zu vertices, %zu triangles, %s", r.bounds.vertices.size(), bt,
+                check_closure(r.bounds).closed() ? "closed" : "NOT closed");
+  if (r.input.triangles > 0 && bt > 0) out += format(" (%.1fx fewer triangles than the scan)", double(r.input.triangles) / double(bt));
+  out += "\n";
+  const StageTimings& t = r.timings;
+  out += format("  time      load %.1f ms; voxelize %.2f, features %.2f, bounds %.2f, total %.2f ms\n", load_ms,
+                t.voxelize, t.features, t.bounds, t.total);
+  return out;
+}
+
+}  // namespace roomsense::cli

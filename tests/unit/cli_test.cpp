@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <vector>
 #include <sys/wait.h>
+#include <unistd.h>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -16,8 +17,11 @@ struct CliRun {
   std::string err;
 };
 
+// Per-process file names: ctest runs tests of this binary in parallel processes.
+std::string temp_path(const std::string& name) { return testing::TempDir() + "/" + std::to_string(getpid()) + "_" + name; }
+
 CliRun run_cli(const std::string& args) {
-  const std::string err_path = testing::TempDir() + "/cli_stderr.txt";
+  const std::string err_path = temp_path("cli_stderr.txt");
   const std::string cmd = std::string(ROOMSENSE_CLI) + " " + args + " >/dev/null 2>" + err_path;
   const int raw = std::system(cmd.c_str());
   CliRun r;
@@ -28,7 +32,7 @@ CliRun run_cli(const std::string& args) {
 }
 
 std::string write_file(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + "/" + name;
+  const std::string path = temp_path(name);
   std::ofstream(path) << text;
   return path;
 }
@@ -36,7 +40,7 @@ std::string write_file(const std::string& name, const std::string& text) {
 int lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
 
 TEST(Cli, AnalyzesTheBuiltInRoomIntoJsonAndBounds) {
-  const std::string json = testing::TempDir() + "/default.json", glb = testing::TempDir() + "/default.glb";
+  const std::string json = temp_path("default.json"), glb = temp_path("default.glb");
   const CliRun r = run_cli("analyze synthetic:default --json " + json + " --bounds " + glb);
   ASSERT_EQ(r.status, 0) << r.err;
   std::ifstream in(json);

@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 namespace roomsense {
 namespace {
 
@@ -24,7 +26,7 @@ std::uint32_t u32(const std::vector<std::uint8_t>& b, std::size_t at) {
 
 TEST(Export, ObjRoundTripsThroughTheLoader) {
   const BoundsMesh& m = test::analysed(synth::default_room()).result.bounds;
-  const std::string path = testing::TempDir() + "/bounds.obj";
+  const std::string path = testing::TempDir() + "/" + std::to_string(getpid()) + "_bounds.obj";
   write_bounds(m, path);
   const Scan back = scanio::load_mesh_file(path);
   EXPECT_EQ(back.vertices.size(), m.vertices.size());

@@ -7,21 +7,22 @@ namespace roomsense {
 namespace {
 
 // §3.6's last step: an inactive voxel becomes active when, in any of the X-Z, X-Y and Y-Z planes, at least
-// three of its four neighbours are active. Neighbours are read from the volume before this pass.
+// three of its four neighbours are active. Neighbours are read from the volume before this pass: the
+// cells to fill are collected first and set afterwards.
 void fill_plane_holes(const GridSpec& s, const FloorCeiling& levels, std::vector<std::uint8_t>& volume) {
-  const std::vector<std::uint8_t> before = volume;
-  const auto at = [&](int x, int y, int z) { return s.contains(x, y, z) ? int(before[s.index(x, y, z)]) : 0; };
+  const auto at = [&](int x, int y, int z) { return s.contains(x, y, z) ? int(volume[s.index(x, y, z)]) : 0; };
+  std::vector<std::size_t> fill;
   for (int z = 0; z < s.nz; ++z)
     for (int x = 0; x < s.nx; ++x)
       for (int y = levels.floor; y <= levels.ceiling; ++y) {
-        if (before[s.index(x, y, z)]) continue;
-        const int xz = at(x - 1, y, z) + at(x + 1, y, z) + at(x, y, z - 1) + at(x, y, z + 1);
-        const int xy = at(x - 1, y, z) + at(x + 1, y, z) + at(x, y - 1, z) + at(x, y + 1, z);
-        const int yz = at(x, y - 1, z) + at(x, y + 1, z) + at(x, y, z - 1) + at(x, y, z + 1);
-        if (xz >= 3 || xy >= 3 || yz >= 3) volume[s.index(x, y, z)] = 1;
+        if (volume[s.index(x, y, z)]) continue;
+        const int left = at(x - 1, y, z), right = at(x + 1, y, z), down = at(x, y - 1, z), up = at(x, y + 1, z);
+        const int back = at(x, y, z - 1), front = at(x, y, z + 1);
+        const int xz = left + right + back + front, xy = left + right + down + up, yz = down + up + back + front;
+        if (xz >= 3 || xy >= 3 || yz >= 3) fill.push_back(s.index(x, y, z));
       }
+  for (std::size_t i : fill) volume[i] = 1;
 }
-
 
 }  // namespace
 
@@ -60,31 +61,48 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeilin
 }
 
 void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
-  const auto solid = [&](int x, int y, int z) { return s.contains(x, y, z) && volume[s.index(x, y, z)]; };
-  // The three ways a 2x2 block can sit around an edge: the edge runs along y, x or z.
-  struct Plane {
-    int ux, uy, uz, vx, vy, vz;
+  // Only levels that hold a solid voxel (and the one above them) can form a contact.
+  int y_lo = s.ny, y_hi = -1;
+  for (std::size_t col = 0; col < s.column_count(); ++col) {
+    const std::uint8_t* v = volume.data() + col * std::size_t(s.ny);
+    for (int y = 0; y < s.ny; ++y)
+      if (v[y]) {
+        y_lo = std::min(y_lo, y);
+        y_hi = std::max(y_hi, y);
+      }
+  }
+  if (y_hi < 0) return;
+  const int y_end = std::min(y_hi + 1, s.ny - 1);
+  // A 2x2 block around an edge holds cells p, q (one diagonal) and r, t (the other). When one diagonal is
+  // solid and the other empty, the empty pair is filled. Filling only adds solid voxels, so the loop ends;
+  // in practice after one or two passes.
+  const auto settle = [](std::uint8_t& p, std::uint8_t& q, std::uint8_t& r, std::uint8_t& t) {
+    if (p && q && !r && !t) {
+      r = t = 1;
+      return true;
+    }
+    if (r && t && !p && !q) {
+      p = q = 1;
+      return true;
+    }
+    return false;
   };
-  constexpr Plane kPlanes[] = {{1, 0, 0, 0, 0, 1}, {0, 1, 0, 0, 0, 1}, {1, 0, 0, 0, 1, 0}};
-  // Filling only adds solid voxels, so the loop ends; in practice one or two passes.
   for (bool changed = true; changed;) {
     changed = false;
-    for (const Plane& p : kPlanes)
-      for (int z = 0; z < s.nz; ++z)
-        for (int x = 0; x < s.nx; ++x)
-          for (int y = 0; y < s.ny; ++y) {
-            const bool a = solid(x, y, z), d = solid(x + p.ux + p.vx, y + p.uy + p.vy, z + p.uz + p.vz);
-            const bool b = solid(x + p.ux, y + p.uy, z + p.uz), c = solid(x + p.vx, y + p.vy, z + p.vz);
-            if (a && d && !b && !c) {
-              volume[s.index(x + p.ux, y + p.uy, z + p.uz)] = 1;
-              volume[s.index(x + p.vx, y + p.vy, z + p.vz)] = 1;
-              changed = true;
-            } else if (b && c && !a && !d) {
-              volume[s.index(x, y, z)] = 1;
-              volume[s.index(x + p.ux + p.vx, y + p.uy + p.vy, z + p.uz + p.vz)] = 1;
-              changed = true;
-            }
+    for (int z = 0; z < s.nz; ++z)
+      for (int x = 0; x < s.nx; ++x) {
+        std::uint8_t* c = volume.data() + s.column(x, z) * std::size_t(s.ny);
+        std::uint8_t* cx = x + 1 < s.nx ? volume.data() + s.column(x + 1, z) * std::size_t(s.ny) : nullptr;
+        std::uint8_t* cz = z + 1 < s.nz ? volume.data() + s.column(x, z + 1) * std::size_t(s.ny) : nullptr;
+        std::uint8_t* cxz = cx && cz ? volume.data() + s.column(x + 1, z + 1) * std::size_t(s.ny) : nullptr;
+        for (int y = y_lo; y <= y_end; ++y) {
+          if (cxz) changed |= settle(c[y], cxz[y], cx[y], cz[y]);  // edge along y
+          if (y + 1 < s.ny) {
+            if (cx) changed |= settle(c[y], cx[y + 1], cx[y], c[y + 1]);  // edge along z
+            if (cz) changed |= settle(c[y], cz[y + 1], cz[y], c[y + 1]);  // edge along x
           }
+        }
+      }
   }
 }
 

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <unordered_map>
 
 namespace roomsense {
@@ -71,31 +70,53 @@ void greedy_rectangles(std::vector<signed char> mask, int na, int nb, bool major
     }
 }
 
+// The box of solid voxels: meshing stops at its faces (outside it every mask entry is 0).
+struct Box {
+  int lo[3], hi[3];  // inclusive; hi < lo when empty
+};
+Box solid_box(const GridSpec& s, const std::vector<std::uint8_t>& volume) {
+  Box box{{s.nx, s.ny, s.nz}, {-1, -1, -1}};
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) {
+      const std::uint8_t* v = volume.data() + s.column(x, z) * std::size_t(s.ny);
+      for (int y = 0; y < s.ny; ++y)
+        if (v[y]) {
+          const int p[3] = {x, y, z};
+          for (int k = 0; k < 3; ++k) {
+            box.lo[k] = std::min(box.lo[k], p[k]);
+            box.hi[k] = std::max(box.hi[k], p[k]);
+          }
+        }
+    }
+  return box;
+}
+
 // Eq. 3.63's mask with the orientation folded in: +1 where the face points +c (solid at c, free at c+1),
 // -1 where it points -c, 0 where there is no face. Equal non-zero values merge (Eq. 3.64). The thesis fixes
 // one lexicographic order per plane; we run both orders on each slice and keep the one with fewer
-// rectangles, which costs little and often saves a quarter of them.
-void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const Axes& ax, std::vector<Quad>& quads) {
-  const int dims[3] = {s.nx, s.ny, s.nz};
-  const int na = dims[ax.a], nb = dims[ax.b], nc = dims[ax.c];
-  const auto solid = [&](int a, int b, int c) {
-    if (c < 0 || c >= nc) return 0;
-    int p[3];
-    p[ax.a] = a;
-    p[ax.b] = b;
-    p[ax.c] = c;
-    return int(volume[s.index(p[0], p[1], p[2])]);
-  };
+// rectangles, which costs little and saves a few.
+void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const Box& box, const Axes& ax,
+               std::vector<Quad>& quads) {
+  // Strides of GridSpec::index per axis: x -> ny, y -> 1, z -> nx * ny.
+  const std::ptrdiff_t stride[3] = {s.ny, 1, std::ptrdiff_t(s.nx) * s.ny};
+  const std::ptrdiff_t sa = stride[ax.a], sb = stride[ax.b], sc = stride[ax.c];
+  const int a0 = box.lo[ax.a], b0 = box.lo[ax.b], c0 = box.lo[ax.c];
+  const int na = box.hi[ax.a] - a0 + 1, nb = box.hi[ax.b] - b0 + 1, c_end = box.hi[ax.c];
+  const std::uint8_t* base = volume.data() + a0 * sa + b0 * sb;
   std::vector<signed char> mask(std::size_t(na) * std::size_t(nb));
   std::vector<Rect> first, second;
-  for (int c = -1; c < nc; ++c) {
+  for (int c = c0 - 1; c <= c_end; ++c) {
+    const std::uint8_t* below = c >= c0 ? base + c * sc : nullptr;
+    const std::uint8_t* above = c + 1 <= c_end ? base + (c + 1) * sc : nullptr;
     bool any = false;
-    for (int b = 0; b < nb; ++b)
+    for (int b = 0; b < nb; ++b) {
+      signed char* row = &mask[std::size_t(b) * std::size_t(na)];
       for (int a = 0; a < na; ++a) {
-        const auto m = static_cast<signed char>(solid(a, b, c) - solid(a, b, c + 1));
-        mask[std::size_t(b) * std::size_t(na) + std::size_t(a)] = m;
-        any = any || m != 0;
+        const std::ptrdiff_t off = a * sa + b * sb;
+        row[a] = static_cast<signed char>((below ? below[off] : 0) - (above ? above[off] : 0));
+        any = any || row[a] != 0;
       }
+    }
     if (!any) continue;
     first.clear();
     second.clear();
@@ -104,8 +125,8 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
     for (const Rect& r : second.size() < first.size() ? second : first) {
       const auto corner = [&](int ca, int cb) {
         Point p;
-        p.v[ax.a] = ca;
-        p.v[ax.b] = cb;
+        p.v[ax.a] = a0 + ca;
+        p.v[ax.b] = b0 + cb;
         p.v[ax.c] = c + 1;
         return p;
       };
@@ -116,44 +137,46 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
   }
 }
 
-// Every mesh vertex, indexed by the axis-aligned lines through it, to find the points inside a quad edge.
+// Every quad corner, indexed by the three axis-aligned lines through it, to find the points inside a quad
+// edge. One sorted array of (line, position along it): lookups are two binary searches.
 class LineIndex {
  public:
   void add(const Point& p) {
-    for (int k = 0; k < 3; ++k) lines_[key(p, k)].push_back(p.v[k]);
+    for (int k = 0; k < 3; ++k) entries_.push_back({key(p, k), p.v[k]});
   }
   void finish() {
-    for (auto& [k, coords] : lines_) {
-      std::sort(coords.begin(), coords.end());
-      coords.erase(std::unique(coords.begin(), coords.end()), coords.end());
-    }
+    std::sort(entries_.begin(), entries_.end());
+    entries_.erase(std::unique(entries_.begin(), entries_.end()), entries_.end());
   }
   // Appends the points strictly between p and q (which differ along one axis), in order from p to q.
   void between(const Point& p, const Point& q, std::vector<Point>& out) const {
     int k = 0;
     while (p.v[k] == q.v[k]) ++k;
-    const auto it = lines_.find(key(p, k));
-    if (it == lines_.end()) return;
-    const std::vector<int>& coords = it->second;
+    const std::uint64_t line = key(p, k);
     const int lo = std::min(p.v[k], q.v[k]), hi = std::max(p.v[k], q.v[k]);
-    const auto first = std::upper_bound(coords.begin(), coords.end(), lo);
-    const auto last = std::lower_bound(coords.begin(), coords.end(), hi);
+    const auto first = std::lower_bound(entries_.begin(), entries_.end(), Entry{line, lo + 1});
+    const auto last = std::lower_bound(first, entries_.end(), Entry{line, hi});
     const std::size_t start = out.size();
-    for (auto c = first; c != last; ++c) {
+    for (auto e = first; e != last; ++e) {
       Point r = p;
-      r.v[k] = *c;
+      r.v[k] = e->position;
       out.push_back(r);
     }
     if (p.v[k] > q.v[k]) std::reverse(out.begin() + std::ptrdiff_t(start), out.end());
   }
 
  private:
-  struct Key {
-    int axis, u, v;
-    bool operator<(const Key& o) const { return std::tie(axis, u, v) < std::tie(o.axis, o.u, o.v); }
+  struct Entry {
+    std::uint64_t line;
+    int position;
+    auto operator<=>(const Entry&) const = default;
   };
-  static Key key(const Point& p, int axis) { return {axis, p.v[(axis + 1) % 3], p.v[(axis + 2) % 3]}; }
-  std::map<Key, std::vector<int>> lines_;
+  // Lattice coordinates are below 2^26 (the voxel budget bounds every dimension): 2 + 31 + 31 bits.
+  static std::uint64_t key(const Point& p, int axis) {
+    return std::uint64_t(axis) << 62 | std::uint64_t(std::uint32_t(p.v[(axis + 1) % 3])) << 31 |
+           std::uint64_t(std::uint32_t(p.v[(axis + 2) % 3]));
+  }
+  std::vector<Entry> entries_;
 };
 
 class MeshBuilder {
@@ -210,7 +233,9 @@ void triangulate_ring(std::vector<Point>& ring, MeshBuilder& out) {
 
 BoundsMesh greedy_mesh(const GridSpec& spec, const std::vector<std::uint8_t>& volume) {
   std::vector<Quad> quads;
-  for (const Axes& ax : kAxes) mesh_axis(spec, volume, ax, quads);
+  const Box box = solid_box(spec, volume);
+  if (box.hi[0] < box.lo[0]) return {};
+  for (const Axes& ax : kAxes) mesh_axis(spec, volume, box, ax, quads);
 
   LineIndex lines;
   for (const Quad& q : quads)

@@ -6,6 +6,7 @@
 #include <openxr/openxr_reflection.h>
 
 #include <cstdio>
+#include <algorithm>
 #include <cstring>
 
 namespace roomsense::sim {
@@ -35,9 +36,11 @@ const char* structure_name(XrStructureType value) {
   }
 }
 
+// Copies text into buffer, truncated to size - 1 characters and always terminated.
 void copy_out(char* buffer, std::size_t size, const char* text) {
-  std::strncpy(buffer, text, size - 1);
-  buffer[size - 1] = '\0';
+  const std::size_t n = std::min(std::strlen(text), size - 1);
+  std::memcpy(buffer, text, n);
+  buffer[n] = '\0';
 }
 
 }  // namespace

@@ -11,12 +11,16 @@ namespace {
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// The [q, 1-q] quantiles of one axis, widened by the outlier margin.
+// The [q, 1-q] quantiles of one axis, widened by the outlier margin. Quantiles of an evenly strided sample
+// of at most kQuantileSample vertices are as good for this and keep large scans cheap.
+constexpr std::size_t kQuantileSample = 16384;
 std::pair<float, float> robust_range(const std::vector<glm::vec3>& vertices, const std::vector<std::uint8_t>& keep, int axis) {
   std::vector<float> values;
-  values.reserve(vertices.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i)
+  const std::size_t stride = std::max<std::size_t>(1, vertices.size() / kQuantileSample);
+  values.reserve(vertices.size() / stride + 1);
+  for (std::size_t i = 0; i < vertices.size(); i += stride)
     if (keep[i]) values.push_back(vertices[i][axis]);
+  if (values.empty()) return {-INFINITY, INFINITY};
   const std::size_t lo_k = std::size_t(double(values.size() - 1) * kOutlierQuantile);
   const std::size_t hi_k = values.size() - 1 - lo_k;
   std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(lo_k), values.end());
@@ -36,8 +40,9 @@ PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
   if (scan.indices.size() % 3 != 0)
     throw Error(ErrorCode::BadIndices,
                 "the index count " + std::to_string(scan.indices.size()) + " is not a multiple of 3");
+  const std::uint32_t vertex_count = std::uint32_t(scan.vertices.size());
   for (std::size_t i = 0; i < scan.indices.size(); ++i)
-    if (scan.indices[i] >= scan.vertices.size())
+    if (scan.indices[i] >= vertex_count) [[unlikely]]
       throw Error(ErrorCode::BadIndices, "index " + std::to_string(scan.indices[i]) + " of triangle " +
                                              std::to_string(i / 3) + " is out of range (" +
                                              std::to_string(scan.vertices.size()) + " vertices)");
@@ -89,7 +94,9 @@ PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
       ++out.dropped_triangles;
       continue;
     }
-    out.indices.insert(out.indices.end(), {a, b, c});
+    out.indices.push_back(a);
+    out.indices.push_back(b);
+    out.indices.push_back(c);
   }
 
   out.lo = out.hi = out.vertices.front();

@@ -4,6 +4,7 @@
 #include "roomsense/error.h"
 #include "roomsense/quest_capture.h"
 #include "roomsense/scanio.h"
+#include "roomsense/synthetic.h"
 
 #include <filesystem>
 #include <map>
@@ -24,10 +25,18 @@ RoomObject object_from(const std::string& label, const scanio::OrientedRect& rec
   return {label, object_kind_for_label(label), to_xr(rect.pose), {rect.width, rect.height}};
 }
 
+// The project's built-in synthetic rooms, as the CLI names them (synthetic:default, ...).
+constexpr const char* kSyntheticPrefix = "synthetic:";
+
 std::shared_ptr<const Room> read_room(const std::string& path) {
   auto room = std::make_shared<Room>();
   room->source = path;
-  if (scanio::is_quest_capture_path(path)) {
+  if (path.rfind(kSyntheticPrefix, 0) == 0) {
+    const std::string name = path.substr(std::string(kSyntheticPrefix).size());
+    const auto spec = synth::builtin(name);
+    if (!spec) throw Error(ErrorCode::Io, "no built-in room '" + name + "'");
+    room->mesh = synth::generate(*spec);
+  } else if (scanio::is_quest_capture_path(path)) {
     scanio::QuestCapture capture = scanio::load_quest_capture(path);
     room->mesh = std::move(capture.mesh);
     for (const auto& plane : capture.planes) room->objects.push_back(object_from(plane.label, scanio::plane_rect(plane)));
@@ -64,7 +73,9 @@ std::shared_ptr<const Room> load_room(const std::string& path) {
   static std::mutex mutex;
   static std::map<std::string, std::pair<std::filesystem::file_time_type, std::shared_ptr<const Room>>> cache;
   std::error_code ec;
-  const auto stamp = std::filesystem::last_write_time(path, ec);
+  // A built-in room never changes: it gets the epoch as its stamp.
+  const bool builtin = path.rfind(kSyntheticPrefix, 0) == 0;
+  const auto stamp = builtin ? std::filesystem::file_time_type{} : std::filesystem::last_write_time(path, ec);
   if (ec) throw Error(ErrorCode::Io, "cannot read '" + path + "': no such file");
   {
     std::lock_guard lock(mutex);

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages roomsense needs (only those missing), then configures and builds.
-# Usage: scripts/setup.sh [BUILD_DIR] [extra cmake arguments...]
+# Usage: scripts/setup.sh [BUILD_DIR] [extra cmake arguments...]; ROOMSENSE_TARGET=NAME builds one target.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${1:-build}
@@ -23,4 +23,4 @@ if ((${#missing[@]})); then
 fi
 
 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE="${ROOMSENSE_BUILD_TYPE:-Release}" "$@" >/dev/null
-cmake --build "$build_dir" -j"$(nproc)"
+cmake --build "$build_dir" -j"$(nproc)" ${ROOMSENSE_TARGET:+--target "$ROOMSENSE_TARGET"}

@@ -1,5 +1,6 @@
 #include "roomsense/error.h"
 #include "roomsense/scanio.h"
+#include "ply_header_check.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -37,6 +38,7 @@ Scan load_mesh_file(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw Error(ErrorCode::Io, "cannot read '" + path + "': no such file");
+  check_ply_header(path);
   Assimp::Importer importer;
   // No normals, UVs or materials are needed: keep the import to positions and faces.
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_TEXCOORDS |

@@ -58,8 +58,12 @@ TEST(Cli, BadInputGetsOneClearLineAndAnErrorStatus) {
   const std::string empty_obj = write_file("empty.obj", "");
   const std::string garbage = write_file("garbage.ply", "this is not a ply file\n");
   const std::string flat = write_file("flat.obj", "v 0 0 0\nv 4 0 0\nv 4 0 4\nv 0 0 4\nf 1 3 2\nf 1 4 3\n");
+  // A header that claims a billion vertices in a tiny file: refused before anything is allocated for them.
+  const std::string huge = write_file("huge.ply", "ply\nformat ascii 1.0\nelement vertex 1000000000\nproperty float x\n"
+                                                  "property float y\nproperty float z\nend_header\n0 0 0\n");
+  const std::string bad_index = write_file("bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n");
   for (const std::string& args : std::vector<std::string>{"analyze /no/such/file.obj", "analyze " + nan_obj, "analyze " + empty_obj,
-                                  "analyze " + garbage, "analyze " + flat, "analyze synthetic:nope",
+                                  "analyze " + garbage, "analyze " + flat, "analyze " + huge, "analyze " + bad_index, "analyze synthetic:nope",
                                   "analyze synthetic:default --voxel 0", "analyze synthetic:default --voxel 1e9"}) {
     const CliRun r = run_cli(args);
     EXPECT_EQ(r.status, 1) << args << "\n" << r.err;

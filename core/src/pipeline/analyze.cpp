@@ -4,6 +4,7 @@
 #include "surface_heights.h"
 
 #include <chrono>
+#include <cstdio>
 
 namespace roomsense {
 namespace {
@@ -53,9 +54,10 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
 
   if (!r.voxels.levels) {
     r.status = AnalysisStatus::NoFloorCeiling;
-    r.status_message = "no floor and ceiling found: no two horizontal levels are at least " +
-                       std::to_string(options.features.min_floor_ceiling) + " m apart (" +
-                       std::to_string(spec.ny) + " levels scanned)";
+    char separation[32];
+    std::snprintf(separation, sizeof separation, "%.2g", double(options.features.min_floor_ceiling));
+    r.status_message = std::string("no floor and ceiling found: no two horizontal levels are at least ") +
+                       separation + " m apart (" + std::to_string(spec.ny) + " levels scanned)";
     r.timings.total = r.timings.prepare + r.timings.voxelize;
     return r;
   }

@@ -3,6 +3,8 @@
 // ceiling down, furniture outwards.
 #include "roomsense/synthetic.h"
 
+#include "roomsense/error.h"
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -317,6 +319,19 @@ std::optional<RoomSpec> builtin(const std::string& name) {
   if (name == "hall") return hall_room();
   if (name == "thesis-room1") return thesis_room1();
   return std::nullopt;
+}
+
+bool is_builtin_source(const std::string& source) { return source.rfind(kSourcePrefix, 0) == 0; }
+
+Scan generate_builtin_source(const std::string& source) {
+  const std::string name = is_builtin_source(source) ? source.substr(std::string(kSourcePrefix).size()) : source;
+  const auto spec = builtin(name);
+  if (!spec) {
+    std::string names;
+    for (const std::string& n : builtin_names()) names += (names.empty() ? "" : ", ") + n;
+    throw Error(ErrorCode::BadParameter, "no built-in room '" + name + "' (there are: " + names + ")");
+  }
+  return generate(*spec);
 }
 
 std::vector<std::string> builtin_names() { return {"default", "large-triangles", "rotated", "pentagon", "hall", "thesis-room1"}; }

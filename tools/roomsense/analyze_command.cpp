@@ -23,20 +23,8 @@
 namespace roomsense::cli {
 namespace {
 
-constexpr const char* kSyntheticPrefix = "synthetic:";
-
 Scan load_scan(const std::string& source) {
-  if (source.rfind(kSyntheticPrefix, 0) == 0) {
-    const std::string name = source.substr(std::string(kSyntheticPrefix).size());
-    const auto spec = synth::builtin(name);
-    if (!spec) {
-      std::string names;
-      for (const std::string& n : synth::builtin_names()) names += (names.empty() ? "" : ", ") + n;
-      throw Error(ErrorCode::BadParameter, "no built-in room '" + name + "' (there are: " + names + ")");
-    }
-    return synth::generate(*spec);
-  }
-  return scanio::load_mesh_file(source);
+  return synth::is_builtin_source(source) ? synth::generate_builtin_source(source) : scanio::load_mesh_file(source);
 }
 
 std::string resolve_backend(const std::string& flag) {

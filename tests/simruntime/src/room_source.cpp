@@ -25,17 +25,11 @@ RoomObject object_from(const std::string& label, const scanio::OrientedRect& rec
   return {label, object_kind_for_label(label), to_xr(rect.pose), {rect.width, rect.height}};
 }
 
-// The project's built-in synthetic rooms, as the CLI names them (synthetic:default, ...).
-constexpr const char* kSyntheticPrefix = "synthetic:";
-
 std::shared_ptr<const Room> read_room(const std::string& path) {
   auto room = std::make_shared<Room>();
   room->source = path;
-  if (path.rfind(kSyntheticPrefix, 0) == 0) {
-    const std::string name = path.substr(std::string(kSyntheticPrefix).size());
-    const auto spec = synth::builtin(name);
-    if (!spec) throw Error(ErrorCode::Io, "no built-in room '" + name + "'");
-    room->mesh = synth::generate(*spec);
+  if (synth::is_builtin_source(path)) {  // the project's built-in rooms, named as the CLI names them
+    room->mesh = synth::generate_builtin_source(path);
   } else if (scanio::is_quest_capture_path(path)) {
     scanio::QuestCapture capture = scanio::load_quest_capture(path);
     room->mesh = std::move(capture.mesh);
@@ -74,7 +68,7 @@ std::shared_ptr<const Room> load_room(const std::string& path) {
   static std::map<std::string, std::pair<std::filesystem::file_time_type, std::shared_ptr<const Room>>> cache;
   std::error_code ec;
   // A built-in room never changes: it gets the epoch as its stamp.
-  const bool builtin = path.rfind(kSyntheticPrefix, 0) == 0;
+  const bool builtin = synth::is_builtin_source(path);
   const auto stamp = builtin ? std::filesystem::file_time_type{} : std::filesystem::last_write_time(path, ec);
   if (ec) throw Error(ErrorCode::Io, "cannot read '" + path + "': no such file");
   {

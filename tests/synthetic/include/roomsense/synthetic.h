@@ -81,4 +81,10 @@ RoomSpec thesis_room1();                 // about 78k vertices, the size of the 
 std::optional<RoomSpec> builtin(const std::string& name);
 std::vector<std::string> builtin_names();
 
+// "synthetic:NAME", the way the CLI and the simulated runtime name a built-in room in place of a file.
+inline constexpr const char* kSourcePrefix = "synthetic:";
+bool is_builtin_source(const std::string& source);
+// The room a "synthetic:NAME" source names. Throws Error(BadParameter), listing the names, for an unknown one.
+Scan generate_builtin_source(const std::string& source);
+
 }  // namespace roomsense::synth

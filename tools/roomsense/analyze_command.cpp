@@ -5,6 +5,7 @@
 #include "roomsense/error.h"
 #include "roomsense/export.h"
 #include "roomsense/scanio.h"
+#include "roomsense/quest_capture.h"
 #include "roomsense/synthetic.h"
 #include "summary.h"
 #if ROOMSENSE_HAVE_COMPUTE
@@ -24,7 +25,9 @@ namespace roomsense::cli {
 namespace {
 
 Scan load_scan(const std::string& source) {
-  return synth::is_builtin_source(source) ? synth::generate_builtin_source(source) : scanio::load_mesh_file(source);
+  if (synth::is_builtin_source(source)) return synth::generate_builtin_source(source);
+  if (scanio::is_quest_capture_path(source)) return scanio::load_quest_capture(source).mesh;
+  return scanio::load_mesh_file(source);
 }
 
 std::string resolve_backend(const std::string& flag) {

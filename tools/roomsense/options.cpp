@@ -10,7 +10,8 @@ const char* const kUsage = R"(usage: roomsense analyze SCAN [options]
 Finds the floor, ceiling, walls, furniture tops and free tiles of a room scan and builds a closed,
 simplified room-bounds mesh (the voxel pipeline of the thesis, chapter 3).
 
-SCAN                  an OBJ, PLY, glTF or GLB file, or synthetic:NAME for a built-in room
+SCAN                  an OBJ, PLY, glTF or GLB file, a Quest scene capture (.json), or
+                      synthetic:NAME for a built-in room
                       (NAME: default, large-triangles, rotated, pentagon, hall, thesis-room1)
 options:
   --json OUT.json     write the analysis (schema roomsense.analysis/1); without it, print a summary

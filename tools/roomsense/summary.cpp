@@ -1,6 +1,7 @@
 #include "summary.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <numeric>
 
@@ -15,6 +16,19 @@ std::string format(const char* fmt, Args... args) {
 }
 
 std::size_t count_set(const std::vector<std::uint8_t>& v) { return std::size_t(std::count(v.begin(), v.end(), 1)); }
+
+// Areas per type, by size and by reach: the full list is in the JSON.
+std::string areas_summary(const std::vector<Area>& areas) {
+  std::string out = format("  areas     %zu placement areas   large medium small | close distance none\n", areas.size());
+  for (const AreaType type : kAreaTypes) {
+    std::array<int, 3> sizes{}, reach{};
+    for (const Area& a : areas)
+      if (a.type == type) ++sizes[std::size_t(a.size) - 1], ++reach[std::size_t(a.reach) - 1];
+    out += format("            %-24s %5d %6d %5d | %5d %8d %4d\n", std::string(to_string(type)).c_str(), sizes[0],
+                  sizes[1], sizes[2], reach[0], reach[1], reach[2]);
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -45,14 +59,16 @@ std::string summary(const AnalysisResult& r, const std::string& source, double l
   out += format("  floor     %.1f m2 free floor (1.5 m clear above)\n", double(count_set(f.free_floor)) * tile);
   out += format("  ceiling   %.1f m2 free ceiling (1 m clear below)\n", double(count_set(f.free_ceiling)) * tile);
   out += format("  furniture %.1f m2 of furniture tops below 1.5 m\n", double(furniture) * tile);
+  out += areas_summary(r.areas);
   const std::size_t bt = r.bounds.indices.size() / 3;
   out += format("  bounds    %zu vertices, %zu triangles, %s", r.bounds.vertices.size(), bt,
                 check_closure(r.bounds).closed() ? "closed" : "NOT closed");
   if (r.input.triangles > 0 && bt > 0) out += format(" (%.1fx fewer triangles than the scan)", double(r.input.triangles) / double(bt));
   out += "\n";
   const StageTimings& t = r.timings;
-  out += format("  time      load %.1f ms; voxelize %.2f, features %.2f, bounds %.2f, total %.2f ms\n", load_ms,
-                t.voxelize, t.features, t.bounds, t.total);
+  out += format("  time      load %.1f ms; voxelize %.2f, features %.2f, areas %.2f, reduce %.2f, classify %.2f,"
+                " bounds %.2f, total %.2f ms\n",
+                load_ms, t.voxelize, t.features, t.areas, t.reduce, t.classify, t.bounds, t.total);
   return out;
 }
 

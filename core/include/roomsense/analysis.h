@@ -1,5 +1,6 @@
 // The whole pipeline on one scan: input hygiene, voxel stage, room features, bounds, with stage timings.
 #pragma once
+#include "roomsense/areas.h"
 #include "roomsense/bounds.h"
 #include "roomsense/features.h"
 #include "roomsense/grid.h"
@@ -20,6 +21,9 @@ struct AnalysisOptions {
   bool reject_outliers = true;
   unsigned threads = 0;           // 0: one per hardware thread; results do not depend on it
   FeatureParams features;
+  AreaParams areas;
+  bool find_areas = true;     // §3.3-3.5; off for a bounds-only run (thesis StartRoomBounds)
+  bool build_bounds = true;   // §3.6; off for an areas-only run (thesis StartRoomUnderstanding)
   VoxelStage* voxel_stage = nullptr;  // not owned; nullptr: the CPU stage
 };
 
@@ -56,6 +60,8 @@ struct AnalysisResult {
   float floor_y = 0.0f;           // metres; the scanned floor surface of the main storey
   float ceiling_y = 0.0f;
   std::vector<Storey> storeys;    // main storey first; empty when status is not Ok
+  std::vector<Area> areas;        // classified placement areas (§3.5); empty unless status is Ok
+  AreaCounts area_counts;
   BoundsMesh bounds;
   StageTimings timings;
   bool ok() const { return status == AnalysisStatus::Ok; }

@@ -1,5 +1,6 @@
 // The CLI's JSON, schema roomsense.analysis/1 (DESIGN.md). Extra members beyond the contract: status,
-// message, warnings, input.{outlier_vertices, dropped_triangles, mode}, grid.backend, bounds.closed.
+// message, warnings, input.{outlier_vertices, dropped_triangles, mode}, grid.backend, bounds.closed,
+// areas[].orientation (the pose quaternion x, y, z, w) and area_counts (per type: wall, floor, ceiling, furniture).
 #include "roomsense/export.h"
 
 #include <nlohmann/json.hpp>
@@ -10,6 +11,28 @@ namespace roomsense {
 namespace {
 
 nlohmann::json height(float y, bool ok) { return ok && std::isfinite(y) ? nlohmann::json(y) : nlohmann::json(nullptr); }
+
+nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+nlohmann::json areas_json(const std::vector<Area>& areas) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Area& a : areas) {
+    const glm::quat q = a.orientation();
+    out.push_back({{"type", to_string(a.type)},
+                   {"size", to_string(a.size)},
+                   {"interaction", to_string(a.reach)},
+                   {"center", vec(a.center)},
+                   {"normal", vec(a.normal)},
+                   {"half_width", a.half_width},
+                   {"half_height", a.half_height},
+                   {"rotation_deg", a.rotation_deg},
+                   {"volume_height", a.volume_height},
+                   {"corners", {vec(a.corners[0]), vec(a.corners[1]), vec(a.corners[2]), vec(a.corners[3])}},
+                   {"orientation", {q.x, q.y, q.z, q.w}},
+                   {"flags", a.flags}});
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -41,7 +64,9 @@ std::string analysis_json(const AnalysisResult& r, const JsonSource& source) {
       {"floor_y", height(r.floor_y, r.ok())},
       {"ceiling_y", height(r.ceiling_y, r.ok())},
       {"storeys", storeys},
-      {"areas", json::array()},
+      {"areas", areas_json(r.areas)},
+      {"area_counts",
+       {{"found", r.area_counts.found}, {"deduplicated", r.area_counts.deduplicated}, {"reduced", r.area_counts.reduced}}},
       {"bounds",
        {{"vertices", r.bounds.vertices.size()},
         {"triangles", r.bounds.indices.size() / 3},

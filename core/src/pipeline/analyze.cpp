@@ -72,9 +72,22 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
   r.status_message = "ok";
   r.timings.features = clock.lap();
 
-  r.bounds = build_bounds(r.voxels.grid, levels, r.features->y_end, r.features->room);
-  r.timings.bounds = clock.lap();
-  r.timings.total = r.timings.prepare + r.timings.voxelize + r.timings.features + r.timings.bounds;
+  if (options.find_areas) {
+    AreaResult found = find_areas(r.voxels.grid, *r.features, {r.floor_y, r.ceiling_y}, options.areas,
+                                  options.features, options.threads);
+    r.areas = std::move(found.areas);
+    r.area_counts = found.counts;
+    r.timings.areas = found.timings.search;
+    r.timings.reduce = found.timings.reduce;
+    r.timings.classify = found.timings.classify;
+    clock.lap();
+  }
+  if (options.build_bounds) {
+    r.bounds = build_bounds(r.voxels.grid, levels, r.features->y_end, r.features->room);
+    r.timings.bounds = clock.lap();
+  }
+  r.timings.total = r.timings.prepare + r.timings.voxelize + r.timings.features + r.timings.areas +
+                    r.timings.reduce + r.timings.classify + r.timings.bounds;
   return r;
 }
 

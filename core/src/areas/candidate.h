@@ -1,0 +1,62 @@
+// A found rectangle in voxel coordinates, as the thesis stores it (Eq. 3.26, 3.39, 3.41), and the voxels
+// that mark its centre (Eq. 3.42/3.43).
+#pragma once
+#include "roomsense/areas.h"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace roomsense::detail {
+
+// Walls: p1 = (x1, y1, z1), p2 = (x2, y1, z2) on the top edge, p3 = (x2, y1 - h, z2), p4 = (x1, y1 - h, z1),
+// with x1 <= x2 (Eq. 3.26). Squares: v1, v2, v3, v4 around the square, v1 -> v2 with x1 <= x2 and
+// v2 -> v3 = (-(z2 - z1), x2 - x1) (Eq. 3.28), all at one level (Eq. 3.39/3.41).
+struct Candidate {
+  std::array<glm::ivec3, 4> corners{};
+};
+
+using Candidates = std::vector<Candidate>;
+
+// 4 x the centre of Eq. 3.42, exact in integers.
+inline glm::ivec3 corner_sum(const Candidate& c) {
+  return c.corners[0] + c.corners[1] + c.corners[2] + c.corners[3];
+}
+
+// The voxel indices along one axis that Eq. 3.43 marks for a centre of sum / 4: one voxel, or two when the
+// centre lies exactly between them. Returns how many (1 or 2) and writes them to out.
+inline int centre_voxels(int sum, int out[2]) {
+  const int base = sum >= 0 ? sum / 4 : -((-sum + 3) / 4);  // floor(sum / 4)
+  switch (sum - 4 * base) {
+    case 2:
+      out[0] = base;
+      out[1] = base + 1;
+      return 2;
+    case 3:
+      out[0] = base + 1;
+      return 1;
+    default:
+      out[0] = base;
+      return 1;
+  }
+}
+
+// Sizes in voxels for one of the three size classes (§3.3.1/3.3.2): d must lie in [min_d, max_d].
+struct SizeRange {
+  double min_d = 0, max_d = 0;
+  double height_ratio = 0.5;  // walls: h = ⌊d · ratio⌋ (Eq. 3.20 has ratio 1/2)
+};
+
+inline SizeRange size_range(float width, float height, float tolerance, float voxel_size) {
+  return {double(width - tolerance) / voxel_size, double(width + tolerance) / voxel_size, double(height / width)};
+}
+
+// The centre-voxel keys are packed into 64 bits; grids are far smaller than 2^20 per axis.
+inline std::uint64_t pack_key(int x, int y, int z) {
+  return (std::uint64_t(std::uint32_t(x) & 0x1FFFFF) << 42) | (std::uint64_t(std::uint32_t(y) & 0x1FFFFF) << 21) |
+         std::uint64_t(std::uint32_t(z) & 0x1FFFFF);
+}
+
+}  // namespace roomsense::detail

@@ -1,0 +1,105 @@
+// Eq. 3.54-3.58: a reduced rectangle in metres, in our right-handed frame with counter-clockwise corners.
+#include "classify.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace roomsense::detail {
+namespace {
+
+glm::vec3 voxel_centre(const GridSpec& spec, const glm::ivec3& v) {  // Eq. 3.54
+  return spec.lattice_to_world(float(v.x) + 0.5f, float(v.y) + 0.5f, float(v.z) + 0.5f);
+}
+
+glm::vec3 normal_bits_direction(std::uint8_t bits) {
+  glm::vec3 d(0.0f);
+  if (bits & kNormalLeft) d.x -= 1.0f;
+  if (bits & kNormalRight) d.x += 1.0f;
+  if (bits & kNormalForward) d.z += 1.0f;
+  if (bits & kNormalBackward) d.z -= 1.0f;
+  return d;
+}
+
+// Eq. 3.55 for walls, derived for our frame: the normal is horizontal and at a right angle to the top edge,
+// on the side the wall normals F of the two corner voxels point to (away from the wall, Alg. 1). Where they
+// do not decide, the side without a wall column next to the edge's middle is the room side, as the thesis's
+// check of wall pieces around corner 1.
+glm::vec3 wall_normal(const Candidate& c, const PlacementContext& ctx) {
+  const GridSpec& s = ctx.spec;
+  const glm::ivec3 &p1 = c.corners[0], &p2 = c.corners[1];
+  glm::vec3 perp(-float(p2.z - p1.z), 0.0f, float(p2.x - p1.x));
+  perp = glm::normalize(perp);
+  const auto bits = [&](const glm::ivec3& v) { return ctx.features.normals[s.index(v.x, v.y, v.z)]; };
+  const float vote = glm::dot(normal_bits_direction(bits(p1)) + normal_bits_direction(bits(p2)), perp);
+  if (vote > 0.0f) return perp;
+  if (vote < 0.0f) return -perp;
+  const glm::vec2 mid(0.5f * float(p1.x + p2.x), 0.5f * float(p1.z + p2.z));
+  const auto wall_at = [&](float side) {
+    const int x = int(std::lround(mid.x + side * perp.x)), z = int(std::lround(mid.y + side * perp.z));
+    return x >= 0 && z >= 0 && x < s.nx && z < s.nz && ctx.features.walls[s.column(x, z)] != 0;
+  };
+  return wall_at(1.0f) && !wall_at(-1.0f) ? -perp : perp;
+}
+
+}  // namespace
+
+Area to_area(const Sized& found, AreaType type, const PlacementContext& ctx) {
+  const GridSpec& s = ctx.spec;
+  const Candidate& c = found.c;
+  const float voxel = s.voxel_size;
+  Area a;
+  a.type = type;
+  a.size = found.size;
+  if (type == AreaType::Wall) {
+    a.normal = wall_normal(c, ctx);
+    // Walls sit on the wall-side face of the free voxels F marks (Alg. 1), not at their centres (Eq. 3.54):
+    // half a voxel nearer the wall, so content is placed on the wall rather than floating in front of it.
+    std::array<glm::vec3, 4> p;
+    for (std::size_t i = 0; i < 4; ++i) p[i] = voxel_centre(s, c.corners[i]) - a.normal * (0.5f * voxel);
+    const glm::vec3 x_axis(a.normal.z, 0.0f, -a.normal.x);  // up × normal, so that X × Y = normal
+    // Thesis order p1, p2 on top, p3, p4 below; ours starts bottom-left seen from the room.
+    a.corners = glm::dot(p[1] - p[0], x_axis) >= 0.0f ? std::array{p[3], p[2], p[1], p[0]}
+                                                      : std::array{p[2], p[3], p[0], p[1]};
+    a.volume_height = ctx.feature_params.wall_normal_reach;
+  } else {
+    // Horizontal areas lie on the surface rather than at the centre of the free voxel above it (Eq. 3.54):
+    // floors and ceilings at the measured surface height, furniture on top of its highest voxel (y_Actual).
+    float y = 0.0f;
+    if (type == AreaType::Floor) y = ctx.surfaces.floor_y;
+    if (type == AreaType::Ceiling) y = ctx.surfaces.ceiling_y;
+    if (type == AreaType::Furniture) y = s.origin.y + float(c.corners[0].y) * voxel;
+    const bool up = type != AreaType::Ceiling;
+    a.normal = glm::vec3(0.0f, up ? 1.0f : -1.0f, 0.0f);  // Eq. 3.55
+    // v1..v4 run clockwise seen from above (Eq. 3.28); upward areas reverse them to run counter-clockwise seen
+    // from their front. The start is the corner whose first edge makes the rotation lie in [0°, 90°).
+    std::array<glm::ivec3, 4> v = c.corners;
+    if (up) std::swap(v[1], v[3]);
+    std::size_t start = 0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const glm::ivec3 e = v[(k + 1) % 4] - v[k];
+      if (e.x > 0 && (up ? e.z <= 0 : e.z >= 0)) start = k;
+    }
+    for (std::size_t k = 0; k < 4; ++k) {
+      glm::vec3 p = voxel_centre(s, v[(start + k) % 4]);
+      p.y = y;
+      a.corners[k] = p;
+    }
+    const glm::vec3 e = a.corners[1] - a.corners[0];
+    // Eq. 3.57 as a signed angle about the normal: about -Y for ceilings, so the thesis's "negative rotation".
+    a.rotation_deg = float(std::atan2(up ? -e.z : e.z, e.x) * 180.0 / std::numbers::pi);
+    const FeatureParams& fp = ctx.feature_params;
+    a.volume_height = type == AreaType::Floor ? fp.furniture_top : type == AreaType::Ceiling ? fp.ceiling_clear
+                                                                                          : fp.furniture_clear;
+  }
+  a.center = 0.25f * (a.corners[0] + a.corners[1] + a.corners[2] + a.corners[3]);  // Eq. 3.42
+  a.half_width = 0.5f * glm::distance(a.corners[0], a.corners[1]);                // Eq. 3.56
+  a.half_height = 0.5f * glm::distance(a.corners[1], a.corners[2]);
+  a.reach = Reach::None;
+  a.flags = category_flags(a.type, a.size, a.reach);
+  return a;
+}
+
+}  // namespace roomsense::detail

@@ -1,0 +1,80 @@
+// §3.3-3.5 in the thesis's order: the 12 searches in parallel (§3.7), reduction per type, classification.
+#include "../parallel.h"
+#include "classify.h"
+#include "reduce.h"
+#include "search.h"
+
+#include <chrono>
+
+namespace roomsense {
+namespace {
+
+double elapsed_ms(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
+}
+
+}  // namespace
+
+AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const SurfaceLevels& surfaces,
+                      const AreaParams& params, const FeatureParams& feature_params, unsigned threads) {
+  using namespace detail;
+  const GridSpec& spec = grid.spec;
+  const float voxel = spec.voxel_size;
+  AreaResult result;
+  auto clock = std::chrono::steady_clock::now();
+
+  // §3.3: task t searches type t / 3 in size t % 3. Each writes only its own slot.
+  const NormalCounts normals = count_normals(spec, features);
+  std::array<std::array<Candidates, 3>, 4> found;
+  parallel_tasks(12, threads, [&](std::size_t t) {
+    const std::size_t type = t / 3, size = t % 3;
+    if (type == 0) {
+      const SizeRange range =
+          size_range(params.wall_width[size], params.wall_height[size], params.width_tolerance, voxel);
+      found[type][size] = search_walls(spec, features, normals, range, params.wall_fill);
+      return;
+    }
+    const SizeRange range =
+        size_range(params.square_width[size], params.square_width[size], params.width_tolerance, voxel);
+    const Surface surface = type == 1 ? Surface::Floor : type == 2 ? Surface::Ceiling : Surface::Furniture;
+    found[type][size] = search_squares(spec, features, surface, range, params.horizontal_fill);
+  });
+  result.timings.search = elapsed_ms(clock);
+  clock = std::chrono::steady_clock::now();
+
+  // §3.4, independent per type: V_Wall, V_Floor, ... (Eq. 3.44), then the overlap reduction.
+  std::array<std::vector<Sized>, 4> deduplicated;
+  std::array<std::vector<std::size_t>, 4> kept;
+  parallel_tasks(4, threads, [&](std::size_t type) {
+    deduplicated[type] = deduplicate_centres(found[type]);
+    kept[type] = type == 0 ? reduce_wall_overlaps(deduplicated[type], params.reduction_offset)
+                           : reduce_square_overlaps(deduplicated[type], params.reduction_offset, type == 3);
+  });
+  for (std::size_t type = 0; type < 4; ++type) {
+    for (const Candidates& c : found[type]) result.counts.found[type] += c.size();
+    result.counts.deduplicated[type] = deduplicated[type].size();
+    result.counts.reduced[type] = kept[type].size();
+  }
+  result.timings.reduce = elapsed_ms(clock);
+  clock = std::chrono::steady_clock::now();
+
+  // §3.5: geometry of every reduced area, then reach against V_Floor and V_Wall (before the overlap reduction).
+  const PlacementContext context{spec, features, surfaces, feature_params};
+  const auto convert_all = [&](std::size_t type) {
+    std::vector<Area> out;
+    out.reserve(deduplicated[type].size());
+    for (const Sized& s : deduplicated[type]) out.push_back(to_area(s, kAreaTypes[type], context));
+    return out;
+  };
+  const std::vector<Area> wall_areas = convert_all(0), floor_areas = convert_all(1);
+  for (std::size_t type = 0; type < 4; ++type)
+    for (std::size_t i : kept[type])
+      result.areas.push_back(type == 0   ? wall_areas[i]
+                             : type == 1 ? floor_areas[i]
+                                         : to_area(deduplicated[type][i], kAreaTypes[type], context));
+  assign_reach(result.areas, floor_areas, wall_areas, surfaces.floor_y, params, threads);
+  result.timings.classify = elapsed_ms(clock);
+  return result;
+}
+
+}  // namespace roomsense

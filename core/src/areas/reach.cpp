@@ -1,0 +1,188 @@
+// Interaction levels of §3.5.1 (walls) and §3.5.2 (floors, ceilings, furniture): the nearest floor area that
+// the area can see past the walls, in the X-Z plane, with line of sight by segment intersection (Eq. 3.59).
+#include "../parallel.h"
+#include "classify.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <unordered_map>
+
+namespace roomsense::detail {
+namespace {
+
+using P2 = glm::dvec2;
+
+P2 xz(const glm::vec3& v) { return {v.x, v.z}; }
+
+// Eq. 3.59: the sign of (z_b - z_a)(x_c - x_b) - (z_c - z_b)(x_b - x_a): 0 collinear, 1 and 2 the two turns.
+int orientation(P2 a, P2 b, P2 c) {
+  const double v = (b.y - a.y) * (c.x - b.x) - (c.y - b.y) * (b.x - a.x);
+  return v == 0.0 ? 0 : (v > 0.0 ? 1 : 2);
+}
+
+bool on_segment(P2 a, P2 b, P2 p) {  // p collinear with a-b: does it lie between them?
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y);
+}
+
+bool segments_intersect(P2 p1, P2 q1, P2 p2, P2 q2) {  // [Geeks, 2020] as §3.5.1 describes it
+  const int o1 = orientation(p1, q1, p2), o2 = orientation(p1, q1, q2);
+  const int o3 = orientation(p2, q2, p1), o4 = orientation(p2, q2, q1);
+  if (o1 != o2 && o3 != o4) return true;
+  return (o1 == 0 && on_segment(p1, q1, p2)) || (o2 == 0 && on_segment(p1, q1, q2)) ||
+         (o3 == 0 && on_segment(p2, q2, p1)) || (o4 == 0 && on_segment(p2, q2, q1));
+}
+
+struct Segment {
+  P2 a, b;
+};
+
+// The upper edges of the wall areas V_Wall, bucketed on a grid in X-Z, so a line of sight meets only the
+// walls along it (a grid walk) instead of all of them.
+class WallSegments {
+ public:
+  WallSegments(const std::vector<Area>& walls, double bucket) : size_(bucket) {
+    segments_.reserve(walls.size());
+    for (std::size_t i = 0; i < walls.size(); ++i) {
+      const Segment s{xz(walls[i].corners[3]), xz(walls[i].corners[2])};  // top-left, top-right
+      segments_.push_back(s);
+      for (int bz = cell(std::min(s.a.y, s.b.y)); bz <= cell(std::max(s.a.y, s.b.y)); ++bz)
+        for (int bx = cell(std::min(s.a.x, s.b.x)); bx <= cell(std::max(s.a.x, s.b.x)); ++bx)
+          buckets_[key(bx, bz)].push_back(i);
+    }
+  }
+  const Segment& segment(std::size_t i) const { return segments_[i]; }
+
+  // Does any wall segment but the excluded ones cross the sight line from p to q?
+  template <class Excluded>
+  bool blocked(P2 p, P2 q, Excluded excluded) const {
+    bool hit = false;
+    walk(p, q, [&](const std::vector<std::size_t>& ids) {
+      for (std::size_t i : ids)
+        if (!excluded(i) && segments_intersect(p, q, segments_[i].a, segments_[i].b)) return hit = true;
+      return false;
+    });
+    return hit;
+  }
+
+ private:
+  int cell(double v) const { return int(std::floor(v / size_)); }
+  static std::uint64_t key(int bx, int bz) { return (std::uint64_t(std::uint32_t(bx)) << 32) | std::uint32_t(bz); }
+
+  // Visits the buckets the segment p-q passes through (Amanatides-Woo), and where it passes exactly through a
+  // bucket corner, the two buckets beside that corner; stops as soon as visit returns true.
+  template <class Visit>
+  void walk(P2 p, P2 q, Visit visit) const {
+    const auto visit_bucket = [&](int bx, int bz) {
+      const auto it = buckets_.find(key(bx, bz));
+      return it != buckets_.end() && visit(it->second);
+    };
+    int bx = cell(p.x), bz = cell(p.y);
+    const int ex = cell(q.x), ez = cell(q.y);
+    const P2 d = q - p;
+    const int sx = d.x > 0 ? 1 : -1, sz = d.y > 0 ? 1 : -1;
+    const auto first_crossing = [&](double from, int c, int step, double delta) {
+      return delta == 0.0 ? INFINITY : ((step > 0 ? c + 1 : c) * size_ - from) / delta;
+    };
+    double tx = first_crossing(p.x, bx, sx, d.x), tz = first_crossing(p.y, bz, sz, d.y);
+    const double dtx = d.x == 0.0 ? INFINITY : size_ / std::abs(d.x);
+    const double dtz = d.y == 0.0 ? INFINITY : size_ / std::abs(d.y);
+    if (visit_bucket(bx, bz)) return;
+    for (int steps = std::abs(ex - bx) + std::abs(ez - bz); steps > 0;) {
+      if (tx < tz) {
+        bx += sx, tx += dtx, steps -= 1;
+      } else if (tz < tx) {
+        bz += sz, tz += dtz, steps -= 1;
+      } else {
+        if (visit_bucket(bx + sx, bz) || visit_bucket(bx, bz + sz)) return;
+        bx += sx, bz += sz, tx += dtx, tz += dtz, steps -= 2;
+      }
+      if (visit_bucket(bx, bz)) return;
+    }
+    if ((bx != ex || bz != ez) && visit_bucket(ex, ez)) return;  // rounding at a bucket border
+  }
+
+  double size_;
+  std::vector<Segment> segments_;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> buckets_;
+};
+
+// The floor areas a given area may use, nearest first by `gap`, tried until one is in sight. Picks the next
+// nearest each time (ties to the lower index), which is cheap when the first one or two are in sight.
+template <class Eligible, class Visible>
+std::optional<double> nearest_visible(const std::vector<Area>& floors, Eligible gap_of, Visible visible) {
+  std::vector<std::pair<double, std::size_t>> order;
+  order.reserve(floors.size());
+  for (std::size_t i = 0; i < floors.size(); ++i)
+    if (const std::optional<double> gap = gap_of(floors[i])) order.emplace_back(*gap, i);
+  for (std::size_t tried = 0; tried < order.size(); ++tried) {
+    // After a few misses, sort the rest instead of searching it again for each try.
+    if (tried == 8) std::sort(order.begin() + std::ptrdiff_t(tried), order.end());
+    if (tried < 8)
+      std::iter_swap(order.begin() + std::ptrdiff_t(tried),
+                     std::min_element(order.begin() + std::ptrdiff_t(tried), order.end()));
+    if (visible(floors[order[tried].second], order[tried].first)) return order[tried].first;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void assign_reach(std::vector<Area>& areas, const std::vector<Area>& floors, const std::vector<Area>& walls,
+                  float floor_y, const AreaParams& params, unsigned threads) {
+  const WallSegments segments(walls, 1.0);
+  const double close = params.close_distance;
+  const double cone_cos = std::cos(double(params.wall_view_cone_deg) * std::numbers::pi / 180.0);
+
+  const auto reach_of = [&](const Area& area) {
+    const P2 c = xz(area.center);
+    const auto sight = [&](const Area& floor, auto excluded) {
+      return !segments.blocked(c, xz(floor.center), excluded);
+    };
+    if (area.type == AreaType::Wall) {
+      // §3.5.1: a floor area within 60° of the normal, seen past every wall area not on this same wall (those
+      // whose top edge meets ours, or that come within 20 cm of it).
+      const P2 n = glm::normalize(xz(area.normal));
+      const P2 top_a = xz(area.corners[3]), top_b = xz(area.corners[2]);
+      const auto same_wall = [&](std::size_t i) {
+        const Segment& s = segments.segment(i);
+        return segments_intersect(top_a, top_b, s.a, s.b) ||
+               glm::distance(c, xz(walls[i].center)) - area.half_width - walls[i].half_width < close;
+      };
+      const auto gap = [&](const Area& floor) -> std::optional<double> {
+        const P2 u = xz(floor.center) - c;
+        const double len = glm::length(u);
+        if (len == 0.0 || glm::dot(u, n) < cone_cos * len) return std::nullopt;
+        return len - floor.half_width;
+      };
+      const auto found = nearest_visible(floors, gap, [&](const Area& f, double) { return sight(f, same_wall); });
+      if (!found) return Reach::None;
+      const bool low = area.center.y - floor_y <= params.close_height;
+      return low && *found < close ? Reach::Close : Reach::Distance;
+    }
+    // §3.5.2: the distance between centres less both half sizes; overlapping areas need no line of sight.
+    const auto none = [](std::size_t) { return false; };
+    const auto gap = [&](const Area& floor) -> std::optional<double> {
+      return glm::distance(c, xz(floor.center)) - area.half_width - floor.half_width;
+    };
+    const auto found =
+        nearest_visible(floors, gap, [&](const Area& f, double g) { return g <= 0.0 || sight(f, none); });
+    if (!found) return Reach::None;
+    if (area.type == AreaType::Ceiling) return Reach::Distance;  // never within reach of a hand
+    return *found < close ? Reach::Close : Reach::Distance;
+  };
+
+  parallel_for(areas.size(), threads, 16, [&](std::size_t begin, std::size_t end, std::size_t) {
+    for (std::size_t i = begin; i < end; ++i) {
+      areas[i].reach = reach_of(areas[i]);
+      areas[i].flags = category_flags(areas[i].type, areas[i].size, areas[i].reach);
+    }
+  });
+}
+
+}  // namespace roomsense::detail

@@ -1,0 +1,54 @@
+// The second corners a search tries from a first one: Eq. 3.21's ranges (as DESIGN.md corrects them), kept to
+// the offsets whose distance d lies in [w_min, w_max], in the thesis's loop order. The cells a rectangle covers
+// depend only on the offset between its corners, so each offset carries them, relative to the first corner.
+#pragma once
+#include "candidate.h"
+#include "cell_cover.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace roomsense::detail {
+
+struct CellRun {  // cells (x1 + dx, z1 + dz_lo ... z1 + dz_hi)
+  int dx = 0, dz_lo = 0, dz_hi = 0;
+};
+
+struct RingOffset {
+  int dx = 0, dz = 0;
+  double d = 0;                // Eq. 3.20's distance, in voxels
+  std::vector<CellRun> runs;   // the covered cells, one run per column
+  int cells = 0;               // how many
+};
+
+enum class Shape {
+  WallTop,  // the segment from corner 1 to corner 2 (Eq. 3.23/3.24)
+  Square,   // the square v1 v2 v3 v4 of Eq. 3.28 (Eq. 3.30-3.37)
+};
+
+// dx >= 0, and dz > 0 when dx == 0, so each unordered pair of corners is tried once (Eq. 3.21).
+inline std::vector<RingOffset> ring_offsets(const SizeRange& size, Shape shape) {
+  std::vector<RingOffset> out;
+  const int reach = int(std::floor(size.max_d));
+  const double lo2 = size.min_d * size.min_d - 1e-9, hi2 = size.max_d * size.max_d + 1e-9;
+  for (int dx = 0; dx <= reach; ++dx)
+    for (int dz = dx == 0 ? 1 : -reach; dz <= reach; ++dz) {
+      const double d2 = double(dx) * dx + double(dz) * dz;
+      if (d2 < lo2 || d2 > hi2) continue;
+      RingOffset o{dx, dz, std::sqrt(d2), {}, 0};
+      std::vector<glm::dvec2> polygon = {{0, 0}, {dx, dz}};
+      if (shape == Shape::Square) polygon = {{0, 0}, {dx, dz}, {dx - dz, dz + dx}, {-dz, dx}};
+      const int x_lo = std::min({0, dx, dx - dz, -dz}), x_hi = std::max({0, dx, dx - dz, -dz});
+      for (int x = shape == Shape::Square ? x_lo : 0; x <= (shape == Shape::Square ? x_hi : dx); ++x) {
+        const ZSpan span = covered_cells(polygon, x);
+        if (span.lo > span.hi) continue;
+        o.runs.push_back({x, span.lo, span.hi});
+        o.cells += span.hi - span.lo + 1;
+      }
+      out.push_back(std::move(o));
+    }
+  return out;
+}
+
+}  // namespace roomsense::detail

@@ -1,0 +1,29 @@
+// The searches of §3.3: wall rectangles (Alg. 2) and horizontal squares (Alg. 3) for one size class.
+#pragma once
+#include "candidate.h"
+#include "roomsense/features.h"
+
+namespace roomsense::detail {
+
+// Per-column prefix counts over y of "has a wall normal" (F != 0) in [floor, ceiling]: shared by the three
+// wall searches so each rectangle row costs O(1) per column.
+struct NormalCounts {
+  int y0 = 0, levels = 0;             // covers y in [y0, y0 + levels)
+  std::vector<std::uint16_t> prefix;  // column * (levels + 1) + (y - y0 + 1)
+  int count(std::size_t column, int y_from, int y_to) const;  // voxels with a normal in [y_from, y_to]
+};
+NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features);
+
+// Alg. 2 (Eq. 3.20-3.27). Returns the first valid rectangle for each distinct centre, in search order: a
+// later rectangle with the same centre would always be dropped by Eq. 3.44, so this changes nothing.
+Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, const NormalCounts& normals,
+                        const SizeRange& size, float fill);
+
+enum class Surface { Floor, Ceiling, Furniture };
+
+// Alg. 3 (Eq. 3.28-3.39) on free floor D (Surface::Floor) or free ceiling E (Surface::Ceiling), and its
+// furniture variant (§3.3.4, Eq. 3.40/3.41) on every level of C. Same first-per-centre rule as above.
+Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Surface surface,
+                          const SizeRange& size, float fill);
+
+}  // namespace roomsense::detail

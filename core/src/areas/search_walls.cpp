@@ -1,0 +1,102 @@
+// Alg. 2: wall rectangles between two voxels with compatible normals (Eq. 3.20-3.27).
+#include "cell_cover.h"
+#include "ring_offsets.h"
+#include "search.h"
+
+#include <algorithm>
+#include <limits>
+#include <unordered_set>
+
+namespace roomsense::detail {
+namespace {
+
+// Normals the second corner may carry (Alg. 2): the first corner's, or one at a right angle to them, so that
+// only corners facing opposite ways are refused.
+std::uint8_t compatible_normals(std::uint8_t first) {
+  std::uint8_t out = first;
+  if (first & (kNormalLeft | kNormalRight)) out |= kNormalForward | kNormalBackward;
+  if (first & (kNormalForward | kNormalBackward)) out |= kNormalLeft | kNormalRight;
+  return out;
+}
+
+}  // namespace
+
+int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
+  const std::size_t base = column * std::size_t(levels + 1);
+  return int(prefix[base + std::size_t(y_to - y0 + 1)]) - int(prefix[base + std::size_t(y_from - y0)]);
+}
+
+NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
+  NormalCounts n;
+  n.y0 = features.levels.floor;
+  // 16-bit counts: a room taller than 65535 voxels has no wall areas above that.
+  n.levels = std::min({features.levels.ceiling - n.y0 + 1, spec.ny - n.y0,
+                       int(std::numeric_limits<std::uint16_t>::max())});
+  const std::size_t stride = std::size_t(n.levels + 1);
+  n.prefix.assign(spec.column_count() * stride, 0);
+  for (std::size_t col = 0; col < spec.column_count(); ++col) {
+    const std::uint8_t* f = features.normals.data() + col * std::size_t(spec.ny) + n.y0;
+    std::uint16_t* p = n.prefix.data() + col * stride;
+    for (int i = 0; i < n.levels; ++i) p[i + 1] = std::uint16_t(p[i] + (f[i] != 0 ? 1 : 0));
+  }
+  return n;
+}
+
+Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, const NormalCounts& normals,
+                        const SizeRange& size, float fill) {
+  const std::vector<RingOffset> ring = ring_offsets(size, Shape::WallTop);
+  const int floor = normals.y0, ceiling = normals.y0 + normals.levels - 1;
+  // Alg. 2 starts the top row at I_Floor + ⌊w_min/2⌋, leaving room for the height below it.
+  const int y_first = floor + int(std::floor(size.min_d * size.height_ratio));
+  const auto& f = features.normals;
+  const auto& walls = features.walls;
+
+  // Eq. 3.25's test for one rectangle: no wall column among the cells the top segment touches, and enough
+  // voxels with a normal in the rows [y1 - h, y1]. Gives up once too many voxels lack one.
+  const auto valid = [&](int x1, int z1, const RingOffset& o, int y_top, int h) {
+    const int y_bottom = std::max(y_top - h, floor);
+    const long rows = y_top - y_bottom + 1;
+    const double need = double(fill) * (std::floor(o.d) + 1.0) * double(h + 1);
+    const double may_miss = double(long(o.cells) * rows) - need;
+    long missing = 0;
+    for (const CellRun& run : o.runs) {
+      const int x = x1 + run.dx;
+      for (int z = z1 + run.dz_lo; z <= z1 + run.dz_hi; ++z) {
+        if (z < 0 || z >= spec.nz) {
+          missing += rows;
+          continue;
+        }
+        const std::size_t col = spec.column(x, z);
+        if (walls[col]) return false;
+        missing += rows - normals.count(col, y_bottom, y_top);
+      }
+      if (double(missing) > may_miss) return false;
+    }
+    return true;
+  };
+
+  Candidates out;
+  std::unordered_set<std::uint64_t> centres;  // 2 x centre of the valid rectangles found so far
+  for (int z1 = 0; z1 < spec.nz; ++z1)
+    for (int x1 = 0; x1 < spec.nx; ++x1)
+      for (int y1 = std::max(y_first, floor); y1 <= ceiling; ++y1) {
+        const std::uint8_t f1 = f[spec.index(x1, y1, z1)];
+        if (f1 == 0) continue;
+        const std::uint8_t compatible = compatible_normals(f1);
+        for (const RingOffset& o : ring) {
+          const int x2 = x1 + o.dx, z2 = z1 + o.dz;
+          if (x2 >= spec.nx || z2 < 0 || z2 >= spec.nz) continue;
+          if ((f[spec.index(x2, y1, z2)] & compatible) == 0) continue;
+          const int h = int(std::floor(o.d * size.height_ratio + 1e-9));  // Eq. 3.20
+          const std::uint64_t key = pack_key(x1 + x2, 2 * y1 - h, z1 + z2);
+          if (centres.contains(key)) continue;
+          if (!valid(x1, z1, o, y1, h)) continue;
+          centres.insert(key);
+          out.push_back({{glm::ivec3(x1, y1, z1), glm::ivec3(x2, y1, z2), glm::ivec3(x2, y1 - h, z2),
+                          glm::ivec3(x1, y1 - h, z1)}});
+        }
+      }
+  return out;
+}
+
+}  // namespace roomsense::detail

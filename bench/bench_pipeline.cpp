@@ -1,6 +1,7 @@
 // Per-stage timings of the room pipeline on every real scan and on synthetic rooms (Google Benchmark).
 // Run: build/bench/roomsense_bench [--benchmark_filter=...]. Loading is excluded everywhere.
 #include "roomsense/analysis.h"
+#include "roomsense/areas.h"
 #include "roomsense/bounds.h"
 #include "roomsense/features.h"
 #include "roomsense/scanio.h"
@@ -8,6 +9,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -45,6 +47,7 @@ struct Prepared {
   std::vector<glm::vec3> grid_vertices;
   VoxelStageResult voxels;
   RoomFeatures features;
+  SurfaceLevels surfaces;
 };
 
 std::shared_ptr<Prepared> prepare(const Scan& scan) {
@@ -54,7 +57,31 @@ std::shared_ptr<Prepared> prepare(const Scan& scan) {
   p->grid_vertices = to_grid_units(p->input.vertices, p->spec);
   p->voxels = CpuVoxelStage().run({p->spec, p->grid_vertices, p->input.indices, VoxelMode::Triangles, 15});
   p->features = detect_features(p->voxels, {});
+  const float s = p->spec.voxel_size;
+  p->surfaces = {p->spec.origin.y + float(p->features.levels.floor + 1) * s,
+                 p->spec.origin.y + float(p->features.levels.ceiling) * s};
   return p;
+}
+
+// §3.3-3.5 on prepared features, with the split into search, reduction and classification and the room's
+// free floor, so the growth with room size can be read off.
+void time_areas(benchmark::State& state, const Prepared& p) {
+  AreaTimings sum;
+  std::size_t areas = 0;
+  for (auto _ : state) {
+    AreaResult r = find_areas(p.voxels.grid, p.features, p.surfaces, {}, {});
+    sum.search += r.timings.search, sum.reduce += r.timings.reduce, sum.classify += r.timings.classify;
+    areas = r.areas.size();
+    benchmark::DoNotOptimize(r);
+  }
+  const double n = double(state.iterations());
+  state.counters["search_ms"] = sum.search / n;
+  state.counters["reduce_ms"] = sum.reduce / n;
+  state.counters["classify_ms"] = sum.classify / n;
+  state.counters["areas"] = double(areas);
+  const double tile = double(p.spec.voxel_size) * double(p.spec.voxel_size);
+  state.counters["free_floor_m2"] =
+      tile * double(std::count(p.features.free_floor.begin(), p.features.free_floor.end(), std::uint8_t{1}));
 }
 
 void counters(benchmark::State& state, const Room& room) {
@@ -68,9 +95,10 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   std::printf(
       "Thesis figures (6-core i7-5820K, rooms 1-2 of about 78k vertices): room understanding 55-180 ms,\n"
-      "room bounds 18-37 ms. Targets here (2 cores): bounds <= 5 ms on a ~78k-vertex room.\n"
-      "Stages: voxelize = voxel stage (V, |V_y|, levels, |V_xz|); features = A-F; bounds = I + greedy mesh;\n"
-      "bounds_pipeline = prepare + voxelize + A/B + bounds (what StartRoomBounds runs); analyze = all.\n\n");
+      "room bounds 18-37 ms. Targets here (2 cores): bounds <= 5 ms and understanding <= 20 ms on a ~78k-vertex room.\n"
+      "Stages: voxelize = voxel stage (V, |V_y|, levels, |V_xz|); features = A-F; areas = search + reduce + classify\n"
+      "(§3.3-3.5); understanding = prepare + voxelize + features + areas (what StartRoomUnderstanding runs);\n"
+      "bounds = I + greedy mesh; bounds_pipeline = prepare + voxelize + A/B + bounds (StartRoomBounds); analyze = all.\n\n");
   static const std::vector<Room> rooms = load_rooms();
   for (const Room& room : rooms) {
     const auto p = prepare(room.scan);
@@ -82,6 +110,16 @@ int main(int argc, char** argv) {
     })->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("features/" + room.name).c_str(), [&room, p](benchmark::State& state) {
       for (auto _ : state) benchmark::DoNotOptimize(detect_features(p->voxels, {}));
+      counters(state, room);
+    })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("areas/" + room.name).c_str(), [&room, p](benchmark::State& state) {
+      time_areas(state, *p);
+      counters(state, room);
+    })->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("understanding/" + room.name).c_str(), [&room](benchmark::State& state) {
+      AnalysisOptions o;
+      o.build_bounds = false;
+      for (auto _ : state) benchmark::DoNotOptimize(analyze(room.scan, o));
       counters(state, room);
     })->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("bounds/" + room.name).c_str(), [&room, p](benchmark::State& state) {
@@ -105,6 +143,13 @@ int main(int argc, char** argv) {
       for (auto _ : state) benchmark::DoNotOptimize(analyze(room.scan));
       counters(state, room);
     })->Unit(benchmark::kMillisecond);
+  }
+  // How the area search grows with room size: empty-ish halls of increasing floor area.
+  for (const float scale : {0.25f, 0.5f, 1.0f, 1.5f}) {
+    const std::string name = "area_growth/hall_" + std::to_string(int(20 * scale)) + "x" + std::to_string(int(14 * scale));
+    const auto p = prepare(synth::generate(synth::hall_room(20.0f * scale, 14.0f * scale)));
+    benchmark::RegisterBenchmark(name.c_str(), [p](benchmark::State& state) { time_areas(state, *p); })
+        ->Unit(benchmark::kMillisecond);
   }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

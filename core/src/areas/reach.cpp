@@ -10,6 +10,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <queue>
 #include <unordered_map>
 
 namespace roomsense::detail {
@@ -112,30 +113,74 @@ class WallSegments {
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> buckets_;
 };
 
-// The floor areas a given area may use, nearest first by `gap`, tried until one is in sight. Picks the next
-// nearest each time (ties to the lower index), which is cheap when the first one or two are in sight.
-template <class Eligible, class Visible>
-std::optional<double> nearest_visible(const std::vector<Area>& floors, Eligible gap_of, Visible visible) {
-  std::vector<std::pair<double, std::size_t>> order;
-  order.reserve(floors.size());
-  for (std::size_t i = 0; i < floors.size(); ++i)
-    if (const std::optional<double> gap = gap_of(floors[i])) order.emplace_back(*gap, i);
-  for (std::size_t tried = 0; tried < order.size(); ++tried) {
-    // After a few misses, sort the rest instead of searching it again for each try.
-    if (tried == 8) std::sort(order.begin() + std::ptrdiff_t(tried), order.end());
-    if (tried < 8)
-      std::iter_swap(order.begin() + std::ptrdiff_t(tried),
-                     std::min_element(order.begin() + std::ptrdiff_t(tried), order.end()));
-    if (visible(floors[order[tried].second], order[tried].first)) return order[tried].first;
+// The floor areas V_Floor bucketed by centre on a grid in X-Z, to visit them nearest first without measuring
+// the distance to every one of them from every area.
+class FloorIndex {
+ public:
+  FloorIndex(const std::vector<Area>& floors, double bucket) : floors_(floors), size_(bucket) {
+    if (floors.empty()) return;
+    P2 lo(INFINITY), hi(-INFINITY);
+    for (const Area& f : floors) {
+      lo = glm::min(lo, xz(f.center)), hi = glm::max(hi, xz(f.center));
+      max_half_ = std::max(max_half_, double(f.half_width));
+    }
+    origin_ = lo;
+    nx_ = int((hi.x - lo.x) / size_) + 1, nz_ = int((hi.y - lo.y) / size_) + 1;
+    buckets_.resize(std::size_t(nx_) * std::size_t(nz_));
+    for (std::size_t i = 0; i < floors.size(); ++i) {
+      const glm::ivec2 b = cell(xz(floors[i].center));
+      buckets_[std::size_t(b.y) * std::size_t(nx_) + std::size_t(b.x)].push_back(i);
+    }
   }
-  return std::nullopt;
-}
+
+  // Tries the floor areas for which gap_of gives a value, smallest gap first (ties to the lower index), until
+  // visible(floor, gap) holds; returns that gap. gap_of must be at least the centre distance less `slack` and
+  // less the floor's half width, which bounds what farther buckets can hold.
+  template <class GapOf, class Visible>
+  std::optional<double> nearest_visible(P2 from, double slack, GapOf gap_of, Visible visible) const {
+    if (floors_.empty()) return std::nullopt;
+    using Entry = std::pair<double, std::size_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    const glm::ivec2 c = cell(from);  // may lie outside the grid
+    const int last_ring = std::max({std::abs(c.x), std::abs(c.y), std::abs(nx_ - 1 - c.x), std::abs(nz_ - 1 - c.y)});
+    for (int ring = 0; ring <= last_ring + 1; ++ring) {
+      if (ring <= last_ring)
+        for (int bz = c.y - ring; bz <= c.y + ring; ++bz)
+          for (int bx = c.x - ring; bx <= c.x + ring; ++bx) {
+            if (std::max(std::abs(bx - c.x), std::abs(bz - c.y)) != ring || bx < 0 || bz < 0 || bx >= nx_ || bz >= nz_)
+              continue;
+            for (std::size_t i : buckets_[std::size_t(bz) * std::size_t(nx_) + std::size_t(bx)])
+              if (const std::optional<double> gap = gap_of(floors_[i])) queue.emplace(*gap, i);
+          }
+      // Centres in later rings lie at least `ring` buckets away.
+      const double bound = ring < last_ring ? double(ring) * size_ - slack - max_half_ : INFINITY;
+      while (!queue.empty() && queue.top().first <= bound) {
+        const Entry e = queue.top();
+        queue.pop();
+        if (visible(floors_[e.second], e.first)) return e.first;
+      }
+    }
+    return std::nullopt;
+  }
+
+ private:
+  glm::ivec2 cell(P2 p) const {
+    return {int(std::floor((p.x - origin_.x) / size_)), int(std::floor((p.y - origin_.y) / size_))};
+  }
+  const std::vector<Area>& floors_;
+  double size_;
+  P2 origin_{0.0};
+  int nx_ = 0, nz_ = 0;
+  double max_half_ = 0.0;
+  std::vector<std::vector<std::size_t>> buckets_;
+};
 
 }  // namespace
 
 void assign_reach(std::vector<Area>& areas, const std::vector<Area>& floors, const std::vector<Area>& walls,
                   float floor_y, const AreaParams& params, unsigned threads) {
   const WallSegments segments(walls, 1.0);
+  const FloorIndex floor_index(floors, 1.0);
   const double close = params.close_distance;
   const double cone_cos = std::cos(double(params.wall_view_cone_deg) * std::numbers::pi / 180.0);
 
@@ -160,7 +205,8 @@ void assign_reach(std::vector<Area>& areas, const std::vector<Area>& floors, con
         if (len == 0.0 || glm::dot(u, n) < cone_cos * len) return std::nullopt;
         return len - floor.half_width;
       };
-      const auto found = nearest_visible(floors, gap, [&](const Area& f, double) { return sight(f, same_wall); });
+      const auto found =
+          floor_index.nearest_visible(c, 0.0, gap, [&](const Area& f, double) { return sight(f, same_wall); });
       if (!found) return Reach::None;
       const bool low = area.center.y - floor_y <= params.close_height;
       return low && *found < close ? Reach::Close : Reach::Distance;
@@ -170,8 +216,8 @@ void assign_reach(std::vector<Area>& areas, const std::vector<Area>& floors, con
     const auto gap = [&](const Area& floor) -> std::optional<double> {
       return glm::distance(c, xz(floor.center)) - area.half_width - floor.half_width;
     };
-    const auto found =
-        nearest_visible(floors, gap, [&](const Area& f, double g) { return g <= 0.0 || sight(f, none); });
+    const auto found = floor_index.nearest_visible(c, area.half_width, gap,
+                                                   [&](const Area& f, double g) { return g <= 0.0 || sight(f, none); });
     if (!found) return Reach::None;
     if (area.type == AreaType::Ceiling) return Reach::Distance;  // never within reach of a hand
     return *found < close ? Reach::Close : Reach::Distance;

@@ -20,6 +20,7 @@ struct RingOffset {
   double d = 0;                // Eq. 3.20's distance, in voxels
   std::vector<CellRun> runs;   // the covered cells, one run per column
   int cells = 0;               // how many
+  glm::ivec2 box_lo{0}, box_hi{0};  // their bounding box (x, z), relative to the first corner
 };
 
 enum class Shape {
@@ -46,6 +47,9 @@ inline std::vector<RingOffset> ring_offsets(const SizeRange& size, Shape shape) 
         o.runs.push_back({x, span.lo, span.hi});
         o.cells += span.hi - span.lo + 1;
       }
+      o.box_lo = {o.runs.front().dx, o.runs.front().dz_lo};
+      o.box_hi = {o.runs.back().dx, o.runs.front().dz_hi};
+      for (const CellRun& r : o.runs) o.box_lo.y = std::min(o.box_lo.y, r.dz_lo), o.box_hi.y = std::max(o.box_hi.y, r.dz_hi);
       out.push_back(std::move(o));
     }
   return out;

@@ -5,6 +5,9 @@
 #include "search.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
 
 namespace roomsense::detail {
 namespace {
@@ -27,6 +30,27 @@ class ColumnPrefix {
 
  private:
   int nz_;
+  std::vector<int> sums_;
+};
+
+// Counts over axis-aligned boxes of cells in O(1) (a summed-area table).
+class BoxCounts {
+ public:
+  BoxCounts(const GridSpec& spec) : nx_(spec.nx), nz_(spec.nz), sums_(std::size_t(nx_ + 1) * std::size_t(nz_ + 1), 0) {}
+  template <class Pred>
+  void fill(const GridSpec& spec, Pred pred) {
+    for (int z = 0; z < nz_; ++z)
+      for (int x = 0; x < nx_; ++x)
+        at(x + 1, z + 1) = at(x, z + 1) + at(x + 1, z) - at(x, z) + (pred(spec.column(x, z)) ? 1 : 0);
+  }
+  int sum(glm::ivec2 lo, glm::ivec2 hi) const {  // inclusive; lo and hi inside the grid
+    return at(hi.x + 1, hi.y + 1) - at(lo.x, hi.y + 1) - at(hi.x + 1, lo.y) + at(lo.x, lo.y);
+  }
+
+ private:
+  int& at(int x, int z) { return sums_[std::size_t(z) * std::size_t(nx_ + 1) + std::size_t(x)]; }
+  int at(int x, int z) const { return sums_[std::size_t(z) * std::size_t(nx_ + 1) + std::size_t(x)]; }
+  int nx_, nz_;
   std::vector<int> sums_;
 };
 
@@ -53,7 +77,13 @@ class CentreSet {
 
 Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Surface surface,
                           const SizeRange& size, float fill) {
-  const std::vector<RingOffset> ring = ring_offsets(size, Shape::Square);
+  // The orientations, split by the parity of dx - dz (= that of dx + dz), most nearly axis-aligned first.
+  std::vector<RingOffset> ring = ring_offsets(size, Shape::Square);
+  std::stable_sort(ring.begin(), ring.end(), [](const RingOffset& a, const RingOffset& b) {
+    return std::abs(std::atan2(double(a.dz), double(a.dx))) < std::abs(std::atan2(double(b.dz), double(b.dx)));
+  });
+  std::array<std::vector<RingOffset>, 2> by_parity;
+  for (RingOffset& o : ring) by_parity[std::size_t((o.dx - o.dz) & 1)].push_back(std::move(o));
   const FloorCeiling& levels = features.levels;
   // The levels searched: one for floors (I_Floor + 1) and ceilings (I_Ceiling - 1), (I_Floor, I_yEnd] for
   // furniture (Eq. 3.40), whose tops C holds as the level above the top voxel (Eq. 3.13).
@@ -63,6 +93,18 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
 
   Candidates out;
   ColumnPrefix suitable(spec), walls(spec), raised(spec);
+  BoxCounts box_unsuitable(spec), box_raised(spec), box_first(spec), box_walls(spec);
+  box_walls.fill(spec, [&](std::size_t col) { return features.walls[col] != 0; });
+  // Every orientation's square holds the disk of radius d_min / 2 around its centre, and so the cells inside
+  // the box inscribed in that disk: if those alone hold a wall or too many unsuitable cells, no orientation
+  // can be valid.
+  const double inner_half = size.min_d / (2.0 * std::numbers::sqrt2) - 0.5;
+  double most_missing = -1.0;
+  for (const auto& parity : by_parity)
+    for (const RingOffset& o : parity)
+      most_missing = std::max(most_missing, double(o.cells) - double(fill) * (o.d + 1.0) * (o.d + 1.0));
+  // A centre is at most d / √2 from each corner, so corner 1 lies in this box around it (in voxels).
+  const int corner_reach = int(std::ceil(size.max_d * 0.7072)) + 1;
   walls.fill(spec, [&](std::size_t col) { return features.walls[col] != 0; });
   // Centres found so far, per level of the squares' corners (y_actual for furniture, Eq. 3.41).
   std::vector<CentreSet> centres(std::size_t(y_to - y_from + 2), CentreSet(spec));
@@ -79,44 +121,79 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
     }
     if (std::none_of(first.begin(), first.end(), [](std::uint8_t t) { return t != 0; })) continue;
     suitable.fill(spec, [&](std::size_t col) { return tile[col] != 0; });
-    if (surface == Surface::Furniture) raised.fill(spec, [&](std::size_t col) { return features.furniture[col] == y1 + 1; });
+    box_unsuitable.fill(spec, [&](std::size_t col) { return tile[col] == 0; });  // walls are never tiles
+    box_first.fill(spec, [&](std::size_t col) { return first[col] != 0; });
+    if (surface == Surface::Furniture) {
+      raised.fill(spec, [&](std::size_t col) { return features.furniture[col] == y1 + 1; });
+      box_raised.fill(spec, [&](std::size_t col) { return features.furniture[col] == y1 + 1; });
+    }
     CentreSet& here = centres[std::size_t(y1 - y_from)];
     CentreSet& above = centres[std::size_t(y1 - y_from + 1)];
+    const bool may_rise = surface == Surface::Furniture;
     const auto is_tile = [&](int x, int z) {
       return x >= 0 && z >= 0 && x < spec.nx && z < spec.nz && tile[spec.column(x, z)] != 0;
     };
 
-    for (int z1 = 0; z1 < spec.nz; ++z1)
-      for (int x1 = 0; x1 < spec.nx; ++x1) {
-        if (!first[spec.column(x1, z1)]) continue;
-        for (const RingOffset& o : ring) {
+    // Eq. 3.30-3.38 for the square with first corner (x1, z1) and offset o: every cell it reaches into; none a
+    // wall, 95 % of (d + 1)² suitable. Where the square's bounding box holds only tiles, all its cells are
+    // suitable; otherwise count them, giving up once more cells are unsuitable than the 95 % allow. Returns
+    // whether it is valid, and in `rises` whether a cell is one level higher (y_Actual, Eq. 3.41).
+    const auto valid = [&](int x1, int z1, const RingOffset& o, bool& rises) {
+      const double may_miss = double(o.cells) - double(fill) * (o.d + 1.0) * (o.d + 1.0);
+      if (may_miss < 0.0) return false;
+      rises = false;
+      const glm::ivec2 box_lo = glm::ivec2(x1, z1) + o.box_lo, box_hi = glm::ivec2(x1, z1) + o.box_hi;
+      const bool box_inside = box_lo.x >= 0 && box_lo.y >= 0 && box_hi.x < spec.nx && box_hi.y < spec.nz;
+      if (box_inside && box_unsuitable.sum(box_lo, box_hi) == 0) {
+        if (may_rise && box_raised.sum(box_lo, box_hi) > 0)
+          for (const CellRun& run : o.runs) rises = rises || raised.sum(x1 + run.dx, z1 + run.dz_lo, z1 + run.dz_hi) > 0;
+        return true;
+      }
+      int missing = 0;
+      for (const CellRun& run : o.runs) {
+        const int x = x1 + run.dx, lo = z1 + run.dz_lo, hi = z1 + run.dz_hi;  // inside: the corners are
+        missing += hi - lo + 1 - suitable.sum(x, lo, hi);
+        if (double(missing) > may_miss || walls.sum(x, lo, hi) > 0) return false;
+        if (may_rise && !rises) rises = raised.sum(x, lo, hi) > 0;
+      }
+      return true;
+    };
+
+    // Eq. 3.44 keeps one square per centre, so we search centre by centre (on the half-voxel lattice where
+    // square centres lie) and stop at the first valid orientation, most nearly axis-aligned first: the same
+    // centres as the thesis's loop over first corners, found without trying every orientation of each.
+    for (int cz = 0; cz <= 2 * (spec.nz - 1); ++cz)
+      for (int cx = 0; cx <= 2 * (spec.nx - 1); ++cx) {
+        if ((cx - cz) % 2 != 0) continue;  // dx - dz and dx + dz share their parity: no square centres here
+        const glm::ivec3 sum(2 * cx, 0, 2 * cz);
+        const glm::ivec2 near_lo = glm::max(glm::ivec2(cx / 2 - corner_reach, cz / 2 - corner_reach), glm::ivec2(0));
+        const glm::ivec2 near_hi =
+            glm::min(glm::ivec2(cx / 2 + corner_reach, cz / 2 + corner_reach), glm::ivec2(spec.nx - 1, spec.nz - 1));
+        if (box_first.sum(near_lo, near_hi) == 0) continue;  // no first corner anywhere near: no square
+        if (inner_half >= 0.0) {
+          const glm::ivec2 in_lo(int(std::ceil(0.5 * cx - inner_half)), int(std::ceil(0.5 * cz - inner_half)));
+          const glm::ivec2 in_hi(int(std::floor(0.5 * cx + inner_half)), int(std::floor(0.5 * cz + inner_half)));
+          if (in_lo.x >= 0 && in_lo.y >= 0 && in_hi.x < spec.nx && in_hi.y < spec.nz && in_lo.x <= in_hi.x &&
+              in_lo.y <= in_hi.y &&
+              (box_walls.sum(in_lo, in_hi) > 0 || double(box_unsuitable.sum(in_lo, in_hi)) > most_missing))
+            continue;
+        }
+        bool need_here = !here.contains(sum), need_above = may_rise && !above.contains(sum);
+        for (const RingOffset& o : by_parity[std::size_t(cx & 1)]) {
+          if (!need_here && !need_above) break;
+          const int x1 = (cx - (o.dx - o.dz)) / 2, z1 = (cz - (o.dx + o.dz)) / 2;
           const int x2 = x1 + o.dx, z2 = z1 + o.dz;
           const int x3 = x2 - o.dz, z3 = z2 + o.dx;  // Eq. 3.28
           const int x4 = x1 - o.dz, z4 = z1 + o.dx;
+          if (x1 < 0 || z1 < 0 || x1 >= spec.nx || z1 >= spec.nz || !first[spec.column(x1, z1)]) continue;
           if (!is_tile(x2, z2) || !is_tile(x3, z3) || !is_tile(x4, z4)) continue;
-          const glm::ivec3 sum(x1 + x2 + x3 + x4, 0, z1 + z2 + z3 + z4);
-          // A square whose centre an earlier valid square of this search holds is dropped by Eq. 3.44 anyway.
-          const bool may_rise = surface == Surface::Furniture;
-          if (here.contains(sum) && (!may_rise || above.contains(sum))) continue;
-
-          // Eq. 3.30-3.38: every cell the square reaches into; none a wall, 95 % of (d + 1)² suitable. Gives up
-          // once more cells are unsuitable than that allows.
-          const double may_miss = double(o.cells) - double(fill) * (o.d + 1.0) * (o.d + 1.0);
-          int missing = 0;
-          bool fails = may_miss < 0.0, rises = false;
-          for (std::size_t r = 0; r < o.runs.size() && !fails; ++r) {
-            const CellRun& run = o.runs[r];
-            const int x = x1 + run.dx, lo = z1 + run.dz_lo, hi = z1 + run.dz_hi;  // inside: the corners are
-            const int cells = hi - lo + 1;
-            missing += cells - suitable.sum(x, lo, hi);
-            fails = double(missing) > may_miss || walls.sum(x, lo, hi) > 0;
-            if (may_rise && !rises) rises = raised.sum(x, lo, hi) > 0;
-          }
-          if (fails) continue;
+          bool rises = false;
+          if (!valid(x1, z1, o, rises)) continue;
+          bool& needed = rises ? need_above : need_here;
+          if (!needed) continue;
+          needed = false;
+          (rises ? above : here).insert(sum);
           const int y = rises ? y1 + 1 : y1;  // y_Actual, Eq. 3.41
-          CentreSet& level = rises ? above : here;
-          if (level.contains(sum)) continue;
-          level.insert(sum);
           out.push_back({{glm::ivec3(x1, y, z1), glm::ivec3(x2, y, z2), glm::ivec3(x3, y, z3), glm::ivec3(x4, y, z4)}});
         }
       }

@@ -4,7 +4,10 @@
 #include "reduce.h"
 #include "search.h"
 
+#include <algorithm>
 #include <chrono>
+#include <numbers>
+#include <string>
 
 namespace roomsense {
 namespace {
@@ -25,20 +28,38 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
 
   // §3.3: task t searches type t / 3 in size t % 3. Each writes only its own slot.
   const NormalCounts normals = count_normals(spec, features);
+  // The corners a search starts from, for its cost estimate: voxels with a normal, or tiles.
+  const auto count_if = [](const auto& v, auto pred) { return double(std::count_if(v.begin(), v.end(), pred)); };
+  const std::array<double, 4> starts = {
+      count_if(features.normals, [](std::uint8_t n) { return n != 0; }),
+      count_if(features.free_floor, [](std::uint8_t t) { return t != 0; }),
+      count_if(features.free_ceiling, [](std::uint8_t t) { return t != 0; }),
+      count_if(features.furniture, [](int c) { return c != kNoFurniture; })};
   std::array<std::array<Candidates, 3>, 4> found;
+  std::array<bool, 12> skipped{};
   parallel_tasks(12, threads, [&](std::size_t t) {
     const std::size_t type = t / 3, size = t % 3;
+    const SizeRange range =
+        type == 0 ? size_range(params.wall_width[size], params.wall_height[size], params.width_tolerance, voxel)
+                  : size_range(params.square_width[size], params.square_width[size], params.width_tolerance, voxel);
+    // Half a ring of second corners per first one (Eq. 3.21); squares try about four centres per tile.
+    const double ring = 0.5 * std::numbers::pi * (range.max_d * range.max_d - range.min_d * range.min_d);
+    if (starts[type] * ring * (type == 0 ? 1.0 : 2.0) > kAreaSearchBudget) {
+      skipped[t] = true;
+      return;
+    }
     if (type == 0) {
-      const SizeRange range =
-          size_range(params.wall_width[size], params.wall_height[size], params.width_tolerance, voxel);
       found[type][size] = search_walls(spec, features, normals, range, params.wall_fill);
       return;
     }
-    const SizeRange range =
-        size_range(params.square_width[size], params.square_width[size], params.width_tolerance, voxel);
     const Surface surface = type == 1 ? Surface::Floor : type == 2 ? Surface::Ceiling : Surface::Furniture;
     found[type][size] = search_squares(spec, features, surface, range, params.horizontal_fill);
   });
+  for (std::size_t t = 0; t < skipped.size(); ++t)
+    if (skipped[t])
+      result.warnings.push_back(std::string(to_string(kAreaSizes[t % 3])) + " " + std::string(to_string(kAreaTypes[t / 3])) +
+                                " areas not searched: too costly at " + std::to_string(voxel).substr(0, 5) +
+                                " m voxels for this room (use --voxel 0.1, the thesis's size)");
   result.timings.search = elapsed_ms(clock);
   clock = std::chrono::steady_clock::now();
 

@@ -77,6 +77,7 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
                                   options.features, options.threads);
     r.areas = std::move(found.areas);
     r.area_counts = found.counts;
+    r.warnings.insert(r.warnings.end(), found.warnings.begin(), found.warnings.end());
     r.timings.areas = found.timings.search;
     r.timings.reduce = found.timings.reduce;
     r.timings.classify = found.timings.classify;

@@ -1,4 +1,5 @@
 // Room features of §3.2 against the synthetic rooms' ground truth.
+#include "roomsense/analysis.h"
 #include "roomsense/features.h"
 #include "roomsense/synthetic.h"
 #include "synthetic_fixture.h"
@@ -224,6 +225,20 @@ TEST(WallNormals, NoneFaceAWindowOpening) {
           EXPECT_EQ(f.walls[s.column(x + dx, z + dz)], 0) << "wall column in the window at u = " << u;
         }
   }
+}
+
+TEST(Levels, PointCloudFloorAndCeilingAtTheirSurfaces) {
+  // Vertex mode (the thesis's input) has no normals: the wall points in the floor and ceiling bands must not
+  // pull the measured heights off the surfaces.
+  synth::RoomSpec spec = synth::default_room();
+  spec.floor_y = -1.3f;
+  spec.ceiling_y = 1.3f;
+  Scan cloud = synth::generate(spec);
+  cloud.indices.clear();
+  const AnalysisResult r = analyze(cloud);
+  ASSERT_TRUE(r.ok());
+  EXPECT_NEAR(r.floor_y, spec.floor_y, 0.02f);
+  EXPECT_NEAR(r.ceiling_y, spec.ceiling_y, 0.02f);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace roomsense::detail {
@@ -25,8 +26,16 @@ float surface_height(const GridSpec& spec, std::span<const glm::vec3> vertices,
       weight += area2;
     }
   } else {
+    // A point cloud has no normals: wall points spread evenly over the band while the surface's pile up, so
+    // take the fullest 1 cm bin and average the points within a bin of it.
+    constexpr float kBin = 0.01f;
+    std::vector<std::uint32_t> bins(std::size_t(std::max(1.0f, std::ceil((y_hi - y_lo) / kBin))), 0);
+    const auto bin_of = [&](float y) { return std::min(bins.size() - 1, std::size_t((y - y_lo) / kBin)); };
     for (const glm::vec3& v : vertices)
-      if (in_band(v.y)) {
+      if (in_band(v.y)) ++bins[bin_of(v.y)];
+    const std::size_t peak = std::size_t(std::max_element(bins.begin(), bins.end()) - bins.begin());
+    for (const glm::vec3& v : vertices)
+      if (in_band(v.y) && bin_of(v.y) + 1 >= peak && bin_of(v.y) <= peak + 1) {
         weighted += v.y;
         weight += 1.0;
       }

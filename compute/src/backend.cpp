@@ -5,8 +5,11 @@
 #include "roomsense/error.h"
 #include "roomsense/vulkan_voxel_stage.h"
 
+#include <glm/common.hpp>
+
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -84,6 +87,18 @@ std::unique_ptr<VoxelStage> make_voxel_stage(Backend backend, std::size_t proble
   set(note, std::string("vulkan: ") + (backend == Backend::Auto ? "auto" : "requested") + ", on " + stage->device().name +
                 " (" + to_string(stage->device().kind) + ")");
   return stage;
+}
+
+std::size_t estimated_voxel_count(const Scan& scan, float voxel_size) {
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::vec3& v : scan.vertices)
+    if (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) {
+      lo = glm::min(lo, v);
+      hi = glm::max(hi, v);
+    }
+  if (!(lo.x <= hi.x) || !(voxel_size > 0.0f)) return 0;
+  const glm::dvec3 n = glm::dvec3(hi - lo) / double(voxel_size) + 1.0;
+  return std::size_t(std::min(n.x * n.y * n.z, 1e18));
 }
 
 }  // namespace roomsense

@@ -4,6 +4,7 @@
 #include "roomsense/analysis.h"
 #include "roomsense/error.h"
 #include "roomsense/export.h"
+#include "roomsense/report.h"
 #include "roomsense/scanio.h"
 #include "roomsense/quest_capture.h"
 #include "roomsense/synthetic.h"
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
@@ -40,20 +42,13 @@ std::string resolve_backend(const std::string& flag) {
   return v;
 }
 
-#if ROOMSENSE_HAVE_COMPUTE
-// The grid's voxel count from the scan's finite extents, for `auto`'s choice (outliers aside).
-std::size_t estimated_voxels(const Scan& scan, float voxel_size) {
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (const glm::vec3& v : scan.vertices)
-    if (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) {
-      lo = glm::min(lo, v);
-      hi = glm::max(hi, v);
-    }
-  if (!(lo.x <= hi.x) || !(voxel_size > 0.0f)) return 0;
-  const glm::dvec3 n = glm::dvec3(hi - lo) / double(voxel_size) + 1.0;
-  return std::size_t(std::min(n.x * n.y * n.z, 1e18));
+
+// The plan's heading: the scan's file name, or the synthetic:NAME source as given.
+std::string report_title(const std::string& source) {
+  if (synth::is_builtin_source(source)) return source;
+  const std::string name = std::filesystem::path(source).filename().string();
+  return name.empty() ? source : name;
 }
-#endif
 
 void write_text(const std::string& path, const std::string& text) {
   std::ofstream file(path);
@@ -85,7 +80,7 @@ int analyze_command(const std::vector<std::string>& args) {
     std::unique_ptr<VoxelStage> stage;
 #if ROOMSENSE_HAVE_COMPUTE
     std::string note;
-    stage = make_voxel_stage(parse_backend(backend), estimated_voxels(scan, options.voxel_size), &note);
+    stage = make_voxel_stage(parse_backend(backend), estimated_voxel_count(scan, options.voxel_size), &note);
     // Say why only when Vulkan was asked for and not given; auto's choice is in the JSON's grid.backend.
     if (backend == "vulkan" && stage->name() != "vulkan") std::fprintf(stderr, "roomsense analyze: %s\n", note.c_str());
 #else
@@ -98,6 +93,10 @@ int analyze_command(const std::vector<std::string>& args) {
     if (options.bounds_path) {
       if (!result.ok()) throw Error(ErrorCode::BadParameter, "no bounds to write: " + result.status_message);
       write_bounds(result.bounds, *options.bounds_path);
+    }
+    if (options.report_dir) {
+      if (!result.ok()) throw Error(ErrorCode::BadParameter, "no report to write: " + result.status_message);
+      write_report(report_input(result, scan, report_title(options.scan)), *options.report_dir);
     }
     if (options.json_path) write_text(*options.json_path, analysis_json(result, {options.scan, load_ms}));
     else std::fputs(summary(result, options.scan, load_ms).c_str(), stdout);

@@ -16,6 +16,9 @@ SCAN                  an OBJ, PLY, glTF or GLB file, a Quest scene capture (.jso
 options:
   --json OUT.json     write the analysis (schema roomsense.analysis/1); without it, print a summary
   --bounds OUT.obj    write the room-bounds mesh (.obj or .glb)
+  --report DIR        write pictures into DIR (created if needed): plan.svg, a top view of
+                      footprint, walls, furniture tops and areas coloured by reach; scene.glb,
+                      the scan, the bounds and the areas as glTF nodes a viewer can toggle
   --up y|z            the scan's up axis (default y)
   --units m|cm|mm     the scan's length unit (default m)
   --left-handed       the scan is left-handed (Unity with --up y, Unreal with --up z)
@@ -56,6 +59,7 @@ AnalyzeOptions parse_analyze_options(const std::vector<std::string>& args) {
     };
     if (a == "--json") o.json_path = value();
     else if (a == "--bounds") o.bounds_path = value();
+    else if (a == "--report") o.report_dir = value();
     else if (a == "--up") {
       const std::string& v = value();
       if (v == "y") o.frame.up = UpAxis::Y;

@@ -1,5 +1,6 @@
 // Choosing the voxel-stage backend: `--backend`, ROOMSENSE_BACKEND, or the extension's create info.
 #pragma once
+#include "roomsense/scan.h"
 #include "roomsense/voxelize.h"
 
 #include <cstddef>
@@ -26,6 +27,10 @@ inline constexpr std::size_t kVulkanCrossoverVoxels = std::size_t{1} << 21;
 // The stage for `backend`. `problem_size_hint` is the grid's voxel count (GridSpec::voxel_count), used by
 // Auto. Never returns nullptr: when Vulkan is asked for but unavailable, it returns the CPU stage and says
 // why in *note (also set to a one-line account of the choice otherwise).
+// The voxel count of the grid a scan's finite extents need, before outlier rejection: the size hint for
+// make_voxel_stage's Auto choice. 0 for a scan without finite vertices.
+std::size_t estimated_voxel_count(const Scan& scan, float voxel_size);
+
 std::unique_ptr<VoxelStage> make_voxel_stage(Backend backend, std::size_t problem_size_hint,
                                              std::string* note = nullptr);
 

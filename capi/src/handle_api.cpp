@@ -1,0 +1,390 @@
+// The handle-based C API (roomsense.h): one Job per analyzer, no globals. The worker converts the scan,
+// runs analyze() and turns its result into the C structs once, so that the getters only copy under the
+// job's lock.
+#include "roomsense/roomsense.h"
+
+#include "job.h"
+#include "roomsense/analysis.h"
+#include "roomsense/error.h"
+#include "roomsense/scan.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <limits>
+#include <new>
+#include <string>
+#include <system_error>
+#include <vector>
+
+// The C structs are part of the ABI that bindings (C#, Python ctypes) copy: 4-byte enums, no padding.
+static_assert(sizeof(rs_result) == 4 && sizeof(rs_area_type) == 4 && sizeof(rs_state) == 4);
+static_assert(sizeof(rs_vec3) == 12 && sizeof(rs_quat) == 16);
+static_assert(sizeof(rs_area) == 4 * 4 + 2 * 12 + 16 + 4 * 12 + 4 * 4);
+static_assert(sizeof(rs_analyzer_options) == 7 * 4);
+
+namespace roomsense::capi {
+
+// A finished compute, already in C form. The default is an internal failure, what a job that threw holds.
+struct HandleOutput {
+  rs_result status = RS_ERROR_INTERNAL;
+  std::string message = "internal error";
+  rs_layout layout{};
+  std::vector<rs_storey> storeys;
+  std::vector<rs_area> areas;
+  std::vector<float> bounds_xyz;
+  std::vector<std::uint32_t> bounds_indices;
+};
+
+namespace {
+
+rs_vec3 to_c(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+rs_area to_c(const Area& a) {
+  rs_area c{};
+  c.type = static_cast<rs_area_type>(a.type);
+  c.size = static_cast<rs_area_size>(a.size);
+  c.reach = static_cast<rs_reach>(a.reach);
+  c.flags = a.flags;
+  c.center = to_c(a.center);
+  c.normal = to_c(a.normal);
+  const glm::quat q = a.orientation();
+  c.orientation = {q.x, q.y, q.z, q.w};
+  for (std::size_t i = 0; i < 4; ++i) c.corners[i] = to_c(a.corners[i]);
+  c.half_width = a.half_width;
+  c.half_height = a.half_height;
+  c.rotation_deg = a.rotation_deg;
+  c.volume_height = a.volume_height;
+  return c;
+}
+
+std::uint32_t clamp_u32(std::size_t n) {
+  return static_cast<std::uint32_t>(std::min<std::size_t>(n, std::numeric_limits<std::uint32_t>::max()));
+}
+
+rs_result to_result(ErrorCode code) {
+  switch (code) {
+    case ErrorCode::EmptyInput: return RS_ERROR_EMPTY_INPUT;
+    case ErrorCode::SizeNotMultipleOfThree: return RS_ERROR_INVALID_ARGUMENT;
+    case ErrorCode::BadIndices: return RS_ERROR_BAD_INDICES;
+    case ErrorCode::NoValidVertices: return RS_ERROR_NO_VALID_VERTICES;
+    case ErrorCode::GridTooLarge: return RS_ERROR_GRID_TOO_LARGE;
+    case ErrorCode::BadParameter: return RS_ERROR_INVALID_ARGUMENT;
+    case ErrorCode::Io: return RS_ERROR_INTERNAL;
+  }
+  return RS_ERROR_INTERNAL;
+}
+
+HandleOutput convert(const AnalysisResult& r) {
+  HandleOutput out;
+  const GridSpec& spec = r.voxels.grid.spec;
+  rs_layout& l = out.layout;
+  l.floor_y = r.floor_y;
+  l.ceiling_y = r.ceiling_y;
+  l.input_vertex_count = clamp_u32(r.input.vertices);
+  l.input_triangle_count = clamp_u32(r.input.triangles);
+  l.skipped_vertex_count = clamp_u32(r.input.skipped_vertices);
+  l.outlier_vertex_count = clamp_u32(r.input.outlier_vertices);
+  l.voxel_size = spec.voxel_size;
+  l.grid_origin = to_c(spec.origin);
+  l.grid_dims[0] = static_cast<std::uint32_t>(spec.nx);
+  l.grid_dims[1] = static_cast<std::uint32_t>(spec.ny);
+  l.grid_dims[2] = static_cast<std::uint32_t>(spec.nz);
+  const StageTimings& t = r.timings;
+  l.timings = {t.prepare, t.voxelize, t.features, t.areas, t.reduce, t.classify, t.bounds, t.total};
+
+  out.message = r.status_message;
+  for (const std::string& warning : r.warnings) out.message += "; " + warning;
+  if (!r.ok()) {
+    out.status = RS_ERROR_NO_ROOM;
+    return out;
+  }
+  for (const Storey& s : r.storeys) out.storeys.push_back({s.floor_y, s.ceiling_y});
+  out.areas.reserve(r.areas.size());
+  for (const Area& a : r.areas) out.areas.push_back(to_c(a));
+  out.bounds_xyz.reserve(r.bounds.vertices.size() * 3);
+  for (const glm::vec3& v : r.bounds.vertices) out.bounds_xyz.insert(out.bounds_xyz.end(), {v.x, v.y, v.z});
+  out.bounds_indices = r.bounds.indices;
+  if (out.storeys.size() > 0xffffffffu || out.areas.size() > 0xffffffffu || r.bounds.vertices.size() > 0xffffffffu ||
+      out.bounds_indices.size() > 0xffffffffu) {
+    out.status = RS_ERROR_INTERNAL;
+    out.message = "a result too large for 32-bit counts";
+    return out;
+  }
+  l.storey_count = static_cast<std::uint32_t>(out.storeys.size());
+  l.area_count = static_cast<std::uint32_t>(out.areas.size());
+  l.bounds_vertex_count = static_cast<std::uint32_t>(r.bounds.vertices.size());
+  l.bounds_index_count = static_cast<std::uint32_t>(out.bounds_indices.size());
+  out.status = RS_SUCCESS;
+  return out;
+}
+
+HandleOutput run(Scan& scan, const SourceFrame& frame, const AnalysisOptions& options) {
+  try {
+    convert_to_roomsense_frame(scan, frame);
+    return convert(analyze(scan, options));
+  } catch (const Error& e) {
+    HandleOutput out;
+    out.status = to_result(e.code());
+    out.message = e.what();
+    return out;
+  } catch (const std::bad_alloc&) {
+    HandleOutput out;
+    out.status = RS_ERROR_OUT_OF_MEMORY;
+    out.message = "out of memory";
+    return out;
+  } catch (const std::exception& e) {
+    HandleOutput out;
+    out.message = std::string("internal error: ") + e.what();
+    return out;
+  }
+}
+
+}  // namespace
+}  // namespace roomsense::capi
+
+struct rs_analyzer {
+  roomsense::AnalysisOptions options;
+  roomsense::SourceFrame frame;
+  roomsense::capi::Job<roomsense::capi::HandleOutput> job;
+};
+
+namespace roomsense::capi {
+namespace {
+
+// What the getters share: calls f with the result when one is ready (or failed, if failed_too), else
+// says why not.
+template <class F>
+rs_result with_ready_output(rs_analyzer* analyzer, bool failed_too, F&& f) {
+  if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
+  return analyzer->job.inspect([&](JobPhase phase, const HandleOutput* out) -> rs_result {
+    if (phase == JobPhase::Running) return RS_ERROR_NOT_READY;
+    if (phase == JobPhase::Idle || out == nullptr) return RS_ERROR_NO_RESULT;
+    if (out->status != RS_SUCCESS && !failed_too) return out->status;
+    return f(*out);
+  });
+}
+
+// The two-call idiom for one array: count always set; the elements copied when capacity suffices.
+template <class T>
+rs_result copy_out(const std::vector<T>& from, std::uint32_t capacity, std::uint32_t* count, T* to) {
+  *count = static_cast<std::uint32_t>(from.size());
+  if (capacity == 0) return RS_SUCCESS;
+  if (capacity < from.size()) return RS_ERROR_SIZE_INSUFFICIENT;
+  if (!from.empty()) std::memcpy(to, from.data(), from.size() * sizeof(T));
+  return RS_SUCCESS;
+}
+
+rs_result guarded(auto&& body) {
+  try {
+    return body();
+  } catch (const std::bad_alloc&) {
+    return RS_ERROR_OUT_OF_MEMORY;
+  } catch (...) {
+    return RS_ERROR_INTERNAL;
+  }
+}
+
+}  // namespace
+}  // namespace roomsense::capi
+
+using namespace roomsense::capi;
+
+extern "C" {
+
+const char* rs_result_string(rs_result result) {
+  switch (result) {
+#define RS_NAME(x) \
+  case x: return #x;
+    RS_NAME(RS_SUCCESS)
+    RS_NAME(RS_ERROR_INVALID_ARGUMENT)
+    RS_NAME(RS_ERROR_HANDLE_INVALID)
+    RS_NAME(RS_ERROR_SIZE_INSUFFICIENT)
+    RS_NAME(RS_ERROR_BUSY)
+    RS_NAME(RS_ERROR_NOT_READY)
+    RS_NAME(RS_ERROR_NO_RESULT)
+    RS_NAME(RS_ERROR_EMPTY_INPUT)
+    RS_NAME(RS_ERROR_BAD_INDICES)
+    RS_NAME(RS_ERROR_NO_VALID_VERTICES)
+    RS_NAME(RS_ERROR_GRID_TOO_LARGE)
+    RS_NAME(RS_ERROR_NO_ROOM)
+    RS_NAME(RS_ERROR_OUT_OF_MEMORY)
+    RS_NAME(RS_ERROR_INTERNAL)
+#undef RS_NAME
+    default: break;
+  }
+  return "RS_UNKNOWN_RESULT";
+}
+
+uint32_t rs_api_version(void) { return RS_API_VERSION; }
+
+void rs_analyzer_options_init(rs_analyzer_options* options) {
+  if (options == nullptr) return;
+  *options = rs_analyzer_options{};
+  options->struct_size = sizeof(rs_analyzer_options);
+  options->voxel_size = roomsense::kDefaultVoxelSize;
+  options->compute_flags = RS_COMPUTE_AREAS | RS_COMPUTE_BOUNDS;
+  options->up_axis = RS_UP_AXIS_Y;
+  options->units = RS_UNITS_METRES;
+}
+
+rs_result rs_analyzer_create(const rs_analyzer_options* options, rs_analyzer** out) {
+  if (out == nullptr) return RS_ERROR_INVALID_ARGUMENT;
+  *out = nullptr;
+  rs_analyzer_options o;
+  rs_analyzer_options_init(&o);
+  if (options != nullptr) {
+    if (options->struct_size < sizeof(rs_analyzer_options)) return RS_ERROR_INVALID_ARGUMENT;
+    o = *options;
+  }
+  const float voxel = o.voxel_size == 0.0f ? roomsense::kDefaultVoxelSize : o.voxel_size;
+  if (!(voxel >= roomsense::kMinVoxelSize && voxel <= roomsense::kMaxVoxelSize)) return RS_ERROR_INVALID_ARGUMENT;
+  if (o.up_axis != RS_UP_AXIS_Y && o.up_axis != RS_UP_AXIS_Z) return RS_ERROR_INVALID_ARGUMENT;
+  if (o.units != RS_UNITS_METRES && o.units != RS_UNITS_CENTIMETRES && o.units != RS_UNITS_MILLIMETRES)
+    return RS_ERROR_INVALID_ARGUMENT;
+  const std::uint32_t all = RS_COMPUTE_AREAS | RS_COMPUTE_BOUNDS;
+  if ((o.compute_flags & ~all) != 0) return RS_ERROR_INVALID_ARGUMENT;
+  const std::uint32_t flags = o.compute_flags == 0 ? all : o.compute_flags;
+  return guarded([&] {
+    auto* a = new rs_analyzer;
+    a->options.voxel_size = voxel;
+    a->options.threads = o.thread_count;
+    a->options.find_areas = (flags & RS_COMPUTE_AREAS) != 0;
+    a->options.build_bounds = (flags & RS_COMPUTE_BOUNDS) != 0;
+    a->frame.up = o.up_axis == RS_UP_AXIS_Z ? roomsense::UpAxis::Z : roomsense::UpAxis::Y;
+    a->frame.units = o.units == RS_UNITS_CENTIMETRES   ? roomsense::Units::Centimetres
+                     : o.units == RS_UNITS_MILLIMETRES ? roomsense::Units::Millimetres
+                                                       : roomsense::Units::Metres;
+    a->frame.left_handed = o.left_handed != 0;
+    *out = a;
+    return RS_SUCCESS;
+  });
+}
+
+void rs_analyzer_destroy(rs_analyzer* analyzer) {
+  try {
+    delete analyzer;  // ~Job joins a running worker
+  } catch (...) {
+  }
+}
+
+rs_result rs_analyzer_compute(rs_analyzer* analyzer, const float* xyz, uint32_t vertex_count, const uint32_t* indices,
+                              uint32_t index_count) {
+  if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
+  if (xyz == nullptr || vertex_count == 0) return RS_ERROR_EMPTY_INPUT;
+  if (index_count % 3 != 0 || (indices == nullptr && index_count != 0)) return RS_ERROR_BAD_INDICES;
+  for (uint32_t i = 0; i < index_count; ++i)
+    if (indices[i] >= vertex_count) return RS_ERROR_BAD_INDICES;
+  if (analyzer->job.phase() == JobPhase::Running) return RS_ERROR_BUSY;  // before copying a large scan
+  return guarded([&] {
+    roomsense::Scan scan;
+    scan.vertices.resize(vertex_count);
+    for (std::size_t i = 0; i < vertex_count; ++i)
+      scan.vertices[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+    scan.indices.assign(indices, indices + index_count);
+    const roomsense::SourceFrame frame = analyzer->frame;
+    const roomsense::AnalysisOptions options = analyzer->options;
+    try {
+      const bool started = analyzer->job.start(
+          [scan = std::move(scan), frame, options]() mutable { return run(scan, frame, options); },
+          /*replace_result=*/true);
+      return started ? RS_SUCCESS : RS_ERROR_BUSY;
+    } catch (const std::system_error&) {
+      return RS_ERROR_INTERNAL;  // no thread could be started
+    }
+  });
+}
+
+rs_result rs_analyzer_state(rs_analyzer* analyzer, rs_state* out) {
+  if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
+  if (out == nullptr) return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    *out = analyzer->job.inspect([](JobPhase phase, const HandleOutput* o) {
+      if (phase == JobPhase::Running) return RS_STATE_RUNNING;
+      if (phase == JobPhase::Idle || o == nullptr) return RS_STATE_IDLE;
+      return o->status == RS_SUCCESS ? RS_STATE_READY : RS_STATE_FAILED;
+    });
+    return RS_SUCCESS;
+  });
+}
+
+rs_result rs_analyzer_wait(rs_analyzer* analyzer, uint32_t timeout_ms, rs_state* out) {
+  if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
+  return guarded([&] {
+    if (timeout_ms == RS_WAIT_INFINITE)
+      analyzer->job.wait();
+    else
+      analyzer->job.wait_for(std::chrono::milliseconds(timeout_ms));
+    rs_state state;
+    const rs_result r = rs_analyzer_state(analyzer, &state);
+    if (r == RS_SUCCESS && out != nullptr) *out = state;
+    return r;
+  });
+}
+
+rs_result rs_analyzer_get_layout(rs_analyzer* analyzer, rs_layout* out) {
+  if (analyzer != nullptr && out == nullptr) return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    return with_ready_output(analyzer, false, [&](const HandleOutput& o) {
+      *out = o.layout;
+      return RS_SUCCESS;
+    });
+  });
+}
+
+rs_result rs_analyzer_get_storeys(rs_analyzer* analyzer, uint32_t capacity, uint32_t* count, rs_storey* storeys) {
+  if (analyzer != nullptr && (count == nullptr || (capacity != 0 && storeys == nullptr)))
+    return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    return with_ready_output(analyzer, false,
+                             [&](const HandleOutput& o) { return copy_out(o.storeys, capacity, count, storeys); });
+  });
+}
+
+rs_result rs_analyzer_get_areas(rs_analyzer* analyzer, uint32_t capacity, uint32_t* count, rs_area* areas) {
+  if (analyzer != nullptr && (count == nullptr || (capacity != 0 && areas == nullptr)))
+    return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    return with_ready_output(analyzer, false,
+                             [&](const HandleOutput& o) { return copy_out(o.areas, capacity, count, areas); });
+  });
+}
+
+rs_result rs_analyzer_get_bounds(rs_analyzer* analyzer, uint32_t vertex_capacity, uint32_t* vertex_count, float* xyz,
+                                 uint32_t index_capacity, uint32_t* index_count, uint32_t* indices) {
+  if (analyzer != nullptr &&
+      (vertex_count == nullptr || index_count == nullptr || (vertex_capacity != 0 && xyz == nullptr) ||
+       (index_capacity != 0 && indices == nullptr)))
+    return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    return with_ready_output(analyzer, false, [&](const HandleOutput& o) {
+      const std::size_t vertices = o.bounds_xyz.size() / 3;
+      *vertex_count = static_cast<uint32_t>(vertices);
+      *index_count = static_cast<uint32_t>(o.bounds_indices.size());
+      if (vertex_capacity == 0 && index_capacity == 0) return RS_SUCCESS;
+      if (vertex_capacity < vertices || index_capacity < o.bounds_indices.size()) return RS_ERROR_SIZE_INSUFFICIENT;
+      if (!o.bounds_xyz.empty()) std::memcpy(xyz, o.bounds_xyz.data(), o.bounds_xyz.size() * sizeof(float));
+      if (!o.bounds_indices.empty())
+        std::memcpy(indices, o.bounds_indices.data(), o.bounds_indices.size() * sizeof(uint32_t));
+      return RS_SUCCESS;
+    });
+  });
+}
+
+rs_result rs_analyzer_get_message(rs_analyzer* analyzer, uint32_t capacity, uint32_t* count, char* buffer) {
+  if (analyzer != nullptr && (count == nullptr || (capacity != 0 && buffer == nullptr)))
+    return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    return with_ready_output(analyzer, true, [&](const HandleOutput& o) {
+      const std::size_t needed = std::min<std::size_t>(o.message.size() + 1, 0xffffffffu);
+      *count = static_cast<uint32_t>(needed);
+      if (capacity == 0) return RS_SUCCESS;
+      if (capacity < needed) return RS_ERROR_SIZE_INSUFFICIENT;
+      std::memcpy(buffer, o.message.data(), needed - 1);
+      buffer[needed - 1] = '\0';
+      return RS_SUCCESS;
+    });
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,93 @@
+// scene.glb: the scan in grey, the translucent bounds and every area as a thin quad coloured by reach, each
+// its own named node of a GlbScene (export.h), so a glTF viewer can toggle them.
+#include "report/report_common.h"
+#include "roomsense/report.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace roomsense {
+namespace {
+
+constexpr float kAreaLift = 0.01f;  // metres in front of the surface, so the quad does not fight the scan
+constexpr std::array<float, 4> kScanGrey = {0.55f, 0.55f, 0.55f, 1.0f};
+constexpr std::array<float, 4> kBoundsColour = {0.95f, 0.72f, 0.30f, 0.30f};
+constexpr float kAreaAlpha = 0.75f;
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// glTF's baseColorFactor is linear; the report's colours are sRGB.
+std::array<float, 4> linear_rgba(std::string_view hex, float alpha) {
+  std::array<float, 4> c{0.0f, 0.0f, 0.0f, alpha};
+  for (int i = 0; i < 3 && hex.size() >= 7; ++i) {
+    const auto digit = [](char ch) {
+      return ch >= '0' && ch <= '9' ? ch - '0' : (ch >= 'a' && ch <= 'f' ? ch - 'a' + 10 : (ch >= 'A' && ch <= 'F' ? ch - 'A' + 10 : 0));
+    };
+    const float s = float(digit(hex[std::size_t(1 + 2 * i)]) * 16 + digit(hex[std::size_t(2 + 2 * i)])) / 255.0f;
+    c[std::size_t(i)] = s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
+  }
+  return c;
+}
+
+// All meshes as one, without non-finite vertices and without triangles that touch one or an index out of range.
+void merge_meshes(std::span<const Scan> meshes, std::vector<glm::vec3>& vertices, std::vector<std::uint32_t>& indices) {
+  constexpr std::uint32_t kDropped = std::numeric_limits<std::uint32_t>::max();
+  for (const Scan& s : meshes) {
+    std::vector<std::uint32_t> remap(s.vertices.size(), kDropped);
+    for (std::size_t i = 0; i < s.vertices.size(); ++i)
+      if (finite(s.vertices[i])) {
+        remap[i] = std::uint32_t(vertices.size());
+        vertices.push_back(s.vertices[i]);
+      }
+    for (std::size_t t = 0; t + 2 < s.indices.size(); t += 3) {
+      std::uint32_t tri[3];
+      bool keep = true;
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t i = s.indices[t + std::size_t(k)];
+        tri[k] = i < remap.size() ? remap[i] : kDropped;
+        keep = keep && tri[k] != kDropped;
+      }
+      if (keep) indices.insert(indices.end(), tri, tri + 3);
+    }
+  }
+}
+
+}  // namespace
+
+GlbScene scene_glb(const ReportInput& input) {
+  GlbScene scene;
+  {
+    std::vector<glm::vec3> vertices;
+    std::vector<std::uint32_t> indices;
+    merge_meshes(input.scan, vertices, indices);
+    scene.add_mesh("scan", vertices, indices, kScanGrey);
+  }
+  if (input.bounds != nullptr) {
+    const Scan bounds{input.bounds->vertices, input.bounds->indices};
+    std::vector<glm::vec3> vertices;
+    std::vector<std::uint32_t> indices;
+    merge_meshes(std::span<const Scan>(&bounds, 1), vertices, indices);
+    scene.add_mesh("bounds", vertices, indices, kBoundsColour);
+  }
+  for (std::size_t i = 0; i < input.areas.size(); ++i) {
+    const Area& a = input.areas[i];
+    if (!report_detail::drawable(a)) continue;
+    glm::vec3 n = a.normal;
+    n = finite(n) && glm::length(n) > 1e-6f ? glm::normalize(n) : glm::vec3(0.0f);
+    std::vector<glm::vec3> quad;
+    for (const glm::vec3& c : a.corners) quad.push_back(c + kAreaLift * n);
+    bool ok = true;
+    for (const glm::vec3& c : quad) ok = ok && finite(c);
+    if (!ok) continue;
+    const std::string name = "area " + std::to_string(i) + " " + std::string(to_string(a.type)) + " " +
+                             std::string(to_string(a.size)) + " " + std::string(to_string(a.reach));
+    // Counter-clockwise from the front, like the corners.
+    scene.add_mesh(name, quad, {0, 1, 2, 0, 2, 3}, linear_rgba(reach_colour(a.reach), kAreaAlpha));
+  }
+  return scene;
+}
+
+}  // namespace roomsense

@@ -1,0 +1,211 @@
+#ifndef XR_EXTX_ROOM_UNDERSTANDING_H_
+#define XR_EXTX_ROOM_UNDERSTANDING_H_ 1
+
+/*
+** XR_EXTX_room_understanding: placement areas and a simplified room-bounds mesh computed from the runtime's
+** scene meshes, provided by the implicit API layer XR_APILAYER_ROOMSENSE_room_understanding (roomsense).
+**
+** Enable the extension in xrCreateInstance (the layer's manifest lists it, so the loader accepts it even though
+** the runtime does not know it) and get its functions from xrGetInstanceProcAddr. Without the extension enabled,
+** xrGetInstanceProcAddr answers XR_ERROR_FUNCTION_UNSUPPORTED for them.
+**
+** Usage:
+**   1. xrCreateRoomAnalyzerEXTX(session, {baseSpace = a LOCAL or STAGE space}) -> analyzer.
+**   2. Optionally xrSubmitRoomMeshEXTX(analyzer, mesh) for meshes the application has itself.
+**   3. xrComputeRoomEXTX(analyzer, {time, includeRuntimeMeshes}) starts an asynchronous analysis. With
+**      includeRuntimeMeshes the layer queries the runtime's scene meshes (XR_MSFT_scene_understanding) itself
+**      and adds the scene meshes the application has read; it always adds the submitted meshes.
+**   4. Poll xrGetRoomComputeStateEXTX until COMPLETED (or FAILED). Computing again while RUNNING returns
+**      XR_ERROR_CALL_ORDER_INVALID.
+**   5. xrGetRoomLayoutEXTX, xrGetRoomAreasEXTX (two-call idiom) and xrGetRoomBoundsMeshEXTX (two-call idiom on
+**      both arrays) return the latest completed result; before any result exists they return
+**      XR_ERROR_CALL_ORDER_INVALID. A failed compute leaves the previous result in place.
+**   Destroying the session (or the instance) destroys its analyzers, also while an analysis runs.
+**
+** Everything is in the analyzer's baseSpace: right-handed, +Y up, metres.
+**
+** Structure type values: this extension has no number in the Khronos registry. Its values use the enum block of
+** extension number 100000 (1000000000 + (100000 - 1) * 1000 = 1099999000), far above every registered
+** extension (the registry is below number 1000), so they cannot collide with a registered structure type.
+** XrStructureType cannot be extended in C, so they are defined as casts.
+*/
+
+#include <openxr/openxr.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define XR_EXTX_room_understanding 1
+#define XR_EXTX_room_understanding_SPEC_VERSION 1
+#define XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME "XR_EXTX_room_understanding"
+
+XR_DEFINE_HANDLE(XrRoomAnalyzerEXTX)
+
+/* The enum block of (unregistered) extension number 100000. */
+#define XR_EXTX_ROOM_UNDERSTANDING_ENUM_BASE 1099999000
+
+#define XR_TYPE_ROOM_ANALYZER_CREATE_INFO_EXTX ((XrStructureType)1099999000)
+#define XR_TYPE_ROOM_MESH_EXTX ((XrStructureType)1099999001)
+#define XR_TYPE_ROOM_COMPUTE_INFO_EXTX ((XrStructureType)1099999002)
+#define XR_TYPE_ROOM_LAYOUT_EXTX ((XrStructureType)1099999003)
+#define XR_TYPE_ROOM_AREA_EXTX ((XrStructureType)1099999004)
+#define XR_TYPE_ROOM_BOUNDS_MESH_EXTX ((XrStructureType)1099999005)
+/* roomsense's addition, chained to XrRoomLayoutEXTX::next: the analysis as JSON (see below). */
+#define XR_TYPE_ROOM_ANALYSIS_JSON_EXTX ((XrStructureType)1099999006)
+
+#define XR_OBJECT_TYPE_ROOM_ANALYZER_EXTX ((XrObjectType)1099999000)
+
+typedef enum XrRoomAreaTypeEXTX {
+    XR_ROOM_AREA_TYPE_WALL_EXTX = 1,
+    XR_ROOM_AREA_TYPE_FLOOR_EXTX = 2,
+    XR_ROOM_AREA_TYPE_CEILING_EXTX = 3,
+    XR_ROOM_AREA_TYPE_FURNITURE_EXTX = 4,
+    XR_ROOM_AREA_TYPE_MAX_ENUM_EXTX = 0x7FFFFFFF
+} XrRoomAreaTypeEXTX;
+
+typedef enum XrRoomAreaSizeEXTX {
+    XR_ROOM_AREA_SIZE_LARGE_EXTX = 1,
+    XR_ROOM_AREA_SIZE_MEDIUM_EXTX = 2,
+    XR_ROOM_AREA_SIZE_SMALL_EXTX = 3,
+    XR_ROOM_AREA_SIZE_MAX_ENUM_EXTX = 0x7FFFFFFF
+} XrRoomAreaSizeEXTX;
+
+typedef enum XrRoomInteractionEXTX {
+    XR_ROOM_INTERACTION_CLOSE_EXTX = 1,
+    XR_ROOM_INTERACTION_DISTANCE_EXTX = 2,
+    XR_ROOM_INTERACTION_NONE_EXTX = 3,
+    XR_ROOM_INTERACTION_MAX_ENUM_EXTX = 0x7FFFFFFF
+} XrRoomInteractionEXTX;
+
+typedef enum XrRoomComputeStateEXTX {
+    XR_ROOM_COMPUTE_STATE_NONE_EXTX = 0,
+    XR_ROOM_COMPUTE_STATE_RUNNING_EXTX = 1,
+    XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX = 2,
+    XR_ROOM_COMPUTE_STATE_FAILED_EXTX = 3,
+    XR_ROOM_COMPUTE_STATE_MAX_ENUM_EXTX = 0x7FFFFFFF
+} XrRoomComputeStateEXTX;
+
+typedef enum XrRoomComputeBackendEXTX {
+    XR_ROOM_COMPUTE_BACKEND_AUTO_EXTX = 0,
+    XR_ROOM_COMPUTE_BACKEND_CPU_EXTX = 1,
+    XR_ROOM_COMPUTE_BACKEND_VULKAN_EXTX = 2,
+    XR_ROOM_COMPUTE_BACKEND_MAX_ENUM_EXTX = 0x7FFFFFFF
+} XrRoomComputeBackendEXTX;
+
+/* Category bits of XrRoomAreaEXTX::categoryFlags (thesis Eq. 3.58): one bit of each group is set. */
+#define XR_ROOM_AREA_CATEGORY_SIZE_LARGE_BIT_EXTX 0x00000001
+#define XR_ROOM_AREA_CATEGORY_SIZE_MEDIUM_BIT_EXTX 0x00000002
+#define XR_ROOM_AREA_CATEGORY_SIZE_SMALL_BIT_EXTX 0x00000004
+#define XR_ROOM_AREA_CATEGORY_INTERACTION_CLOSE_BIT_EXTX 0x00000008
+#define XR_ROOM_AREA_CATEGORY_INTERACTION_DISTANCE_BIT_EXTX 0x00000010
+#define XR_ROOM_AREA_CATEGORY_INTERACTION_NONE_BIT_EXTX 0x00000020
+#define XR_ROOM_AREA_CATEGORY_TYPE_WALL_BIT_EXTX 0x00000040
+#define XR_ROOM_AREA_CATEGORY_TYPE_FLOOR_BIT_EXTX 0x00000080
+#define XR_ROOM_AREA_CATEGORY_TYPE_FURNITURE_BIT_EXTX 0x00000100
+#define XR_ROOM_AREA_CATEGORY_TYPE_CEILING_BIT_EXTX 0x00000200
+
+typedef struct XrRoomAnalyzerCreateInfoEXTX {
+    XrStructureType type;
+    const void* XR_MAY_ALIAS next;
+    XrSpace baseSpace; /* results are expressed in this space; it must be gravity-aligned (LOCAL or STAGE) */
+    float voxelSize;   /* metres; 0 means 0.10; otherwise 0.01 to 1 */
+    XrRoomComputeBackendEXTX backend; /* AUTO also follows the environment variable ROOMSENSE_BACKEND */
+} XrRoomAnalyzerCreateInfoEXTX;
+
+typedef struct XrRoomMeshEXTX {
+    XrStructureType type;
+    const void* XR_MAY_ALIAS next;
+    XrPosef pose; /* mesh space -> baseSpace */
+    uint32_t vertexCount;
+    const XrVector3f* vertices;
+    uint32_t indexCount; /* a multiple of 3 (counter-clockwise triangles); 0 for a point cloud */
+    const uint32_t* indices;
+} XrRoomMeshEXTX;
+
+typedef struct XrRoomComputeInfoEXTX {
+    XrStructureType type;
+    const void* XR_MAY_ALIAS next;
+    XrTime time; /* when the runtime's meshes are located in baseSpace */
+    XrBool32 includeRuntimeMeshes;
+} XrRoomComputeInfoEXTX;
+
+typedef struct XrRoomLayoutEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    float floorHeight;   /* y of the main storey's scanned floor surface */
+    float ceilingHeight; /* y of its ceiling surface */
+    uint32_t storeyCount;
+    XrVector3f boundsMin; /* axis-aligned box of the room-bounds mesh */
+    XrVector3f boundsMax;
+    uint32_t inputVertexCount;
+    uint32_t inputTriangleCount;
+    XrDuration computeDuration; /* from xrComputeRoomEXTX to the result, nanoseconds */
+} XrRoomLayoutEXTX;
+
+typedef struct XrRoomAreaEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    XrPosef pose;        /* centre; +Z = surface normal into free space; walls: +Y up */
+    XrExtent2Df extents; /* full width (X) and height (Y), metres */
+    float volumeHeight;  /* clear space checked in front of the surface, along +Z */
+    XrRoomAreaTypeEXTX areaType;
+    XrRoomAreaSizeEXTX size;
+    XrRoomInteractionEXTX interaction;
+    uint32_t categoryFlags; /* thesis Eq. 3.58 bits: XR_ROOM_AREA_CATEGORY_*_BIT_EXTX */
+} XrRoomAreaEXTX;
+
+typedef struct XrRoomBoundsMeshEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    uint32_t vertexCapacityInput;
+    uint32_t vertexCountOutput;
+    XrVector3f* vertices;
+    uint32_t indexCapacityInput;
+    uint32_t indexCountOutput;
+    uint32_t* indices; /* CCW triangles facing free space */
+} XrRoomBoundsMeshEXTX;
+
+/* roomsense's addition (chain it to XrRoomLayoutEXTX::next): the whole analysis as JSON, the schema
+** "roomsense.analysis/1" of the roomsense command line, with stage timings and grid. Two-call idiom:
+** jsonCountOutput counts the terminating zero; with jsonCapacityInput 0 only the count is written. */
+typedef struct XrRoomAnalysisJsonEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    uint32_t jsonCapacityInput;
+    uint32_t jsonCountOutput;
+    char* json;
+} XrRoomAnalysisJsonEXTX;
+
+typedef XrResult(XRAPI_PTR* PFN_xrCreateRoomAnalyzerEXTX)(XrSession session, const XrRoomAnalyzerCreateInfoEXTX* createInfo,
+                                                          XrRoomAnalyzerEXTX* analyzer);
+typedef XrResult(XRAPI_PTR* PFN_xrDestroyRoomAnalyzerEXTX)(XrRoomAnalyzerEXTX analyzer);
+typedef XrResult(XRAPI_PTR* PFN_xrSubmitRoomMeshEXTX)(XrRoomAnalyzerEXTX analyzer, const XrRoomMeshEXTX* mesh);
+typedef XrResult(XRAPI_PTR* PFN_xrComputeRoomEXTX)(XrRoomAnalyzerEXTX analyzer, const XrRoomComputeInfoEXTX* computeInfo);
+typedef XrResult(XRAPI_PTR* PFN_xrGetRoomComputeStateEXTX)(XrRoomAnalyzerEXTX analyzer, XrRoomComputeStateEXTX* state);
+typedef XrResult(XRAPI_PTR* PFN_xrGetRoomLayoutEXTX)(XrRoomAnalyzerEXTX analyzer, XrRoomLayoutEXTX* layout);
+typedef XrResult(XRAPI_PTR* PFN_xrGetRoomAreasEXTX)(XrRoomAnalyzerEXTX analyzer, uint32_t areaCapacityInput,
+                                                    uint32_t* areaCountOutput, XrRoomAreaEXTX* areas);
+typedef XrResult(XRAPI_PTR* PFN_xrGetRoomBoundsMeshEXTX)(XrRoomAnalyzerEXTX analyzer, XrRoomBoundsMeshEXTX* mesh);
+
+#ifndef XR_NO_PROTOTYPES
+#ifdef XR_EXTENSION_PROTOTYPES
+/* The layer exports none of these: get them from xrGetInstanceProcAddr. */
+XRAPI_ATTR XrResult XRAPI_CALL xrCreateRoomAnalyzerEXTX(XrSession session, const XrRoomAnalyzerCreateInfoEXTX* createInfo,
+                                                        XrRoomAnalyzerEXTX* analyzer);
+XRAPI_ATTR XrResult XRAPI_CALL xrDestroyRoomAnalyzerEXTX(XrRoomAnalyzerEXTX analyzer);
+XRAPI_ATTR XrResult XRAPI_CALL xrSubmitRoomMeshEXTX(XrRoomAnalyzerEXTX analyzer, const XrRoomMeshEXTX* mesh);
+XRAPI_ATTR XrResult XRAPI_CALL xrComputeRoomEXTX(XrRoomAnalyzerEXTX analyzer, const XrRoomComputeInfoEXTX* computeInfo);
+XRAPI_ATTR XrResult XRAPI_CALL xrGetRoomComputeStateEXTX(XrRoomAnalyzerEXTX analyzer, XrRoomComputeStateEXTX* state);
+XRAPI_ATTR XrResult XRAPI_CALL xrGetRoomLayoutEXTX(XrRoomAnalyzerEXTX analyzer, XrRoomLayoutEXTX* layout);
+XRAPI_ATTR XrResult XRAPI_CALL xrGetRoomAreasEXTX(XrRoomAnalyzerEXTX analyzer, uint32_t areaCapacityInput,
+                                                  uint32_t* areaCountOutput, XrRoomAreaEXTX* areas);
+XRAPI_ATTR XrResult XRAPI_CALL xrGetRoomBoundsMeshEXTX(XrRoomAnalyzerEXTX analyzer, XrRoomBoundsMeshEXTX* mesh);
+#endif /* XR_EXTENSION_PROTOTYPES */
+#endif /* !XR_NO_PROTOTYPES */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* XR_EXTX_ROOM_UNDERSTANDING_H_ */

@@ -1,0 +1,184 @@
+#include "analyzer.h"
+
+#include "guard.h"
+#include "log.h"
+#include "scene_query.h"
+
+#include <cmath>
+#include <unordered_set>
+#if ROOMSENSE_HAVE_COMPUTE
+#include "roomsense/backend.h"
+#endif
+
+namespace roomsense::layer {
+namespace {
+
+
+std::string uuid_key(const XrUuidMSFT& id) { return std::string(reinterpret_cast<const char*>(id.bytes), sizeof id.bytes); }
+
+}  // namespace
+
+AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, float voxel_size, BackendChoice backend) {
+  const Scan scan = merge(pieces);
+  AnalysisOptions options;
+  options.voxel_size = voxel_size;
+  std::unique_ptr<VoxelStage> stage;
+#if ROOMSENSE_HAVE_COMPUTE
+  std::string note;
+  const Backend wanted = backend == BackendChoice::Cpu ? Backend::Cpu
+                         : backend == BackendChoice::Vulkan ? Backend::Vulkan
+                                                            : Backend::Auto;
+  stage = make_voxel_stage(wanted, estimated_voxel_count(scan, voxel_size), &note);
+  if (backend == BackendChoice::Vulkan && stage->name() != "vulkan") log_warn("backend: " + note);
+  else log_info("backend: " + note);
+#else
+  if (backend == BackendChoice::Vulkan) log_warn("backend: this build has no Vulkan backend; cpu used");
+#endif
+  options.voxel_stage = stage.get();
+  return analyze(scan, options);
+}
+
+Analyzer::Analyzer(std::shared_ptr<SessionState> session, Settings settings)
+    : session_(std::move(session)), settings_(settings) {}
+
+Analyzer::~Analyzer() {
+  std::jthread worker;
+  {
+    std::lock_guard lock(mutex_);
+    worker = std::move(worker_);
+  }
+  // ~jthread requests stop and joins.
+}
+
+XrResult Analyzer::submit(MeshPiece mesh) {
+  auto piece = std::make_shared<const MeshPiece>(std::move(mesh));
+  std::lock_guard lock(mutex_);
+  if (shut_) return XR_ERROR_HANDLE_INVALID;
+  submitted_.push_back(std::move(piece));
+  return XR_SUCCESS;
+}
+
+XrResult Analyzer::compute(const XrRoomComputeInfoEXTX& info) {
+  Job job;
+  job.include_runtime = info.includeRuntimeMeshes != XR_FALSE;
+  job.time = info.time;
+  job.started = std::chrono::steady_clock::now();
+  if (job.include_runtime) {
+    std::lock_guard lock(session_->mutex);
+    job.captured = session_->captured;
+    job.capture_space = session_->capture_space;
+  }
+  std::lock_guard lock(mutex_);
+  if (shut_) return XR_ERROR_HANDLE_INVALID;
+  if (state_ == XR_ROOM_COMPUTE_STATE_RUNNING_EXTX) return XR_ERROR_CALL_ORDER_INVALID;
+  job.submitted = submitted_;
+  // The previous worker published its result (the state is not RUNNING) and touches nothing of ours any
+  // more, so joining it here, under the lock, cannot wait on us.
+  if (worker_.joinable()) worker_.join();
+  worker_ = std::jthread([this](std::stop_token stop, Job j) { run(stop, std::move(j)); }, std::move(job));
+  state_ = XR_ROOM_COMPUTE_STATE_RUNNING_EXTX;  // the worker publishes under this lock, so only after this
+  return XR_SUCCESS;
+}
+
+XrRoomComputeStateEXTX Analyzer::state() {
+  std::lock_guard lock(mutex_);
+  return state_;
+}
+
+std::shared_ptr<const RoomResult> Analyzer::latest() {
+  std::lock_guard lock(mutex_);
+  return latest_;
+}
+
+void Analyzer::shut_down() {
+  std::jthread worker;
+  {
+    std::lock_guard lock(mutex_);
+    if (shut_) return;
+    shut_ = true;
+    worker = std::move(worker_);
+  }
+  if (worker.joinable()) {
+    worker.request_stop();
+    worker.join();
+  }
+  if (settings_.base_space != XR_NULL_HANDLE) {
+    session_->instance->next.xrDestroySpace(settings_.base_space);
+    settings_.base_space = XR_NULL_HANDLE;
+  }
+}
+
+void Analyzer::run(std::stop_token stop, Job job) {
+  const InstanceState& instance = *session_->instance;
+  MeshSources sources;
+  sources.base_space = space_name(settings_.base_type);
+  std::shared_ptr<RoomResult> result;
+  std::string problem;
+  try {
+    std::vector<RuntimeMesh> runtime;
+    std::vector<MeshPiece> app_read;
+    if (job.include_runtime) {
+      if (instance.msft) {
+        try {
+          runtime = query_runtime_meshes(instance.next, instance.handle, session_->system, session_->handle,
+                                         settings_.base_space, job.time, stop);
+        } catch (const std::exception& e) {
+          log_warn(std::string("the runtime's scene meshes are left out: ") + e.what());
+        }
+      } else {
+        log_warn("includeRuntimeMeshes: the runtime has no XR_MSFT_scene_understanding, so only meshes read by the "
+                 "application and submitted ones are analysed");
+      }
+      if (stop.stop_requested()) return;
+      if (!job.captured.empty()) {
+        // A mesh the application read is left out when the layer's own query served it too.
+        std::unordered_set<std::uint64_t> hashes;
+        std::unordered_set<std::string> ids;
+        for (const RuntimeMesh& m : runtime) hashes.insert(m.hash), ids.insert(uuid_key(m.component));
+        auto where = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
+        const XrResult located = instance.next.xrLocateSpace(job.capture_space, settings_.base_space, job.time, &where);
+        constexpr XrSpaceLocationFlags kValid = XR_SPACE_LOCATION_POSITION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_VALID_BIT;
+        if (XR_FAILED(located) || (where.locationFlags & kValid) != kValid) {
+          log_warn("the scene meshes the application read cannot be located in the base space; left out");
+        } else {
+          const Rigid capture_to_base = to_rigid(where.pose);
+          for (const auto& c : job.captured) {
+            if (hashes.count(c->hash) > 0 || ids.count(uuid_key(c->component)) > 0) continue;
+            MeshPiece piece = c->mesh;
+            transform_in_place(piece.vertices, capture_to_base);
+            app_read.push_back(std::move(piece));
+          }
+        }
+      }
+    }
+    std::vector<const MeshPiece*> pieces;
+    for (const RuntimeMesh& m : runtime) pieces.push_back(&m.mesh);
+    for (const MeshPiece& m : app_read) pieces.push_back(&m);
+    for (const auto& m : job.submitted) pieces.push_back(m.get());
+    sources.runtime_meshes = runtime.size();
+    sources.app_read_meshes = app_read.size();
+    sources.submitted_meshes = job.submitted.size();
+    if (pieces.empty())
+      throw std::runtime_error(job.include_runtime ? "no meshes to analyse: the runtime served none and none were submitted"
+                                                   : "no meshes to analyse: none were submitted");
+    const AnalysisResult analysis = analyze_pieces(pieces, settings_.voxel_size, settings_.backend);
+    if (!analysis.ok()) throw std::runtime_error(analysis.status_message);
+    if (stop.stop_requested()) return;
+    const auto elapsed = std::chrono::steady_clock::now() - job.started;
+    result = std::make_shared<RoomResult>(
+        make_room_result(analysis, sources, std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count()));
+    log_info("analysis completed: " + std::to_string(sources.runtime_meshes) + " runtime, " +
+             std::to_string(sources.app_read_meshes) + " app-read and " + std::to_string(sources.submitted_meshes) +
+             " submitted meshes; " + std::to_string(analysis.areas.size()) + " areas; pipeline " +
+             std::to_string(analysis.timings.total) + " ms, compute " + std::to_string(double(result->duration) / 1e6) + " ms");
+    if (!instance.config.export_dir.empty()) export_files(instance.config.export_dir, *result, analysis.bounds);
+  } catch (const std::exception& e) {
+    problem = e.what();
+  }
+  if (!result) log_warn("room analysis failed: " + problem);
+  std::lock_guard lock(mutex_);
+  if (result) latest_ = std::move(result);
+  state_ = latest_ && problem.empty() ? XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX : XR_ROOM_COMPUTE_STATE_FAILED_EXTX;
+}
+
+}  // namespace roomsense::layer

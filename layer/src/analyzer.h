@@ -1,0 +1,71 @@
+// One XrRoomAnalyzerEXTX: the meshes submitted to it, its compute state, the latest completed result, and
+// the worker thread that runs each compute (the runtime query, then the core pipeline). Getters never wait
+// for the worker: they read the latest result, which the worker swaps in whole.
+#pragma once
+#include "config.h"
+#include "results.h"
+#include "state.h"
+
+#include <openxr/XR_EXTX_room_understanding.h>
+
+#include <chrono>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace roomsense::layer {
+
+class Analyzer {
+ public:
+  struct Settings {
+    XrSpace base_space = XR_NULL_HANDLE;  // the layer's own copy of the application's baseSpace
+    XrReferenceSpaceType base_type = XR_REFERENCE_SPACE_TYPE_LOCAL;
+    float voxel_size = 0.1f;
+    BackendChoice backend = BackendChoice::Auto;  // already resolved against ROOMSENSE_BACKEND
+  };
+
+  Analyzer(std::shared_ptr<SessionState> session, Settings settings);
+  ~Analyzer();  // stops and joins the worker; releases no OpenXR handle (see shut_down)
+  Analyzer(const Analyzer&) = delete;
+  Analyzer& operator=(const Analyzer&) = delete;
+
+  const std::shared_ptr<SessionState>& session() const { return session_; }
+
+  // Both return XR_ERROR_HANDLE_INVALID once the analyzer is shut down. Arguments are already validated.
+  XrResult submit(MeshPiece mesh);
+  XrResult compute(const XrRoomComputeInfoEXTX& info);
+
+  XrRoomComputeStateEXTX state();
+  std::shared_ptr<const RoomResult> latest();  // null before the first completed compute
+
+  // Stops a running compute, waits for the worker, destroys the layer's base space. Idempotent. Call before
+  // the session is destroyed down the chain, and without the registry lock.
+  void shut_down();
+
+ private:
+  struct Job {
+    bool include_runtime = false;
+    XrTime time = 0;
+    std::vector<std::shared_ptr<const MeshPiece>> submitted;
+    std::vector<std::shared_ptr<const CapturedMesh>> captured;
+    XrSpace capture_space = XR_NULL_HANDLE;
+    std::chrono::steady_clock::time_point started;
+  };
+  void run(std::stop_token stop, Job job);
+
+  std::shared_ptr<SessionState> session_;
+  Settings settings_;
+
+  std::mutex mutex_;  // guards everything below
+  bool shut_ = false;
+  XrRoomComputeStateEXTX state_ = XR_ROOM_COMPUTE_STATE_NONE_EXTX;
+  std::vector<std::shared_ptr<const MeshPiece>> submitted_;
+  std::shared_ptr<const RoomResult> latest_;
+  std::jthread worker_;
+};
+
+// Runs the core pipeline on `pieces` with the given settings; the stage note (which backend) goes to the log.
+AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, float voxel_size, BackendChoice backend);
+
+}  // namespace roomsense::layer

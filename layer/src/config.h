@@ -1,0 +1,18 @@
+// The layer's configuration, read from the environment at each xrCreateInstance (DESIGN.md's table):
+// ROOMSENSE_EXPORT_DIR and ROOMSENSE_BACKEND here; ROOMSENSE_LOG and ROOMSENSE_LOG_FILE in log.h.
+// DISABLE_XR_APILAYER_ROOMSENSE is the loader's business (the manifest's disable_environment).
+#pragma once
+#include <string>
+
+namespace roomsense::layer {
+
+enum class BackendChoice { Auto, Cpu, Vulkan };
+
+struct Config {
+  std::string export_dir;                          // empty: no export
+  BackendChoice env_backend = BackendChoice::Auto;  // ROOMSENSE_BACKEND; applies where the app asks for AUTO
+};
+
+Config read_config();
+
+}  // namespace roomsense::layer

@@ -1,0 +1,322 @@
+// The loader's way in: negotiation (the library's only exported symbol), xrCreateApiLayerInstance,
+// xrGetInstanceProcAddr, and the instance and session hooks.
+#include "analyzer.h"
+#include "capture.h"
+#include "functions.h"
+#include "guard.h"
+#include "loader_interface.h"
+#include "log.h"
+#include "state.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+#include <string_view>
+#include <unordered_map>
+
+namespace roomsense::layer {
+namespace {
+
+constexpr std::size_t kMaxTrackedSpaces = 4096;  // reference spaces remembered for baseSpace checks
+
+enum class HookGroup { Always, Session, Spaces, Msft, Extx };
+
+struct Hook {
+  PFN_xrVoidFunction function;
+  HookGroup group;
+};
+
+const std::unordered_map<std::string_view, Hook>& hooks() {
+  static const std::unordered_map<std::string_view, Hook> table = [] {
+    std::unordered_map<std::string_view, Hook> t;
+#define ROOMSENSE_ENTRY(name, group) t.emplace(#name, Hook{reinterpret_cast<PFN_xrVoidFunction>(&layer::name), group});
+#define ROOMSENSE_ALWAYS(name) ROOMSENSE_ENTRY(name, HookGroup::Always)
+#define ROOMSENSE_SESSION(name) ROOMSENSE_ENTRY(name, HookGroup::Session)
+#define ROOMSENSE_SPACES(name) ROOMSENSE_ENTRY(name, HookGroup::Spaces)
+#define ROOMSENSE_MSFT(name) ROOMSENSE_ENTRY(name, HookGroup::Msft)
+#define ROOMSENSE_EXTX(name) ROOMSENSE_ENTRY(name, HookGroup::Extx)
+    ROOMSENSE_HOOKS_ALWAYS(ROOMSENSE_ALWAYS)
+    ROOMSENSE_HOOKS_SESSION(ROOMSENSE_SESSION)
+    ROOMSENSE_HOOKS_SPACES(ROOMSENSE_SPACES)
+    ROOMSENSE_HOOKS_MSFT(ROOMSENSE_MSFT)
+    ROOMSENSE_EXTX_FUNCTIONS(ROOMSENSE_EXTX)
+#undef ROOMSENSE_ENTRY
+#undef ROOMSENSE_ALWAYS
+#undef ROOMSENSE_SESSION
+#undef ROOMSENSE_SPACES
+#undef ROOMSENSE_MSFT
+#undef ROOMSENSE_EXTX
+    return t;
+  }();
+  return table;
+}
+
+bool is_msft_function(std::string_view name) {
+#define ROOMSENSE_IS(n) || name == #n
+  return false ROOMSENSE_MSFT_FUNCTIONS(ROOMSENSE_IS);
+#undef ROOMSENSE_IS
+}
+
+bool enabled(const XrInstanceCreateInfo& info, const char* extension) {
+  for (uint32_t i = 0; i < info.enabledExtensionCount; ++i)
+    if (info.enabledExtensionNames[i] != nullptr && std::strcmp(info.enabledExtensionNames[i], extension) == 0) return true;
+  return false;
+}
+
+bool addressed_to_us(const XrApiLayerNextInfo* info) {
+  return info != nullptr && info->structType == XR_LOADER_INTERFACE_STRUCT_API_LAYER_NEXT_INFO &&
+         std::strncmp(info->layerName, kLayerName, XR_MAX_API_LAYER_NAME_SIZE) == 0;
+}
+
+void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa, bool extx, bool app_msft,
+                       bool we_added_msft, const Config& config);
+
+template <typename PFN>
+void load(PFN_xrGetInstanceProcAddr gipa, XrInstance instance, const char* name, PFN& out) {
+  PFN_xrVoidFunction f = nullptr;
+  if (XR_SUCCEEDED(gipa(instance, name, &f))) out = reinterpret_cast<PFN>(f);
+}
+
+XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, const XrApiLayerCreateInfo* layerInfo,
+                                             XrInstance* instance) {
+  return guarded("xrCreateApiLayerInstance", [&]() -> XrResult {
+    if (info == nullptr || instance == nullptr || layerInfo == nullptr ||
+        layerInfo->structType != XR_LOADER_INTERFACE_STRUCT_API_LAYER_CREATE_INFO ||
+        layerInfo->structVersion != XR_API_LAYER_CREATE_INFO_STRUCT_VERSION ||
+        layerInfo->structSize != sizeof(XrApiLayerCreateInfo) || !addressed_to_us(layerInfo->nextInfo))
+      return XR_ERROR_INITIALIZATION_FAILED;
+    if (info->enabledExtensionCount > 0 && info->enabledExtensionNames == nullptr) return XR_ERROR_VALIDATION_FAILURE;
+    configure_log();
+    const Config config = read_config();
+
+    // The chain below us, with any further copy of this layer taken out: the same manifest found in two
+    // search directories puts the layer into the chain twice. The copy nearest the application does the
+    // work; the layer above a skipped copy calls what that copy would have called.
+    const XrApiLayerNextInfo& ours = *layerInfo->nextInfo;
+    PFN_xrGetInstanceProcAddr next_gipa = ours.nextGetInstanceProcAddr;
+    PFN_xrCreateApiLayerInstance next_create = ours.nextCreateApiLayerInstance;
+    std::vector<XrApiLayerNextInfo> below;
+    std::size_t skipped = 0;
+    for (const XrApiLayerNextInfo* e = ours.next; e != nullptr; e = e->next) {
+      if (addressed_to_us(e)) {
+        (below.empty() ? next_gipa : below.back().nextGetInstanceProcAddr) = e->nextGetInstanceProcAddr;
+        (below.empty() ? next_create : below.back().nextCreateApiLayerInstance) = e->nextCreateApiLayerInstance;
+        ++skipped;
+        continue;
+      }
+      below.push_back(*e);
+    }
+    for (std::size_t i = 0; i < below.size(); ++i) below[i].next = i + 1 < below.size() ? &below[i + 1] : nullptr;
+    if (next_gipa == nullptr || next_create == nullptr) return XR_ERROR_INITIALIZATION_FAILED;
+    XrApiLayerCreateInfo down_layer_info = *layerInfo;
+    down_layer_info.nextInfo = below.empty() ? nullptr : below.data();
+
+    // Our extension is ours alone: the loader passes it down unfiltered, so take it out. An analysis needs the
+    // runtime's scene meshes, so enable XR_MSFT_scene_understanding when the runtime has it.
+    const bool extx = enabled(*info, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME);
+    const bool app_msft = enabled(*info, XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME);
+    std::vector<const char*> extensions;
+    for (uint32_t i = 0; i < info->enabledExtensionCount; ++i)
+      if (const char* name = info->enabledExtensionNames[i];
+          name == nullptr || std::strcmp(name, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME) != 0)
+        extensions.push_back(name);  // a null name is the layers' and runtime's to reject below
+    XrInstanceCreateInfo down = *info;
+    auto create_with = [&](bool add_msft) {
+      std::vector<const char*> names = extensions;
+      if (add_msft) names.push_back(XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME);
+      down.enabledExtensionCount = static_cast<uint32_t>(names.size());
+      down.enabledExtensionNames = names.empty() ? nullptr : names.data();
+      return next_create(&down, &down_layer_info, instance);
+    };
+    bool we_added_msft = extx && !app_msft;
+    XrResult result = create_with(we_added_msft);
+    if (result == XR_ERROR_EXTENSION_NOT_PRESENT && we_added_msft) {
+      log_info("the runtime has no XR_MSFT_scene_understanding: analyses use meshes the application submits");
+      we_added_msft = false;
+      result = create_with(false);
+    }
+    if (XR_FAILED(result)) return result;
+    try {
+      register_instance(*instance, next_gipa, extx, app_msft, we_added_msft, config);
+      log_info(std::string("instance created: ") + (extx ? "XR_EXTX_room_understanding enabled" : "extension not enabled") +
+               (we_added_msft ? ", XR_MSFT_scene_understanding enabled by the layer" : "") +
+               (extx || !config.export_dir.empty() ? ", capturing scene meshes" : ", pass-through") +
+               (skipped > 0 ? ", " + std::to_string(skipped) + " more copy of the layer skipped" : ""));
+    } catch (...) {  // the application gets an error, so the instance must not outlive this call
+      {
+        Registry& r = registry();
+        std::lock_guard lock(r.mutex);
+        r.instances.erase(*instance);
+      }
+      PFN_xrDestroyInstance destroy = nullptr;
+      load(next_gipa, *instance, "xrDestroyInstance", destroy);
+      if (destroy != nullptr) destroy(*instance);
+      throw;
+    }
+    return result;
+  });
+}
+
+void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa, bool extx, bool app_msft,
+                       bool we_added_msft, const Config& config) {
+  auto state = std::make_shared<InstanceState>();
+  state->handle = instance;
+  state->extx = extx;
+  state->app_msft = app_msft;
+  state->msft = app_msft || we_added_msft;
+  state->capture = extx || !config.export_dir.empty();
+  state->config = config;
+  NextDispatch& next = state->next;
+  next.xrGetInstanceProcAddr = next_gipa;
+#define ROOMSENSE_LOAD(name)                                                                       \
+  load(next_gipa, instance, #name, next.name);                                                     \
+  if (next.name == nullptr) throw std::runtime_error("the next layer or the runtime has no " #name);
+  ROOMSENSE_NEXT_CORE_FUNCTIONS(ROOMSENSE_LOAD)
+  if (state->msft) {
+    ROOMSENSE_MSFT_FUNCTIONS(ROOMSENSE_LOAD)
+  }
+#undef ROOMSENSE_LOAD
+  Registry& r = registry();
+  std::lock_guard lock(r.mutex);
+  r.instances[instance] = std::move(state);
+}
+
+}  // namespace
+
+// ---- xrGetInstanceProcAddr: our hooks, or the next layer's function itself
+
+XrResult XRAPI_CALL xrGetInstanceProcAddr(XrInstance instance, const char* name, PFN_xrVoidFunction* function) {
+  return guarded("xrGetInstanceProcAddr", [&]() -> XrResult {
+    if (name == nullptr || function == nullptr) return XR_ERROR_VALIDATION_FAILURE;
+    *function = nullptr;
+    const std::shared_ptr<InstanceState> state = registry().instance(instance);
+    if (!state) return XR_ERROR_HANDLE_INVALID;  // the loader asks layers for instance functions only
+    const std::string_view wanted(name);
+    const auto it = hooks().find(wanted);
+    if (it != hooks().end()) {
+      const HookGroup g = it->second.group;
+      const bool ours = g == HookGroup::Always || (g == HookGroup::Extx && state->extx) ||
+                        (g == HookGroup::Session && state->capture) || (g == HookGroup::Spaces && state->extx) ||
+                        (g == HookGroup::Msft && state->capture && state->app_msft);
+      if (g == HookGroup::Extx && !state->extx) return XR_ERROR_FUNCTION_UNSUPPORTED;
+      if (ours) {
+        *function = it->second.function;
+        return XR_SUCCESS;
+      }
+    }
+    // Enabled below us by the layer, not by the application: not the application's to call.
+    if (!state->app_msft && is_msft_function(wanted)) return XR_ERROR_FUNCTION_UNSUPPORTED;
+    return state->next.xrGetInstanceProcAddr(instance, name, function);
+  });
+}
+
+XrResult XRAPI_CALL xrDestroyInstance(XrInstance instance) {
+  return guarded("xrDestroyInstance", [&]() -> XrResult {
+    std::shared_ptr<InstanceState> state;
+    std::vector<std::pair<std::shared_ptr<SessionState>, std::vector<std::shared_ptr<Analyzer>>>> sessions;
+    {
+      Registry& r = registry();
+      std::lock_guard lock(r.mutex);
+      const auto it = r.instances.find(instance);
+      if (it == r.instances.end()) return XR_ERROR_HANDLE_INVALID;
+      state = it->second;
+      std::vector<std::shared_ptr<SessionState>> mine;
+      for (const auto& [handle, s] : r.sessions)
+        if (s->instance == state) mine.push_back(s);
+      for (const auto& s : mine) sessions.emplace_back(s, forget_session_locked(r, s->handle));
+      r.instances.erase(it);
+    }
+    // Its sessions go with it: stop their analyses first (they call into the runtime).
+    for (auto& [session, analyzers] : sessions) shut_down_session(*session, analyzers);
+    log_info("instance destroyed");
+    return state->next.xrDestroyInstance(instance);
+  });
+}
+
+// ---- sessions (when the layer captures)
+
+XrResult XRAPI_CALL xrCreateSession(XrInstance instance, const XrSessionCreateInfo* createInfo, XrSession* session) {
+  return guarded("xrCreateSession", [&]() -> XrResult {
+    const std::shared_ptr<InstanceState> state = registry().instance(instance);
+    if (!state) return XR_ERROR_HANDLE_INVALID;
+    const XrResult result = state->next.xrCreateSession(instance, createInfo, session);
+    if (XR_SUCCEEDED(result)) {
+      auto s = std::make_shared<SessionState>();
+      s->handle = *session;
+      s->instance = state;
+      s->system = createInfo->systemId;
+      Registry& r = registry();
+      std::lock_guard lock(r.mutex);
+      r.sessions[*session] = std::move(s);
+    }
+    return result;
+  });
+}
+
+XrResult XRAPI_CALL xrDestroySession(XrSession session) {
+  return guarded("xrDestroySession", [&]() -> XrResult {
+    std::shared_ptr<SessionState> state;
+    std::vector<std::shared_ptr<Analyzer>> analyzers;
+    {
+      Registry& r = registry();
+      std::lock_guard lock(r.mutex);
+      const auto it = r.sessions.find(session);
+      if (it == r.sessions.end()) return XR_ERROR_HANDLE_INVALID;
+      state = it->second;
+      analyzers = forget_session_locked(r, session);
+    }
+    // Analyses of this session stop (and are waited for) before the session goes away below us.
+    shut_down_session(*state, analyzers);
+    return state->instance->next.xrDestroySession(session);
+  });
+}
+
+// ---- reference spaces (when the application enabled the extension)
+
+XrResult XRAPI_CALL xrCreateReferenceSpace(XrSession session, const XrReferenceSpaceCreateInfo* createInfo, XrSpace* space) {
+  return guarded("xrCreateReferenceSpace", [&]() -> XrResult {
+    const std::shared_ptr<SessionState> s = registry().session(session);
+    if (!s) return XR_ERROR_HANDLE_INVALID;
+    const XrResult result = s->instance->next.xrCreateReferenceSpace(session, createInfo, space);
+    if (XR_SUCCEEDED(result)) {
+      Registry& r = registry();
+      std::lock_guard lock(r.mutex);
+      // Spaces are not tracked to their destruction (xrDestroySpace stays the runtime's): the oldest are
+      // forgotten, so an application creating spaces all the time cannot grow this without bound.
+      r.spaces[*space] = {session, createInfo->referenceSpaceType, createInfo->poseInReferenceSpace};
+      r.space_order.push_back(*space);
+      while (r.space_order.size() > kMaxTrackedSpaces) {
+        r.spaces.erase(r.space_order.front());
+        r.space_order.pop_front();
+      }
+    }
+    return result;
+  });
+}
+
+}  // namespace roomsense::layer
+
+extern "C" __attribute__((visibility("default"))) XrResult XRAPI_CALL
+xrNegotiateLoaderApiLayerInterface(const XrNegotiateLoaderInfo* loaderInfo, const char* layerName,
+                                   XrNegotiateApiLayerRequest* apiLayerRequest) {
+  using namespace roomsense::layer;
+  if (loaderInfo == nullptr || apiLayerRequest == nullptr) return XR_ERROR_INITIALIZATION_FAILED;
+  if (loaderInfo->structType != XR_LOADER_INTERFACE_STRUCT_LOADER_INFO ||
+      loaderInfo->structVersion != XR_LOADER_INFO_STRUCT_VERSION || loaderInfo->structSize != sizeof(XrNegotiateLoaderInfo))
+    return XR_ERROR_INITIALIZATION_FAILED;
+  if (apiLayerRequest->structType != XR_LOADER_INTERFACE_STRUCT_API_LAYER_REQUEST ||
+      apiLayerRequest->structVersion != XR_API_LAYER_INFO_STRUCT_VERSION ||
+      apiLayerRequest->structSize != sizeof(XrNegotiateApiLayerRequest))
+    return XR_ERROR_INITIALIZATION_FAILED;
+  if (layerName == nullptr || std::strcmp(layerName, kLayerName) != 0) return XR_ERROR_INITIALIZATION_FAILED;
+  constexpr uint32_t kInterface = XR_CURRENT_LOADER_API_LAYER_VERSION;
+  if (loaderInfo->minInterfaceVersion > kInterface || loaderInfo->maxInterfaceVersion < kInterface)
+    return XR_ERROR_INITIALIZATION_FAILED;
+  if (XR_VERSION_MAJOR(loaderInfo->minApiVersion) > 1 || XR_VERSION_MAJOR(loaderInfo->maxApiVersion) < 1)
+    return XR_ERROR_INITIALIZATION_FAILED;
+  apiLayerRequest->layerInterfaceVersion = kInterface;
+  apiLayerRequest->layerApiVersion = XR_MAKE_VERSION(1, 0, XR_VERSION_PATCH(XR_CURRENT_API_VERSION));
+  apiLayerRequest->getInstanceProcAddr = &roomsense::layer::xrGetInstanceProcAddr;
+  apiLayerRequest->createApiLayerInstance = &roomsense::layer::xrCreateApiLayerInstance;
+  return XR_SUCCESS;
+}

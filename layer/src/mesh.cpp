@@ -1,0 +1,82 @@
+#include "mesh.h"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+namespace roomsense::layer {
+
+Rigid to_rigid(const XrPosef& p) {
+  return {glm::normalize(glm::dquat(p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z)),
+          {p.position.x, p.position.y, p.position.z}};
+}
+
+bool is_valid_pose(const XrPosef& p) {
+  const double n = std::sqrt(double(p.orientation.x) * p.orientation.x + double(p.orientation.y) * p.orientation.y +
+                             double(p.orientation.z) * p.orientation.z + double(p.orientation.w) * p.orientation.w);
+  return std::isfinite(p.position.x) && std::isfinite(p.position.y) && std::isfinite(p.position.z) &&
+         std::fabs(n - 1.0) < 1e-3;
+}
+
+bool is_yaw_only(const XrPosef& p) {
+  const glm::dvec3 up = to_rigid(p).rotation * glm::dvec3(0.0, 1.0, 0.0);
+  return up.y > 1.0 - 1e-4;
+}
+
+std::vector<glm::vec3> transformed(const XrVector3f* vertices, std::size_t count, const Rigid& pose) {
+  std::vector<glm::vec3> out(count);
+  const bool identity = pose.identity();
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::vec3 v(vertices[i].x, vertices[i].y, vertices[i].z);
+    out[i] = identity ? v : glm::vec3(pose.apply(glm::dvec3(v)));
+  }
+  return out;
+}
+
+void transform_in_place(std::vector<glm::vec3>& vertices, const Rigid& pose) {
+  if (pose.identity()) return;
+  for (glm::vec3& v : vertices) v = glm::vec3(pose.apply(glm::dvec3(v)));
+}
+
+std::uint64_t content_hash(const XrVector3f* vertices, std::size_t vertex_count, const std::uint32_t* indices,
+                           std::size_t index_count) {
+  std::uint64_t h = 14695981039346656037ull;
+  auto mix = [&](const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ull;
+  };
+  mix(&vertex_count, sizeof vertex_count);
+  if (vertex_count > 0) mix(vertices, vertex_count * sizeof(XrVector3f));
+  mix(&index_count, sizeof index_count);
+  if (index_count > 0) mix(indices, index_count * sizeof(std::uint32_t));
+  return h;
+}
+
+Scan merge(const std::vector<const MeshPiece*>& pieces) {
+  Scan scan;
+  bool any_triangles = false;
+  std::size_t vertices = 0, indices = 0;
+  for (const MeshPiece* p : pieces) {
+    any_triangles = any_triangles || !p->indices.empty();
+    vertices += p->vertices.size();
+    indices += p->indices.empty() ? 3 * p->vertices.size() : p->indices.size();
+  }
+  if (vertices > std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("more vertices than 32-bit indices can address");
+  scan.vertices.reserve(vertices);
+  if (any_triangles) scan.indices.reserve(indices);
+  for (const MeshPiece* p : pieces) {
+    const auto base = static_cast<std::uint32_t>(scan.vertices.size());
+    scan.vertices.insert(scan.vertices.end(), p->vertices.begin(), p->vertices.end());
+    if (!any_triangles) continue;
+    if (p->indices.empty()) {
+      for (std::uint32_t i = 0; i < p->vertices.size(); ++i) scan.indices.insert(scan.indices.end(), 3, base + i);
+    } else {
+      for (std::uint32_t i : p->indices) scan.indices.push_back(base + i);
+    }
+  }
+  return scan;
+}
+
+}  // namespace roomsense::layer

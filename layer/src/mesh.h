@@ -1,0 +1,55 @@
+// Meshes on their way into the analysis: rigid transforms between OpenXR poses and glm, content hashes
+// (to recognise the same runtime mesh read twice), and the merge of every piece into one core Scan.
+#pragma once
+#include "roomsense/scan.h"
+
+#include <openxr/openxr.h>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace roomsense::layer {
+
+struct Rigid {
+  glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+  glm::dvec3 translation{0.0};
+
+  glm::dvec3 apply(const glm::dvec3& p) const { return rotation * p + translation; }
+  Rigid operator*(const Rigid& rhs) const { return {rotation * rhs.rotation, rotation * rhs.translation + translation}; }
+  Rigid inverse() const {
+    const glm::dquat inv = glm::conjugate(rotation);
+    return {inv, inv * -translation};
+  }
+  bool identity() const {
+    return rotation == glm::dquat(1.0, 0.0, 0.0, 0.0) && translation == glm::dvec3(0.0);
+  }
+};
+
+Rigid to_rigid(const XrPosef& pose);
+// A unit quaternion and finite position, as the spec requires of every pose an application passes in.
+bool is_valid_pose(const XrPosef& pose);
+// True when the pose keeps +Y up (a yaw-only rotation): a gravity-aligned frame stays gravity-aligned.
+bool is_yaw_only(const XrPosef& pose);
+
+// One mesh in the analyzer's base space (or, for captures, the session's capture space).
+struct MeshPiece {
+  std::vector<glm::vec3> vertices;
+  std::vector<std::uint32_t> indices;  // triangles; empty for a point cloud
+};
+
+// Positions moved by `pose` (computed in double; identity poses copy the floats bit for bit).
+std::vector<glm::vec3> transformed(const XrVector3f* vertices, std::size_t count, const Rigid& pose);
+void transform_in_place(std::vector<glm::vec3>& vertices, const Rigid& pose);
+
+// FNV-1a over the raw vertex and index bytes as the runtime served them (component space).
+std::uint64_t content_hash(const XrVector3f* vertices, std::size_t vertex_count, const std::uint32_t* indices,
+                           std::size_t index_count);
+
+// Every piece into one scan, in order. Point clouds among triangle meshes become one-point triangles, so
+// that their vertices still count; a scan of point clouds only stays a point cloud (vertex mode).
+Scan merge(const std::vector<const MeshPiece*>& pieces);
+
+}  // namespace roomsense::layer

@@ -1,0 +1,96 @@
+#include "results.h"
+
+#include "log.h"
+#include "roomsense/export.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+namespace roomsense::layer {
+namespace {
+
+std::uint32_t clamp32(std::size_t n) {
+  return static_cast<std::uint32_t>(std::min<std::size_t>(n, std::numeric_limits<std::uint32_t>::max()));
+}
+
+XrRoomAreaEXTX to_xr(const Area& a) {
+  XrRoomAreaEXTX out{};
+  out.type = XR_TYPE_ROOM_AREA_EXTX;
+  out.next = nullptr;
+  const glm::quat q = a.orientation();
+  out.pose.orientation = {q.x, q.y, q.z, q.w};
+  out.pose.position = {a.center.x, a.center.y, a.center.z};
+  out.extents = {2.0f * a.half_width, 2.0f * a.half_height};
+  out.volumeHeight = a.volume_height;
+  // The core's enums carry the extension's values (areas.h).
+  out.areaType = static_cast<XrRoomAreaTypeEXTX>(a.type);
+  out.size = static_cast<XrRoomAreaSizeEXTX>(a.size);
+  out.interaction = static_cast<XrRoomInteractionEXTX>(a.reach);
+  out.categoryFlags = a.flags;
+  return out;
+}
+
+}  // namespace
+
+const char* space_name(XrReferenceSpaceType type) {
+  switch (type) {
+    case XR_REFERENCE_SPACE_TYPE_LOCAL: return "LOCAL";
+    case XR_REFERENCE_SPACE_TYPE_STAGE: return "STAGE";
+    case XR_REFERENCE_SPACE_TYPE_UNBOUNDED_MSFT: return "UNBOUNDED_MSFT";
+    default: return static_cast<int>(type) == 1000426000 ? "LOCAL_FLOOR_EXT" : "other";
+  }
+}
+
+RoomResult make_room_result(const AnalysisResult& r, const MeshSources& sources, XrDuration duration) {
+  RoomResult out;
+  out.floor_y = r.floor_y;
+  out.ceiling_y = r.ceiling_y;
+  out.storeys = clamp32(r.storeys.size());
+  out.areas.reserve(r.areas.size());
+  for (const Area& a : r.areas) out.areas.push_back(to_xr(a));
+  out.bounds_vertices.reserve(r.bounds.vertices.size());
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+  for (const glm::vec3& v : r.bounds.vertices) {
+    out.bounds_vertices.push_back({v.x, v.y, v.z});
+    lo = glm::min(lo, v);
+    hi = glm::max(hi, v);
+  }
+  if (!r.bounds.vertices.empty()) {
+    out.bounds_min = {lo.x, lo.y, lo.z};
+    out.bounds_max = {hi.x, hi.y, hi.z};
+  }
+  out.bounds_indices = r.bounds.indices;
+  out.input_vertices = clamp32(r.input.vertices);
+  out.input_triangles = clamp32(r.input.triangles);
+  out.duration = duration;
+
+  nlohmann::json doc = nlohmann::json::parse(analysis_json(r, {kJsonSourceName, 0.0}));
+  doc["openxr"] = {{"base_space", sources.base_space},
+                   {"runtime_meshes", sources.runtime_meshes},
+                   {"app_read_meshes", sources.app_read_meshes},
+                   {"submitted_meshes", sources.submitted_meshes},
+                   {"compute_ms", double(duration) / 1e6}};
+  out.json = doc.dump(2);
+  return out;
+}
+
+void export_files(const std::string& dir, const RoomResult& result, const BoundsMesh& bounds) {
+  try {
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path json_path = std::filesystem::path(dir) / "analysis.json";
+    {
+      std::ofstream out(json_path);
+      if (!out || !(out << result.json << '\n')) throw std::runtime_error("cannot write " + json_path.string());
+    }
+    write_obj(bounds, (std::filesystem::path(dir) / "bounds.obj").string());
+    log_info("exported analysis.json and bounds.obj to " + dir);
+  } catch (const std::exception& e) {
+    log_warn(std::string("ROOMSENSE_EXPORT_DIR: ") + e.what());
+  }
+}
+
+}  // namespace roomsense::layer

@@ -1,0 +1,46 @@
+// What one analysis leaves behind for the getters, in the extension's own types, and the files
+// ROOMSENSE_EXPORT_DIR asks for.
+#pragma once
+#include "roomsense/analysis.h"
+
+#include <openxr/openxr.h>
+
+#include <openxr/XR_EXTX_room_understanding.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace roomsense::layer {
+
+// The JSON's input.file for an analysis made inside an OpenXR app.
+inline constexpr const char* kJsonSourceName = "openxr:XR_APILAYER_ROOMSENSE_room_understanding";
+
+struct RoomResult {
+  float floor_y = 0.0f, ceiling_y = 0.0f;
+  std::uint32_t storeys = 0;
+  std::vector<XrRoomAreaEXTX> areas;  // type set, next null
+  std::vector<XrVector3f> bounds_vertices;
+  std::vector<std::uint32_t> bounds_indices;
+  XrVector3f bounds_min{0, 0, 0}, bounds_max{0, 0, 0};
+  std::uint32_t input_vertices = 0, input_triangles = 0;
+  XrDuration duration = 0;
+  std::string json;  // roomsense.analysis/1, with an "openxr" member saying where the meshes came from
+};
+
+// Where the meshes of one analysis came from, for the JSON's "openxr" member and the log.
+struct MeshSources {
+  std::size_t runtime_meshes = 0;   // the layer's own XR_MSFT_scene_understanding query
+  std::size_t app_read_meshes = 0;  // scene meshes the application read (passive capture)
+  std::size_t submitted_meshes = 0; // xrSubmitRoomMeshEXTX
+  std::string base_space;           // "LOCAL", "STAGE", ...
+};
+
+RoomResult make_room_result(const AnalysisResult& analysis, const MeshSources& sources, XrDuration duration);
+
+// Writes analysis.json and bounds.obj into `dir` (created when missing). Failures are logged, never thrown.
+void export_files(const std::string& dir, const RoomResult& result, const BoundsMesh& bounds);
+
+const char* space_name(XrReferenceSpaceType type);
+
+}  // namespace roomsense::layer

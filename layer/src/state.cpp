@@ -1,0 +1,66 @@
+#include "state.h"
+
+#include "analyzer.h"
+#include "capture.h"
+
+namespace roomsense::layer {
+
+Registry& registry() {
+  // Destroyed when the loader unloads the layer (after the last instance is gone) or at exit.
+  static Registry r;
+  return r;
+}
+
+std::shared_ptr<InstanceState> Registry::instance(XrInstance handle) {
+  std::lock_guard lock(mutex);
+  const auto it = instances.find(handle);
+  return it == instances.end() ? nullptr : it->second;
+}
+
+std::shared_ptr<SessionState> Registry::session(XrSession handle) {
+  std::lock_guard lock(mutex);
+  const auto it = sessions.find(handle);
+  return it == sessions.end() ? nullptr : it->second;
+}
+
+std::vector<std::shared_ptr<Analyzer>> forget_session_locked(Registry& r, XrSession session) {
+  std::vector<std::shared_ptr<Analyzer>> analyzers;
+  for (auto it = r.analyzers.begin(); it != r.analyzers.end();) {
+    if (it->second->session()->handle == session) {
+      analyzers.push_back(it->second);
+      it = r.analyzers.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  std::erase_if(r.spaces, [&](const auto& entry) { return entry.second.session == session; });
+  std::erase_if(r.observers, [&](const auto& entry) { return entry.second.session->handle == session; });
+  std::erase_if(r.scenes, [&](const auto& entry) { return entry.second->session->handle == session; });
+  r.sessions.erase(session);
+  return analyzers;
+}
+
+void shut_down_session(SessionState& session, const std::vector<std::shared_ptr<Analyzer>>& analyzers) {
+  for (const auto& a : analyzers) a->shut_down();
+  std::jthread exporter;
+  {
+    std::lock_guard lock(session.mutex);
+    exporter = std::move(session.export_worker);
+  }
+  if (exporter.joinable()) {
+    exporter.request_stop();
+    exporter.join();
+  }
+  // Whatever the application read and no export-only analysis has seen yet.
+  if (!session.instance->extx && !session.instance->config.export_dir.empty()) export_captured(session);
+  XrSpace space;
+  {
+    std::lock_guard lock(session.mutex);
+    space = session.capture_space;
+    session.capture_space = XR_NULL_HANDLE;
+    session.captured.clear();
+  }
+  if (space != XR_NULL_HANDLE) session.instance->next.xrDestroySpace(space);
+}
+
+}  // namespace roomsense::layer

@@ -1,0 +1,209 @@
+// The C APIs of libRoomCreatorLibrary.so against core's analyze() on the same input: the thesis API's
+// 11 floats per area and its bounds array, and the handle API's structs, must be exactly what analyze()
+// returns (same count, same order, same values), and identical from run to run.
+#include "roomsense/RoomCreatorLibrary.h"
+#include "roomsense/roomsense.h"
+
+#include "roomsense/analysis.h"
+#include "roomsense/synthetic.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+#include <vector>
+
+namespace roomsense {
+namespace {
+
+// The thesis's input: the scan's vertices as one flat array, no triangles.
+std::vector<float> flat_vertices(const Scan& scan) {
+  std::vector<float> flat;
+  flat.reserve(scan.vertices.size() * 3);
+  for (const glm::vec3& v : scan.vertices) flat.insert(flat.end(), {v.x, v.y, v.z});
+  return flat;
+}
+
+std::vector<float> thesis_understanding(const std::vector<float>& flat) {
+  EXPECT_EQ(RoomCreator::StartRoomUnderstanding(flat.data(), static_cast<int>(flat.size())), 0);
+  int code = -1, size = 0;
+  float* data = nullptr;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+  while ((data = RoomCreator::RetrieveRoomUnderstanding(&code, &size)), code == -1) {
+    if (std::chrono::steady_clock::now() > deadline) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  EXPECT_EQ(code, 0);
+  std::vector<float> out;
+  if (code == 0 && data != nullptr) out.assign(data, data + size);
+  EXPECT_EQ(RoomCreator::CleanUpRoomUnderstanding(), 0);
+  return out;
+}
+
+struct ThesisBounds {
+  std::vector<float> vertices, triangles;
+};
+
+ThesisBounds thesis_bounds(const std::vector<float>& flat) {
+  EXPECT_EQ(RoomCreator::StartRoomBounds(flat.data(), static_cast<int>(flat.size())), 0);
+  int code = -1, vsize = 0, tsize = 0;
+  float* data = nullptr;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+  while ((data = RoomCreator::RetrieveRoomBounds(&code, &vsize, &tsize)), code == -1) {
+    if (std::chrono::steady_clock::now() > deadline) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  EXPECT_EQ(code, 0);
+  ThesisBounds out;
+  if (code == 0 && data != nullptr) {
+    out.vertices.assign(data, data + vsize);
+    out.triangles.assign(data + vsize, data + vsize + tsize);
+  }
+  EXPECT_EQ(RoomCreator::CleanUpRoomBounds(), 0);
+  return out;
+}
+
+class CapiConsistency : public ::testing::TestWithParam<const char*> {
+ protected:
+  static synth::RoomSpec spec(const std::string& name) { return *synth::builtin(name); }
+};
+
+TEST_P(CapiConsistency, ThesisAreasAreAnalyzeAreas) {
+  const Scan scan = synth::generate(spec(GetParam()));
+  const std::vector<float> flat = flat_vertices(scan);
+  AnalysisOptions options;
+  options.build_bounds = false;
+  const AnalysisResult expected = analyze(scan_from_flat_array(flat.data(), static_cast<long long>(flat.size())),
+                                          options);
+  ASSERT_TRUE(expected.ok()) << expected.status_message;
+  ASSERT_GT(expected.areas.size(), 0u) << "analyze() found no areas";
+
+  const std::vector<float> floats = thesis_understanding(flat);
+  ASSERT_EQ(floats.size(), expected.areas.size() * 11);
+  for (std::size_t i = 0; i < expected.areas.size(); ++i) {
+    const Area& a = expected.areas[i];
+    const float* f = &floats[i * 11];
+    // The thesis's order (§3.8); the rotation keeps its value (RoomCreatorLibrary.h, "Frame").
+    const float want[11] = {a.center.x, a.center.y,  a.center.z,   a.normal.x,      a.normal.y,
+                            a.normal.z, a.half_height, a.half_width, a.rotation_deg, a.volume_height,
+                            static_cast<float>(a.flags)};
+    for (int k = 0; k < 11; ++k) EXPECT_EQ(f[k], want[k]) << "area " << i << ", element " << k;
+    EXPECT_EQ(static_cast<std::uint32_t>(f[10]), a.flags);
+  }
+
+  // Identical across runs.
+  EXPECT_EQ(thesis_understanding(flat), floats);
+}
+
+TEST_P(CapiConsistency, ThesisBoundsAreAnalyzeBounds) {
+  const Scan scan = synth::generate(spec(GetParam()));
+  const std::vector<float> flat = flat_vertices(scan);
+  AnalysisOptions options;
+  options.find_areas = false;
+  const AnalysisResult expected = analyze(scan_from_flat_array(flat.data(), static_cast<long long>(flat.size())),
+                                          options);
+  ASSERT_TRUE(expected.ok()) << expected.status_message;
+  ASSERT_FALSE(expected.bounds.indices.empty());
+
+  const ThesisBounds got = thesis_bounds(flat);
+  ASSERT_EQ(got.vertices.size(), expected.bounds.vertices.size() * 3);
+  ASSERT_EQ(got.triangles.size(), expected.bounds.indices.size());
+  for (std::size_t v = 0; v < expected.bounds.vertices.size(); ++v)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(got.vertices[v * 3 + k], expected.bounds.vertices[v][k]) << "vertex " << v;
+  for (std::size_t i = 0; i < expected.bounds.indices.size(); ++i)
+    EXPECT_EQ(got.triangles[i], static_cast<float>(expected.bounds.indices[i])) << "index " << i;
+
+  const ThesisBounds again = thesis_bounds(flat);
+  EXPECT_EQ(again.vertices, got.vertices);
+  EXPECT_EQ(again.triangles, got.triangles);
+}
+
+// What an engine script does with element 8: Unity's Quaternion.AngleAxis(angle, normal) * Vector3.right
+// is the usual quaternion rotation, the same numbers as glm::angleAxis. It must give the area's width axis
+// (RoomCreatorLibrary.h, "Frame"): the number passes through with its sign.
+TEST_P(CapiConsistency, ThesisRotationTurnsXOntoTheWidthAxis) {
+  const Scan scan = synth::generate(spec(GetParam()));
+  const std::vector<float> flat = flat_vertices(scan);
+  const AnalysisResult expected = analyze(scan_from_flat_array(flat.data(), static_cast<long long>(flat.size())));
+  ASSERT_TRUE(expected.ok());
+  const std::vector<float> floats = thesis_understanding(flat);
+  ASSERT_EQ(floats.size(), expected.areas.size() * 11);
+  ASSERT_GT(expected.areas.size(), 0u);
+  for (std::size_t i = 0; i < expected.areas.size(); ++i) {
+    const Area& a = expected.areas[i];
+    if (a.type == AreaType::Wall) continue;  // rotation 0; the pose follows from the normal and world up
+    const float* f = &floats[i * 11];
+    const glm::vec3 normal(f[3], f[4], f[5]);
+    const glm::vec3 x = glm::angleAxis(glm::radians(f[8]), normal) * glm::vec3(1, 0, 0);
+    EXPECT_GT(glm::dot(x, a.x_axis()), 1.0f - 1e-4f)
+        << "area " << i << " (" << to_string(a.type) << "): rotation " << f[8] << " turns X to (" << x.x << ", "
+        << x.y << ", " << x.z << "), width axis (" << a.x_axis().x << ", " << a.x_axis().y << ", " << a.x_axis().z
+        << ")";
+  }
+}
+
+TEST_P(CapiConsistency, HandleAreasAreAnalyzeAreas) {
+  const Scan scan = synth::generate(spec(GetParam()));
+  const AnalysisResult expected = analyze(scan);  // with the scan's triangles
+  ASSERT_TRUE(expected.ok());
+  ASSERT_GT(expected.areas.size(), 0u);
+
+  rs_analyzer* analyzer = nullptr;
+  ASSERT_EQ(rs_analyzer_create(nullptr, &analyzer), RS_SUCCESS);
+  ASSERT_EQ(rs_analyzer_compute(analyzer, &scan.vertices[0].x, static_cast<uint32_t>(scan.vertices.size()),
+                                scan.indices.data(), static_cast<uint32_t>(scan.indices.size())),
+            RS_SUCCESS);
+  rs_state state = RS_STATE_IDLE;
+  ASSERT_EQ(rs_analyzer_wait(analyzer, RS_WAIT_INFINITE, &state), RS_SUCCESS);
+  ASSERT_EQ(state, RS_STATE_READY);
+  uint32_t count = 0;
+  ASSERT_EQ(rs_analyzer_get_areas(analyzer, 0, &count, nullptr), RS_SUCCESS);
+  std::vector<rs_area> areas(count);
+  ASSERT_EQ(rs_analyzer_get_areas(analyzer, count, &count, areas.data()), RS_SUCCESS);
+  ASSERT_EQ(areas.size(), expected.areas.size());
+  for (std::size_t i = 0; i < areas.size(); ++i) {
+    const Area& a = expected.areas[i];
+    const rs_area& c = areas[i];
+    EXPECT_EQ(int(c.type), int(a.type));
+    EXPECT_EQ(int(c.size), int(a.size));
+    EXPECT_EQ(int(c.reach), int(a.reach));
+    EXPECT_EQ(c.flags, a.flags);
+    EXPECT_EQ(c.center.x, a.center.x);
+    EXPECT_EQ(c.center.y, a.center.y);
+    EXPECT_EQ(c.center.z, a.center.z);
+    EXPECT_EQ(c.normal.x, a.normal.x);
+    EXPECT_EQ(c.normal.y, a.normal.y);
+    EXPECT_EQ(c.normal.z, a.normal.z);
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_EQ(c.corners[k].x, a.corners[k].x);
+      EXPECT_EQ(c.corners[k].y, a.corners[k].y);
+      EXPECT_EQ(c.corners[k].z, a.corners[k].z);
+    }
+    const glm::quat q = a.orientation();
+    EXPECT_EQ(c.orientation.x, q.x);
+    EXPECT_EQ(c.orientation.y, q.y);
+    EXPECT_EQ(c.orientation.z, q.z);
+    EXPECT_EQ(c.orientation.w, q.w);
+    EXPECT_EQ(c.half_width, a.half_width);
+    EXPECT_EQ(c.half_height, a.half_height);
+    EXPECT_EQ(c.rotation_deg, a.rotation_deg);
+    EXPECT_EQ(c.volume_height, a.volume_height);
+  }
+  rs_layout layout{};
+  ASSERT_EQ(rs_analyzer_get_layout(analyzer, &layout), RS_SUCCESS);
+  EXPECT_EQ(layout.floor_y, expected.floor_y);
+  EXPECT_EQ(layout.ceiling_y, expected.ceiling_y);
+  EXPECT_EQ(layout.storey_count, expected.storeys.size());
+  EXPECT_EQ(layout.bounds_vertex_count, expected.bounds.vertices.size());
+  EXPECT_EQ(layout.bounds_index_count, expected.bounds.indices.size());
+  rs_analyzer_destroy(analyzer);
+}
+
+INSTANTIATE_TEST_SUITE_P(Rooms, CapiConsistency, ::testing::Values("default", "rotated", "pentagon"),
+                         [](const auto& info) { return std::string(info.param); });
+
+}  // namespace
+}  // namespace roomsense

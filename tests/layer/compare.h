@@ -1,0 +1,108 @@
+// Comparing what the layer returns with what the core pipeline or the CLI computes on the same room.
+#pragma once
+#include "layer_harness.h"
+#include "roomsense/analysis.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+namespace layertest {
+
+// The getters against analyze()'s result, bit for bit.
+inline void expect_identical(const Result& got, const roomsense::AnalysisResult& want) {
+  EXPECT_EQ(got.layout.floorHeight, want.floor_y);
+  EXPECT_EQ(got.layout.ceilingHeight, want.ceiling_y);
+  EXPECT_EQ(got.layout.storeyCount, want.storeys.size());
+  EXPECT_EQ(got.layout.inputVertexCount, want.input.vertices);
+  EXPECT_EQ(got.layout.inputTriangleCount, want.input.triangles);
+  ASSERT_EQ(got.areas.size(), want.areas.size());
+  for (std::size_t i = 0; i < want.areas.size(); ++i) {
+    const roomsense::Area& w = want.areas[i];
+    const XrRoomAreaEXTX& g = got.areas[i];
+    const glm::quat q = w.orientation();
+    SCOPED_TRACE("area " + std::to_string(i));
+    EXPECT_EQ(int(g.areaType), int(w.type));
+    EXPECT_EQ(int(g.size), int(w.size));
+    EXPECT_EQ(int(g.interaction), int(w.reach));
+    EXPECT_EQ(g.categoryFlags, w.flags);
+    EXPECT_EQ(g.pose.position.x, w.center.x);
+    EXPECT_EQ(g.pose.position.y, w.center.y);
+    EXPECT_EQ(g.pose.position.z, w.center.z);
+    EXPECT_EQ(g.pose.orientation.x, q.x);
+    EXPECT_EQ(g.pose.orientation.y, q.y);
+    EXPECT_EQ(g.pose.orientation.z, q.z);
+    EXPECT_EQ(g.pose.orientation.w, q.w);
+    EXPECT_EQ(g.extents.width, 2.0f * w.half_width);
+    EXPECT_EQ(g.extents.height, 2.0f * w.half_height);
+    EXPECT_EQ(g.volumeHeight, w.volume_height);
+  }
+  ASSERT_EQ(got.vertices.size(), want.bounds.vertices.size());
+  for (std::size_t i = 0; i < got.vertices.size(); ++i) {
+    EXPECT_EQ(got.vertices[i].x, want.bounds.vertices[i].x);
+    EXPECT_EQ(got.vertices[i].y, want.bounds.vertices[i].y);
+    EXPECT_EQ(got.vertices[i].z, want.bounds.vertices[i].z);
+  }
+  EXPECT_EQ(got.indices, want.bounds.indices);
+}
+
+// Runs `roomsense analyze SOURCE --json` and returns the document.
+inline nlohmann::json run_cli(const std::string& source) {
+  const std::filesystem::path out =
+      std::filesystem::path(::testing::TempDir()) / ("layer_cli_" + std::to_string(::getpid()) + ".json");
+  const std::string command = std::string("'") + ROOMSENSE_CLI + "' analyze '" + source + "' --backend cpu --json '" +
+                              out.string() + "'";
+  const int status = std::system(command.c_str());
+  if (status != 0) throw std::runtime_error("the CLI failed: " + command);
+  std::ifstream in(out);
+  nlohmann::json doc = nlohmann::json::parse(in);
+  std::filesystem::remove(out);
+  return doc;
+}
+
+// The members of the analysis JSON that describe the room (not where it came from, nor how long it took).
+inline const char* const kRoomMembers[] = {"status", "floor_y", "ceiling_y", "storeys", "areas", "bounds", "grid"};
+
+inline void expect_same_room_json(const nlohmann::json& got, const nlohmann::json& want) {
+  for (const char* member : kRoomMembers) {
+    nlohmann::json g = got.at(member), w = want.at(member);
+    if (std::string(member) == "grid") g.erase("backend"), w.erase("backend");
+    EXPECT_EQ(g, w) << "member " << member << " differs";
+  }
+}
+
+// The same with a tolerance on every number: for meshes that went through the runtime's per-chunk component
+// spaces, where each vertex picks up float rounding (about 1e-7 of its distance from the chunk's centre).
+struct JsonDiff {
+  double max_number_difference = 0.0;
+  std::vector<std::string> mismatches;  // structure or non-numeric values
+};
+
+inline void diff_json(const nlohmann::json& g, const nlohmann::json& w, const std::string& path, JsonDiff& d) {
+  if (g.is_number() && w.is_number()) {
+    d.max_number_difference = std::max(d.max_number_difference, std::fabs(g.get<double>() - w.get<double>()));
+  } else if (g.is_array() && w.is_array()) {
+    if (g.size() != w.size()) {
+      d.mismatches.push_back(path + ": " + std::to_string(g.size()) + " entries against " + std::to_string(w.size()));
+      return;
+    }
+    for (std::size_t i = 0; i < g.size(); ++i) diff_json(g[i], w[i], path + "[" + std::to_string(i) + "]", d);
+  } else if (g.is_object() && w.is_object()) {
+    for (auto it = w.begin(); it != w.end(); ++it) {
+      if (!g.contains(it.key())) d.mismatches.push_back(path + "." + it.key() + " missing");
+      else diff_json(g.at(it.key()), it.value(), path + "." + it.key(), d);
+    }
+  } else if (g != w) {
+    d.mismatches.push_back(path + ": " + g.dump() + " against " + w.dump());
+  }
+}
+
+}  // namespace layertest

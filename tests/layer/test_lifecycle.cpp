@@ -1,0 +1,243 @@
+// Lifetimes and threads: getters on several threads while a compute runs, instances destroyed and created
+// again, sessions and analyzers destroyed while an analysis runs, and the capture of the meshes an
+// application reads (with the extension, and without it through ROOMSENSE_EXPORT_DIR).
+#include "compare.h"
+#include "layer_harness.h"
+#include "roomsense/synthetic.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+namespace {
+
+using namespace layertest;
+
+struct Room {
+  std::vector<XrVector3f> vertices;
+  std::vector<uint32_t> indices;
+  explicit Room(const char* source) {
+    const roomsense::Scan s = roomsense::synth::generate_builtin_source(source);
+    for (const glm::vec3& v : s.vertices) vertices.push_back({v.x, v.y, v.z});
+    indices = s.indices;
+  }
+};
+
+std::filesystem::path temp_dir(const std::string& name) {
+  const auto dir = std::filesystem::path(::testing::TempDir()) / (name + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+TEST(LayerLifecycle, GettersOnSeveralThreadsWhileAComputeRuns) {
+  App app;
+  const XrRoomAnalyzerEXTX a = app.analyzer();
+  const Room room("synthetic:thesis-room1");  // about 78k vertices: the compute takes a while
+  app.submit(a, room.vertices, room.indices);
+
+  std::atomic<bool> done{false};
+  std::atomic<int> results{0}, early{0}, failures{0};
+  auto reader = [&] {
+    while (!done.load()) {
+      XrRoomComputeStateEXTX state;
+      if (app.extx.state(a, &state) != XR_SUCCESS) ++failures;
+      XrRoomLayoutEXTX layout{XR_TYPE_ROOM_LAYOUT_EXTX, nullptr};
+      const XrResult r = app.extx.layout(a, &layout);
+      if (r == XR_ERROR_CALL_ORDER_INVALID) {
+        ++early;
+        continue;
+      }
+      if (r != XR_SUCCESS) {
+        ++failures;
+        continue;
+      }
+      uint32_t count = 0;
+      if (app.extx.areas(a, 0, &count, nullptr) != XR_SUCCESS) ++failures;
+      std::vector<XrRoomAreaEXTX> areas(count, {XR_TYPE_ROOM_AREA_EXTX, nullptr});
+      // Every compute here analyses the same meshes, so the count cannot change between the two calls.
+      if (app.extx.areas(a, count, &count, areas.data()) != XR_SUCCESS) ++failures;
+      XrRoomBoundsMeshEXTX bounds{XR_TYPE_ROOM_BOUNDS_MESH_EXTX, nullptr};
+      if (app.extx.bounds(a, &bounds) != XR_SUCCESS) ++failures;
+      std::vector<XrVector3f> v(bounds.vertexCountOutput);
+      bounds.vertexCapacityInput = static_cast<uint32_t>(v.size());
+      bounds.vertices = v.data();
+      if (app.extx.bounds(a, &bounds) != XR_SUCCESS) ++failures;
+      ++results;
+    }
+  };
+  std::vector<std::thread> readers;
+  for (int i = 0; i < 4; ++i) readers.emplace_back(reader);
+  EXPECT_EQ(app.compute(a, false), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  EXPECT_EQ(app.compute(a, false), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);  // readers see the old result meanwhile
+  done = true;
+  for (auto& t : readers) t.join();
+  EXPECT_EQ(failures.load(), 0);
+  EXPECT_GT(results.load(), 0);
+  std::printf("[ figures  ] %d reads before the first result, %d full reads\n", early.load(), results.load());
+}
+
+TEST(LayerLifecycle, InstanceDestroyedAndCreatedAgain) {
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  std::size_t areas = 0;
+  for (int round = 0; round < 3; ++round) {
+    App app;
+    const XrRoomAnalyzerEXTX a = app.analyzer();
+    ASSERT_EQ(app.compute(a, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX) << "round " << round;
+    const Result r = read_result(app.extx, a);
+    if (round > 0) {
+      EXPECT_EQ(r.areas.size(), areas);
+    }
+    areas = r.areas.size();
+    if (round == 1) app.start(a, true);  // this instance goes while an analysis runs
+  }
+  EXPECT_GT(areas, 0u);
+}
+
+TEST(LayerLifecycle, SessionDestroyedWhileTheRuntimeIsQueried) {
+  ScopedEnv delay("ROOMSENSE_SIM_COMPUTE_DELAY_MS", std::string("2000"));
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  App app;
+  const XrRoomAnalyzerEXTX a = app.analyzer();
+  app.start(a, true);
+  const auto start = std::chrono::steady_clock::now();
+  app.close_session();  // the layer's scene query is still waiting for the runtime
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(1500)) << "the query was not cancelled";
+  XrRoomComputeStateEXTX state;
+  EXPECT_EQ(app.extx.state(a, &state), XR_ERROR_HANDLE_INVALID);
+  // The instance carries on with a new session.
+  ScopedEnv quick("ROOMSENSE_SIM_COMPUTE_DELAY_MS", std::string("5"));
+  app.open_session();
+  const XrRoomAnalyzerEXTX b = app.analyzer();
+  const Room room("synthetic:default");
+  app.submit(b, room.vertices, room.indices);
+  EXPECT_EQ(app.compute(b, false), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+}
+
+TEST(LayerLifecycle, SessionDestroyedWhileThePipelineRuns) {
+  App app;
+  const Room room("synthetic:thesis-room1");
+  for (int round = 0; round < 3; ++round) {
+    const XrRoomAnalyzerEXTX a = app.analyzer();
+    app.submit(a, room.vertices, room.indices);
+    app.start(a, false);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5 * round));
+    app.close_session();
+    XrRoomComputeStateEXTX state;
+    EXPECT_EQ(app.extx.state(a, &state), XR_ERROR_HANDLE_INVALID);
+    app.open_session();
+  }
+}
+
+TEST(LayerLifecycle, AnalyzerDestroyedWhileItComputes) {
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  App app;
+  for (int round = 0; round < 3; ++round) {
+    const XrRoomAnalyzerEXTX a = app.analyzer();
+    app.start(a, true);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10 * round));
+    EXPECT_EQ(app.extx.destroy(a), XR_SUCCESS);
+  }
+  const XrRoomAnalyzerEXTX b = app.analyzer();
+  EXPECT_EQ(app.compute(b, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+}
+
+// The application reads the scene itself and then computes: the layer adds what it read, but not twice
+// when its own query served the same meshes.
+TEST(LayerLifecycle, MeshesTheApplicationReadAreNotCountedTwice) {
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  App plain;
+  const XrRoomAnalyzerEXTX p = plain.analyzer();
+  ASSERT_EQ(plain.compute(p, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  const Result want = read_result(plain.extx, p);
+  xrDestroyInstance(plain.instance);
+  plain.instance = XR_NULL_HANDLE;
+
+  App app({XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME, XR_MND_HEADLESS_EXTENSION_NAME, XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME});
+  EXPECT_GT(read_scene_meshes(app), 0u);
+  const XrRoomAnalyzerEXTX a = app.analyzer();
+  ASSERT_EQ(app.compute(a, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  const Result got = read_result(app.extx, a);
+  const nlohmann::json doc = nlohmann::json::parse(got.json);
+  EXPECT_GT(doc["openxr"]["runtime_meshes"].get<int>(), 0);
+  EXPECT_EQ(doc["openxr"]["app_read_meshes"].get<int>(), 0) << "the application's meshes duplicate the layer's";
+  EXPECT_EQ(got.layout.inputVertexCount, want.layout.inputVertexCount);
+  EXPECT_EQ(got.areas.size(), want.areas.size());
+  EXPECT_EQ(got.indices, want.indices);
+}
+
+// An application that never enables the extension but reads the scene meshes: with ROOMSENSE_EXPORT_DIR the
+// layer analyses what it read (passive capture, placed with the components' poses) and exports the result.
+TEST(LayerLifecycle, ExportDirAnalysesWhatAnApplicationWithoutTheExtensionRead) {
+  const auto dir = temp_dir("layer_export_only");
+  ScopedEnv export_dir("ROOMSENSE_EXPORT_DIR", dir.string());
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  std::size_t read = 0;
+  {
+    App app({XR_MND_HEADLESS_EXTENSION_NAME, XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME});
+    read = read_scene_meshes(app);
+    EXPECT_GT(read, 0u);
+    // The analysis runs once the application is done with the scene, in the background; the session's end
+    // waits for it.
+    app.close_session();
+    EXPECT_TRUE(std::filesystem::exists(dir / "analysis.json"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "bounds.obj"));
+  }
+  std::ifstream in(dir / "analysis.json");
+  const nlohmann::json got = nlohmann::json::parse(in);
+  EXPECT_EQ(got.at("schema"), "roomsense.analysis/1");
+  EXPECT_EQ(got.at("openxr").at("app_read_meshes").get<std::size_t>(), read);
+  EXPECT_EQ(got.at("openxr").at("runtime_meshes").get<int>(), 0);
+  // What the application read is the whole room, so the result is the CLI's (within the components' rounding).
+  const nlohmann::json cli = run_cli("synthetic:default");
+  JsonDiff d;
+  for (const char* member : kRoomMembers) {
+    nlohmann::json g = got.at(member), w = cli.at(member);
+    if (std::string(member) == "grid") g.erase("backend"), w.erase("backend");
+    diff_json(g, w, member, d);
+  }
+  for (const std::string& m : d.mismatches) ADD_FAILURE() << m;
+  EXPECT_LE(d.max_number_difference, 1e-4);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(LayerLifecycle, ExportDirAfterEachAnalysisWithTheExtension) {
+  const auto dir = temp_dir("layer_export");
+  ScopedEnv export_dir("ROOMSENSE_EXPORT_DIR", (dir / "nested").string());
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  App app;
+  const XrRoomAnalyzerEXTX a = app.analyzer();
+  ASSERT_EQ(app.compute(a, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  const Result r = read_result(app.extx, a);
+  std::ifstream in(dir / "nested" / "analysis.json");
+  ASSERT_TRUE(in.good());
+  const nlohmann::json doc = nlohmann::json::parse(in);
+  EXPECT_EQ(doc.at("areas").size(), r.areas.size());
+  EXPECT_EQ(doc, nlohmann::json::parse(r.json));
+  std::ifstream obj(dir / "nested" / "bounds.obj");
+  std::size_t faces = 0;
+  for (std::string line; std::getline(obj, line);) faces += line.rfind("f ", 0) == 0;
+  EXPECT_EQ(faces, r.indices.size() / 3);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(LayerLifecycle, ResultsAreInTheAnalyzersBaseSpace) {
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  App app;
+  const XrRoomAnalyzerEXTX in_local = app.analyzer();
+  ASSERT_EQ(app.compute(in_local, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  const Result l = read_result(app.extx, in_local);
+  // A LOCAL space 1 m higher: every height comes out 1 m lower.
+  const XrSpace raised = app.reference_space(XR_REFERENCE_SPACE_TYPE_LOCAL, {{0, 0, 0, 1}, {0, 1, 0}});
+  const XrRoomAnalyzerEXTX in_raised = app.analyzer(raised);
+  ASSERT_EQ(xrDestroySpace(raised), XR_SUCCESS);  // the analyzer keeps its own copy
+  ASSERT_EQ(app.compute(in_raised, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  const Result r = read_result(app.extx, in_raised);
+  EXPECT_NEAR(r.layout.floorHeight, l.layout.floorHeight - 1.0f, 1e-4f);
+  EXPECT_NEAR(r.layout.ceilingHeight, l.layout.ceilingHeight - 1.0f, 1e-4f);
+  EXPECT_NEAR(r.layout.boundsMin.y, l.layout.boundsMin.y - 1.0f, 1e-4f);
+}
+
+}  // namespace

@@ -1,0 +1,148 @@
+// The layer's results against the CLI's and analyze()'s on the same room file.
+//
+// Submitted meshes (xrSubmitRoomMeshEXTX with an identity pose) reach the pipeline bit for bit, so there the
+// layer must match exactly. The runtime's meshes do not: the simulated runtime serves each chunk of the room
+// in its own component space (the chunk's centre, turned by a per-chunk yaw), like a real device, and the
+// layer maps the vertices back with the located pose. Each vertex comes back within float rounding of where
+// the file has it (a few 1e-7 m). That moves the grid origin (the minimum vertex) and the measured surface
+// heights by as much, and could flip a vertex lying within that distance of a voxel boundary into the next
+// voxel. So the comparison there allows 1e-4 m on every number and no structural difference (the same areas
+// of the same types, sizes and reach, the same bounds counts); ROOMSENSE_SIM_CHUNK_SIZE=1000 serves the room
+// as one component (one pose), the default 2 m chunks as many.
+#include "compare.h"
+#include "rooms.h"
+#include "roomsense/analysis.h"
+#include "roomsense/export.h"
+#include "roomsense/scanio.h"
+#include "roomsense/synthetic.h"
+
+#include <dlfcn.h>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace layertest;
+
+std::vector<XrVector3f> xr_vertices(const roomsense::Scan& scan) {
+  std::vector<XrVector3f> v;
+  v.reserve(scan.vertices.size());
+  for (const glm::vec3& p : scan.vertices) v.push_back({p.x, p.y, p.z});
+  return v;
+}
+
+Result analyse_submitted(const roomsense::Scan& scan) {
+  App app;
+  const XrRoomAnalyzerEXTX a = app.analyzer();
+  app.submit(a, xr_vertices(scan), scan.indices);
+  EXPECT_EQ(app.compute(a, false), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  return read_result(app.extx, a);
+}
+
+TEST(LayerResults, SubmittedSyntheticRoomMatchesAnalyzeAndTheCliExactly) {
+  const roomsense::Scan scan = roomsense::synth::generate_builtin_source("synthetic:default");
+  const Result got = analyse_submitted(scan);
+  roomsense::AnalysisOptions options;
+  const roomsense::AnalysisResult want = roomsense::analyze(scan, options);
+  ASSERT_TRUE(want.ok());
+  EXPECT_FALSE(want.areas.empty()) << "the pipeline finds no areas in the default room";
+  expect_identical(got, want);
+  expect_same_room_json(nlohmann::json::parse(got.json), run_cli("synthetic:default"));
+}
+
+// The Vulkan voxel stage through the layer (lavapipe where there is no GPU): the same room as the CPU path,
+// by the compute backend's design. ROOMSENSE_BACKEND steers analyzers that ask for AUTO, and only those.
+TEST(LayerResults, VulkanBackendMatchesTheCpuBackend) {
+  // The Vulkan loader finds its drivers through XDG_DATA_DIRS, which the test environment empties (so that no
+  // host OpenXR layer joins in); the system's data dirs hold only explicit OpenXR layers.
+  ScopedEnv data_dirs("XDG_DATA_DIRS", std::string("/usr/local/share:/usr/share"));
+  // The layer, and with it the Vulkan loader and driver, is unloaded with each instance. Keeping the Vulkan
+  // libraries loaded lets LeakSanitizer name them (lsan.supp suppresses the driver stack's own leaks by name).
+  for (const char* lib : {"libvulkan.so.1", "libvulkan_lvp.so"}) dlopen(lib, RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
+  const roomsense::Scan scan = roomsense::synth::generate_builtin_source("synthetic:default");
+  auto run = [&](XrRoomComputeBackendEXTX backend) {
+    App app;
+    const XrRoomAnalyzerEXTX a = app.analyzer(XR_NULL_HANDLE, 0.0f, backend);
+    app.submit(a, xr_vertices(scan), scan.indices);
+    EXPECT_EQ(app.compute(a, false), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+    return nlohmann::json::parse(read_result(app.extx, a).json);
+  };
+  const nlohmann::json cpu = run(XR_ROOM_COMPUTE_BACKEND_CPU_EXTX);
+  EXPECT_EQ(cpu["grid"]["backend"], "cpu");
+  const nlohmann::json vulkan = run(XR_ROOM_COMPUTE_BACKEND_VULKAN_EXTX);
+  if (vulkan["grid"]["backend"] != "vulkan") {
+    if (roomsense::test::running_in_ci()) FAIL() << "CI must have a Vulkan device (lavapipe)";
+    GTEST_SKIP() << "no Vulkan device: the layer fell back to the CPU path";
+  }
+  expect_same_room_json(vulkan, cpu);
+  ScopedEnv env("ROOMSENSE_BACKEND", std::string("vulkan"));
+  EXPECT_EQ(run(XR_ROOM_COMPUTE_BACKEND_AUTO_EXTX)["grid"]["backend"], "vulkan");
+  EXPECT_EQ(run(XR_ROOM_COMPUTE_BACKEND_CPU_EXTX)["grid"]["backend"], "cpu");
+}
+
+class LayerRealRoom : public testing::TestWithParam<const char*> {};
+
+TEST_P(LayerRealRoom, SubmittedScanMatchesAnalyzeAndTheCliExactly) {
+  ROOMSENSE_REQUIRE_ROOM(path, GetParam());
+  const roomsense::Scan scan = roomsense::scanio::load_mesh_file(path.string());
+  const Result got = analyse_submitted(scan);
+  const roomsense::AnalysisResult want = roomsense::analyze(scan);
+  ASSERT_TRUE(want.ok());
+  expect_identical(got, want);
+  expect_same_room_json(nlohmann::json::parse(got.json), run_cli(path.string()));
+}
+
+// The room through the simulated runtime and the layer's own scene query, against the CLI on the same file.
+void expect_runtime_matches_cli(const std::string& source, const std::optional<std::string>& chunk) {
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", source);
+  ScopedEnv chunk_size("ROOMSENSE_SIM_CHUNK_SIZE", chunk);
+  Result got;
+  {
+    App app;
+    const XrRoomAnalyzerEXTX a = app.analyzer();
+    ASSERT_EQ(app.compute(a, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+    got = read_result(app.extx, a);
+  }
+  const nlohmann::json layer = nlohmann::json::parse(got.json);
+  const nlohmann::json cli = run_cli(source);
+  EXPECT_GE(layer.at("openxr").at("runtime_meshes").get<int>(), 1);
+  JsonDiff d;
+  for (const char* member : kRoomMembers) {
+    nlohmann::json g = layer.at(member), w = cli.at(member);
+    if (std::string(member) == "grid") g.erase("backend"), w.erase("backend");
+    diff_json(g, w, member, d);
+  }
+  for (const std::string& m : d.mismatches) ADD_FAILURE() << source << ": " << m;
+  EXPECT_LE(d.max_number_difference, 1e-4) << source;
+  std::printf("[ figures  ] %s (chunks %s): %zu areas, %zu bounds triangles, largest difference to the CLI %.2g m\n",
+              source.c_str(), chunk ? chunk->c_str() : "2 m", got.areas.size(), got.indices.size() / 3,
+              d.max_number_difference);
+}
+
+TEST(LayerResults, RuntimeMeshesOfTheDefaultRoomMatchTheCliAsOneComponent) {
+  expect_runtime_matches_cli("synthetic:default", "1000");
+}
+
+TEST(LayerResults, RuntimeMeshesOfTheDefaultRoomMatchTheCliInChunks) {
+  expect_runtime_matches_cli("synthetic:default", std::nullopt);
+}
+
+TEST_P(LayerRealRoom, RuntimeMeshesMatchTheCliAsOneComponent) {
+  ROOMSENSE_REQUIRE_ROOM(path, GetParam());
+  expect_runtime_matches_cli(path.string(), "1000");
+}
+
+TEST_P(LayerRealRoom, RuntimeMeshesMatchTheCliInChunks) {
+  ROOMSENSE_REQUIRE_ROOM(path, GetParam());
+  expect_runtime_matches_cli(path.string(), std::nullopt);
+}
+
+INSTANTIATE_TEST_SUITE_P(Rooms, LayerRealRoom,
+                         testing::Values("quest-iwer/living_room_global_mesh.obj", "quest-iwer/meeting_room_global_mesh.obj",
+                                         "quest-iwer/music_room_global_mesh.obj", "quest-iwer/office_large_global_mesh.obj",
+                                         "quest-iwer/office_small_global_mesh.obj",
+                                         "hololens1/holotoolkit_fake_spatial_mapping.obj",
+                                         "hololens1/mrtk_example_spatial_mesh.obj", "hololens2-su/SU_Kitchen_world_mesh.obj",
+                                         "hololens2-su/SU_Apartment_world_mesh.obj"));
+
+}  // namespace

@@ -1,0 +1,362 @@
+// The report (report.h): plan.svg is well-formed XML with one element per area in its reach colour, with and
+// without voxel features; scene.glb passes a structural check, reads back through assimp and, where the
+// Khronos glTF-Validator is installed, passes it; `roomsense analyze --report` writes both or fails clearly.
+#include "report_checks.h"
+#include "roomsense/analysis.h"
+#include "roomsense/error.h"
+#include "roomsense/report.h"
+#include "roomsense/synthetic.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace roomsense {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Room {
+  Scan scan;
+  AnalysisResult result;
+};
+
+const Room& default_room() {
+  static const Room room = [] {
+    Room r;
+    r.scan = synth::generate(synth::default_room());
+    r.result = analyze(r.scan);
+    return r;
+  }();
+  return room;
+}
+
+// Per-process paths: ctest runs the tests of this binary in parallel processes.
+std::string temp_path(const std::string& name) {
+  return testing::TempDir() + "/" + std::to_string(getpid()) + "_report_" + name;
+}
+
+std::string expected_node_name(std::size_t i, const Area& a) {
+  return "area " + std::to_string(i) + " " + std::string(to_string(a.type)) + " " + std::string(to_string(a.size)) +
+         " " + std::string(to_string(a.reach));
+}
+
+// Every area exactly once, in the right reach colour, with the right data attributes and a title.
+void expect_one_element_per_area(const test::SvgReading& svg, std::span<const Area> areas) {
+  ASSERT_EQ(svg.areas.size(), areas.size());
+  std::set<std::string> seen;
+  for (const test::SvgArea& e : svg.areas) {
+    ASSERT_TRUE(seen.insert(e.index).second) << "area " << e.index << " twice";
+    const std::size_t i = std::stoul(e.index);
+    ASSERT_LT(i, areas.size());
+    const Area& a = areas[i];
+    EXPECT_EQ(e.type, to_string(a.type));
+    EXPECT_EQ(e.size, to_string(a.size));
+    EXPECT_EQ(e.reach, to_string(a.reach));
+    EXPECT_EQ(test::dominant_channel(e.fill), test::expected_channel(e.reach)) << e.fill << " for " << e.reach;
+    EXPECT_NE(e.title.find("area " + e.index + ":"), std::string::npos) << e.title;
+    // Four finite points.
+    int points = 0;
+    std::size_t at = 0;
+    while (at < e.points.size()) {
+      const std::size_t end = e.points.find(' ', at);
+      const std::string pt = e.points.substr(at, end == std::string::npos ? std::string::npos : end - at);
+      const std::size_t comma = pt.find(',');
+      ASSERT_NE(comma, std::string::npos) << e.points;
+      EXPECT_TRUE(std::isfinite(std::stod(pt.substr(0, comma))) && std::isfinite(std::stod(pt.substr(comma + 1))));
+      ++points;
+      if (end == std::string::npos) break;
+      at = end + 1;
+    }
+    EXPECT_EQ(points, 4) << e.points;
+  }
+}
+
+// One area of each type and reach, made as an app would from the layer's poses.
+std::vector<Area> handmade_areas() {
+  const glm::quat floor_pose = glm::angleAxis(glm::radians(-90.0f), glm::vec3(1, 0, 0));  // +Z to +Y
+  const glm::quat ceiling_pose = glm::angleAxis(glm::radians(90.0f), glm::vec3(1, 0, 0));  // +Z to -Y
+  const glm::quat wall_pose = glm::angleAxis(glm::radians(90.0f), glm::vec3(0, 1, 0));     // +Z to +X
+  return {
+      area_from_pose(AreaType::Floor, AreaSize::Large, Reach::Close, {0, 0, 0}, floor_pose, 2, 2),
+      area_from_pose(AreaType::Ceiling, AreaSize::Medium, Reach::Distance, {0, 2.6f, 0}, ceiling_pose, 1, 1),
+      area_from_pose(AreaType::Wall, AreaSize::Small, Reach::None, {-2.4f, 1.5f, 0.5f}, wall_pose, 0.5f, 0.3f),
+      area_from_pose(AreaType::Furniture, AreaSize::Small, Reach::Close, {1, 0.75f, 1}, floor_pose, 0.5f, 0.5f),
+  };
+}
+
+TEST(Report, PlanIsWellFormedWithOneElementPerAreaInItsReachColour) {
+  const Room& room = default_room();
+  ASSERT_TRUE(room.result.ok());
+  ASSERT_FALSE(room.result.areas.empty()) << "the area search returned nothing";
+  const std::string text = plan_svg(report_input(room.result, room.scan, "synthetic:default"));
+  const test::SvgReading svg = test::read_svg(text);
+  ASSERT_TRUE(svg.well_formed) << svg.error;
+  EXPECT_EQ(svg.root, "svg");
+  expect_one_element_per_area(svg, room.result.areas);
+  for (const char* id : {"footprint", "furniture-tops", "wall-columns", "wall-normals", "bounds-outline", "legend",
+                         "scale-bar", "axes"})
+    EXPECT_TRUE(svg.ids.count(id)) << id;
+  EXPECT_FALSE(svg.path_data.at("wall-columns").empty());
+  EXPECT_FALSE(svg.path_data.at("wall-normals").empty());
+  EXPECT_FALSE(svg.path_data.at("bounds-outline").empty());
+  // Every reach appears among the legend's labels, and the heights are printed.
+  for (const char* s : {"close", "distance", "none", "floor y = 0.00 m", "ceiling y = 2.60 m"})
+    EXPECT_NE(text.find(s), std::string::npos) << s;
+}
+
+TEST(Report, PlanFromWhatTheLayerGivesDrawsTheFootprintFromTheBounds) {
+  const Room& room = default_room();
+  // An app has the areas, the bounds, the heights and the meshes it submitted, but no voxel features.
+  const std::vector<Area> areas = handmade_areas();
+  ReportInput in;
+  in.title = "app";
+  in.floor_y = room.result.floor_y;
+  in.ceiling_y = room.result.ceiling_y;
+  in.areas = areas;
+  in.bounds = &room.result.bounds;
+  in.scan = std::span<const Scan>(&room.scan, 1);
+  const std::string text = plan_svg(in);
+  const test::SvgReading svg = test::read_svg(text);
+  ASSERT_TRUE(svg.well_formed) << svg.error;
+  expect_one_element_per_area(svg, areas);
+  ASSERT_TRUE(svg.path_data.count("footprint"));
+  EXPECT_FALSE(svg.path_data.at("footprint").empty());
+  EXPECT_FALSE(svg.path_data.at("bounds-outline").empty());
+  EXPECT_FALSE(svg.ids.count("wall-columns"));
+  EXPECT_FALSE(svg.ids.count("wall-normals"));
+}
+
+TEST(Report, PlanSurvivesEmptyInputAndMarkupInTheTitle) {
+  ReportInput in;
+  in.title = "a<b>&\"c\"'d'\x01";
+  const test::SvgReading empty = test::read_svg(plan_svg(in));
+  ASSERT_TRUE(empty.well_formed) << empty.error;
+  EXPECT_TRUE(empty.areas.empty());
+  // Bad features (sizes that do not match the grid) are ignored rather than read out of bounds.
+  GridSpec spec;
+  spec.nx = spec.nz = 4;
+  spec.ny = 3;
+  RoomFeatures wrong;
+  in.voxels = {&spec, &wrong};
+  const std::vector<Area> areas = handmade_areas();
+  in.areas = areas;
+  const test::SvgReading svg = test::read_svg(plan_svg(in));
+  ASSERT_TRUE(svg.well_formed) << svg.error;
+  expect_one_element_per_area(svg, areas);
+  // An area with a reach outside the enum (an app can build any Area) is left out of both pictures.
+  std::vector<Area> odd = areas;
+  odd.push_back(areas[0]);
+  odd.back().reach = static_cast<Reach>(0);
+  in.areas = odd;
+  EXPECT_EQ(test::read_svg(plan_svg(in)).areas.size(), areas.size());
+  EXPECT_EQ(test::check_glb(scene_glb(in).encode()).node_names.size(), areas.size());  // no scan, no bounds
+}
+
+TEST(Report, AreasFromPosesGoCounterClockwiseFromTheFront) {
+  for (const Area& a : handmade_areas()) {
+    const glm::vec3 turn = glm::cross(a.corners[1] - a.corners[0], a.corners[2] - a.corners[1]);
+    EXPECT_GT(glm::dot(turn, a.normal), 0.0f) << to_string(a.type);
+    EXPECT_NEAR(glm::length(a.corners[1] - a.corners[0]), 2.0f * a.half_width, 1e-5f);
+    EXPECT_NEAR(glm::length(a.corners[2] - a.corners[1]), 2.0f * a.half_height, 1e-5f);
+    EXPECT_EQ(a.flags, category_flags(a.type, a.size, a.reach));
+  }
+  EXPECT_NEAR(handmade_areas()[0].normal.y, 1.0f, 1e-6f);   // floor: up
+  EXPECT_NEAR(handmade_areas()[1].normal.y, -1.0f, 1e-6f);  // ceiling: down
+  EXPECT_NEAR(handmade_areas()[2].normal.x, 1.0f, 1e-6f);   // wall at x = -2.4: into the room
+}
+
+TEST(Report, SceneGlbPassesTheStructuralCheckWithANodePerArea) {
+  const Room& room = default_room();
+  const ReportInput in = report_input(room.result, room.scan, "synthetic:default");
+  const test::GlbReading glb = test::check_glb(scene_glb(in).encode());
+  for (const std::string& p : glb.problems) ADD_FAILURE() << p;
+  ASSERT_EQ(glb.node_names.size(), room.result.areas.size() + 2);
+  EXPECT_EQ(glb.node_names[0], "scan");
+  EXPECT_EQ(glb.node_names[1], "bounds");
+  for (std::size_t i = 0; i < room.result.areas.size(); ++i)
+    EXPECT_EQ(glb.node_names[i + 2], expected_node_name(i, room.result.areas[i]));
+  // The scan is grey and opaque; areas carry their reach in the dominant channel of their colour.
+  const auto& materials = glb.doc["materials"];
+  const auto& meshes = glb.doc["meshes"];
+  const auto colour = [&](std::size_t node) {
+    const std::size_t mesh = glb.doc["nodes"][node]["mesh"].get<std::size_t>();
+    return materials[meshes[mesh]["primitives"][0]["material"].get<std::size_t>()]["pbrMetallicRoughness"]["baseColorFactor"];
+  };
+  const auto grey = colour(0);
+  EXPECT_EQ(grey[0], grey[1]);
+  EXPECT_EQ(grey[1], grey[2]);
+  EXPECT_EQ(grey[3].get<float>(), 1.0f);
+  for (std::size_t i = 0; i < room.result.areas.size(); ++i) {
+    const auto c = colour(i + 2);
+    const float r = c[0].get<float>(), g = c[1].get<float>(), b = c[2].get<float>();
+    const char dominant = r > g && r > b ? 'r' : g > r && g > b ? 'g' : b > r && b > g ? 'b' : '?';
+    EXPECT_EQ(dominant, test::expected_channel(std::string(to_string(room.result.areas[i].reach))));
+  }
+}
+
+TEST(Report, SceneGlbMergesSeveralSubmittedMeshesAndDropsNonFiniteVertices) {
+  Scan a{{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {NAN, 0, 0}}, {0, 2, 1, 0, 3, 1}};  // the second face touches NaN
+  Scan b{{{0, 2, 0}, {1, 2, 0}, {0, 2, 1}}, {0, 1, 2, 0, 1, 7}};                // the second face is out of range
+  const std::vector<Scan> meshes = {a, b};
+  const std::vector<Area> areas = handmade_areas();
+  ReportInput in;
+  in.scan = meshes;
+  in.areas = areas;
+  const test::GlbReading glb = test::check_glb(scene_glb(in).encode());
+  for (const std::string& p : glb.problems) ADD_FAILURE() << p;
+  ASSERT_EQ(glb.node_names.size(), 1 + areas.size());  // no bounds given: no bounds node
+  EXPECT_EQ(glb.node_names[0], "scan");
+  EXPECT_EQ(glb.doc["accessors"][0]["count"].get<int>(), 6);  // finite vertices of both meshes
+  EXPECT_EQ(glb.doc["accessors"][1]["count"].get<int>(), 6);  // two faces kept
+}
+
+TEST(Report, SceneGlbReadsBackThroughAssimp) {
+  const Room& room = default_room();
+  const std::string dir = temp_path("assimp");
+  write_report(report_input(room.result, room.scan, "synthetic:default"), dir);
+  const std::string path = dir + "/scene.glb";
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+  ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+  ASSERT_NE(scene->mRootNode, nullptr);
+  const std::size_t nodes = room.result.areas.size() + 2;
+  EXPECT_EQ(scene->mNumMeshes, nodes);
+  std::set<std::string> names;
+  const auto collect = [&](const aiNode* n, auto&& self) -> void {
+    if (n->mNumMeshes > 0) names.insert(n->mName.C_Str());
+    for (unsigned i = 0; i < n->mNumChildren; ++i) self(n->mChildren[i], self);
+  };
+  collect(scene->mRootNode, collect);
+  EXPECT_EQ(names.size(), nodes);
+  EXPECT_TRUE(names.count("scan"));
+  EXPECT_TRUE(names.count("bounds"));
+  for (std::size_t i = 0; i < room.result.areas.size(); ++i)
+    EXPECT_TRUE(names.count(expected_node_name(i, room.result.areas[i]))) << i;
+  // Geometry survives: the scan's triangles and the bounds' vertices, and two triangles per area.
+  std::size_t faces = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) faces += scene->mMeshes[m]->mNumFaces;
+  EXPECT_EQ(faces, room.scan.indices.size() / 3 + room.result.bounds.indices.size() / 3 + 2 * room.result.areas.size());
+  fs::remove_all(dir);
+}
+
+TEST(Report, WriteReportCreatesTheFolderOrSaysWhyNot) {
+  const Room& room = default_room();
+  const ReportInput in = report_input(room.result, room.scan, "synthetic:default");
+  const std::string dir = temp_path("nested") + "/a/b";
+  fs::remove_all(temp_path("nested"));
+  write_report(in, dir);
+  EXPECT_TRUE(fs::is_regular_file(dir + "/plan.svg"));
+  EXPECT_TRUE(fs::is_regular_file(dir + "/scene.glb"));
+  EXPECT_TRUE(test::read_svg(std::string(std::istreambuf_iterator<char>(std::ifstream(dir + "/plan.svg").rdbuf()), {}))
+                  .well_formed);
+  // A folder below a regular file cannot be made.
+  const std::string file = temp_path("a_file");
+  std::ofstream(file) << "x";
+  try {
+    write_report(in, file + "/report");
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Io);
+    EXPECT_NE(std::string(e.what()).find(file), std::string::npos) << e.what();
+  }
+  fs::remove_all(temp_path("nested"));
+  fs::remove(file);
+}
+
+// The Khronos glTF-Validator (npm package gltf-validator), where installed: ROOMSENSE_GLTF_VALIDATOR names
+// the folder that holds node_modules/gltf-validator (CI installs it there when npm can reach its registry).
+TEST(Report, SceneGlbPassesTheKhronosValidatorWhereInstalled) {
+  const char* dir = std::getenv("ROOMSENSE_GLTF_VALIDATOR");
+  if (dir == nullptr || *dir == '\0' || !fs::exists(fs::path(dir) / "node_modules" / "gltf-validator"))
+    GTEST_SKIP() << "set ROOMSENSE_GLTF_VALIDATOR to a folder with node_modules/gltf-validator (npm install --prefix DIR gltf-validator)";
+  const Room& room = default_room();
+  const std::string out = temp_path("validator");
+  write_report(report_input(room.result, room.scan, "synthetic:default"), out);
+  const std::string cmd = "NODE_PATH='" + std::string(dir) + "/node_modules' node '" ROOMSENSE_GLTF_VALIDATE_SCRIPT "' '" +
+                          out + "/scene.glb' 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string output;
+  char buf[512];
+  while (std::fgets(buf, sizeof buf, pipe) != nullptr) output += buf;
+  const int status = pclose(pipe);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << output;
+  std::printf("%s", output.c_str());
+  fs::remove_all(out);
+}
+
+// ---- the CLI ----
+
+struct CliRun {
+  int status = -1;
+  std::string err;
+};
+
+CliRun run_cli(const std::string& args) {
+  const std::string err_path = temp_path("cli_stderr.txt");
+  const std::string cmd = std::string(ROOMSENSE_CLI) + " " + args + " >/dev/null 2>" + err_path;
+  const int raw = std::system(cmd.c_str());
+  CliRun r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  {
+    std::ifstream in(err_path);
+    r.err.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  fs::remove(err_path);
+  return r;
+}
+
+TEST(ReportCli, AnalyzeWritesBothFilesIntoANewFolder) {
+  const std::string dir = temp_path("cli") + "/report";
+  fs::remove_all(temp_path("cli"));
+  const CliRun r = run_cli("analyze synthetic:default --report " + dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const test::SvgReading svg = test::read_svg(
+      std::string(std::istreambuf_iterator<char>(std::ifstream(dir + "/plan.svg").rdbuf()), {}));
+  ASSERT_TRUE(svg.well_formed) << svg.error;
+  EXPECT_EQ(svg.areas.size(), default_room().result.areas.size());
+  const test::GlbReading glb = test::check_glb(test::read_bytes(dir + "/scene.glb"));
+  EXPECT_TRUE(glb.problems.empty());
+  EXPECT_EQ(glb.node_names.size(), default_room().result.areas.size() + 2);
+  fs::remove_all(temp_path("cli"));
+}
+
+TEST(ReportCli, AnUnwritableFolderGetsOneLineAndExitStatus1) {
+  const std::string file = temp_path("cli_file");
+  std::ofstream(file) << "x";
+  const CliRun r = run_cli("analyze synthetic:default --json /dev/null --report " + file + "/report");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("roomsense analyze: cannot create report folder"), std::string::npos) << r.err;
+  const CliRun missing = run_cli("analyze synthetic:default --report");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("--report needs a value"), std::string::npos) << missing.err;
+  fs::remove(file);
+}
+
+TEST(ReportCli, HelpNamesTheReportOption) {
+  const std::string out = temp_path("help.txt");
+  ASSERT_EQ(std::system((std::string(ROOMSENSE_CLI) + " analyze --help >" + out).c_str()), 0);
+  const std::string help(std::istreambuf_iterator<char>(std::ifstream(out).rdbuf()), {});
+  EXPECT_NE(help.find("--report DIR"), std::string::npos) << help;
+  fs::remove(out);
+}
+
+}  // namespace
+}  // namespace roomsense

@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include "sim_env.h"
+#include "xr_harness.h"
+
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -22,36 +25,13 @@ namespace layertest {
 
 inline constexpr const char* kLayerName = "XR_APILAYER_ROOMSENSE_room_understanding";
 
-inline void check(XrResult result, const char* what) {
-  if (result != XR_SUCCESS) throw std::runtime_error(std::string(what) + " returned " + std::to_string(result));
-}
+// The simulated runtime's test helpers serve here too: scoped environment variables, checked calls and
+// xrGetInstanceProcAddr lookups.
+using simtest::check;
+using simtest::Msft;
+using simtest::proc;
+using simtest::ScopedEnv;
 #define LT_CHECK(call) ::layertest::check((call), #call)
-
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::optional<std::string>& value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    if (value) setenv(name, value->c_str(), 1);
-    else unsetenv(name);
-  }
-  ~ScopedEnv() {
-    if (old_) setenv(name_.c_str(), old_->c_str(), 1);
-    else unsetenv(name_.c_str());
-  }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  std::string name_;
-  std::optional<std::string> old_;
-};
-
-template <typename PFN>
-PFN proc(XrInstance instance, const char* name) {
-  PFN_xrVoidFunction fn = nullptr;
-  check(xrGetInstanceProcAddr(instance, name, &fn), name);
-  return reinterpret_cast<PFN>(fn);
-}
 
 struct Extx {
   PFN_xrCreateRoomAnalyzerEXTX create = nullptr;
@@ -72,30 +52,6 @@ struct Extx {
     layout = proc<PFN_xrGetRoomLayoutEXTX>(i, "xrGetRoomLayoutEXTX");
     areas = proc<PFN_xrGetRoomAreasEXTX>(i, "xrGetRoomAreasEXTX");
     bounds = proc<PFN_xrGetRoomBoundsMeshEXTX>(i, "xrGetRoomBoundsMeshEXTX");
-  }
-};
-
-struct Msft {
-  PFN_xrCreateSceneObserverMSFT createObserver = nullptr;
-  PFN_xrDestroySceneObserverMSFT destroyObserver = nullptr;
-  PFN_xrCreateSceneMSFT createScene = nullptr;
-  PFN_xrDestroySceneMSFT destroyScene = nullptr;
-  PFN_xrComputeNewSceneMSFT compute = nullptr;
-  PFN_xrGetSceneComputeStateMSFT computeState = nullptr;
-  PFN_xrGetSceneComponentsMSFT components = nullptr;
-  PFN_xrLocateSceneComponentsMSFT locate = nullptr;
-  PFN_xrGetSceneMeshBuffersMSFT meshBuffers = nullptr;
-
-  void load(XrInstance i) {
-    createObserver = proc<PFN_xrCreateSceneObserverMSFT>(i, "xrCreateSceneObserverMSFT");
-    destroyObserver = proc<PFN_xrDestroySceneObserverMSFT>(i, "xrDestroySceneObserverMSFT");
-    createScene = proc<PFN_xrCreateSceneMSFT>(i, "xrCreateSceneMSFT");
-    destroyScene = proc<PFN_xrDestroySceneMSFT>(i, "xrDestroySceneMSFT");
-    compute = proc<PFN_xrComputeNewSceneMSFT>(i, "xrComputeNewSceneMSFT");
-    computeState = proc<PFN_xrGetSceneComputeStateMSFT>(i, "xrGetSceneComputeStateMSFT");
-    components = proc<PFN_xrGetSceneComponentsMSFT>(i, "xrGetSceneComponentsMSFT");
-    locate = proc<PFN_xrLocateSceneComponentsMSFT>(i, "xrLocateSceneComponentsMSFT");
-    meshBuffers = proc<PFN_xrGetSceneMeshBuffersMSFT>(i, "xrGetSceneMeshBuffersMSFT");
   }
 };
 

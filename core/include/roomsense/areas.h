@@ -104,7 +104,8 @@ struct AreaResult {
 
 // The most corner pairs one of the 12 searches may try. The pairs grow with the fourth power of 1 / voxel
 // size; at 0.1 m voxels the 20 x 14 m hall needs about 2 % of this. Past it (voxels much finer than the
-// thesis's, over a large room) that search is skipped with a warning, rather than running for minutes.
+// thesis's, or a hall of thousands of square metres) that search is skipped with a warning, rather than
+// running for minutes.
 inline constexpr double kAreaSearchBudget = 1.0e8;
 
 // Where horizontal areas sit, in metres: the measured floor and ceiling surfaces of the main storey.

@@ -53,6 +53,17 @@ inline SizeRange size_range(float width, float height, float tolerance, float vo
   return {double(width - tolerance) / voxel_size, double(width + tolerance) / voxel_size, double(height / width)};
 }
 
+// A fixed-size set of bits, for the centres a search has found.
+class BitSet {
+ public:
+  explicit BitSet(std::size_t size) : words_((size + 63) / 64, 0) {}
+  bool test(std::size_t i) const { return (words_[i / 64] >> (i % 64)) & 1u; }
+  void set(std::size_t i) { words_[i / 64] |= std::uint64_t{1} << (i % 64); }
+
+ private:
+  std::vector<std::uint64_t> words_;
+};
+
 // The centre-voxel keys are packed into 64 bits; grids are far smaller than 2^20 per axis.
 inline std::uint64_t pack_key(int x, int y, int z) {
   return (std::uint64_t(std::uint32_t(x) & 0x1FFFFF) << 42) | (std::uint64_t(std::uint32_t(y) & 0x1FFFFF) << 21) |

@@ -30,8 +30,11 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   const NormalCounts normals = count_normals(spec, features);
   // The corners a search starts from, for its cost estimate: voxels with a normal, or tiles.
   const auto count_if = [](const auto& v, auto pred) { return double(std::count_if(v.begin(), v.end(), pred)); };
+  double with_normal = 0;  // from the prefix counts, not another pass over F
+  for (std::size_t col = 0; col < spec.column_count() && normals.levels > 0; ++col)
+    with_normal += normals.count(col, normals.y0, normals.y0 + normals.levels - 1);
   const std::array<double, 4> starts = {
-      count_if(features.normals, [](std::uint8_t n) { return n != 0; }),
+      with_normal,
       count_if(features.free_floor, [](std::uint8_t t) { return t != 0; }),
       count_if(features.free_ceiling, [](std::uint8_t t) { return t != 0; }),
       count_if(features.furniture, [](int c) { return c != kNoFurniture; })};
@@ -58,8 +61,8 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   for (std::size_t t = 0; t < skipped.size(); ++t)
     if (skipped[t])
       result.warnings.push_back(std::string(to_string(kAreaSizes[t % 3])) + " " + std::string(to_string(kAreaTypes[t / 3])) +
-                                " areas not searched: too costly at " + std::to_string(voxel).substr(0, 5) +
-                                " m voxels for this room (use --voxel 0.1, the thesis's size)");
+                                " areas not searched: too many corner pairs for this room at " +
+                                std::to_string(voxel).substr(0, 5) + " m voxels (a coarser --voxel searches them)");
   result.timings.search = elapsed_ms(clock);
   clock = std::chrono::steady_clock::now();
 

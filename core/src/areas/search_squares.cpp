@@ -12,27 +12,6 @@
 namespace roomsense::detail {
 namespace {
 
-// Prefix sums along z for each x: cells (x, z_lo..z_hi) are summed in O(1) per column of a square.
-class ColumnPrefix {
- public:
-  ColumnPrefix(const GridSpec& spec) : nz_(spec.nz), sums_(std::size_t(spec.nx) * std::size_t(spec.nz + 1), 0) {}
-  template <class Pred>
-  void fill(const GridSpec& spec, Pred pred) {
-    for (int x = 0; x < spec.nx; ++x) {
-      int* s = sums_.data() + std::size_t(x) * std::size_t(nz_ + 1);
-      for (int z = 0; z < nz_; ++z) s[z + 1] = s[z] + (pred(spec.column(x, z)) ? 1 : 0);
-    }
-  }
-  int sum(int x, int z_lo, int z_hi) const {
-    const int* s = sums_.data() + std::size_t(x) * std::size_t(nz_ + 1);
-    return s[z_hi + 1] - s[z_lo];
-  }
-
- private:
-  int nz_;
-  std::vector<int> sums_;
-};
-
 // Counts over axis-aligned boxes of cells in O(1) (a summed-area table).
 class BoxCounts {
  public:
@@ -54,23 +33,17 @@ class BoxCounts {
   std::vector<int> sums_;
 };
 
-// One bit per possible centre (4 x the centre, Eq. 3.42) of one level.
+// One bit per possible centre of one level, indexed by 4 x the centre (Eq. 3.42).
 class CentreSet {
  public:
-  CentreSet(const GridSpec& spec) : width_(4 * std::size_t(spec.nx)), bits_((width_ * 4 * spec.nz + 63) / 64, 0) {}
-  bool contains(glm::ivec3 sum) const {
-    const std::size_t i = bit(sum);
-    return (bits_[i / 64] >> (i % 64)) & 1u;
-  }
-  void insert(glm::ivec3 sum) {
-    const std::size_t i = bit(sum);
-    bits_[i / 64] |= std::uint64_t{1} << (i % 64);
-  }
+  CentreSet(const GridSpec& spec) : width_(4 * std::size_t(spec.nx)), bits_(width_ * 4 * std::size_t(spec.nz)) {}
+  bool contains(glm::ivec3 sum) const { return bits_.test(bit(sum)); }
+  void insert(glm::ivec3 sum) { bits_.set(bit(sum)); }
 
  private:
   std::size_t bit(glm::ivec3 sum) const { return std::size_t(sum.z) * width_ + std::size_t(sum.x); }
   std::size_t width_;
-  std::vector<std::uint64_t> bits_;
+  BitSet bits_;
 };
 
 }  // namespace
@@ -92,7 +65,6 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
   if (surface == Surface::Furniture) y_to = features.y_end;
 
   Candidates out;
-  ColumnPrefix suitable(spec), walls(spec), raised(spec);
   BoxCounts box_unsuitable(spec), box_raised(spec), box_first(spec), box_walls(spec);
   box_walls.fill(spec, [&](std::size_t col) { return features.walls[col] != 0; });
   // Every orientation's square holds the disk of radius d_min / 2 around its centre, and so the cells inside
@@ -105,7 +77,6 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
       most_missing = std::max(most_missing, double(o.cells) - double(fill) * (o.d + 1.0) * (o.d + 1.0));
   // A centre is at most d / √2 from each corner, so corner 1 lies in this box around it (in voxels).
   const int corner_reach = int(std::ceil(size.max_d * 0.7072)) + 1;
-  walls.fill(spec, [&](std::size_t col) { return features.walls[col] != 0; });
   // Centres found so far, per level of the squares' corners (y_actual for furniture, Eq. 3.41).
   std::vector<CentreSet> centres(std::size_t(y_to - y_from + 2), CentreSet(spec));
   for (int y1 = y_from; y1 <= y_to; ++y1) {
@@ -120,11 +91,9 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
       }
     }
     if (std::none_of(first.begin(), first.end(), [](std::uint8_t t) { return t != 0; })) continue;
-    suitable.fill(spec, [&](std::size_t col) { return tile[col] != 0; });
     box_unsuitable.fill(spec, [&](std::size_t col) { return tile[col] == 0; });  // walls are never tiles
     box_first.fill(spec, [&](std::size_t col) { return first[col] != 0; });
     if (surface == Surface::Furniture) {
-      raised.fill(spec, [&](std::size_t col) { return features.furniture[col] == y1 + 1; });
       box_raised.fill(spec, [&](std::size_t col) { return features.furniture[col] == y1 + 1; });
     }
     CentreSet& here = centres[std::size_t(y1 - y_from)];
@@ -146,15 +115,16 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
       const bool box_inside = box_lo.x >= 0 && box_lo.y >= 0 && box_hi.x < spec.nx && box_hi.y < spec.nz;
       if (box_inside && box_unsuitable.sum(box_lo, box_hi) == 0) {
         if (may_rise && box_raised.sum(box_lo, box_hi) > 0)
-          for (const CellRun& run : o.runs) rises = rises || raised.sum(x1 + run.dx, z1 + run.dz_lo, z1 + run.dz_hi) > 0;
+          for (const CellRun& run : o.runs)
+            rises = rises || box_raised.sum({x1 + run.dx, z1 + run.dz_lo}, {x1 + run.dx, z1 + run.dz_hi}) > 0;
         return true;
       }
       int missing = 0;
       for (const CellRun& run : o.runs) {
         const int x = x1 + run.dx, lo = z1 + run.dz_lo, hi = z1 + run.dz_hi;  // inside: the corners are
-        missing += hi - lo + 1 - suitable.sum(x, lo, hi);
-        if (double(missing) > may_miss || walls.sum(x, lo, hi) > 0) return false;
-        if (may_rise && !rises) rises = raised.sum(x, lo, hi) > 0;
+        missing += box_unsuitable.sum({x, lo}, {x, hi});
+        if (double(missing) > may_miss || box_walls.sum({x, lo}, {x, hi}) > 0) return false;
+        if (may_rise && !rises) rises = box_raised.sum({x, lo}, {x, hi}) > 0;
       }
       return true;
     };

@@ -79,7 +79,7 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
   // [0, 2 nx), z1 + z2 in [0, 2 nz), 2 y1 - h in [2 floor - h_max, 2 ceiling].
   const int h_max = int(std::floor(size.max_d * size.height_ratio + 1e-9));
   const int y_base = 2 * floor - h_max, y_span = 2 * ceiling - y_base + 1;
-  std::vector<std::uint64_t> centres((std::size_t(2 * spec.nx) * std::size_t(2 * spec.nz) * std::size_t(y_span) + 63) / 64, 0);
+  BitSet centres(std::size_t(2 * spec.nx) * std::size_t(2 * spec.nz) * std::size_t(y_span));
   const auto centre_bit = [&](int sx, int sy, int sz) {
     return (std::size_t(sz) * std::size_t(2 * spec.nx) + std::size_t(sx)) * std::size_t(y_span) + std::size_t(sy - y_base);
   };
@@ -95,9 +95,9 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
           if ((f[spec.index(x2, y1, z2)] & compatible) == 0) continue;
           const int h = int(std::floor(o.d * size.height_ratio + 1e-9));  // Eq. 3.20
           const std::size_t bit = centre_bit(x1 + x2, 2 * y1 - h, z1 + z2);
-          if ((centres[bit / 64] >> (bit % 64)) & 1u) continue;
+          if (centres.test(bit)) continue;
           if (!valid(x1, z1, o, y1, h)) continue;
-          centres[bit / 64] |= std::uint64_t{1} << (bit % 64);
+          centres.set(bit);
           out.push_back({{glm::ivec3(x1, y1, z1), glm::ivec3(x2, y1, z2), glm::ivec3(x2, y1 - h, z2),
                           glm::ivec3(x1, y1 - h, z1)}});
         }

@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
       "room bounds 18-37 ms. Targets here (2 cores): bounds <= 5 ms and understanding <= 20 ms on a ~78k-vertex room.\n"
       "Stages: voxelize = voxel stage (V, |V_y|, levels, |V_xz|); features = A-F; areas = search + reduce + classify\n"
       "(§3.3-3.5); understanding = prepare + voxelize + features + areas (what StartRoomUnderstanding runs);\n"
-      "bounds = I + greedy mesh; bounds_pipeline = prepare + voxelize + A/B + bounds (StartRoomBounds); analyze = all.\n\n");
+      "bounds = I + its mesh; bounds_pipeline = prepare + voxelize + A/B + bounds (StartRoomBounds); analyze = all.\n\n");
   static const std::vector<Room> rooms = load_rooms();
   for (const Room& room : rooms) {
     const auto p = prepare(room.scan);

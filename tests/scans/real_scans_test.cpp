@@ -2,6 +2,7 @@
 // heights (shared/rooms/README.md), a closed bounds mesh, and the reduction in triangles.
 #include "roomsense/analysis.h"
 #include "roomsense/scanio.h"
+#include "mesh_checks.h"
 #include "rooms.h"
 
 #include <gtest/gtest.h>
@@ -15,7 +16,11 @@ struct Expected {
   const char* file;
   float floor_y, ceiling_y;  // the reference: the scanned surface
   float tolerance;           // 0.10 m: a voxel either way, as the rooms README allows
-  float min_reduction;       // scan triangles / bounds triangles, asserted; see the note on the 15x goal
+  // Scan triangles / bounds triangles, asserted: the thesis's 15x for every scan of 50k triangles or more
+  // (living room, music room, both HoloLens 1 scans); below the measured figure for the smaller ones, whose
+  // scans are already coarse (the HoloLens 2 Scene Understanding meshes have fewer triangles than a room's
+  // bounds need).
+  float min_reduction;
 };
 
 // Quest: the README's reference table. HoloLens 1: the README's "≈" heights, so a voxel and a half.
@@ -24,14 +29,14 @@ struct Expected {
 // also holds the upper storey at about 1.2 m under a ceiling at about 4.05 m).
 constexpr Expected kRooms[] = {
     {"quest-iwer/living_room_global_mesh.obj", 0.005f, 3.868f, 0.10f, 15.0f},
-    {"quest-iwer/meeting_room_global_mesh.obj", 0.037f, 2.833f, 0.10f, 5.0f},
-    {"quest-iwer/music_room_global_mesh.obj", 0.006f, 3.771f, 0.10f, 10.0f},
-    {"quest-iwer/office_large_global_mesh.obj", 0.005f, 2.435f, 0.10f, 10.0f},
-    {"quest-iwer/office_small_global_mesh.obj", 0.048f, 2.883f, 0.10f, 5.0f},
-    {"hololens1/holotoolkit_fake_spatial_mapping.obj", -1.7f, 0.8f, 0.15f, 30.0f},
-    {"hololens1/mrtk_example_spatial_mesh.obj", -1.1f, 1.7f, 0.15f, 7.0f},
+    {"quest-iwer/meeting_room_global_mesh.obj", 0.037f, 2.833f, 0.10f, 12.0f},
+    {"quest-iwer/music_room_global_mesh.obj", 0.006f, 3.771f, 0.10f, 15.0f},
+    {"quest-iwer/office_large_global_mesh.obj", 0.005f, 2.435f, 0.10f, 15.0f},
+    {"quest-iwer/office_small_global_mesh.obj", 0.048f, 2.883f, 0.10f, 10.0f},
+    {"hololens1/holotoolkit_fake_spatial_mapping.obj", -1.7f, 0.8f, 0.15f, 15.0f},
+    {"hololens1/mrtk_example_spatial_mesh.obj", -1.1f, 1.7f, 0.15f, 15.0f},
     {"hololens2-su/SU_Kitchen_world_mesh.obj", -1.530f, 1.068f, 0.10f, 0.5f},
-    {"hololens2-su/SU_Apartment_world_mesh.obj", -1.563f, 0.850f, 0.10f, 2.0f},
+    {"hololens2-su/SU_Apartment_world_mesh.obj", -1.563f, 0.850f, 0.10f, 3.0f},
 };
 
 class RealScan : public testing::TestWithParam<Expected> {};
@@ -46,6 +51,15 @@ TEST_P(RealScan, FloorCeilingAndClosedBounds) {
   const MeshClosure closure = check_closure(r.bounds);
   EXPECT_EQ(closure.boundary_or_nonmanifold_edges, 0u);
   EXPECT_EQ(closure.misoriented_edges, 0u);
+  // Each voxel face of the volume covered exactly once, by triangles with corners only.
+  std::vector<std::uint8_t> volume =
+      bounds_volume(r.voxels.grid, *r.voxels.levels, r.features->y_end, r.features->room);
+  fill_edge_contacts(r.voxels.grid.spec, volume);
+  const double s = r.voxels.grid.spec.voxel_size;
+  const test::TriangleStats st = test::triangle_stats(r.bounds, s);
+  EXPECT_NEAR(st.area, test::voxel_face_area(r.voxels.grid.spec, volume), 1e-3);
+  EXPECT_EQ(st.degenerate, 0u);
+  EXPECT_EQ(st.flat_vertices, 0u);
   const double reduction = double(r.input.triangles) / double(r.bounds.indices.size() / 3);
   EXPECT_GE(reduction, e.min_reduction);
   std::printf("[ figures  ] %s: floor %.3f ceiling %.3f, bounds %zu triangles (%.1fx fewer than %zu)\n", e.file,

@@ -1,6 +1,7 @@
-// Room bounds (§3.6): the volume I, greedy meshing, closure, orientation.
+// Room bounds (§3.6): the volume I, its mesh, closure, orientation.
 #include "roomsense/bounds.h"
 #include "roomsense/synthetic.h"
+#include "mesh_checks.h"
 #include "synthetic_fixture.h"
 
 #include <glm/geometric.hpp>
@@ -11,30 +12,22 @@
 namespace roomsense {
 namespace {
 
-// Signed volume by the divergence theorem: positive when the faces point out of the solid.
-double signed_volume(const BoundsMesh& m) {
-  double v = 0.0;
-  for (std::size_t t = 0; t < m.indices.size(); t += 3) {
-    const glm::dvec3 a = m.vertices[m.indices[t]], b = m.vertices[m.indices[t + 1]], c = m.vertices[m.indices[t + 2]];
-    v += glm::dot(a, glm::cross(b, c)) / 6.0;
-  }
-  return v;
-}
+using test::signed_volume;
 
 std::size_t solid_count(const std::vector<std::uint8_t>& v) { return std::size_t(std::count(v.begin(), v.end(), 1)); }
 
-TEST(GreedyMesh, OneVoxelIsACube) {
+TEST(MeshVolume, OneVoxelIsACube) {
   const GridSpec s = make_grid_spec({0, 0, 0}, {0.25f, 0.25f, 0.25f}, 0.1f);
   std::vector<std::uint8_t> volume(s.voxel_count(), 0);
   volume[s.index(1, 1, 1)] = 1;
-  const BoundsMesh m = greedy_mesh(s, volume);
+  const BoundsMesh m = mesh_volume(s, volume);
   EXPECT_EQ(m.vertices.size(), 8u);
   EXPECT_EQ(m.indices.size(), 36u);
   EXPECT_TRUE(check_closure(m).closed());
   EXPECT_NEAR(signed_volume(m), 0.001, 1e-7);
 }
 
-TEST(GreedyMesh, RandomVolumesGiveClosedOutwardSurfacesOfTheRightVolume) {
+TEST(MeshVolume, RandomVolumesGiveClosedOutwardSurfacesOfTheRightVolume) {
   std::mt19937 rng(42);
   for (int trial = 0; trial < 30; ++trial) {
     const GridSpec s = make_grid_spec({0, 0, 0}, {0.75f, 0.55f, 0.65f}, 0.1f);
@@ -42,11 +35,16 @@ TEST(GreedyMesh, RandomVolumesGiveClosedOutwardSurfacesOfTheRightVolume) {
     std::bernoulli_distribution solid(trial % 2 ? 0.3 : 0.7);
     for (auto& v : volume) v = solid(rng) ? 1 : 0;
     fill_edge_contacts(s, volume);
-    const BoundsMesh m = greedy_mesh(s, volume);
+    const BoundsMesh m = mesh_volume(s, volume);
     const MeshClosure c = check_closure(m);
     EXPECT_EQ(c.boundary_or_nonmanifold_edges, 0u) << "trial " << trial;
     EXPECT_EQ(c.misoriented_edges, 0u) << "trial " << trial;
     EXPECT_NEAR(signed_volume(m), double(solid_count(volume)) * 0.001, 1e-5) << "trial " << trial;
+    // Each voxel face covered once, by whole triangles, and every vertex a corner.
+    const test::TriangleStats st = test::triangle_stats(m, 0.1);
+    EXPECT_NEAR(st.area, test::voxel_face_area(s, volume), 1e-6) << "trial " << trial;
+    EXPECT_EQ(st.degenerate, 0u) << "trial " << trial;
+    EXPECT_EQ(st.flat_vertices, 0u) << "trial " << trial;
     // Each position once.
     std::vector<glm::vec3> sorted = m.vertices;
     std::sort(sorted.begin(), sorted.end(), [](auto a, auto b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
@@ -54,7 +52,33 @@ TEST(GreedyMesh, RandomVolumesGiveClosedOutwardSurfacesOfTheRightVolume) {
   }
 }
 
-TEST(GreedyMesh, EdgeContactsAreFilled) {
+TEST(MeshVolume, RandomBoxStacksGiveExactSurfaces) {
+  // Unions and cuts of boxes: large face regions with holes, notches and touching corners, the shapes of
+  // furniture on a floor, where the hole bridges and T-junctions matter.
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 60; ++trial) {
+    const GridSpec s = make_grid_spec({0, 0, 0}, {2.35f, 0.95f, 2.05f}, 0.1f);
+    std::vector<std::uint8_t> volume(s.voxel_count(), 0);
+    std::uniform_int_distribution<int> x(0, s.nx - 1), y(0, s.ny - 1), z(0, s.nz - 1), len(1, 8);
+    for (int box = 0; box < 25; ++box) {
+      const int x0 = x(rng), y0 = y(rng) / 2, z0 = z(rng), w = len(rng), h = len(rng) / 2 + 1, d = len(rng);
+      const std::uint8_t value = box % 4 == 3 ? 0 : 1;  // every fourth box carves
+      for (int k = z0; k < std::min(s.nz, z0 + d); ++k)
+        for (int i = x0; i < std::min(s.nx, x0 + w); ++i)
+          for (int j = y0; j < std::min(s.ny, y0 + h); ++j) volume[s.index(i, j, k)] = value;
+    }
+    fill_edge_contacts(s, volume);
+    const BoundsMesh m = mesh_volume(s, volume);
+    EXPECT_TRUE(check_closure(m).closed()) << "trial " << trial;
+    EXPECT_NEAR(signed_volume(m), double(solid_count(volume)) * 0.001, 1e-5) << "trial " << trial;
+    const test::TriangleStats st = test::triangle_stats(m, 0.1);
+    EXPECT_NEAR(st.area, test::voxel_face_area(s, volume), 1e-5) << "trial " << trial;
+    EXPECT_EQ(st.degenerate, 0u) << "trial " << trial;
+    EXPECT_EQ(st.flat_vertices, 0u) << "trial " << trial;
+  }
+}
+
+TEST(MeshVolume, EdgeContactsAreFilled) {
   const GridSpec s = make_grid_spec({0, 0, 0}, {0.25f, 0.15f, 0.25f}, 0.1f);
   std::vector<std::uint8_t> volume(s.voxel_count(), 0);
   volume[s.index(0, 0, 0)] = 1;
@@ -62,7 +86,7 @@ TEST(GreedyMesh, EdgeContactsAreFilled) {
   fill_edge_contacts(s, volume);
   EXPECT_EQ(volume[s.index(1, 0, 0)], 1);
   EXPECT_EQ(volume[s.index(0, 0, 1)], 1);
-  EXPECT_TRUE(check_closure(greedy_mesh(s, volume)).closed());
+  EXPECT_TRUE(check_closure(mesh_volume(s, volume)).closed());
 }
 
 TEST(Bounds, SyntheticRoomsGiveClosedMeshesFacingFreeSpace) {
@@ -78,10 +102,75 @@ TEST(Bounds, SyntheticRoomsGiveClosedMeshesFacingFreeSpace) {
     fill_edge_contacts(r.voxels.grid.spec, volume);
     const double s = r.voxels.grid.spec.voxel_size;
     EXPECT_NEAR(signed_volume(r.bounds), double(solid_count(volume)) * s * s * s, 1e-3) << name;
+    const test::TriangleStats st = test::triangle_stats(r.bounds, s);
+    EXPECT_NEAR(st.area, test::voxel_face_area(r.voxels.grid.spec, volume), 1e-3) << name;
+    EXPECT_EQ(st.degenerate, 0u) << name;
+    EXPECT_EQ(st.flat_vertices, 0u) << name;
     if (r.input.triangles > 10000) {
       EXPECT_LT(r.bounds.indices.size() / 3, r.input.triangles / 15) << name;
     }
   }
+}
+
+TEST(MeshVolume, ARegionWithAHoleTouchingItsBorderAndTJunctions) {
+  // A slab with a notch and a hole in its top, a hole touching the slab's edge at a corner, and a post on
+  // it whose corners split the top's border: the cases the region tracing and hole bridges must get right.
+  const GridSpec s = make_grid_spec({0, 0, 0}, {0.95f, 0.45f, 0.95f}, 0.1f);
+  std::vector<std::uint8_t> volume(s.voxel_count(), 0);
+  for (int z = 1; z < 9; ++z)
+    for (int x = 1; x < 9; ++x) volume[s.index(x, 0, z)] = volume[s.index(x, 1, z)] = 1;
+  for (int z = 3; z < 5; ++z)
+    for (int x = 3; x < 5; ++x) volume[s.index(x, 1, z)] = 0;  // hole in the top layer
+  volume[s.index(1, 1, 1)] = 0;                                // notch at a corner
+  volume[s.index(2, 2, 2)] = 1;  // a stub: a hole in the top face touching the notch at one point
+  for (int y = 2; y < 4; ++y) volume[s.index(6, y, 6)] = 1;      // a post
+  std::vector<std::uint8_t> settled = volume;
+  fill_edge_contacts(s, settled);
+  ASSERT_EQ(settled, volume) << "no edge contact to fill: the touching point stays";
+  const BoundsMesh m = mesh_volume(s, volume);
+  EXPECT_TRUE(check_closure(m).closed());
+  EXPECT_NEAR(signed_volume(m), double(solid_count(volume)) * 0.001, 1e-6);
+  const test::TriangleStats st = test::triangle_stats(m, 0.1);
+  EXPECT_NEAR(st.area, test::voxel_face_area(s, volume), 1e-6);
+  EXPECT_EQ(st.degenerate, 0u);
+  EXPECT_EQ(st.flat_vertices, 0u);
+}
+
+TEST(MeshVolume, AFlatSlabHasEightCornersAndTwelveTriangles) {
+  // Whatever its size, a solid slab is a box: its corners and nothing else.
+  const GridSpec s = make_grid_spec({0, 0, 0}, {2.05f, 0.25f, 1.05f}, 0.1f);
+  std::vector<std::uint8_t> volume(s.voxel_count(), 1);
+  const BoundsMesh m = mesh_volume(s, volume);
+  EXPECT_EQ(m.vertices.size(), 8u);
+  EXPECT_EQ(m.indices.size() / 3, 12u);
+}
+
+TEST(Bounds, SmallPlateausAreFlattenedAndLargerOnesKept) {
+  // A post of one column and a block of 4 x 4 columns in the default room: by default the post's plateau
+  // (0.01 m²) is below 0.04 m² and goes, the block (0.16 m²) stays; with the step off both stay.
+  synth::RoomSpec spec = synth::default_room();
+  spec.name = "default+post";
+  spec.boxes.push_back({{1.55f, -0.45f}, {0.04f, 0.04f}, 1.0f, 0.0f});
+  spec.boxes.push_back({{1.0f, -1.2f}, {0.4f, 0.4f}, 1.0f, 0.0f});
+  const test::AnalysedRoom& room = test::analysed(spec);
+  const AnalysisResult& r = room.result;
+  ASSERT_TRUE(r.ok());
+  const GridSpec& s = r.voxels.grid.spec;
+  const FloorCeiling& l = *r.voxels.levels;
+  const auto column = [&](float x, float z) {
+    return std::pair{int((x - s.origin.x) / s.voxel_size), int((z - s.origin.z) / s.voxel_size)};
+  };
+  const auto [px, pz] = column(1.55f, -0.45f);
+  const auto [bx, bz] = column(1.0f, -1.2f);
+  const int y = l.floor + int(0.6f / s.voxel_size);  // below both tops
+  ASSERT_TRUE(r.voxels.grid.at(px, y, pz)) << "the post is in V";
+  const std::vector<std::uint8_t> flattened = bounds_volume(r.voxels.grid, l, r.features->y_end, r.features->room);
+  const std::vector<std::uint8_t> kept =
+      bounds_volume(r.voxels.grid, l, r.features->y_end, r.features->room, BoundsParams{0.0f});
+  EXPECT_EQ(flattened[s.index(px, y, pz)], 0);
+  EXPECT_EQ(kept[s.index(px, y, pz)], 1);
+  EXPECT_EQ(flattened[s.index(bx, y, bz)], 1);
+  EXPECT_EQ(kept[s.index(bx, y, bz)], 1);
 }
 
 TEST(Bounds, TheRoomIsHollowAndTheFloorIsSolid) {

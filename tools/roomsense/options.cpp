@@ -23,6 +23,9 @@ options:
   --units m|cm|mm     the scan's length unit (default m)
   --left-handed       the scan is left-handed (Unity with --up y, Unreal with --up z)
   --voxel SIZE        voxel edge in metres (default 0.1, range 0.01 to 1)
+  --min-plateau AREA  in the bounds, flatten furniture-top and ceiling plateaus smaller than
+                      AREA m² to their neighbours' height: scan jitter and specks (default
+                      0.04; 0 keeps the thesis's volume as it is)
   --mode vertices|triangles
                       voxelize vertices only (the thesis) or whole triangles (default when the
                       scan has triangles)
@@ -73,6 +76,11 @@ AnalyzeOptions parse_analyze_options(const std::vector<std::string>& args) {
       else throw std::invalid_argument("--units takes m, cm or mm, not '" + v + "'");
     } else if (a == "--left-handed") o.frame.left_handed = true;
     else if (a == "--voxel") o.voxel_size = parse_float(a, value());
+    else if (a == "--min-plateau") {
+      o.min_plateau = parse_float(a, value());
+      if (!(o.min_plateau >= 0.0f && o.min_plateau <= 100.0f))
+        throw std::invalid_argument("--min-plateau takes an area from 0 to 100 m²");
+    }
     else if (a == "--backend") {
       o.backend = value();
       if (o.backend != "auto" && o.backend != "cpu" && o.backend != "vulkan")

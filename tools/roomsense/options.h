@@ -1,5 +1,6 @@
 // Command-line options of `roomsense analyze`.
 #pragma once
+#include "roomsense/bounds.h"
 #include "roomsense/scan.h"
 
 #include <optional>
@@ -15,6 +16,7 @@ struct AnalyzeOptions {
   std::optional<std::string> report_dir;  // plan.svg and scene.glb go there
   SourceFrame frame;
   float voxel_size = 0.10f;
+  float min_plateau = BoundsParams{}.min_plateau_area;
   std::string backend;  // empty: ROOMSENSE_BACKEND, else auto
   std::optional<std::string> mode;  // "vertices" | "triangles"
   unsigned threads = 0;

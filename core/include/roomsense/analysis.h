@@ -22,6 +22,7 @@ struct AnalysisOptions {
   unsigned threads = 0;           // 0: one per hardware thread; results do not depend on it
   FeatureParams features;
   AreaParams areas;
+  BoundsParams bounds;
   bool find_areas = true;     // §3.3-3.5; off for a bounds-only run (thesis StartRoomBounds)
   bool build_bounds = true;   // §3.6; off for an areas-only run (thesis StartRoomUnderstanding)
   VoxelStage* voxel_stage = nullptr;  // not owned; nullptr: the CPU stage

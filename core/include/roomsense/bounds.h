@@ -1,5 +1,5 @@
 // Room bounds of thesis §3.6: the bounds volume I (Eq. 3.60-3.62) with its hole filling, and a closed,
-// crack-free greedy mesh of it (Eq. 3.63/3.64) whose counter-clockwise front faces face free space.
+// crack-free mesh of it (Eq. 3.63/3.64) whose counter-clockwise front faces face free space.
 #pragma once
 #include "roomsense/grid.h"
 #include "roomsense/voxelize.h"
@@ -16,23 +16,37 @@ struct BoundsMesh {
   std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from free space
 };
 
-// G, H and I (Eq. 3.60-3.62), then the three-plane hole filling of §3.6. One byte per voxel, GridSpec::index.
+struct BoundsParams {
+  // Ours, not the thesis's: a plateau of G or H (neighbouring columns of one height) smaller than this, in
+  // m², takes its neighbours' height before I is built. It removes voxel-sized jitter and specks that scans
+  // leave on furniture tops and ceilings, which would each add a ring of corners to the mesh; a real object
+  // at least this large keeps its shape. 0 turns it off (the thesis's volume).
+  float min_plateau_area = 0.04f;
+};
+
+// G and H (Eq. 3.60/3.61) with their small plateaus flattened (BoundsParams), I (Eq. 3.62), then the
+// three-plane hole filling of §3.6. One byte per voxel, GridSpec::index.
 std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
-                                        const std::vector<std::uint8_t>& room);
+                                        const std::vector<std::uint8_t>& room, const BoundsParams& params = {},
+                                        unsigned threads = 0);
 
 // Ours: fills the empty voxels of every 2x2 block around an edge where two solid voxels touch only along
 // that edge. Their surface would have an edge shared by four faces; after this, every edge has two.
 void fill_edge_contacts(const GridSpec& spec, std::vector<std::uint8_t>& volume);
 
-// Greedy meshing (Eq. 3.63/3.64, after Lysenko 2012) of a volume. Quads of the same orientation merge; each
-// quad is then split at the corners of its neighbours that lie on its edges (T-junctions), so the surface
-// is closed: every edge belongs to exactly two triangles. The thesis's half-voxel shift is built in: the
-// mesh is made on the voxel lattice, where voxel (x,y,z) spans [x, x+1), not on voxel centres.
-BoundsMesh greedy_mesh(const GridSpec& spec, const std::vector<std::uint8_t>& volume);
+// Meshing of a volume (Eq. 3.63/3.64). The thesis merges each slice's faces of one orientation into greedy
+// rectangles (after Lysenko 2012); we merge them further, into whole regions, each a polygon with holes,
+// triangulated with no vertex but the surface's corners, including the corners of neighbouring regions
+// that lie on its border (T-junctions). So the surface is closed, every edge belonging to exactly two
+// triangles, with the fewest vertices any closed mesh of the volume can have. The thesis's half-voxel shift
+// is built in: the mesh is made on the voxel lattice, where voxel (x,y,z) spans [x, x+1), not on centres.
+// `threads`: as AnalysisOptions::threads; the mesh does not depend on it.
+BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& volume, unsigned threads = 0);
 
-// bounds_volume, fill_edge_contacts and greedy_mesh in order.
+// bounds_volume, fill_edge_contacts and mesh_volume in order.
 BoundsMesh build_bounds(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
-                        const std::vector<std::uint8_t>& room);
+                        const std::vector<std::uint8_t>& room, const BoundsParams& params = {},
+                        unsigned threads = 0);
 
 // Edges used by other than exactly two triangles, and edges not used once in each direction (a closed,
 // consistently oriented surface has none of either). For tests and for the CLI's report.

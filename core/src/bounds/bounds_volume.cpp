@@ -1,62 +1,147 @@
 // The bounds volume I (Eq. 3.60-3.62) and the hole filling of §3.6.
 #include "roomsense/bounds.h"
 
+#include "parallel.h"
+
 #include <algorithm>
+#include <cmath>
 
 namespace roomsense {
 namespace {
 
 // §3.6's last step: an inactive voxel becomes active when, in any of the X-Z, X-Y and Y-Z planes, at least
 // three of its four neighbours are active. Neighbours are read from the volume before this pass: the
-// cells to fill are collected first and set afterwards.
-void fill_plane_holes(const GridSpec& s, const FloorCeiling& levels, std::vector<std::uint8_t>& volume) {
-  const auto at = [&](int x, int y, int z) { return s.contains(x, y, z) ? int(volume[s.index(x, y, z)]) : 0; };
-  std::vector<std::size_t> fill;
-  for (int z = 0; z < s.nz; ++z)
-    for (int x = 0; x < s.nx; ++x)
-      for (int y = levels.floor; y <= levels.ceiling; ++y) {
-        if (volume[s.index(x, y, z)]) continue;
-        const int left = at(x - 1, y, z), right = at(x + 1, y, z), down = at(x, y - 1, z), up = at(x, y + 1, z);
-        const int back = at(x, y, z - 1), front = at(x, y, z + 1);
-        const int xz = left + right + back + front, xy = left + right + down + up, yz = down + up + back + front;
-        if (xz >= 3 || xy >= 3 || yz >= 3) fill.push_back(s.index(x, y, z));
+// cells to fill are collected first (per worker, over its own z layers) and set afterwards.
+void fill_plane_holes(const GridSpec& s, const FloorCeiling& levels, std::vector<std::uint8_t>& volume,
+                      unsigned threads) {
+  const std::size_t ny = std::size_t(s.ny);
+  const std::vector<std::uint8_t> empty(ny, 0);
+  const auto column = [&](int x, int z) {
+    return x >= 0 && z >= 0 && x < s.nx && z < s.nz ? volume.data() + s.column(x, z) * ny : empty.data();
+  };
+  const int y_lo = levels.floor, y_hi = levels.ceiling;
+  std::vector<std::vector<std::size_t>> fills(detail::parallel_workers(std::size_t(s.nz), threads, 8));
+  detail::parallel_for(std::size_t(s.nz), threads, 8, [&](std::size_t z_begin, std::size_t z_end, std::size_t w) {
+    std::vector<std::size_t>& fill = fills[w];
+    for (int z = int(z_begin); z < int(z_end); ++z)
+      for (int x = 0; x < s.nx; ++x) {
+        const std::uint8_t *c = column(x, z), *l = column(x - 1, z), *r = column(x + 1, z), *b = column(x, z - 1),
+                           *f = column(x, z + 1);
+        for (int y = y_lo; y <= y_hi; ++y) {
+          if (c[y]) continue;
+          const int left = l[y], right = r[y], back = b[y], front = f[y];
+          const int down = y > 0 ? c[y - 1] : 0, up = y + 1 < s.ny ? c[y + 1] : 0;
+          const int xz = left + right + back + front, xy = left + right + down + up, yz = down + up + back + front;
+          if (xz >= 3 || xy >= 3 || yz >= 3) fill.push_back(s.index(x, y, z));
+        }
       }
-  for (std::size_t i : fill) volume[i] = 1;
+  });
+  for (const auto& fill : fills)
+    for (const std::size_t i : fill) volume[i] = 1;
+}
+
+// Ours: a plateau of G or H (columns of one height, 4-connected, inside the room) smaller than `min_cells`
+// takes the height its border shares most with its neighbours. Scans carry surfaces jittering by a voxel
+// and specks of noise; each such plateau costs the bounds mesh a ring of corners. Repeated until no small
+// plateau is left, at most a few passes, as merging one can leave its neighbour small.
+void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& room, int min_cells,
+                            std::vector<int>& height) {
+  if (min_cells <= 1) return;
+  std::vector<int> label(height.size());
+  std::vector<std::size_t> region, stack;
+  std::vector<std::pair<int, int>> border;  // (neighbour height, shared edges)
+  for (int pass = 0; pass < 8; ++pass) {
+    bool changed = false;
+    std::fill(label.begin(), label.end(), -1);
+    int next = 0;
+    for (std::size_t seed = 0; seed < height.size(); ++seed) {
+      if (!room[seed] || label[seed] >= 0) continue;
+      const int h = height[seed];
+      region.clear();
+      border.clear();
+      stack.assign(1, seed);
+      label[seed] = next;
+      while (!stack.empty()) {
+        const std::size_t c = stack.back();
+        stack.pop_back();
+        region.push_back(c);
+        const int x = int(c % std::size_t(s.nx)), z = int(c / std::size_t(s.nx));
+        const int nbr[4][2] = {{x - 1, z}, {x + 1, z}, {x, z - 1}, {x, z + 1}};
+        for (const auto& n : nbr) {
+          if (n[0] < 0 || n[1] < 0 || n[0] >= s.nx || n[1] >= s.nz) continue;
+          const std::size_t nc = s.column(n[0], n[1]);
+          if (!room[nc]) continue;
+          if (height[nc] == h) {
+            if (label[nc] < 0) {
+              label[nc] = next;
+              stack.push_back(nc);
+            }
+            continue;
+          }
+          const auto it = std::find_if(border.begin(), border.end(), [&](const auto& e) { return e.first == height[nc]; });
+          if (it == border.end()) border.push_back({height[nc], 1});
+          else ++it->second;
+        }
+      }
+      ++next;
+      if (int(region.size()) >= min_cells || border.empty()) continue;
+      // The most shared border; on a tie the nearer height, then the lower.
+      const auto best = std::min_element(border.begin(), border.end(), [&](const auto& p, const auto& q) {
+        if (p.second != q.second) return p.second > q.second;
+        if (std::abs(p.first - h) != std::abs(q.first - h)) return std::abs(p.first - h) < std::abs(q.first - h);
+        return p.first < q.first;
+      });
+      for (const std::size_t c : region) height[c] = best->first;
+      changed = true;
+    }
+    if (!changed) break;
+  }
 }
 
 }  // namespace
 
 std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
-                                        const std::vector<std::uint8_t>& room) {
+                                        const std::vector<std::uint8_t>& room, const BoundsParams& params,
+                                        unsigned threads) {
   const GridSpec& s = grid.spec;
   y_end = std::clamp(y_end, levels.floor + 1, levels.ceiling - 1);
   std::vector<int> g(s.column_count()), h(s.column_count());
-  for (std::size_t col = 0; col < s.column_count(); ++col) {
-    const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
-    // G (Eq. 3.60): the highest active level in (I_Floor, I_yEnd]; else I_Floor inside the room; else -1.
-    g[col] = room[col] ? levels.floor : -1;
-    for (int y = y_end; y > levels.floor; --y)
-      if (v[y]) {
-        g[col] = y;
-        break;
-      }
-    // H (Eq. 3.61): the lowest active level in [I_yEnd, I_Ceiling); else I_Ceiling inside the room; else
-    // I_Ceiling + 1.
-    h[col] = room[col] ? levels.ceiling : levels.ceiling + 1;
-    for (int y = y_end; y < levels.ceiling; ++y)
-      if (v[y]) {
-        h[col] = y;
-        break;
-      }
-  }
+  detail::parallel_for(s.column_count(), threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
+    for (std::size_t col = begin; col < end; ++col) {
+      const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
+      // G (Eq. 3.60): the highest active level in (I_Floor, I_yEnd]; else I_Floor inside the room; else -1.
+      g[col] = room[col] ? levels.floor : -1;
+      for (int y = y_end; y > levels.floor; --y)
+        if (v[y]) {
+          g[col] = y;
+          break;
+        }
+      // H (Eq. 3.61): the lowest active level in [I_yEnd, I_Ceiling); else I_Ceiling inside the room; else
+      // I_Ceiling + 1.
+      h[col] = room[col] ? levels.ceiling : levels.ceiling + 1;
+      for (int y = y_end; y < levels.ceiling; ++y)
+        if (v[y]) {
+          h[col] = y;
+          break;
+        }
+    }
+  });
+  // In cells, rounding 0.04 m² at 0.1 m to 4, not 5; NaN or <= 0 turns the step off.
+  const double cells = params.min_plateau_area > 0.0f
+                           ? std::ceil(double(params.min_plateau_area) / (double(s.voxel_size) * s.voxel_size) - 1e-4)
+                           : 0.0;
+  const int min_cells = int(std::min(cells, double(s.column_count())));
+  detail::parallel_tasks(2, threads, [&](std::size_t i) { flatten_small_plateaus(s, room, min_cells, i == 0 ? g : h); });
   // I (Eq. 3.62).
   std::vector<std::uint8_t> volume(s.voxel_count(), 0);
-  for (std::size_t col = 0; col < s.column_count(); ++col) {
-    std::uint8_t* out = volume.data() + col * std::size_t(s.ny);
-    for (int y = levels.floor; y <= g[col]; ++y) out[y] = 1;
-    for (int y = h[col]; y <= levels.ceiling; ++y) out[y] = 1;
-  }
-  fill_plane_holes(s, levels, volume);
+  detail::parallel_for(s.column_count(), threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
+    for (std::size_t col = begin; col < end; ++col) {
+      std::uint8_t* out = volume.data() + col * std::size_t(s.ny);
+      for (int y = levels.floor; y <= g[col]; ++y) out[y] = 1;
+      for (int y = h[col]; y <= levels.ceiling; ++y) out[y] = 1;
+    }
+  });
+  fill_plane_holes(s, levels, volume, threads);
   return volume;
 }
 
@@ -107,10 +192,10 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
 }
 
 BoundsMesh build_bounds(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
-                        const std::vector<std::uint8_t>& room) {
-  std::vector<std::uint8_t> volume = bounds_volume(grid, levels, y_end, room);
+                        const std::vector<std::uint8_t>& room, const BoundsParams& params, unsigned threads) {
+  std::vector<std::uint8_t> volume = bounds_volume(grid, levels, y_end, room, params, threads);
   fill_edge_contacts(grid.spec, volume);
-  return greedy_mesh(grid.spec, volume);
+  return mesh_volume(grid.spec, volume, threads);
 }
 
 }  // namespace roomsense

@@ -31,6 +31,34 @@ std::pair<float, float> robust_range(const std::vector<glm::vec3>& vertices, con
   return {lo - margin, hi + margin};
 }
 
+// The kept vertices in order, and the triangles all of whose corners were kept, renumbered.
+void renumber_kept(const Scan& scan, const std::vector<std::uint8_t>& keep, PreparedInput& out) {
+  constexpr std::uint32_t kRemoved = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> remap(scan.vertices.size(), kRemoved);
+  out.vertices.reserve(scan.vertices.size() - out.skipped_vertices - out.outlier_vertices);
+  for (std::size_t i = 0; i < scan.vertices.size(); ++i) {
+    if (!keep[i]) continue;
+    remap[i] = std::uint32_t(out.vertices.size());
+    out.vertices.push_back(scan.vertices[i]);
+  }
+  if (out.vertices.empty())
+    throw Error(ErrorCode::NoValidVertices, "no usable vertex: all " + std::to_string(out.input_vertices) +
+                                                " are NaN, Inf or outliers");
+
+  out.indices.reserve(scan.indices.size());
+  for (std::size_t t = 0; t < out.input_triangles; ++t) {
+    const std::uint32_t a = remap[scan.indices[3 * t]], b = remap[scan.indices[3 * t + 1]],
+                        c = remap[scan.indices[3 * t + 2]];
+    if (a == kRemoved || b == kRemoved || c == kRemoved) {
+      ++out.dropped_triangles;
+      continue;
+    }
+    out.indices.push_back(a);
+    out.indices.push_back(b);
+    out.indices.push_back(c);
+  }
+}
+
 }  // namespace
 
 PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
@@ -74,31 +102,12 @@ PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
     }
   }
 
-  constexpr std::uint32_t kRemoved = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> remap(scan.vertices.size(), kRemoved);
-  out.vertices.reserve(scan.vertices.size() - out.skipped_vertices - out.outlier_vertices);
-  for (std::size_t i = 0; i < scan.vertices.size(); ++i) {
-    if (!keep[i]) continue;
-    remap[i] = std::uint32_t(out.vertices.size());
-    out.vertices.push_back(scan.vertices[i]);
+  if (out.skipped_vertices == 0 && out.outlier_vertices == 0) {  // the usual case: nothing to renumber
+    out.vertices = scan.vertices;
+    out.indices = scan.indices;
+  } else {
+    renumber_kept(scan, keep, out);
   }
-  if (out.vertices.empty())
-    throw Error(ErrorCode::NoValidVertices, "no usable vertex: all " + std::to_string(out.input_vertices) +
-                                                " are NaN, Inf or outliers");
-
-  out.indices.reserve(scan.indices.size());
-  for (std::size_t t = 0; t < out.input_triangles; ++t) {
-    const std::uint32_t a = remap[scan.indices[3 * t]], b = remap[scan.indices[3 * t + 1]],
-                        c = remap[scan.indices[3 * t + 2]];
-    if (a == kRemoved || b == kRemoved || c == kRemoved) {
-      ++out.dropped_triangles;
-      continue;
-    }
-    out.indices.push_back(a);
-    out.indices.push_back(b);
-    out.indices.push_back(c);
-  }
-
   out.lo = out.hi = out.vertices.front();
   for (const glm::vec3& v : out.vertices) {
     out.lo = glm::min(out.lo, v);

@@ -84,7 +84,8 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
     clock.lap();
   }
   if (options.build_bounds) {
-    r.bounds = build_bounds(r.voxels.grid, levels, r.features->y_end, r.features->room);
+    r.bounds = build_bounds(r.voxels.grid, levels, r.features->y_end, r.features->room, options.bounds,
+                            options.threads);
     r.timings.bounds = clock.lap();
   }
   r.timings.total = r.timings.prepare + r.timings.voxelize + r.timings.features + r.timings.areas +

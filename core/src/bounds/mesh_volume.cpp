@@ -1,0 +1,383 @@
+// Meshing of a voxel volume (Eq. 3.63/3.64) into a closed surface. Where the thesis covers each slice's
+// mask with greedy rectangles, we take each connected region of equal faces whole, as one polygon with
+// holes, and triangulate it with its own corners only. Every vertex is then a true corner of the volume's
+// surface: the fewest a closed triangulation of the same surface can have, and a closed triangle mesh has
+// about twice as many triangles as vertices.
+#include "roomsense/bounds.h"
+
+#include "parallel.h"
+#include "polygon_triangulation.h"
+
+#include <algorithm>
+#include <array>
+#include <unordered_map>
+
+namespace roomsense {
+namespace {
+
+// Lattice points in integer coordinates: every comparison is exact.
+struct Point {
+  int v[3];
+  bool operator==(const Point& o) const { return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2]; }
+};
+struct PointHash {
+  std::size_t operator()(const Point& p) const {
+    std::size_t h = std::size_t(std::uint32_t(p.v[0]));
+    h = h * 0x9E3779B97F4A7C15ull ^ std::size_t(std::uint32_t(p.v[1]));
+    h = h * 0x9E3779B97F4A7C15ull ^ std::size_t(std::uint32_t(p.v[2]));
+    return h;
+  }
+};
+
+// The thesis's lexicographic order per plane: (a, b) = (X, Y) for slices along Z, (Y, Z) along X, (Z, X)
+// along Y. In each, e_a x e_b = +e_c, so a loop counter-clockwise in (a, b) is counter-clockwise seen
+// from +c.
+struct Axes {
+  int c, a, b;
+};
+constexpr Axes kAxes[] = {{2, 0, 1}, {0, 1, 2}, {1, 2, 0}};
+
+// The box of solid voxels: meshing stops at its faces (outside it every mask entry is 0).
+struct Box {
+  int lo[3], hi[3];  // inclusive; hi < lo when empty
+};
+Box solid_box(const GridSpec& s, const std::vector<std::uint8_t>& volume) {
+  Box box{{s.nx, s.ny, s.nz}, {-1, -1, -1}};
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) {
+      const std::uint8_t* v = volume.data() + s.column(x, z) * std::size_t(s.ny);
+      for (int y = 0; y < s.ny; ++y)
+        if (v[y]) {
+          const int p[3] = {x, y, z};
+          for (int k = 0; k < 3; ++k) {
+            box.lo[k] = std::min(box.lo[k], p[k]);
+            box.hi[k] = std::max(box.hi[k], p[k]);
+          }
+        }
+    }
+  return box;
+}
+
+// Whether a lattice point is a corner of some face region, from the 8 voxels around it (bit dx | dy << 1 |
+// dz << 2 for voxel (x-1+dx, y-1+dy, z-1+dz)). In each of the three planes through the point, the four
+// faces around it carry Eq. 3.63's mask with its orientation (+1, -1 or none); a region of one value turns
+// at the point when it holds one or three of the four faces, or two diagonal ones.
+constexpr std::array<bool, 256> make_corner_table() {
+  std::array<bool, 256> table{};
+  for (int pattern = 0; pattern < 256; ++pattern)
+    for (const Axes& ax : kAxes) {
+      int mask[2][2] = {};
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) {
+          int below[3] = {}, above[3] = {};
+          below[ax.a] = above[ax.a] = i;
+          below[ax.b] = above[ax.b] = j;
+          above[ax.c] = 1;
+          const auto bit = [&](const int* d) { return (pattern >> (d[0] | d[1] << 1 | d[2] << 2)) & 1; };
+          mask[i][j] = bit(below) - bit(above);
+        }
+      for (const int value : {1, -1}) {
+        const bool m00 = mask[0][0] == value, m01 = mask[0][1] == value, m10 = mask[1][0] == value,
+                   m11 = mask[1][1] == value;
+        const int count = int(m00) + int(m01) + int(m10) + int(m11);
+        if (count == 1 || count == 3 || (count == 2 && m00 == m11)) table[std::size_t(pattern)] = true;
+      }
+    }
+  return table;
+}
+constexpr std::array<bool, 256> kCornerTable = make_corner_table();
+
+// The corners of the whole surface, one bit per lattice point of the solid box. A face region's polygon
+// takes every corner on its border: its own turns and the T-junctions where its neighbours turn, so the
+// two sides of every crease are split at the same points.
+class SurfaceCorners {
+  // The 4 voxels of one level (bit k for column k = dz * 2 + dx) as the table's bits dx | dz << 2.
+  static constexpr std::array<int, 16> kSpread = [] {
+    std::array<int, 16> spread{};
+    for (int bits = 0; bits < 16; ++bits)
+      for (int k = 0; k < 4; ++k)
+        if (bits >> k & 1) spread[std::size_t(bits)] |= 1 << ((k & 1) | (k >> 1) << 2);
+    return spread;
+  }();
+
+ public:
+  SurfaceCorners(const GridSpec& s, const std::vector<std::uint8_t>& volume, const Box& box, unsigned threads) {
+    for (int k = 0; k < 3; ++k) {
+      lo_[k] = box.lo[k];
+      n_[k] = box.hi[k] - box.lo[k] + 2;
+    }
+    // Each z layer starts on a word, so workers on different layers never share one.
+    layer_words_ = (std::size_t(n_[0]) * std::size_t(n_[1]) + 63) / 64;
+    bits_.assign(layer_words_ * std::size_t(n_[2]), 0);
+    const std::vector<std::uint8_t> empty(std::size_t(s.ny), 0);
+    const auto column = [&](int x, int z) {
+      return x >= 0 && z >= 0 && x < s.nx && z < s.nz ? volume.data() + s.column(x, z) * std::size_t(s.ny) : empty.data();
+    };
+    const int y_first = lo_[1], y_last = lo_[1] + n_[1] - 1;  // lattice levels; voxel levels y-1 and y
+    detail::parallel_for(std::size_t(n_[2]), threads, 16, [&](std::size_t z_begin, std::size_t z_end, std::size_t) {
+      for (int z = lo_[2] + int(z_begin); z < lo_[2] + int(z_end); ++z)
+        for (int x = lo_[0]; x < lo_[0] + n_[0]; ++x) {
+          const std::uint8_t* cols[4] = {column(x - 1, z - 1), column(x, z - 1), column(x - 1, z), column(x, z)};
+          // The four voxels of level y - 1 (bits dy = 0), carried up from the previous level.
+          const auto level = [&](int y) {
+            int bits = 0;
+            if (y >= 0 && y < s.ny)
+              for (int k = 0; k < 4; ++k) bits |= int(cols[k][y] != 0) << k;
+            return bits;
+          };
+          int below = level(y_first - 1);
+          for (int y = y_first; y <= y_last; ++y) {
+            const int above = level(y);
+            if (kCornerTable[std::size_t(kSpread[std::size_t(below)] | kSpread[std::size_t(above)] << 2)]) {
+              const std::size_t i = bit(x, y, z);
+              bits_[i / 64] |= std::uint64_t{1} << (i % 64);
+            }
+            below = above;
+          }
+        }
+    });
+  }
+  bool contains(const Point& p) const {
+    for (int k = 0; k < 3; ++k)
+      if (p.v[k] < lo_[k] || p.v[k] >= lo_[k] + n_[k]) return false;
+    const std::size_t i = bit(p.v[0], p.v[1], p.v[2]);
+    return (bits_[i / 64] >> (i % 64)) & 1;
+  }
+
+ private:
+  std::size_t bit(int x, int y, int z) const {
+    return std::size_t(z - lo_[2]) * layer_words_ * 64 + std::size_t(x - lo_[0]) * std::size_t(n_[1]) +
+           std::size_t(y - lo_[1]);
+  }
+  int lo_[3], n_[3];
+  std::size_t layer_words_ = 0;
+  std::vector<std::uint64_t> bits_;
+};
+
+// One axis's triangles over its own numbering of the points; the axes are merged in order at the end.
+class MeshBuilder {
+ public:
+  std::uint32_t vertex(const Point& p) {
+    const auto [it, inserted] = index_.try_emplace(p, std::uint32_t(points_.size()));
+    if (inserted) points_.push_back(p);
+    return it->second;
+  }
+  void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) { indices_.insert(indices_.end(), {a, b, c}); }
+
+  // Appends this part to `mesh`, each position once across all parts (`index` maps points to mesh vertices).
+  void append_to(BoundsMesh& mesh, std::unordered_map<Point, std::uint32_t, PointHash>& index, const GridSpec& s) const {
+    std::vector<std::uint32_t> global(points_.size());
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      const Point& p = points_[i];
+      const auto [it, inserted] = index.try_emplace(p, std::uint32_t(mesh.vertices.size()));
+      if (inserted) mesh.vertices.push_back(s.lattice_to_world(float(p.v[0]), float(p.v[1]), float(p.v[2])));
+      global[i] = it->second;
+    }
+    for (const std::uint32_t i : indices_) mesh.indices.push_back(global[i]);
+  }
+
+ private:
+  std::vector<Point> points_;
+  std::vector<std::uint32_t> indices_;
+  std::unordered_map<Point, std::uint32_t, PointHash> index_;
+};
+
+// One slice's mask (Eq. 3.63 with the orientation folded in: +1 where the face points +c, -1 where it points
+// -c, 0 where there is none), cut into 4-connected regions of one value, each traced into an outer loop and
+// its holes and triangulated.
+class SliceMesher {
+ public:
+  SliceMesher(int na, int nb) : na_(na), nb_(nb), mask_(std::size_t(na) * std::size_t(nb)) {}
+  signed char* row(int b) { return &mask_[std::size_t(b) * std::size_t(na_)]; }
+
+  // `to_point` maps mask lattice point (a, b) to the 3D lattice.
+  template <class ToPoint>
+  void mesh(const SurfaceCorners& corners, const ToPoint& to_point, MeshBuilder& out) {
+    label_regions();
+    loops_.clear();
+    visited_.assign(mask_.size(), 0);
+    for (int b = 0; b < nb_; ++b)
+      for (int a = 0; a < na_; ++a) {
+        const signed char m = value(a, b);
+        if (m == 0) continue;
+        for (int side = 0; side < 4; ++side)
+          if (value(a + kNeighbour[side][0], b + kNeighbour[side][1]) != m &&
+              !(visited_[cell(a, b)] & (1 << side)))
+            trace(a, b, side, corners, to_point, out);
+      }
+    // Each region: its outer loop (positive area) and its holes.
+    std::sort(loops_.begin(), loops_.end(), [](const Traced& x, const Traced& y) {
+      return x.region != y.region ? x.region < y.region : x.outer > y.outer;
+    });
+    for (std::size_t i = 0; i < loops_.size();) {
+      std::size_t j = i + 1;
+      holes_.clear();
+      while (j < loops_.size() && loops_[j].region == loops_[i].region) holes_.push_back(std::move(loops_[j++].points));
+      triangles_.triangles.clear();
+      detail::triangulate_polygon(loops_[i].points, holes_, triangles_);
+      for (const auto& t : triangles_.triangles) {
+        if (loops_[i].value > 0) out.triangle(t[0], t[1], t[2]);
+        else out.triangle(t[0], t[2], t[1]);  // the face points -c: reverse the turn
+      }
+      i = j;
+    }
+  }
+
+ private:
+  // Directions 0..3: +a, +b, -a, -b; the side of a cell a boundary edge in that direction runs along
+  // (bottom, right, top, left) when the cell is on its left.
+  static constexpr int kStep[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  static constexpr int kNeighbour[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+  static constexpr int kStart[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};     // start corner of each side
+  static constexpr int kLeftCell[4][2] = {{0, 0}, {-1, 0}, {-1, -1}, {0, -1}};  // of an edge leaving a point
+
+  struct Traced {
+    int region;
+    bool outer;
+    signed char value;
+    detail::Loop points;
+  };
+
+  std::size_t cell(int a, int b) const { return std::size_t(b) * std::size_t(na_) + std::size_t(a); }
+  signed char value(int a, int b) const {
+    return a >= 0 && b >= 0 && a < na_ && b < nb_ ? mask_[cell(a, b)] : static_cast<signed char>(0);
+  }
+
+  void label_regions() {
+    label_.assign(mask_.size(), -1);
+    int next = 0;
+    for (std::size_t seed = 0; seed < mask_.size(); ++seed) {
+      if (mask_[seed] == 0 || label_[seed] >= 0) continue;
+      label_[seed] = next;
+      stack_.assign(1, seed);
+      while (!stack_.empty()) {
+        const std::size_t c = stack_.back();
+        stack_.pop_back();
+        const int a = int(c % std::size_t(na_)), b = int(c / std::size_t(na_));
+        for (const auto& n : kNeighbour) {
+          const int na = a + n[0], nb = b + n[1];
+          if (na < 0 || nb < 0 || na >= na_ || nb >= nb_) continue;
+          const std::size_t nc = cell(na, nb);
+          if (label_[nc] < 0 && mask_[nc] == mask_[seed]) {
+            label_[nc] = next;
+            stack_.push_back(nc);
+          }
+        }
+      }
+      ++next;
+    }
+  }
+
+  // Walks the boundary with the region on the left, from the given side of cell (a, b). At a point where
+  // two cells of the region touch only diagonally it turns left, keeping to 4-connected regions. Keeps the
+  // points where it turns and the surface corners it passes.
+  template <class ToPoint>
+  void trace(int a, int b, int side, const SurfaceCorners& corners, const ToPoint& to_point, MeshBuilder& out) {
+    const signed char m = value(a, b);
+    Traced loop{label_[cell(a, b)], false, m, {}};
+    const int sa = a + kStart[side][0], sb = b + kStart[side][1];
+    int pa = sa, pb = sb, d = side, ca = a, cb = b;
+    std::int64_t twice_area = 0;
+    do {
+      visited_[cell(ca, cb)] |= std::uint8_t(1 << d);
+      const int ea = pa + kStep[d][0], eb = pb + kStep[d][1];
+      twice_area += std::int64_t(pa) * eb - std::int64_t(ea) * pb;
+      const int l = d, r = (d + 3) % 4;  // the cells left and right of the straight way on
+      const bool ahead_left = value(ea + kLeftCell[l][0], eb + kLeftCell[l][1]) == m;
+      const bool ahead_right = value(ea + kLeftCell[r][0], eb + kLeftCell[r][1]) == m;
+      const int nd = !ahead_left ? (d + 1) % 4 : ahead_right ? (d + 3) % 4 : d;
+      const Point p = to_point(ea, eb);
+      if (nd != d || corners.contains(p)) loop.points.push_back({ea, eb, out.vertex(p)});
+      pa = ea;
+      pb = eb;
+      d = nd;
+      ca = pa + kLeftCell[d][0];
+      cb = pb + kLeftCell[d][1];
+    } while (pa != sa || pb != sb || d != side);
+    loop.outer = twice_area > 0;
+    loops_.push_back(std::move(loop));
+  }
+
+  int na_, nb_;
+  std::vector<signed char> mask_;
+  std::vector<int> label_;
+  std::vector<std::uint8_t> visited_;
+  std::vector<std::size_t> stack_;
+  std::vector<Traced> loops_;
+  std::vector<detail::Loop> holes_;
+  detail::PolygonTriangles triangles_;
+};
+
+void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const Box& box, const Axes& ax,
+               const SurfaceCorners& corners, MeshBuilder& out) {
+  // Strides of GridSpec::index per axis: x -> ny, y -> 1, z -> nx * ny.
+  const std::ptrdiff_t stride[3] = {s.ny, 1, std::ptrdiff_t(s.nx) * s.ny};
+  const std::ptrdiff_t sa = stride[ax.a], sb = stride[ax.b], sc = stride[ax.c];
+  const int a0 = box.lo[ax.a], b0 = box.lo[ax.b], c0 = box.lo[ax.c];
+  const int na = box.hi[ax.a] - a0 + 1, nb = box.hi[ax.b] - b0 + 1, c_end = box.hi[ax.c];
+  const std::uint8_t* base = volume.data() + a0 * sa + b0 * sb;
+  SliceMesher slice(na, nb);
+  for (int c = c0 - 1; c <= c_end; ++c) {
+    const std::uint8_t* below = c >= c0 ? base + c * sc : nullptr;
+    const std::uint8_t* above = c + 1 <= c_end ? base + (c + 1) * sc : nullptr;
+    bool any = false;
+    for (int b = 0; b < nb; ++b) {
+      signed char* row = slice.row(b);
+      for (int a = 0; a < na; ++a) {
+        const std::ptrdiff_t off = a * sa + b * sb;
+        row[a] = static_cast<signed char>((below ? below[off] : 0) - (above ? above[off] : 0));
+        any = any || row[a] != 0;
+      }
+    }
+    if (!any) continue;
+    slice.mesh(
+        corners,
+        [&](int a, int b) {
+          Point p;
+          p.v[ax.a] = a0 + a;
+          p.v[ax.b] = b0 + b;
+          p.v[ax.c] = c + 1;
+          return p;
+        },
+        out);
+  }
+}
+
+}  // namespace
+
+BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& volume, unsigned threads) {
+  const Box box = solid_box(spec, volume);
+  if (box.hi[0] < box.lo[0]) return {};
+  const SurfaceCorners corners(spec, volume, box, threads);
+  MeshBuilder parts[3];
+  detail::parallel_tasks(3, threads, [&](std::size_t axis) { mesh_axis(spec, volume, box, kAxes[axis], corners, parts[axis]); });
+  BoundsMesh mesh;
+  std::unordered_map<Point, std::uint32_t, PointHash> index;
+  for (const MeshBuilder& part : parts) part.append_to(mesh, index, spec);
+  return mesh;
+}
+
+MeshClosure check_closure(const BoundsMesh& mesh) {
+  // Count each directed edge; a closed, consistently oriented surface has every undirected edge exactly
+  // once in each direction.
+  std::unordered_map<std::uint64_t, int> directed;
+  directed.reserve(mesh.indices.size());
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint64_t a = mesh.indices[t + std::size_t(k)], b = mesh.indices[t + std::size_t((k + 1) % 3)];
+      ++directed[(a << 32) | b];
+    }
+  MeshClosure result;
+  for (const auto& [edge, count] : directed) {
+    const std::uint64_t a = edge >> 32, b = edge & 0xFFFFFFFFull;
+    const auto reverse = directed.find((b << 32) | a);
+    const int back = reverse == directed.end() ? 0 : reverse->second;
+    if (count != 1 || back != 1) {
+      if (count + back != 2) ++result.boundary_or_nonmanifold_edges;
+      else ++result.misoriented_edges;
+    }
+  }
+  return result;
+}
+
+}  // namespace roomsense

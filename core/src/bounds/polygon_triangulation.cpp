@@ -1,0 +1,223 @@
+// Ear clipping of a lattice polygon with holes. The structure follows Eberly's "Triangulation by Ear
+// Clipping" (holes joined to the outer loop by bridges to a visible vertex) as refined in Mapbox's earcut.
+// Two changes for closed meshes: collinear vertices are never dropped (they are T-junctions that the
+// neighbouring faces share), and an ear is rejected when any other vertex, not only a reflex one, lies in
+// or on it. Coordinates are small integers, so every orientation test is exact.
+#include "polygon_triangulation.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace roomsense::detail {
+namespace {
+
+struct Node {
+  std::int64_t a, b;
+  std::uint32_t id;
+  int prev, next;
+};
+
+class Ring {
+ public:
+  explicit Ring(std::size_t capacity) { nodes_.reserve(capacity); }
+
+  // Links the points of `loop` after `last` (or as a new ring when last < 0); returns the last node.
+  int link(const Loop& loop, int last) {
+    for (const LatticePoint2& p : loop) {
+      const int i = int(nodes_.size());
+      nodes_.push_back({p.a, p.b, p.id, i, i});
+      if (last >= 0) {
+        nodes_[i].prev = last;
+        nodes_[i].next = nodes_[last].next;
+        nodes_[nodes_[last].next].prev = i;
+        nodes_[last].next = i;
+      }
+      last = i;
+    }
+    return last;
+  }
+
+  const Node& operator[](int i) const { return nodes_[std::size_t(i)]; }
+  int next(int i) const { return nodes_[std::size_t(i)].next; }
+  int prev(int i) const { return nodes_[std::size_t(i)].prev; }
+
+  void remove(int i) {
+    Node& n = nodes_[std::size_t(i)];
+    nodes_[std::size_t(n.prev)].next = n.next;
+    nodes_[std::size_t(n.next)].prev = n.prev;
+  }
+
+  // Twice the signed area of (p, q, r): positive when it turns counter-clockwise.
+  std::int64_t cross(int p, int q, int r) const {
+    const Node &P = (*this)[p], &Q = (*this)[q], &R = (*this)[r];
+    return (Q.a - P.a) * (R.b - P.b) - (Q.b - P.b) * (R.a - P.a);
+  }
+  bool same_place(int p, int q) const { return (*this)[p].a == (*this)[q].a && (*this)[p].b == (*this)[q].b; }
+
+  // Removes nodes that repeat their successor's position (zero-length edges, left by bridges at a vertex
+  // that a hole touches). Collinear nodes stay. Returns a node still in the ring.
+  int drop_repeats(int start) {
+    int p = start;
+    for (bool removed = true; removed || p != start;) {
+      removed = false;
+      const int q = next(p);
+      if (q != p && same_place(p, q)) {
+        if (q == start) start = p;
+        remove(q);
+        removed = true;
+      } else {
+        p = q;
+      }
+    }
+    return start;
+  }
+
+  // Joins the ring of `b` into the ring of `a` by the bridge a-b, walked both ways: a -> b ... b' -> a'.
+  // Returns a', the copy of a after the bridge.
+  int split(int a, int b) {
+    const int a2 = int(nodes_.size());
+    nodes_.push_back(nodes_[std::size_t(a)]);
+    const int b2 = int(nodes_.size());
+    nodes_.push_back(nodes_[std::size_t(b)]);
+    const int an = next(a), bp = prev(b);
+    nodes_[std::size_t(a)].next = b;
+    nodes_[std::size_t(b)].prev = a;
+    nodes_[std::size_t(a2)].next = an;
+    nodes_[std::size_t(an)].prev = a2;
+    nodes_[std::size_t(b2)].next = a2;
+    nodes_[std::size_t(a2)].prev = b2;
+    nodes_[std::size_t(bp)].next = b2;
+    nodes_[std::size_t(b2)].prev = bp;
+    return a2;
+  }
+
+ private:
+  std::vector<Node> nodes_;
+};
+
+// Closed test for a counter-clockwise triangle.
+bool in_triangle(double ax, double ay, double bx, double by, double cx, double cy, double px, double py) {
+  return (bx - ax) * (py - ay) - (by - ay) * (px - ax) >= 0 && (cx - bx) * (py - by) - (cy - by) * (px - bx) >= 0 &&
+         (ax - cx) * (py - cy) - (ay - cy) * (px - cx) >= 0;
+}
+
+// Whether the diagonal from a toward b starts inside the polygon's angle at a.
+bool locally_inside(const Ring& r, int a, int b) {
+  if (r.cross(r.prev(a), a, r.next(a)) > 0) return r.cross(a, b, r.next(a)) <= 0 && r.cross(a, r.prev(a), b) <= 0;
+  return r.cross(a, b, r.prev(a)) > 0 || r.cross(a, r.next(a), b) > 0;
+}
+
+// Of two nodes at one position, whether the angle at p lies inside the angle at m.
+bool sector_contains_sector(const Ring& r, int m, int p) {
+  return r.cross(r.prev(m), m, r.prev(p)) > 0 && r.cross(r.next(p), m, r.next(m)) > 0;
+}
+
+// Eberly's visible vertex for hole vertex `h` (the hole's leftmost): cast a ray toward -a, take the nearest
+// edge it hits, then prefer any vertex inside the triangle (h, hit, endpoint) of the smallest angle.
+int find_bridge(const Ring& r, int h, int outer) {
+  const double hx = double(r[h].a), hy = double(r[h].b);
+  double qx = -std::numeric_limits<double>::infinity();
+  int m = -1;
+  int p = outer;
+  do {
+    const Node &P = r[p], &N = r[r.next(p)];
+    // Edges running down (-b) bound the polygon on its -a side.
+    if (hy <= double(P.b) && hy >= double(N.b) && N.b != P.b) {
+      const double x = double(P.a) + (hy - double(P.b)) * double(N.a - P.a) / double(N.b - P.b);
+      if (x <= hx && x > qx) {
+        qx = x;
+        m = P.a < N.a ? p : r.next(p);
+        if (x == hx) return m;  // the hole touches this edge
+      }
+    }
+    p = r.next(p);
+  } while (p != outer);
+  if (m < 0) return -1;
+
+  const int stop = m;
+  const double mx = double(r[m].a), my = double(r[m].b);
+  double best_tan = std::numeric_limits<double>::infinity();
+  p = m;
+  do {
+    const double px = double(r[p].a), py = double(r[p].b);
+    if (hx >= px && px >= mx && hx != px &&
+        in_triangle(hy < my ? hx : qx, hy, mx, my, hy < my ? qx : hx, hy, px, py)) {
+      const double tan = std::abs(hy - py) / (hx - px);
+      if (locally_inside(r, p, h) &&
+          (tan < best_tan ||
+           (tan == best_tan && (px > double(r[m].a) || (px == double(r[m].a) && sector_contains_sector(r, m, p)))))) {
+        m = p;
+        best_tan = tan;
+      }
+    }
+    p = r.next(p);
+  } while (p != stop);
+  return m;
+}
+
+bool is_ear(const Ring& r, int ear) {
+  const int a = r.prev(ear), c = r.next(ear);
+  if (r.cross(a, ear, c) <= 0) return false;  // reflex, or flat (a T-junction that must stay)
+  const std::int64_t lo_a = std::min({r[a].a, r[ear].a, r[c].a}), hi_a = std::max({r[a].a, r[ear].a, r[c].a});
+  const std::int64_t lo_b = std::min({r[a].b, r[ear].b, r[c].b}), hi_b = std::max({r[a].b, r[ear].b, r[c].b});
+  for (int p = r.next(c); p != a; p = r.next(p)) {
+    const Node& P = r[p];
+    if (P.a < lo_a || P.a > hi_a || P.b < lo_b || P.b > hi_b) continue;
+    if (r.same_place(p, a) || r.same_place(p, ear) || r.same_place(p, c)) continue;
+    if (r.cross(a, ear, p) >= 0 && r.cross(ear, c, p) >= 0 && r.cross(c, a, p) >= 0) return false;
+  }
+  return true;
+}
+
+void clip_ears(Ring& r, int ear, PolygonTriangles& out) {
+  int stop = ear;
+  while (r.prev(ear) != r.next(ear)) {
+    const int prev = r.prev(ear), next = r.next(ear);
+    if (is_ear(r, ear)) {
+      out.triangles.push_back({r[prev].id, r[ear].id, r[next].id});
+      r.remove(ear);
+      ear = stop = next;
+      continue;
+    }
+    ear = next;
+    if (ear == stop) {  // a full turn without an ear: not a valid polygon; fan the rest
+      ++out.fallbacks;
+      for (int p = r.next(ear); r.next(p) != ear; p = r.next(p))
+        out.triangles.push_back({r[ear].id, r[p].id, r[r.next(p)].id});
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+void triangulate_polygon(const Loop& outer, const std::vector<Loop>& holes, PolygonTriangles& out) {
+  if (outer.size() < 3) return;
+  std::size_t total = outer.size();
+  for (const Loop& h : holes) total += h.size() + 2;
+  Ring r(total + 2 * holes.size());
+  int start = r.link(outer, -1);
+
+  // Holes in order of their leftmost vertex, so that each bridge reaches the outer loop or an earlier hole.
+  std::vector<int> lefts;
+  for (const Loop& hole : holes) {
+    if (hole.size() < 3) continue;
+    const int last = r.link(hole, -1);
+    int left = last;
+    for (int p = r.next(last); p != last; p = r.next(p))
+      if (r[p].a < r[left].a || (r[p].a == r[left].a && r[p].b < r[left].b)) left = p;
+    lefts.push_back(left);
+  }
+  std::sort(lefts.begin(), lefts.end(), [&](int x, int y) { return r[x].a != r[y].a ? r[x].a < r[y].a : r[x].b < r[y].b; });
+  for (const int h : lefts) {
+    const int bridge = find_bridge(r, h, start);
+    if (bridge < 0) {  // the hole is not inside the outer loop
+      ++out.fallbacks;
+      continue;
+    }
+    start = r.drop_repeats(r.split(bridge, h));
+  }
+  clip_ears(r, r.drop_repeats(start), out);
+}
+
+}  // namespace roomsense::detail

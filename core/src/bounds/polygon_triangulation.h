@@ -1,0 +1,31 @@
+// Triangulation of a lattice polygon with holes, using its own vertices only (ear clipping with hole
+// bridges, after Eberly's "Triangulation by Ear Clipping"). Collinear vertices are kept: they are the
+// T-junctions a watertight mesh needs, so every one must end up as a triangle corner.
+#pragma once
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace roomsense::detail {
+
+struct LatticePoint2 {
+  std::int32_t a = 0, b = 0;
+  std::uint32_t id = 0;  // caller's vertex index, copied into the triangles
+};
+
+// One loop: the outer boundary counter-clockwise (positive area), each hole clockwise. A hole may touch
+// the outer loop or another hole at a vertex. Loops must not cross.
+using Loop = std::vector<LatticePoint2>;
+
+struct PolygonTriangles {
+  std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise, like the outer loop
+  // Rings on which no ear was found (only on input that breaks the contract above). The rest of such a ring
+  // is fanned, so the surface stays closed, but those triangles may overlap.
+  std::size_t fallbacks = 0;
+};
+
+// Appends the n + 2h - 2 triangles of a polygon of n vertices and h holes to `out`.
+void triangulate_polygon(const Loop& outer, const std::vector<Loop>& holes, PolygonTriangles& out);
+
+}  // namespace roomsense::detail

@@ -78,6 +78,25 @@ TEST(MeshVolume, RandomBoxStacksGiveExactSurfaces) {
   }
 }
 
+TEST(MeshVolume, AFloorAmongHundredsOfPillarsIsOneRegionWithHundredsOfHoles) {
+  // The top of a slab pierced by 676 pillars: one polygon with 676 holes, every one bridged.
+  const GridSpec s = make_grid_spec({0, 0, 0}, {7.95f, 0.35f, 7.95f}, 0.1f);
+  std::vector<std::uint8_t> volume(s.voxel_count(), 0);
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) {
+      volume[s.index(x, 0, z)] = 1;
+      if (x % 3 == 1 && z % 3 == 1)
+        for (int y = 1; y < 3; ++y) volume[s.index(x, y, z)] = 1;
+    }
+  const BoundsMesh m = mesh_volume(s, volume);
+  EXPECT_TRUE(check_closure(m).closed());
+  EXPECT_NEAR(signed_volume(m), double(solid_count(volume)) * 0.001, 1e-5);
+  const test::TriangleStats st = test::triangle_stats(m, 0.1);
+  EXPECT_NEAR(st.area, test::voxel_face_area(s, volume), 1e-5);
+  EXPECT_EQ(st.degenerate, 0u);
+  EXPECT_EQ(st.flat_vertices, 0u);
+}
+
 TEST(MeshVolume, EdgeContactsAreFilled) {
   const GridSpec s = make_grid_spec({0, 0, 0}, {0.25f, 0.15f, 0.25f}, 0.1f);
   std::vector<std::uint8_t> volume(s.voxel_count(), 0);

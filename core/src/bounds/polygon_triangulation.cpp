@@ -6,6 +6,7 @@
 #include "polygon_triangulation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace roomsense::detail {
@@ -15,6 +16,7 @@ struct Node {
   std::int64_t a, b;
   std::uint32_t id;
   int prev, next;
+  bool removed = false;
 };
 
 class Ring {
@@ -25,7 +27,7 @@ class Ring {
   int link(const Loop& loop, int last) {
     for (const LatticePoint2& p : loop) {
       const int i = int(nodes_.size());
-      nodes_.push_back({p.a, p.b, p.id, i, i});
+      nodes_.push_back({p.a, p.b, p.id, i, i, false});
       if (last >= 0) {
         nodes_[i].prev = last;
         nodes_[i].next = nodes_[last].next;
@@ -41,8 +43,11 @@ class Ring {
   int next(int i) const { return nodes_[std::size_t(i)].next; }
   int prev(int i) const { return nodes_[std::size_t(i)].prev; }
 
+  bool removed(int i) const { return nodes_[std::size_t(i)].removed; }
+
   void remove(int i) {
     Node& n = nodes_[std::size_t(i)];
+    n.removed = true;
     nodes_[std::size_t(n.prev)].next = n.next;
     nodes_[std::size_t(n.next)].prev = n.prev;
   }
@@ -93,6 +98,68 @@ class Ring {
 
  private:
   std::vector<Node> nodes_;
+};
+
+// The ring's nodes in a uniform grid of buckets over their bounding box, about four to a bucket, so an ear
+// test looks only at the nodes near its triangle: without it, a region with thousands of holes (a floor
+// among pillars) takes time quadratic in its vertex count. Built once the ring is final; clipping only
+// removes nodes, which the tests skip.
+class NodeGrid {
+ public:
+  NodeGrid(const Ring& r, int start) {
+    std::int64_t lo_a = r[start].a, hi_a = lo_a, lo_b = r[start].b, hi_b = lo_b;
+    std::size_t n = 0;
+    int p = start;
+    do {
+      lo_a = std::min(lo_a, r[p].a), hi_a = std::max(hi_a, r[p].a);
+      lo_b = std::min(lo_b, r[p].b), hi_b = std::max(hi_b, r[p].b);
+      ++n;
+      p = r.next(p);
+    } while (p != start);
+    lo_a_ = lo_a;
+    lo_b_ = lo_b;
+    const std::int64_t span = std::max<std::int64_t>({hi_a - lo_a, hi_b - lo_b, 1});
+    const std::int64_t side = std::max<std::int64_t>(1, std::int64_t(std::sqrt(double(n) / 4.0)));
+    cell_ = std::max<std::int64_t>(1, (span + side) / side);
+    na_ = (hi_a - lo_a) / cell_ + 1;
+    nb_ = (hi_b - lo_b) / cell_ + 1;
+    first_.assign(std::size_t(na_ * nb_) + 1, 0);
+    p = start;
+    do {
+      ++first_[bucket(r[p].a, r[p].b) + 1];
+      p = r.next(p);
+    } while (p != start);
+    for (std::size_t i = 1; i < first_.size(); ++i) first_[i] += first_[i - 1];
+    ids_.resize(n);
+    std::vector<std::size_t> fill(first_.begin(), first_.end() - 1);
+    p = start;
+    do {
+      ids_[fill[bucket(r[p].a, r[p].b)]++] = p;
+      p = r.next(p);
+    } while (p != start);
+  }
+
+  // Calls visit(node) for every node in the buckets that meet the box; stops when visit returns false.
+  template <class Visit>
+  bool all_of(std::int64_t lo_a, std::int64_t hi_a, std::int64_t lo_b, std::int64_t hi_b, const Visit& visit) const {
+    const std::int64_t a0 = std::max<std::int64_t>(0, (lo_a - lo_a_) / cell_), a1 = std::min(na_ - 1, (hi_a - lo_a_) / cell_);
+    const std::int64_t b0 = std::max<std::int64_t>(0, (lo_b - lo_b_) / cell_), b1 = std::min(nb_ - 1, (hi_b - lo_b_) / cell_);
+    for (std::int64_t b = b0; b <= b1; ++b)
+      for (std::int64_t a = a0; a <= a1; ++a) {
+        const std::size_t cell = std::size_t(b * na_ + a);
+        for (std::size_t i = first_[cell]; i < first_[cell + 1]; ++i)
+          if (!visit(ids_[i])) return false;
+      }
+    return true;
+  }
+
+ private:
+  std::size_t bucket(std::int64_t a, std::int64_t b) const {
+    return std::size_t((b - lo_b_) / cell_ * na_ + (a - lo_a_) / cell_);
+  }
+  std::int64_t lo_a_ = 0, lo_b_ = 0, cell_ = 1, na_ = 1, nb_ = 1;
+  std::vector<std::size_t> first_;
+  std::vector<int> ids_;
 };
 
 // Closed test for a counter-clockwise triangle.
@@ -155,25 +222,26 @@ int find_bridge(const Ring& r, int h, int outer) {
   return m;
 }
 
-bool is_ear(const Ring& r, int ear) {
+bool is_ear(const Ring& r, const NodeGrid& grid, int ear) {
   const int a = r.prev(ear), c = r.next(ear);
   if (r.cross(a, ear, c) <= 0) return false;  // reflex, or flat (a T-junction that must stay)
   const std::int64_t lo_a = std::min({r[a].a, r[ear].a, r[c].a}), hi_a = std::max({r[a].a, r[ear].a, r[c].a});
   const std::int64_t lo_b = std::min({r[a].b, r[ear].b, r[c].b}), hi_b = std::max({r[a].b, r[ear].b, r[c].b});
-  for (int p = r.next(c); p != a; p = r.next(p)) {
+  return grid.all_of(lo_a, hi_a, lo_b, hi_b, [&](int p) {
+    if (r.removed(p) || p == a || p == ear || p == c) return true;
     const Node& P = r[p];
-    if (P.a < lo_a || P.a > hi_a || P.b < lo_b || P.b > hi_b) continue;
-    if (r.same_place(p, a) || r.same_place(p, ear) || r.same_place(p, c)) continue;
-    if (r.cross(a, ear, p) >= 0 && r.cross(ear, c, p) >= 0 && r.cross(c, a, p) >= 0) return false;
-  }
-  return true;
+    if (P.a < lo_a || P.a > hi_a || P.b < lo_b || P.b > hi_b) return true;
+    if (r.same_place(p, a) || r.same_place(p, ear) || r.same_place(p, c)) return true;
+    return !(r.cross(a, ear, p) >= 0 && r.cross(ear, c, p) >= 0 && r.cross(c, a, p) >= 0);
+  });
 }
 
 void clip_ears(Ring& r, int ear, PolygonTriangles& out) {
+  const NodeGrid grid(r, ear);
   int stop = ear;
   while (r.prev(ear) != r.next(ear)) {
     const int prev = r.prev(ear), next = r.next(ear);
-    if (is_ear(r, ear)) {
+    if (is_ear(r, grid, ear)) {
       out.triangles.push_back({r[prev].id, r[ear].id, r[next].id});
       r.remove(ear);
       ear = stop = next;

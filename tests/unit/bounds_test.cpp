@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <string>
 
 namespace roomsense {
 namespace {
@@ -15,6 +16,21 @@ namespace {
 using test::signed_volume;
 
 std::size_t solid_count(const std::vector<std::uint8_t>& v) { return std::size_t(std::count(v.begin(), v.end(), 1)); }
+
+// The mesh of `volume` is closed, encloses its solid voxels, covers each voxel face exactly once with whole
+// triangles, and has no vertex inside a flat patch.
+void expect_exact_mesh(const GridSpec& s, const std::vector<std::uint8_t>& volume, const BoundsMesh& m,
+                       double volume_tolerance, double area_tolerance, const std::string& what = {}) {
+  const MeshClosure c = check_closure(m);
+  EXPECT_EQ(c.boundary_or_nonmanifold_edges, 0u) << what;
+  EXPECT_EQ(c.misoriented_edges, 0u) << what;
+  const double cell = double(s.voxel_size) * s.voxel_size * s.voxel_size;
+  EXPECT_NEAR(signed_volume(m), double(solid_count(volume)) * cell, volume_tolerance) << what;
+  const test::TriangleStats st = test::triangle_stats(m, s.voxel_size);
+  EXPECT_NEAR(st.area, test::voxel_face_area(s, volume), area_tolerance) << what;
+  EXPECT_EQ(st.degenerate, 0u) << what;
+  EXPECT_EQ(st.flat_vertices, 0u) << what;
+}
 
 TEST(MeshVolume, OneVoxelIsACube) {
   const GridSpec s = make_grid_spec({0, 0, 0}, {0.25f, 0.25f, 0.25f}, 0.1f);
@@ -36,15 +52,7 @@ TEST(MeshVolume, RandomVolumesGiveClosedOutwardSurfacesOfTheRightVolume) {
     for (auto& v : volume) v = solid(rng) ? 1 : 0;
     fill_edge_contacts(s, volume);
     const BoundsMesh m = mesh_volume(s, volume);
-    const MeshClosure c = check_closure(m);
-    EXPECT_EQ(c.boundary_or_nonmanifold_edges, 0u) << "trial " << trial;
-    EXPECT_EQ(c.misoriented_edges, 0u) << "trial " << trial;
-    EXPECT_NEAR(signed_volume(m), double(solid_count(volume)) * 0.001, 1e-5) << "trial " << trial;
-    // Each voxel face covered once, by whole triangles, and every vertex a corner.
-    const test::TriangleStats st = test::triangle_stats(m, 0.1);
-    EXPECT_NEAR(st.area, test::voxel_face_area(s, volume), 1e-6) << "trial " << trial;
-    EXPECT_EQ(st.degenerate, 0u) << "trial " << trial;
-    EXPECT_EQ(st.flat_vertices, 0u) << "trial " << trial;
+    expect_exact_mesh(s, volume, m, 1e-5, 1e-6, "trial " + std::to_string(trial));
     // Each position once.
     std::vector<glm::vec3> sorted = m.vertices;
     std::sort(sorted.begin(), sorted.end(), [](auto a, auto b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
@@ -68,13 +76,7 @@ TEST(MeshVolume, RandomBoxStacksGiveExactSurfaces) {
           for (int j = y0; j < std::min(s.ny, y0 + h); ++j) volume[s.index(i, j, k)] = value;
     }
     fill_edge_contacts(s, volume);
-    const BoundsMesh m = mesh_volume(s, volume);
-    EXPECT_TRUE(check_closure(m).closed()) << "trial " << trial;
-    EXPECT_NEAR(signed_volume(m), double(solid_count(volume)) * 0.001, 1e-5) << "trial " << trial;
-    const test::TriangleStats st = test::triangle_stats(m, 0.1);
-    EXPECT_NEAR(st.area, test::voxel_face_area(s, volume), 1e-5) << "trial " << trial;
-    EXPECT_EQ(st.degenerate, 0u) << "trial " << trial;
-    EXPECT_EQ(st.flat_vertices, 0u) << "trial " << trial;
+    expect_exact_mesh(s, volume, mesh_volume(s, volume), 1e-5, 1e-5, "trial " + std::to_string(trial));
   }
 }
 
@@ -88,13 +90,7 @@ TEST(MeshVolume, AFloorAmongHundredsOfPillarsIsOneRegionWithHundredsOfHoles) {
       if (x % 3 == 1 && z % 3 == 1)
         for (int y = 1; y < 3; ++y) volume[s.index(x, y, z)] = 1;
     }
-  const BoundsMesh m = mesh_volume(s, volume);
-  EXPECT_TRUE(check_closure(m).closed());
-  EXPECT_NEAR(signed_volume(m), double(solid_count(volume)) * 0.001, 1e-5);
-  const test::TriangleStats st = test::triangle_stats(m, 0.1);
-  EXPECT_NEAR(st.area, test::voxel_face_area(s, volume), 1e-5);
-  EXPECT_EQ(st.degenerate, 0u);
-  EXPECT_EQ(st.flat_vertices, 0u);
+  expect_exact_mesh(s, volume, mesh_volume(s, volume), 1e-5, 1e-5);
 }
 
 TEST(MeshVolume, EdgeContactsAreFilled) {
@@ -113,18 +109,10 @@ TEST(Bounds, SyntheticRoomsGiveClosedMeshesFacingFreeSpace) {
     const test::AnalysedRoom& room = test::analysed(*synth::builtin(name));
     const AnalysisResult& r = room.result;
     ASSERT_TRUE(r.ok()) << name;
-    const MeshClosure c = check_closure(r.bounds);
-    EXPECT_TRUE(c.closed()) << name << ": " << c.boundary_or_nonmanifold_edges << " open, "
-                            << c.misoriented_edges << " misoriented edges";
     std::vector<std::uint8_t> volume =
         bounds_volume(r.voxels.grid, *r.voxels.levels, r.features->y_end, r.features->room);
     fill_edge_contacts(r.voxels.grid.spec, volume);
-    const double s = r.voxels.grid.spec.voxel_size;
-    EXPECT_NEAR(signed_volume(r.bounds), double(solid_count(volume)) * s * s * s, 1e-3) << name;
-    const test::TriangleStats st = test::triangle_stats(r.bounds, s);
-    EXPECT_NEAR(st.area, test::voxel_face_area(r.voxels.grid.spec, volume), 1e-3) << name;
-    EXPECT_EQ(st.degenerate, 0u) << name;
-    EXPECT_EQ(st.flat_vertices, 0u) << name;
+    expect_exact_mesh(r.voxels.grid.spec, volume, r.bounds, 1e-3, 1e-3, name);
     if (r.input.triangles > 10000) {
       EXPECT_LT(r.bounds.indices.size() / 3, r.input.triangles / 15) << name;
     }
@@ -146,13 +134,7 @@ TEST(MeshVolume, ARegionWithAHoleTouchingItsBorderAndTJunctions) {
   std::vector<std::uint8_t> settled = volume;
   fill_edge_contacts(s, settled);
   ASSERT_EQ(settled, volume) << "no edge contact to fill: the touching point stays";
-  const BoundsMesh m = mesh_volume(s, volume);
-  EXPECT_TRUE(check_closure(m).closed());
-  EXPECT_NEAR(signed_volume(m), double(solid_count(volume)) * 0.001, 1e-6);
-  const test::TriangleStats st = test::triangle_stats(m, 0.1);
-  EXPECT_NEAR(st.area, test::voxel_face_area(s, volume), 1e-6);
-  EXPECT_EQ(st.degenerate, 0u);
-  EXPECT_EQ(st.flat_vertices, 0u);
+  expect_exact_mesh(s, volume, mesh_volume(s, volume), 1e-6, 1e-6);
 }
 
 TEST(MeshVolume, AFlatSlabHasEightCornersAndTwelveTriangles) {

@@ -213,9 +213,9 @@ class SliceMesher {
       std::size_t j = i + 1;
       holes_.clear();
       while (j < loops_.size() && loops_[j].region == loops_[i].region) holes_.push_back(std::move(loops_[j++].points));
-      triangles_.triangles.clear();
+      triangles_.clear();
       detail::triangulate_polygon(loops_[i].points, holes_, triangles_);
-      for (const auto& t : triangles_.triangles) {
+      for (const auto& t : triangles_) {
         if (loops_[i].value > 0) out.triangle(t[0], t[1], t[2]);
         else out.triangle(t[0], t[2], t[1]);  // the face points -c: reverse the turn
       }
@@ -305,7 +305,7 @@ class SliceMesher {
   std::vector<std::size_t> stack_;
   std::vector<Traced> loops_;
   std::vector<detail::Loop> holes_;
-  detail::PolygonTriangles triangles_;
+  detail::Triangles triangles_;
 };
 
 void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const Box& box, const Axes& ax,

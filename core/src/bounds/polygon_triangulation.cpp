@@ -236,22 +236,21 @@ bool is_ear(const Ring& r, const NodeGrid& grid, int ear) {
   });
 }
 
-void clip_ears(Ring& r, int ear, PolygonTriangles& out) {
+void clip_ears(Ring& r, int ear, Triangles& out) {
   const NodeGrid grid(r, ear);
   int stop = ear;
   while (r.prev(ear) != r.next(ear)) {
     const int prev = r.prev(ear), next = r.next(ear);
     if (is_ear(r, grid, ear)) {
-      out.triangles.push_back({r[prev].id, r[ear].id, r[next].id});
+      out.push_back({r[prev].id, r[ear].id, r[next].id});
       r.remove(ear);
       ear = stop = next;
       continue;
     }
     ear = next;
     if (ear == stop) {  // a full turn without an ear: not a valid polygon; fan the rest
-      ++out.fallbacks;
       for (int p = r.next(ear); r.next(p) != ear; p = r.next(p))
-        out.triangles.push_back({r[ear].id, r[p].id, r[r.next(p)].id});
+        out.push_back({r[ear].id, r[p].id, r[r.next(p)].id});
       return;
     }
   }
@@ -259,7 +258,7 @@ void clip_ears(Ring& r, int ear, PolygonTriangles& out) {
 
 }  // namespace
 
-void triangulate_polygon(const Loop& outer, const std::vector<Loop>& holes, PolygonTriangles& out) {
+void triangulate_polygon(const Loop& outer, const std::vector<Loop>& holes, Triangles& out) {
   if (outer.size() < 3) return;
   std::size_t total = outer.size();
   for (const Loop& h : holes) total += h.size() + 2;
@@ -279,10 +278,7 @@ void triangulate_polygon(const Loop& outer, const std::vector<Loop>& holes, Poly
   std::sort(lefts.begin(), lefts.end(), [&](int x, int y) { return r[x].a != r[y].a ? r[x].a < r[y].a : r[x].b < r[y].b; });
   for (const int h : lefts) {
     const int bridge = find_bridge(r, h, start);
-    if (bridge < 0) {  // the hole is not inside the outer loop
-      ++out.fallbacks;
-      continue;
-    }
+    if (bridge < 0) continue;  // the hole is not inside the outer loop: left open (breaks the contract)
     start = r.drop_repeats(r.split(bridge, h));
   }
   clip_ears(r, r.drop_repeats(start), out);

@@ -18,14 +18,11 @@ struct LatticePoint2 {
 // the outer loop or another hole at a vertex. Loops must not cross.
 using Loop = std::vector<LatticePoint2>;
 
-struct PolygonTriangles {
-  std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise, like the outer loop
-  // Rings on which no ear was found (only on input that breaks the contract above). The rest of such a ring
-  // is fanned, so the surface stays closed, but those triangles may overlap.
-  std::size_t fallbacks = 0;
-};
+using Triangles = std::vector<std::array<std::uint32_t, 3>>;  // counter-clockwise, like the outer loop
 
-// Appends the n + 2h - 2 triangles of a polygon of n vertices and h holes to `out`.
-void triangulate_polygon(const Loop& outer, const std::vector<Loop>& holes, PolygonTriangles& out);
+// Appends the n + 2h - 2 triangles of a polygon of n vertices and h holes to `out`. On input that breaks the
+// contract above, where no ear can be found, the rest of the ring is fanned: the surface stays closed but
+// those triangles may overlap (the exact-area tests would show it).
+void triangulate_polygon(const Loop& outer, const std::vector<Loop>& holes, Triangles& out);
 
 }  // namespace roomsense::detail

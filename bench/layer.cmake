@@ -2,11 +2,9 @@
 # and the simulated runtime, with and without the layer). Included by bench/CMakeLists.txt.
 if(TARGET XrApiLayer_roomsense)
   find_package(benchmark REQUIRED)
-  find_package(OpenXR CONFIG REQUIRED)
   add_executable(roomsense_bench_layer ${CMAKE_CURRENT_LIST_DIR}/layer_overhead.cpp)
-  target_link_libraries(roomsense_bench_layer PRIVATE OpenXR::openxr_loader roomsense_extx_header benchmark::benchmark
+  target_link_libraries(roomsense_bench_layer PRIVATE OpenXR::openxr_loader roomsense_extx_header roomsense_xrsupport benchmark::benchmark
                         ${CMAKE_DL_LIBS})
-  target_include_directories(roomsense_bench_layer PRIVATE ${PROJECT_SOURCE_DIR}/layer/src)  # loader_interface.h
   target_compile_definitions(roomsense_bench_layer PRIVATE
     ROOMSENSE_BENCH_RUNTIME_MANIFEST="${ROOMSENSE_SIMRUNTIME_MANIFEST}"
     ROOMSENSE_BENCH_LAYER_SEARCH_DIR="${PROJECT_BINARY_DIR}/share")

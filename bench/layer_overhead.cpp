@@ -13,7 +13,7 @@
 
 #include <openxr/XR_EXTX_room_understanding.h>
 
-#include "loader_interface.h"  // layer/src: the negotiation structures
+#include "roomsense/xr/loader_interface.h"  // layer/src: the negotiation structures
 
 #include <benchmark/benchmark.h>
 #include <dlfcn.h>

@@ -4,7 +4,7 @@
 #include "capture.h"
 #include "functions.h"
 #include "guard.h"
-#include "loader_interface.h"
+#include "roomsense/xr/loader_interface.h"
 #include "log.h"
 #include "state.h"
 

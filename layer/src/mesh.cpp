@@ -7,23 +7,6 @@
 
 namespace roomsense::layer {
 
-Rigid to_rigid(const XrPosef& p) {
-  return {glm::normalize(glm::dquat(p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z)),
-          {p.position.x, p.position.y, p.position.z}};
-}
-
-bool is_valid_pose(const XrPosef& p) {
-  const double n = std::sqrt(double(p.orientation.x) * p.orientation.x + double(p.orientation.y) * p.orientation.y +
-                             double(p.orientation.z) * p.orientation.z + double(p.orientation.w) * p.orientation.w);
-  return std::isfinite(p.position.x) && std::isfinite(p.position.y) && std::isfinite(p.position.z) &&
-         std::fabs(n - 1.0) < 1e-3;
-}
-
-bool is_yaw_only(const XrPosef& p) {
-  const glm::dvec3 up = to_rigid(p).rotation * glm::dvec3(0.0, 1.0, 0.0);
-  return up.y > 1.0 - 1e-4;
-}
-
 std::vector<glm::vec3> transformed(const XrVector3f* vertices, std::size_t count, const Rigid& pose) {
   std::vector<glm::vec3> out(count);
   const bool identity = pose.identity();

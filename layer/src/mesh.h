@@ -1,11 +1,12 @@
-// Meshes on their way into the analysis: rigid transforms between OpenXR poses and glm, content hashes
+// Meshes on their way into the analysis: rigid transforms (roomsense/xr/rigid.h), content hashes
 // (to recognise the same runtime mesh read twice), and the merge of every piece into one core Scan.
 #pragma once
 #include "roomsense/scan.h"
 
 #include <openxr/openxr.h>
 
-#include <glm/gtc/quaternion.hpp>
+#include "roomsense/xr/rigid.h"
+
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -13,26 +14,10 @@
 
 namespace roomsense::layer {
 
-struct Rigid {
-  glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
-  glm::dvec3 translation{0.0};
-
-  glm::dvec3 apply(const glm::dvec3& p) const { return rotation * p + translation; }
-  Rigid operator*(const Rigid& rhs) const { return {rotation * rhs.rotation, rotation * rhs.translation + translation}; }
-  Rigid inverse() const {
-    const glm::dquat inv = glm::conjugate(rotation);
-    return {inv, inv * -translation};
-  }
-  bool identity() const {
-    return rotation == glm::dquat(1.0, 0.0, 0.0, 0.0) && translation == glm::dvec3(0.0);
-  }
-};
-
-Rigid to_rigid(const XrPosef& pose);
-// A unit quaternion and finite position, as the spec requires of every pose an application passes in.
-bool is_valid_pose(const XrPosef& pose);
-// True when the pose keeps +Y up (a yaw-only rotation): a gravity-aligned frame stays gravity-aligned.
-bool is_yaw_only(const XrPosef& pose);
+using xr::is_valid_pose;
+using xr::is_yaw_only;
+using xr::Rigid;
+using xr::to_rigid;
 
 // One mesh in the analyzer's base space (or, for captures, the session's capture space).
 struct MeshPiece {

@@ -1,4 +1,4 @@
-// CPU vs Vulkan, bit for bit, on generated inputs: the project's synthetic rooms (tests/synthetic), and
+// CPU vs Vulkan, bit for bit, on generated inputs: the project's synthetic rooms (synthetic/), and
 // triangle soups built to hit the edge cases of the SAT test and of the level/column passes.
 #include "roomsense/grid.h"
 #include "roomsense/input.h"

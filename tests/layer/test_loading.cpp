@@ -2,7 +2,7 @@
 // by DISABLE_XR_APILAYER_ROOMSENSE, invisible to an application that does not enable the extension, and safe
 // when the same manifest is found twice.
 #include "layer_harness.h"
-#include "loader_interface.h"
+#include "roomsense/xr/loader_interface.h"
 
 #include <dlfcn.h>
 

@@ -6,7 +6,7 @@
 //   layer_validation_app [--runtime-meshes] [--provoke]
 // --runtime-meshes: the analysis uses the runtime's scene meshes. Debian's core validation 1.0.20 rejects
 //   every xrGetSceneMeshBuffersMSFT whose XrSceneMeshBuffersMSFT::next holds the vertex or index structure
-//   the spec requires there (VUID-XrSceneMeshBuffersMSFT-next-next; tests/simruntime/README.md). Those two
+//   the spec requires there (VUID-XrSceneMeshBuffersMSFT-next-next; simruntime/README.md). Those two
 //   reports, and only those, are then expected and tolerated; the layer logs that the runtime's meshes were
 //   left out, and the app submits the room itself so that the analysis still completes.
 // --provoke: one invalid call goes down through the layer, to prove the reports are seen.

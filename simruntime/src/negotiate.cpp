@@ -1,6 +1,6 @@
 // Loader negotiation (the library's only exported symbol) and xrGetInstanceProcAddr.
 #include "functions.h"
-#include "loader_interface.h"
+#include "roomsense/xr/loader_interface.h"
 #include "runtime.h"
 #include "validate.h"
 

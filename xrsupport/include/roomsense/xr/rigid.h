@@ -1,4 +1,4 @@
-// XrPosef <-> glm, and the few rigid-transform operations the runtime needs.
+// Rigid transforms between OpenXR poses and glm (computed in double), and the checks the spec puts on a pose.
 #pragma once
 #include <openxr/openxr.h>
 
@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace roomsense::sim {
+namespace roomsense::xr {
 
 struct Rigid {
   glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
@@ -19,6 +19,7 @@ struct Rigid {
     const glm::dquat inv = glm::conjugate(rotation);
     return {inv, inv * -translation};
   }
+  bool identity() const { return rotation == glm::dquat(1.0, 0.0, 0.0, 0.0) && translation == glm::dvec3(0.0); }
 };
 
 inline Rigid to_rigid(const XrPosef& p) {
@@ -34,11 +35,18 @@ inline XrPosef to_pose(const Rigid& r) {
   return p;
 }
 
-// The spec requires a unit quaternion in every pose an application passes in (XR_ERROR_POSE_INVALID otherwise).
+// A unit quaternion and a finite position, as the spec requires of every pose an application passes in
+// (XR_ERROR_POSE_INVALID otherwise).
 inline bool is_valid_pose(const XrPosef& p) {
   const double n = std::sqrt(double(p.orientation.x) * p.orientation.x + double(p.orientation.y) * p.orientation.y +
                              double(p.orientation.z) * p.orientation.z + double(p.orientation.w) * p.orientation.w);
   return std::isfinite(p.position.x) && std::isfinite(p.position.y) && std::isfinite(p.position.z) && std::fabs(n - 1.0) < 1e-3;
 }
 
-}  // namespace roomsense::sim
+// True when the pose keeps +Y up (a yaw-only rotation): a gravity-aligned frame stays gravity-aligned.
+inline bool is_yaw_only(const XrPosef& p) {
+  const glm::dvec3 up = to_rigid(p).rotation * glm::dvec3(0.0, 1.0, 0.0);
+  return up.y > 1.0 - 1e-4;
+}
+
+}  // namespace roomsense::xr

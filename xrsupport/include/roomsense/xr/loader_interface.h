@@ -1,6 +1,6 @@
-// The loader <-> API layer negotiation structures of the OpenXR loader specification, interface version 1
-// ("API Layer Interface Negotiation" and "xrCreateApiLayerInstance"). Debian's OpenXR 1.0.20 ships no
-// loader-interface header, so they are declared here from the specification; newer SDKs ship
+// The loader negotiation structures of the OpenXR loader specification, interface version 1: loader <-> API
+// layer ("API Layer Interface Negotiation", xrCreateApiLayerInstance) and loader <-> runtime. Debian's OpenXR
+// 1.0.20 ships no loader-interface header, so they are declared here from the specification; newer SDKs ship
 // <openxr/openxr_loader_negotiation.h> with the same layout, and that header wins when it exists.
 #pragma once
 #include <openxr/openxr.h>
@@ -78,6 +78,18 @@ struct XrApiLayerCreateInfo {
 typedef XrResult(XRAPI_PTR* PFN_xrNegotiateLoaderApiLayerInterface)(const XrNegotiateLoaderInfo* loaderInfo,
                                                                      const char* layerName,
                                                                      XrNegotiateApiLayerRequest* apiLayerRequest);
+
+#define XR_RUNTIME_INFO_STRUCT_VERSION 1
+typedef struct XrNegotiateRuntimeRequest {
+  XrLoaderInterfaceStructs structType;  // XR_LOADER_INTERFACE_STRUCT_RUNTIME_REQUEST
+  uint32_t structVersion;               // XR_RUNTIME_INFO_STRUCT_VERSION
+  size_t structSize;                    // sizeof(XrNegotiateRuntimeRequest)
+  uint32_t runtimeInterfaceVersion;     // written by the runtime
+  XrVersion runtimeApiVersion;          // written by the runtime
+  PFN_xrGetInstanceProcAddr getInstanceProcAddr;  // written by the runtime
+} XrNegotiateRuntimeRequest;
+
+#define XR_CURRENT_LOADER_RUNTIME_VERSION 1
 
 }  // extern "C"
 #endif

@@ -2,7 +2,7 @@
 
 #include "guard.h"
 #include "log.h"
-#include "scene_query.h"
+#include "capture.h"
 
 #include <cmath>
 #include <unordered_set>
@@ -14,7 +14,37 @@ namespace roomsense::layer {
 namespace {
 
 
-std::string uuid_key(const XrUuidMSFT& id) { return std::string(reinterpret_cast<const char*>(id.bytes), sizeof id.bytes); }
+// The active query of the first source that delivers, best first; each failure is one line in the log.
+std::vector<SourceChunk> query_best_source(const InstanceState& instance, const SessionState& session, XrSpace base,
+                                           XrTime time, std::stop_token stop, MeshSources& report) {
+  const QueryContext context{instance.handle, session.system, session.handle, base, time};
+  std::string skipped;
+  for (const EnabledSource& s : instance.sources) {
+    if (stop.stop_requested()) return {};
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      std::vector<SourceChunk> chunks = s.source->query(context, stop);
+      if (!chunks.empty()) {
+        report.source = s.info->name;
+        report.source_reason = skipped.empty() ? "the runtime's best mesh source (" + std::string(s.info->gives) + ")"
+                                               : "the best that delivered (" + skipped + ")";
+        report.query_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        log_info(std::string("runtime meshes from ") + s.info->name + ": " + std::to_string(chunks.size()) + " chunks in " +
+                 std::to_string(report.query_ms) + " ms; " + report.source_reason);
+        return chunks;
+      }
+      skipped += std::string(skipped.empty() ? "" : "; ") + s.info->name + " served nothing";
+    } catch (const std::exception& e) {
+      log_warn(std::string(s.info->name) + " left out: " + e.what());
+      skipped += std::string(skipped.empty() ? "" : "; ") + s.info->name + " failed: " + e.what();
+    }
+  }
+  if (instance.sources.empty())
+    log_warn("includeRuntimeMeshes: the runtime has no scene-mesh extension the layer knows, so only meshes read by the "
+             "application and submitted ones are analysed");
+  report.source_reason = skipped;
+  return {};
+}
 
 }  // namespace
 
@@ -115,26 +145,22 @@ void Analyzer::run(std::stop_token stop, Job job) {
   std::shared_ptr<RoomResult> result;
   std::string problem;
   try {
-    std::vector<RuntimeMesh> runtime;
+    std::vector<SourceChunk> runtime;
     std::vector<MeshPiece> app_read;
     if (job.include_runtime) {
-      if (instance.msft) {
-        try {
-          runtime = query_runtime_meshes(instance.next, instance.handle, session_->system, session_->handle,
-                                         settings_.base_space, job.time, stop);
-        } catch (const std::exception& e) {
-          log_warn(std::string("the runtime's scene meshes are left out: ") + e.what());
-        }
-      } else {
-        log_warn("includeRuntimeMeshes: the runtime has no XR_MSFT_scene_understanding, so only meshes read by the "
-                 "application and submitted ones are analysed");
-      }
+      runtime = query_best_source(instance, *session_, settings_.base_space, job.time, stop, sources);
       if (stop.stop_requested()) return;
-      if (!job.captured.empty()) {
-        // A mesh the application read is left out when the layer's own query served it too.
+      // The application's reads of one extension only (captures_of_best_source); of the source the layer
+      // queried, only what that query did not serve too.
+      const auto captured = captures_of_best_source(job.captured);
+      const bool same_source = !captured.empty() && captured.front()->source->name == sources.source;
+      if (!captured.empty() && !runtime.empty() && !same_source) {
+        log_debug([&] { return std::to_string(captured.size()) + " mesh(es) the application read through " +
+                               captured.front()->source->name + " left out: " + sources.source + " served the same room"; });
+      } else if (!captured.empty()) {
         std::unordered_set<std::uint64_t> hashes;
         std::unordered_set<std::string> ids;
-        for (const RuntimeMesh& m : runtime) hashes.insert(m.hash), ids.insert(uuid_key(m.component));
+        for (const SourceChunk& m : runtime) hashes.insert(content_hash(m.mesh)), ids.insert(m.id);
         auto where = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
         const XrResult located = instance.next.xrLocateSpace(job.capture_space, settings_.base_space, job.time, &where);
         constexpr XrSpaceLocationFlags kValid = XR_SPACE_LOCATION_POSITION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_VALID_BIT;
@@ -142,17 +168,19 @@ void Analyzer::run(std::stop_token stop, Job job) {
           log_warn("the scene meshes the application read cannot be located in the base space; left out");
         } else {
           const Rigid capture_to_base = to_rigid(where.pose);
-          for (const auto& c : job.captured) {
-            if (hashes.count(c->hash) > 0 || ids.count(uuid_key(c->component)) > 0) continue;
-            MeshPiece piece = c->mesh;
+          for (const auto& c : captured) {
+            if (ids.count(c->chunk.id) > 0) continue;
+            MeshPiece piece = c->chunk.mesh;
             transform_in_place(piece.vertices, capture_to_base);
+            if (hashes.count(content_hash(piece)) > 0) continue;
             app_read.push_back(std::move(piece));
           }
+          if (sources.source.empty() && !app_read.empty()) sources.source = captured.front()->source->name;
         }
       }
     }
     std::vector<const MeshPiece*> pieces;
-    for (const RuntimeMesh& m : runtime) pieces.push_back(&m.mesh);
+    for (const SourceChunk& m : runtime) pieces.push_back(&m.mesh);
     for (const MeshPiece& m : app_read) pieces.push_back(&m);
     for (const auto& m : job.submitted) pieces.push_back(m.get());
     sources.runtime_meshes = runtime.size();

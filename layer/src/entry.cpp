@@ -9,6 +9,7 @@
 #include "state.h"
 
 #include <algorithm>
+#include <optional>
 #include <cstring>
 #include <stdexcept>
 #include <string_view>
@@ -19,7 +20,7 @@ namespace {
 
 constexpr std::size_t kMaxTrackedSpaces = 4096;  // reference spaces remembered for baseSpace checks
 
-enum class HookGroup { Always, Session, Spaces, Msft, Extx };
+enum class HookGroup { Always, Session, Spaces, Extx };
 
 struct Hook {
   PFN_xrVoidFunction function;
@@ -33,28 +34,43 @@ const std::unordered_map<std::string_view, Hook>& hooks() {
 #define ROOMSENSE_ALWAYS(name) ROOMSENSE_ENTRY(name, HookGroup::Always)
 #define ROOMSENSE_SESSION(name) ROOMSENSE_ENTRY(name, HookGroup::Session)
 #define ROOMSENSE_SPACES(name) ROOMSENSE_ENTRY(name, HookGroup::Spaces)
-#define ROOMSENSE_MSFT(name) ROOMSENSE_ENTRY(name, HookGroup::Msft)
 #define ROOMSENSE_EXTX(name) ROOMSENSE_ENTRY(name, HookGroup::Extx)
     ROOMSENSE_HOOKS_ALWAYS(ROOMSENSE_ALWAYS)
     ROOMSENSE_HOOKS_SESSION(ROOMSENSE_SESSION)
     ROOMSENSE_HOOKS_SPACES(ROOMSENSE_SPACES)
-    ROOMSENSE_HOOKS_MSFT(ROOMSENSE_MSFT)
     ROOMSENSE_EXTX_FUNCTIONS(ROOMSENSE_EXTX)
 #undef ROOMSENSE_ENTRY
 #undef ROOMSENSE_ALWAYS
 #undef ROOMSENSE_SESSION
 #undef ROOMSENSE_SPACES
-#undef ROOMSENSE_MSFT
 #undef ROOMSENSE_EXTX
     return t;
   }();
   return table;
 }
 
-bool is_msft_function(std::string_view name) {
-#define ROOMSENSE_IS(n) || name == #n
-  return false ROOMSENSE_MSFT_FUNCTIONS(ROOMSENSE_IS);
-#undef ROOMSENSE_IS
+// A mesh source's hook for `name`, or null.
+const std::pair<const SourceInfo*, PFN_xrVoidFunction>* source_hook(std::string_view name) {
+  static const std::unordered_map<std::string_view, std::pair<const SourceInfo*, PFN_xrVoidFunction>> table = [] {
+    std::unordered_map<std::string_view, std::pair<const SourceInfo*, PFN_xrVoidFunction>> t;
+    for (const SourceInfo* info : mesh_sources())
+      for (const HookEntry& hook : info->hooks) t.emplace(hook.name, std::make_pair(info, hook.function));
+    return t;
+  }();
+  const auto it = table.find(name);
+  return it == table.end() ? nullptr : &it->second;
+}
+
+// Extension -> its functions, of every extension a source may enable.
+const std::unordered_map<std::string_view, const char*>& source_function_extensions() {
+  static const std::unordered_map<std::string_view, const char*> table = [] {
+    std::unordered_map<std::string_view, const char*> t;
+    for (const SourceInfo* info : mesh_sources())
+      for (const ExtensionFunctions& e : info->extensions)
+        for (const char* f : e.functions) t.emplace(f, e.extension);
+    return t;
+  }();
+  return table;
 }
 
 bool enabled(const XrInstanceCreateInfo& info, const char* extension) {
@@ -68,13 +84,36 @@ bool addressed_to_us(const XrApiLayerNextInfo* info) {
          std::strncmp(info->layerName, kLayerName, XR_MAX_API_LAYER_NAME_SIZE) == 0;
 }
 
-void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa, bool extx, bool app_msft,
-                       bool we_added_msft, const Config& config);
-
 template <typename PFN>
 void load(PFN_xrGetInstanceProcAddr gipa, XrInstance instance, const char* name, PFN& out) {
   PFN_xrVoidFunction f = nullptr;
   if (XR_SUCCEEDED(gipa(instance, name, &f))) out = reinterpret_cast<PFN>(f);
+}
+
+void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa, const XrInstanceCreateInfo& info,
+                       bool extx, bool capture, const std::vector<const SourceInfo*>& sources,
+                       const std::vector<std::string>& added, const Config& config);
+
+// The runtime's instance extensions, through the chain below us (a null instance reaches the runtime's
+// xrEnumerateInstanceExtensionProperties); nothing when a layer below does not pass the call on.
+std::optional<std::vector<std::string>> runtime_extensions(PFN_xrGetInstanceProcAddr next_gipa) {
+  PFN_xrEnumerateInstanceExtensionProperties enumerate = nullptr;
+  load(next_gipa, XR_NULL_HANDLE, "xrEnumerateInstanceExtensionProperties", enumerate);
+  if (enumerate == nullptr) return std::nullopt;
+  try {
+    const auto properties = xr::read_two_call<XrExtensionProperties>(
+        "xrEnumerateInstanceExtensionProperties",
+        [&](std::uint32_t capacity, std::uint32_t* count, XrExtensionProperties* out) {
+          return enumerate(nullptr, capacity, count, out);
+        },
+        4096, xr_struct<XrExtensionProperties>(XR_TYPE_EXTENSION_PROPERTIES));
+    std::vector<std::string> names;
+    for (const auto& p : properties) names.emplace_back(p.extensionName, strnlen(p.extensionName, sizeof p.extensionName));
+    return names;
+  } catch (const std::exception& e) {
+    log_debug([&] { return std::string("the runtime's extensions cannot be listed: ") + e.what(); });
+    return std::nullopt;
+  }
 }
 
 XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, const XrApiLayerCreateInfo* layerInfo,
@@ -112,36 +151,47 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
     down_layer_info.nextInfo = below.empty() ? nullptr : below.data();
 
     // Our extension is ours alone: the loader passes it down unfiltered, so take it out. An analysis needs the
-    // runtime's scene meshes, so enable XR_MSFT_scene_understanding when the runtime has it.
+    // runtime's scene meshes, so enable every mesh source's extensions the runtime has (sources/).
     const bool extx = enabled(*info, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME);
-    const bool app_msft = enabled(*info, XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME);
+    const bool capture = extx || !config.export_dir.empty();
     std::vector<const char*> extensions;
     for (uint32_t i = 0; i < info->enabledExtensionCount; ++i)
       if (const char* name = info->enabledExtensionNames[i];
           name == nullptr || std::strcmp(name, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME) != 0)
         extensions.push_back(name);  // a null name is the layers' and runtime's to reject below
+    const std::optional<std::vector<std::string>> offered = runtime_extensions(next_gipa);
+    std::vector<const SourceInfo*> candidates;
+    if (capture)
+      for (const SourceInfo* source : mesh_sources())
+        if (!offered || std::all_of(source->extensions.begin(), source->extensions.end(), [&](const ExtensionFunctions& e) {
+              return std::find(offered->begin(), offered->end(), e.extension) != offered->end();
+            }))
+          candidates.push_back(source);
     XrInstanceCreateInfo down = *info;
-    auto create_with = [&](bool add_msft) {
+    std::vector<std::string> added;
+    auto create_with = [&](const std::vector<const SourceInfo*>& sources) {
       std::vector<const char*> names = extensions;
-      if (add_msft) names.push_back(XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME);
+      added.clear();
+      for (const SourceInfo* source : sources)
+        for (const ExtensionFunctions& e : source->extensions)
+          if (!enabled(*info, e.extension) && std::find(added.begin(), added.end(), e.extension) == added.end()) {
+            added.emplace_back(e.extension);
+            names.push_back(e.extension);
+          }
       down.enabledExtensionCount = static_cast<uint32_t>(names.size());
       down.enabledExtensionNames = names.empty() ? nullptr : names.data();
       return next_create(&down, &down_layer_info, instance);
     };
-    bool we_added_msft = extx && !app_msft;
-    XrResult result = create_with(we_added_msft);
-    if (result == XR_ERROR_EXTENSION_NOT_PRESENT && we_added_msft) {
-      log_info("the runtime has no XR_MSFT_scene_understanding: analyses use meshes the application submits");
-      we_added_msft = false;
-      result = create_with(false);
+    // Where the runtime's extension list could not be read, ask for every source and drop the least preferred
+    // until the runtime accepts.
+    XrResult result = create_with(candidates);
+    while (result == XR_ERROR_EXTENSION_NOT_PRESENT && !added.empty()) {
+      candidates.pop_back();
+      result = create_with(candidates);
     }
     if (XR_FAILED(result)) return result;
     try {
-      register_instance(*instance, next_gipa, extx, app_msft, we_added_msft, config);
-      log_info(std::string("instance created: ") + (extx ? "XR_EXTX_room_understanding enabled" : "extension not enabled") +
-               (we_added_msft ? ", XR_MSFT_scene_understanding enabled by the layer" : "") +
-               (extx || !config.export_dir.empty() ? ", capturing scene meshes" : ", pass-through") +
-               (skipped > 0 ? ", " + std::to_string(skipped) + " more copy of the layer skipped" : ""));
+      register_instance(*instance, next_gipa, *info, extx, capture, candidates, added, config);
     } catch (...) {  // the application gets an error, so the instance must not outlive this call
       {
         Registry& r = registry();
@@ -153,29 +203,41 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
       if (destroy != nullptr) destroy(*instance);
       throw;
     }
+    if (skipped > 0) log_info(std::to_string(skipped) + " more copy of the layer skipped");
     return result;
   });
 }
 
-void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa, bool extx, bool app_msft,
-                       bool we_added_msft, const Config& config) {
+void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa, const XrInstanceCreateInfo& info,
+                       bool extx, bool capture, const std::vector<const SourceInfo*>& sources,
+                       const std::vector<std::string>& added, const Config& config) {
   auto state = std::make_shared<InstanceState>();
   state->handle = instance;
   state->extx = extx;
-  state->app_msft = app_msft;
-  state->msft = app_msft || we_added_msft;
-  state->capture = extx || !config.export_dir.empty();
+  state->capture = capture;
   state->config = config;
+  state->layer_enabled_extensions = added;
   NextDispatch& next = state->next;
   next.xrGetInstanceProcAddr = next_gipa;
 #define ROOMSENSE_LOAD(name)                                                                       \
   load(next_gipa, instance, #name, next.name);                                                     \
   if (next.name == nullptr) throw std::runtime_error("the next layer or the runtime has no " #name);
   ROOMSENSE_NEXT_CORE_FUNCTIONS(ROOMSENSE_LOAD)
-  if (state->msft) {
-    ROOMSENSE_MSFT_FUNCTIONS(ROOMSENSE_LOAD)
-  }
 #undef ROOMSENSE_LOAD
+  std::string used;
+  for (const SourceInfo* source : sources) {
+    try {
+      EnabledSource e{source, source->create(next_gipa, instance), true};
+      for (const ExtensionFunctions& x : source->extensions) e.app_enabled = e.app_enabled && enabled(info, x.extension);
+      state->sources.push_back(std::move(e));
+      used += std::string(used.empty() ? "" : ", ") + source->name;
+    } catch (const std::exception& e) {
+      log_warn(std::string(source->name) + " left out: " + e.what());
+    }
+  }
+  log_info(std::string("instance created: ") + (extx ? "XR_EXTX_room_understanding enabled" : "extension not enabled") +
+           (capture ? ", capturing scene meshes; mesh sources: " + (used.empty() ? std::string("none") : used)
+                    : std::string(", pass-through")));
   Registry& r = registry();
   std::lock_guard lock(r.mutex);
   r.instances[instance] = std::move(state);
@@ -196,16 +258,24 @@ XrResult XRAPI_CALL xrGetInstanceProcAddr(XrInstance instance, const char* name,
     if (it != hooks().end()) {
       const HookGroup g = it->second.group;
       const bool ours = g == HookGroup::Always || (g == HookGroup::Extx && state->extx) ||
-                        (g == HookGroup::Session && state->capture) || (g == HookGroup::Spaces && state->extx) ||
-                        (g == HookGroup::Msft && state->capture && state->app_msft);
+                        (g == HookGroup::Session && state->capture) || (g == HookGroup::Spaces && state->extx);
       if (g == HookGroup::Extx && !state->extx) return XR_ERROR_FUNCTION_UNSUPPORTED;
       if (ours) {
         *function = it->second.function;
         return XR_SUCCESS;
       }
     }
+    if (const auto* hook = source_hook(wanted); hook != nullptr && state->capture)
+      for (const EnabledSource& s : state->sources)
+        if (s.info == hook->first && s.app_enabled) {
+          *function = hook->second;
+          return XR_SUCCESS;
+        }
     // Enabled below us by the layer, not by the application: not the application's to call.
-    if (!state->app_msft && is_msft_function(wanted)) return XR_ERROR_FUNCTION_UNSUPPORTED;
+    if (const auto it = source_function_extensions().find(wanted); it != source_function_extensions().end()) {
+      const auto& added = state->layer_enabled_extensions;
+      if (std::find(added.begin(), added.end(), it->second) != added.end()) return XR_ERROR_FUNCTION_UNSUPPORTED;
+    }
     return state->next.xrGetInstanceProcAddr(instance, name, function);
   });
 }

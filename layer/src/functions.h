@@ -1,5 +1,6 @@
-// Every OpenXR function the layer touches, one line each, so the hooks read as lists (xrGetInstanceProcAddr
-// in entry.cpp is generated from them). What is not listed here goes straight to the next layer or the
+// Every core and XR_EXTX_room_understanding function the layer touches, one line each, so the hooks read as
+// lists (xrGetInstanceProcAddr in entry.cpp is generated from them). The mesh sources (sources/) list their
+// own extensions' functions. What is not listed here goes straight to the next layer or the
 // runtime: xrGetInstanceProcAddr hands out the next function itself, so the frame loop (xrWaitFrame,
 // xrBeginFrame, xrEndFrame), xrLocateSpace and everything else pay nothing for the layer.
 #pragma once
@@ -13,13 +14,6 @@
 #define ROOMSENSE_NEXT_CORE_FUNCTIONS(_) \
   _(xrDestroyInstance) _(xrCreateSession) _(xrDestroySession) _(xrCreateReferenceSpace) _(xrDestroySpace) _(xrLocateSpace)
 
-// XR_MSFT_scene_understanding: the layer's own queries call all of them; the application's calls of the
-// starred ones are watched (passive capture).
-#define ROOMSENSE_MSFT_FUNCTIONS(_)                                                                          \
-  _(xrEnumerateSceneComputeFeaturesMSFT) _(xrCreateSceneObserverMSFT) _(xrDestroySceneObserverMSFT)         \
-  _(xrCreateSceneMSFT) _(xrDestroySceneMSFT) _(xrComputeNewSceneMSFT) _(xrGetSceneComputeStateMSFT)         \
-  _(xrGetSceneComponentsMSFT) _(xrLocateSceneComponentsMSFT) _(xrGetSceneMeshBuffersMSFT)
-
 // Hooked on every instance.
 #define ROOMSENSE_HOOKS_ALWAYS(_) _(xrGetInstanceProcAddr) _(xrDestroyInstance)
 
@@ -29,11 +23,6 @@
 // Hooked when the application enabled the extension: reference spaces, so that an analyzer's baseSpace can
 // be checked (LOCAL or STAGE) and copied (the analyzer keeps its own space of the same kind and pose).
 #define ROOMSENSE_HOOKS_SPACES(_) _(xrCreateReferenceSpace)
-
-// Hooked when the layer captures and the application enabled XR_MSFT_scene_understanding (the *).
-#define ROOMSENSE_HOOKS_MSFT(_)                                                                   \
-  _(xrCreateSceneObserverMSFT) _(xrDestroySceneObserverMSFT) _(xrCreateSceneMSFT) _(xrDestroySceneMSFT) \
-  _(xrGetSceneComponentsMSFT) _(xrGetSceneMeshBuffersMSFT)
 
 // XR_EXTX_room_understanding: all of them the layer's own.
 #define ROOMSENSE_EXTX_FUNCTIONS(_)                                                                     \
@@ -47,7 +36,6 @@ namespace roomsense::layer {
 ROOMSENSE_HOOKS_ALWAYS(ROOMSENSE_DECLARE)
 ROOMSENSE_HOOKS_SESSION(ROOMSENSE_DECLARE)
 ROOMSENSE_HOOKS_SPACES(ROOMSENSE_DECLARE)
-ROOMSENSE_HOOKS_MSFT(ROOMSENSE_DECLARE)
 ROOMSENSE_EXTX_FUNCTIONS(ROOMSENSE_DECLARE)
 #undef ROOMSENSE_DECLARE
 
@@ -56,7 +44,6 @@ struct NextDispatch {
   PFN_xrGetInstanceProcAddr xrGetInstanceProcAddr = nullptr;
 #define ROOMSENSE_MEMBER(name) PFN_##name name = nullptr;
   ROOMSENSE_NEXT_CORE_FUNCTIONS(ROOMSENSE_MEMBER)
-  ROOMSENSE_MSFT_FUNCTIONS(ROOMSENSE_MEMBER)
 #undef ROOMSENSE_MEMBER
 };
 

@@ -36,6 +36,12 @@ std::uint64_t content_hash(const XrVector3f* vertices, std::size_t vertex_count,
   return h;
 }
 
+std::uint64_t content_hash(const MeshPiece& mesh) {
+  static_assert(sizeof(glm::vec3) == sizeof(XrVector3f));
+  return content_hash(reinterpret_cast<const XrVector3f*>(mesh.vertices.data()), mesh.vertices.size(), mesh.indices.data(),
+                      mesh.indices.size());
+}
+
 Scan merge(const std::vector<const MeshPiece*>& pieces) {
   Scan scan;
   bool any_triangles = false;

@@ -33,6 +33,9 @@ void transform_in_place(std::vector<glm::vec3>& vertices, const Rigid& pose);
 std::uint64_t content_hash(const XrVector3f* vertices, std::size_t vertex_count, const std::uint32_t* indices,
                            std::size_t index_count);
 
+// The same over a mesh already copied (vertices as floats, then indices).
+std::uint64_t content_hash(const MeshPiece& mesh);
+
 // Every piece into one scan, in order. Point clouds among triangle meshes become one-point triangles, so
 // that their vertices still count; a scan of point clouds only stays a point cloud (vertex mode).
 Scan merge(const std::vector<const MeshPiece*>& pieces);

@@ -70,6 +70,9 @@ RoomResult make_room_result(const AnalysisResult& r, const MeshSources& sources,
 
   nlohmann::json doc = nlohmann::json::parse(analysis_json(r, {kJsonSourceName, 0.0}));
   doc["openxr"] = {{"base_space", sources.base_space},
+                   {"mesh_source", sources.source},
+                   {"mesh_source_reason", sources.source_reason},
+                   {"mesh_query_ms", sources.query_ms},
                    {"runtime_meshes", sources.runtime_meshes},
                    {"app_read_meshes", sources.app_read_meshes},
                    {"submitted_meshes", sources.submitted_meshes},

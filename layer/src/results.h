@@ -30,7 +30,10 @@ struct RoomResult {
 
 // Where the meshes of one analysis came from, for the JSON's "openxr" member and the log.
 struct MeshSources {
-  std::size_t runtime_meshes = 0;   // the layer's own XR_MSFT_scene_understanding query
+  std::string source;               // the extension the runtime's meshes came through (empty: none)
+  std::string source_reason;        // why that one (or why none)
+  double query_ms = 0.0;            // the layer's own query through it
+  std::size_t runtime_meshes = 0;   // the layer's own query
   std::size_t app_read_meshes = 0;  // scene meshes the application read (passive capture)
   std::size_t submitted_meshes = 0; // xrSubmitRoomMeshEXTX
   std::string base_space;           // "LOCAL", "STAGE", ...

@@ -34,14 +34,13 @@ std::vector<std::shared_ptr<Analyzer>> forget_session_locked(Registry& r, XrSess
     }
   }
   std::erase_if(r.spaces, [&](const auto& entry) { return entry.second.session == session; });
-  std::erase_if(r.observers, [&](const auto& entry) { return entry.second.session->handle == session; });
-  std::erase_if(r.scenes, [&](const auto& entry) { return entry.second->session->handle == session; });
   r.sessions.erase(session);
   return analyzers;
 }
 
 void shut_down_session(SessionState& session, const std::vector<std::shared_ptr<Analyzer>>& analyzers) {
   for (const auto& a : analyzers) a->shut_down();
+  for (const EnabledSource& s : session.instance->sources) s.source->forget_session(session.handle);
   std::jthread exporter;
   {
     std::lock_guard lock(session.mutex);

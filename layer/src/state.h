@@ -5,6 +5,7 @@
 #include "config.h"
 #include "functions.h"
 #include "mesh.h"
+#include "sources/mesh_source.h"
 
 #include <openxr/openxr.h>
 
@@ -15,6 +16,7 @@
 #include <memory>
 #include <mutex>
 #include <stop_token>
+#include <string>
 #include <thread>
 #include <unordered_map>
 #include <vector>
@@ -25,23 +27,38 @@ class Analyzer;
 
 inline constexpr const char* kLayerName = "XR_APILAYER_ROOMSENSE_room_understanding";
 
+// A mesh source enabled below the layer for one instance (sources/mesh_source.h).
+struct EnabledSource {
+  const SourceInfo* info = nullptr;
+  std::unique_ptr<MeshSource> source;
+  bool app_enabled = false;  // the application enabled its extensions too: its calls are watched
+};
+
 struct InstanceState {
   XrInstance handle = XR_NULL_HANDLE;
   NextDispatch next;
   bool extx = false;      // the application enabled XR_EXTX_room_understanding
-  bool app_msft = false;  // the application enabled XR_MSFT_scene_understanding
-  bool msft = false;      // XR_MSFT_scene_understanding is enabled below us (by the application or by the layer)
   bool capture = false;   // sessions are tracked and the scene meshes the application reads are captured
+  std::vector<EnabledSource> sources;  // best first (mesh_sources() order)
+  std::vector<std::string> layer_enabled_extensions;  // enabled below us by the layer, not the application
   Config config;
+
+  // The instance's source of this kind, or null when it is not enabled.
+  template <typename T>
+  T* source(const SourceInfo& info) const {
+    for (const EnabledSource& s : sources)
+      if (s.info == &info) return static_cast<T*>(s.source.get());
+    return nullptr;
+  }
 };
 
 // A scene mesh the application read, in its session's capture space.
 struct CapturedMesh {
-  MeshPiece mesh;
-  XrUuidMSFT component{};
-  std::uint64_t hash = 0;       // content_hash of the buffers as served
-  std::uint64_t observer = 0;   // serial of the observer ...
-  std::uint64_t scene = 0;      // ... and of the scene it came from (later scenes replace earlier ones)
+  const SourceInfo* source = nullptr;
+  SourceChunk chunk;
+  std::uint64_t hash = 0;   // content_hash of the chunk as captured
+  std::uint64_t group = 0;  // e.g. the scene observer it came from (0: none) ...
+  std::uint64_t epoch = 0;  // ... and its scene: a later epoch of a group replaces the earlier one's meshes
 };
 
 struct SessionState {
@@ -67,29 +84,6 @@ struct ReferenceSpaceInfo {
   XrPosef pose{{0, 0, 0, 1}, {0, 0, 0}};
 };
 
-// What the layer knows of one of the application's scenes, for passive capture.
-struct SceneRecord {
-  std::shared_ptr<SessionState> session;
-  std::uint64_t observer = 0, serial = 0;
-  struct Component {
-    XrUuidMSFT id{};
-    XrTime update_time = 0;
-  };
-  std::mutex mutex;  // the application may read buffers from several threads
-  std::unordered_map<std::uint64_t, Component> mesh_components;  // mesh buffer id -> component
-  struct Partial {
-    std::vector<XrVector3f> vertices;
-    std::vector<std::uint32_t> indices;
-    bool have_vertices = false, have_indices = false, done = false;
-  };
-  std::unordered_map<std::uint64_t, Partial> buffers;  // mesh buffer id -> what was read so far
-};
-
-struct ObserverRecord {
-  std::shared_ptr<SessionState> session;
-  std::uint64_t serial = 0;
-};
-
 // The handle maps. Lock `mutex` only to look up or change them, never while calling down the chain.
 struct Registry {
   std::mutex mutex;
@@ -97,10 +91,8 @@ struct Registry {
   std::unordered_map<XrSession, std::shared_ptr<SessionState>> sessions;
   std::map<XrSpace, ReferenceSpaceInfo> spaces;  // reference spaces of sessions of instances with the extension
   std::deque<XrSpace> space_order;               // creation order, to bound `spaces` (see entry.cpp)
-  std::unordered_map<XrSceneObserverMSFT, ObserverRecord> observers;
-  std::unordered_map<XrSceneMSFT, std::shared_ptr<SceneRecord>> scenes;
   std::unordered_map<XrRoomAnalyzerEXTX, std::shared_ptr<Analyzer>> analyzers;
-  std::uint64_t serial = 0;
+  std::uint64_t serial = 0;  // analyzer handles
 
   std::shared_ptr<InstanceState> instance(XrInstance handle);
   std::shared_ptr<SessionState> session(XrSession handle);

@@ -1,0 +1,82 @@
+// The seam between the layer and the runtime's scene extensions. One MeshSource per extension (group), one
+// file pair each under sources/, and one line in source_list.cpp: that is all a new extension takes.
+// A source says which runtime extensions it needs (the layer enables them below itself), which of the
+// application's calls it watches (passive capture), and runs an active query of its own on an analyzer's
+// worker thread. What it delivers is chunks with a stable id, a change marker and the runtime's labels.
+#pragma once
+#include "../mesh.h"
+#include "roomsense/surface_label.h"
+
+#include <openxr/openxr.h>
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+namespace roomsense::layer {
+
+// One chunk of the runtime's scene: a mesh block, a submesh, a plane.
+struct SourceChunk {
+  std::string id;            // stable across queries: the source's prefix and the runtime's uuid or buffer id
+  std::uint64_t change = 0;  // changes when the content does: lastUpdatedTime, a version, or a content hash
+  MeshPiece mesh;            // in the base space (active query) or the session's capture space (passive)
+  std::vector<SurfaceLabel> labels;  // one per triangle, or empty when the runtime gives none
+};
+
+// What an active query is asked: everything the runtime has now, located in `base` at `time`.
+struct QueryContext {
+  XrInstance instance = XR_NULL_HANDLE;
+  XrSystemId system = XR_NULL_SYSTEM_ID;
+  XrSession session = XR_NULL_HANDLE;
+  XrSpace base = XR_NULL_HANDLE;
+  XrTime time = 0;
+};
+
+// A source's per-instance state: the next layer's functions it calls, loaded at xrCreateInstance.
+class MeshSource {
+ public:
+  virtual ~MeshSource() = default;
+  // Active capture. Throws std::runtime_error with one readable line when the runtime does not deliver
+  // (an error, a future or compute that never completes); returns what it has when `stop` is requested.
+  virtual std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop) = 0;
+  // The session is going away: forget the records of its handles (passive capture). Called without locks.
+  virtual void forget_session(XrSession session) { (void)session; }
+};
+
+struct HookEntry {
+  const char* name;
+  PFN_xrVoidFunction function;
+};
+
+// A runtime extension a source needs, with every function of it: those are not the application's to call when
+// only the layer enabled the extension.
+struct ExtensionFunctions {
+  const char* extension;
+  std::vector<const char*> functions;
+};
+
+struct SourceInfo {
+  const char* name;   // its main extension, as logged and written in analysis.json
+  const char* gives;  // what it delivers, one phrase for the log
+  std::vector<ExtensionFunctions> extensions;  // all needed from the runtime; the layer enables them below itself
+  std::vector<HookEntry> hooks;  // the application's calls watched (passive capture) when it enabled all of them
+  // Loads the functions the source calls; throws std::runtime_error when the next layer lacks one.
+  std::unique_ptr<MeshSource> (*create)(PFN_xrGetInstanceProcAddr next, XrInstance instance) = nullptr;
+};
+
+// Every source, best first: full meshes before planes (a plane outline is coarser than a mesh).
+const std::vector<const SourceInfo*>& mesh_sources();
+
+// Loads one function from the next layer; throws std::runtime_error naming it when it is missing.
+template <typename PFN>
+void load_next(PFN_xrGetInstanceProcAddr next, XrInstance instance, const char* name, PFN& out) {
+  PFN_xrVoidFunction f = nullptr;
+  if (XR_FAILED(next(instance, name, &f)) || f == nullptr)
+    throw std::runtime_error(std::string("the next layer or the runtime has no ") + name);
+  out = reinterpret_cast<PFN>(f);
+}
+
+}  // namespace roomsense::layer

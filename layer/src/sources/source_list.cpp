@@ -1,0 +1,14 @@
+// The mesh sources the layer knows, best first. A new runtime extension is one file pair in this folder and
+// one line here.
+#include "msft_scene_understanding.h"
+
+namespace roomsense::layer {
+
+const std::vector<const SourceInfo*>& mesh_sources() {
+  static const std::vector<const SourceInfo*> list = {
+      &msft_scene_understanding_source(),
+  };
+  return list;
+}
+
+}  // namespace roomsense::layer

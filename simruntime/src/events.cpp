@@ -1,4 +1,5 @@
-// xrPollEvent: session state changes, queued per instance in the order they happened.
+// xrPollEvent: session state changes, queued per instance in the order they happened, then the scene
+// extensions' events.
 #include "functions.h"
 #include "runtime.h"
 #include "validate.h"
@@ -13,7 +14,12 @@ XrResult XRAPI_CALL xrPollEvent(XrInstance instance, XrEventDataBuffer* eventDat
     InstanceState* state = runtime().instance(instance);
     if (state == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (!has_type(eventData, XR_TYPE_EVENT_DATA_BUFFER)) return XR_ERROR_VALIDATION_FAILURE;
-    if (state->events.empty()) return XR_EVENT_UNAVAILABLE;
+    if (state->events.empty()) {
+      if (state->extension_events.empty()) return XR_EVENT_UNAVAILABLE;
+      std::memcpy(static_cast<void*>(eventData), &state->extension_events.front(), sizeof(XrEventDataBuffer));
+      state->extension_events.pop_front();
+      return XR_SUCCESS;
+    }
     const SessionEvent event = state->events.front();
     state->events.pop_front();
     XrEventDataSessionStateChanged changed{};

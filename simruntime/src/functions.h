@@ -1,5 +1,6 @@
-// Every OpenXR function the runtime answers, one line each, so the supported set reads as a list.
-// xrGetInstanceProcAddr is generated from these lists (negotiate.cpp).
+// Every core OpenXR function the runtime answers, one line each, so the supported set reads as a list.
+// xrGetInstanceProcAddr is generated from these lists (negotiate.cpp) and the served extensions' own
+// (extensions/).
 #pragma once
 #include <openxr/openxr.h>
 #include <time.h>
@@ -28,12 +29,6 @@
   _(xrSyncActions) _(xrEnumerateBoundSourcesForAction) _(xrGetInputSourceLocalizedName)                      \
   _(xrApplyHapticFeedback) _(xrStopHapticFeedback)
 
-// XR_MSFT_scene_understanding.
-#define SIM_MSFT_SCENE_FUNCTIONS(_)                                                                         \
-  _(xrEnumerateSceneComputeFeaturesMSFT) _(xrCreateSceneObserverMSFT) _(xrDestroySceneObserverMSFT)         \
-  _(xrCreateSceneMSFT) _(xrDestroySceneMSFT) _(xrComputeNewSceneMSFT) _(xrGetSceneComputeStateMSFT)          \
-  _(xrGetSceneComponentsMSFT) _(xrLocateSceneComponentsMSFT) _(xrGetSceneMeshBuffersMSFT)
-
 // XR_KHR_convert_timespec_time.
 #define SIM_TIMESPEC_FUNCTIONS(_) _(xrConvertTimespecTimeToTimeKHR) _(xrConvertTimeToTimespecTimeKHR)
 
@@ -41,7 +36,6 @@ namespace roomsense::sim {
 // Declares each implemented function with exactly its PFN's signature.
 #define SIM_DECLARE(name) extern std::remove_pointer_t<PFN_##name> name;
 SIM_CORE_FUNCTIONS(SIM_DECLARE)
-SIM_MSFT_SCENE_FUNCTIONS(SIM_DECLARE)
 SIM_TIMESPEC_FUNCTIONS(SIM_DECLARE)
 #undef SIM_DECLARE
 }  // namespace roomsense::sim

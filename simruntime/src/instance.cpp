@@ -1,4 +1,5 @@
 // Instance creation and properties, extension enumeration, XR_KHR_convert_timespec_time.
+#include "extensions/served_extension.h"
 #include "functions.h"
 #include "log.h"
 #include "runtime.h"
@@ -12,18 +13,17 @@
 namespace roomsense::sim {
 namespace {
 
-struct Extension {
-  const char* name;
-  uint32_t version;
-};
-constexpr std::array<Extension, 3> kExtensions = {{
-    {XR_MND_HEADLESS_EXTENSION_NAME, XR_MND_headless_SPEC_VERSION},
-    {XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME, XR_MSFT_scene_understanding_SPEC_VERSION},
-    {XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME, XR_KHR_convert_timespec_time_SPEC_VERSION},
-}};
-
-bool known_extension(const char* name) {
-  return std::any_of(kExtensions.begin(), kExtensions.end(), [&](const Extension& e) { return std::strcmp(e.name, name) == 0; });
+// The extensions this instance may advertise and enable (ROOMSENSE_SIM_EXTENSIONS); a bad value advertises
+// none of the scene extensions and fails xrCreateInstance with one line.
+std::vector<const ServedExtension*> advertised_or_base() {
+  try {
+    return advertised_extensions();
+  } catch (const std::invalid_argument&) {
+    std::vector<const ServedExtension*> base;
+    for (const ServedExtension* e : served_extensions())
+      if (!e->scene) base.push_back(e);
+    return base;
+  }
 }
 
 }  // namespace
@@ -39,11 +39,12 @@ XrResult XRAPI_CALL xrEnumerateInstanceExtensionProperties(const char* layerName
                                                            XrExtensionProperties* properties) {
   return guarded("xrEnumerateInstanceExtensionProperties", [&]() -> XrResult {
     if (layerName != nullptr && *layerName != '\0') return XR_ERROR_API_LAYER_NOT_PRESENT;
-    return two_call_typed(capacity, countOutput, properties, kExtensions.size(), XR_TYPE_EXTENSION_PROPERTIES,
-                          [](XrExtensionProperties& p, std::size_t i) {
-                            std::strncpy(p.extensionName, kExtensions[i].name, XR_MAX_EXTENSION_NAME_SIZE - 1);
+    const std::vector<const ServedExtension*> extensions = advertised_or_base();
+    return two_call_typed(capacity, countOutput, properties, extensions.size(), XR_TYPE_EXTENSION_PROPERTIES,
+                          [&](XrExtensionProperties& p, std::size_t i) {
+                            std::strncpy(p.extensionName, extensions[i]->name, XR_MAX_EXTENSION_NAME_SIZE - 1);
                             p.extensionName[XR_MAX_EXTENSION_NAME_SIZE - 1] = '\0';
-                            p.extensionVersion = kExtensions[i].version;
+                            p.extensionVersion = extensions[i]->version;
                           });
   });
 }
@@ -60,11 +61,19 @@ XrResult XRAPI_CALL xrCreateInstance(const XrInstanceCreateInfo* createInfo, XrI
     if (createInfo->enabledExtensionCount > 0 && createInfo->enabledExtensionNames == nullptr) return XR_ERROR_VALIDATION_FAILURE;
     // Layers were resolved by the loader; their names are not ours to check.
 
+    std::vector<const ServedExtension*> advertised;
+    try {
+      advertised = advertised_extensions();
+    } catch (const std::invalid_argument& e) {
+      log_error(e.what());
+      return XR_ERROR_INITIALIZATION_FAILED;
+    }
     auto state = std::make_unique<InstanceState>();
     for (uint32_t i = 0; i < createInfo->enabledExtensionCount; ++i) {
       const char* name = createInfo->enabledExtensionNames[i];
       if (name == nullptr) return XR_ERROR_VALIDATION_FAILURE;
-      if (!known_extension(name)) return XR_ERROR_EXTENSION_NOT_PRESENT;
+      if (std::none_of(advertised.begin(), advertised.end(), [&](const ServedExtension* e) { return std::strcmp(e->name, name) == 0; }))
+        return XR_ERROR_EXTENSION_NOT_PRESENT;
       state->extensions.insert(name);
     }
     try {

@@ -1,4 +1,5 @@
 // Loader negotiation (the library's only exported symbol) and xrGetInstanceProcAddr.
+#include "extensions/served_extension.h"
 #include "functions.h"
 #include "roomsense/xr/loader_interface.h"
 #include "runtime.h"
@@ -30,18 +31,12 @@ const std::unordered_map<std::string_view, Entry>& function_table() {
 #define SIM_CORE(name) t.emplace(#name, Entry{reinterpret_cast<PFN_xrVoidFunction>(&sim::name), nullptr});
 #define SIM_UNSUPPORTED(name) \
   t.emplace(#name, Entry{reinterpret_cast<PFN_xrVoidFunction>(&Unsupported<PFN_##name>::call), nullptr});
-#define SIM_MSFT(name) \
-  t.emplace(#name, Entry{reinterpret_cast<PFN_xrVoidFunction>(&sim::name), XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME});
-#define SIM_TIMESPEC(name) \
-  t.emplace(#name, Entry{reinterpret_cast<PFN_xrVoidFunction>(&sim::name), XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME});
     SIM_CORE_FUNCTIONS(SIM_CORE)
     SIM_UNSUPPORTED_CORE_FUNCTIONS(SIM_UNSUPPORTED)
-    SIM_MSFT_SCENE_FUNCTIONS(SIM_MSFT)
-    SIM_TIMESPEC_FUNCTIONS(SIM_TIMESPEC)
+    for (const ServedExtension* e : served_extensions())
+      for (const ServedFunction& f : e->functions) t.emplace(f.name, Entry{f.function, e->name});
 #undef SIM_CORE
 #undef SIM_UNSUPPORTED
-#undef SIM_MSFT
-#undef SIM_TIMESPEC
     return t;
   }();
   return table;

@@ -1,6 +1,8 @@
 // The global state and the destruction cascades (instance -> sessions -> spaces, observers -> scenes).
 #include "runtime.h"
 
+#include "extensions/served_extension.h"
+
 #include <time.h>
 
 namespace roomsense::sim {
@@ -28,7 +30,7 @@ void Runtime::destroy_observer(std::uint64_t id, Graveyard& graveyard) {
   it->second->worker.request_stop();
   it->second->job->wake.notify_all();
   for (auto s = scenes.begin(); s != scenes.end();) s = s->second->observer == id ? scenes.erase(s) : std::next(s);
-  graveyard.push_back(std::move(it->second));
+  graveyard.observers.push_back(std::move(it->second));
   observers.erase(it);
 }
 
@@ -43,6 +45,7 @@ void Runtime::destroy_session(std::uint64_t id, Graveyard& graveyard) {
     if (InstanceState* owner = find(instances, it->second->instance))
       std::erase_if(owner->events, [id](const SessionEvent& e) { return e.session == id; });
     sessions.erase(it);
+    graveyard.sessions.push_back(id);
   }
 }
 
@@ -51,7 +54,17 @@ void Runtime::destroy_instance(std::uint64_t id, Graveyard& graveyard) {
   for (const auto& [sid, session] : sessions)
     if (session->instance == id) owned.push_back(sid);
   for (std::uint64_t sid : owned) destroy_session(sid, graveyard);
-  instances.erase(id);
+  if (instances.erase(id) > 0) graveyard.instances.push_back(id);
+}
+
+Runtime::Graveyard::~Graveyard() {
+  observers.clear();
+  for (const ServedExtension* e : served_extensions()) {
+    if (e->forget_session != nullptr)
+      for (std::uint64_t id : sessions) e->forget_session(id);
+    if (e->forget_instance != nullptr)
+      for (std::uint64_t id : instances) e->forget_instance(id);
+  }
 }
 
 }  // namespace roomsense::sim

@@ -50,6 +50,7 @@ struct InstanceState {
   Config config;
   std::shared_ptr<const Room> room;  // null when ROOMSENSE_SIM_SCENE is unset
   std::deque<SessionEvent> events;
+  std::deque<XrEventDataBuffer> extension_events;  // scene extensions' events, after the session events
   std::vector<std::string> paths;  // XrPath n names paths[n - 1]
   std::unordered_map<std::string, XrPath> path_ids;
   bool has(const char* extension) const { return extensions.count(extension) != 0; }
@@ -115,7 +116,14 @@ struct Runtime {
 
   // Destruction unlinks objects under the lock and hands back what must be destroyed after it is released
   // (observers join their compute threads).
-  using Graveyard = std::vector<std::unique_ptr<ObserverState>>;
+  struct Graveyard {
+    std::vector<std::unique_ptr<ObserverState>> observers;  // their compute threads are joined here
+    std::vector<std::uint64_t> sessions, instances;         // each served extension forgets their objects
+    Graveyard() = default;
+    Graveyard(const Graveyard&) = delete;
+    Graveyard& operator=(const Graveyard&) = delete;
+    ~Graveyard();
+  };
   void destroy_session(std::uint64_t id, Graveyard& graveyard);
   void destroy_observer(std::uint64_t id, Graveyard& graveyard);
   void destroy_instance(std::uint64_t id, Graveyard& graveyard);

@@ -1,10 +1,12 @@
 // XR_MSFT_scene_understanding: observers compute scenes from the room on a worker thread (UPDATING, then
 // COMPLETED after ROOMSENSE_SIM_COMPUTE_DELAY_MS), scenes expose components, locations and mesh buffers.
-#include "functions.h"
-#include "log.h"
-#include "runtime.h"
-#include "spaces.h"
-#include "validate.h"
+#include "msft_scene_understanding.h"
+
+#include "../functions.h"
+#include "../log.h"
+#include "../runtime.h"
+#include "../spaces.h"
+#include "../validate.h"
 
 #include <algorithm>
 #include <chrono>
@@ -349,6 +351,19 @@ XrResult XRAPI_CALL xrGetSceneMeshBuffersMSFT(XrSceneMSFT scene, const XrSceneMe
       std::transform(mesh.indices.begin(), mesh.indices.end(), indices16->indices, [](uint32_t i) { return static_cast<uint16_t>(i); });
     return XR_SUCCESS;
   });
+}
+
+const ServedExtension& msft_scene_understanding_extension() {
+#define SIM_MSFT_FUNCTIONS(_)                                                                               \
+  _(xrEnumerateSceneComputeFeaturesMSFT) _(xrCreateSceneObserverMSFT) _(xrDestroySceneObserverMSFT)         \
+  _(xrCreateSceneMSFT) _(xrDestroySceneMSFT) _(xrComputeNewSceneMSFT) _(xrGetSceneComputeStateMSFT)          \
+  _(xrGetSceneComponentsMSFT) _(xrLocateSceneComponentsMSFT) _(xrGetSceneMeshBuffersMSFT)
+#define SIM_SERVE(name) ServedFunction{#name, reinterpret_cast<PFN_xrVoidFunction>(&sim::name)},
+  static const ServedExtension e{XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME, XR_MSFT_scene_understanding_SPEC_VERSION,
+                                 true, {SIM_MSFT_FUNCTIONS(SIM_SERVE)}};
+#undef SIM_SERVE
+#undef SIM_MSFT_FUNCTIONS
+  return e;
 }
 
 }  // namespace roomsense::sim

@@ -1,0 +1,75 @@
+// The extensions the simulated runtime serves. A new scene extension is one file pair in this folder and one
+// line here.
+#include "served_extension.h"
+
+#include "../functions.h"
+#include "ext_future.h"
+#include "msft_scene_understanding.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace roomsense::sim {
+namespace {
+
+const ServedExtension& headless_extension() {
+  static const ServedExtension e{XR_MND_HEADLESS_EXTENSION_NAME, XR_MND_headless_SPEC_VERSION, false, {}};
+  return e;
+}
+
+const ServedExtension& timespec_extension() {
+#define SIM_SERVE(name) ServedFunction{#name, reinterpret_cast<PFN_xrVoidFunction>(&sim::name)},
+  static const ServedExtension e{XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME, XR_KHR_convert_timespec_time_SPEC_VERSION,
+                                 false, {SIM_TIMESPEC_FUNCTIONS(SIM_SERVE)}};
+#undef SIM_SERVE
+  return e;
+}
+
+}  // namespace
+
+const std::vector<const ServedExtension*>& served_extensions() {
+  static const std::vector<const ServedExtension*> list = {
+      &headless_extension(),
+      &timespec_extension(),
+      &ext_future_extension(),
+      &msft_scene_understanding_extension(),
+  };
+  return list;
+}
+
+const ServedExtension* served_extension(std::string_view name) {
+  for (const ServedExtension* e : served_extensions())
+    if (name == e->name) return e;
+  return nullptr;
+}
+
+std::vector<const ServedExtension*> advertised_extensions() {
+  const char* wanted = std::getenv("ROOMSENSE_SIM_EXTENSIONS");
+  std::vector<const ServedExtension*> out;
+  if (wanted == nullptr || *wanted == '\0') {
+    out = served_extensions();
+    return out;
+  }
+  std::vector<std::string> names;
+  std::stringstream in(wanted);
+  for (std::string item; std::getline(in, item, ',');) {
+    item.erase(0, item.find_first_not_of(' '));
+    item.erase(item.find_last_not_of(' ') + 1);
+    const ServedExtension* e = served_extension(item);
+    if (e == nullptr || !e->scene)
+      throw std::invalid_argument("ROOMSENSE_SIM_EXTENSIONS='" + std::string(wanted) + "': '" + item +
+                                  "' is not a scene extension this runtime serves");
+    names.push_back(item);
+  }
+  for (const ServedExtension* e : served_extensions()) {
+    bool named = false;
+    for (const auto& n : names) named = named || n == e->name;
+    if (!e->scene || named) out.push_back(e);
+  }
+  return out;
+}
+
+}  // namespace roomsense::sim

@@ -1,4 +1,4 @@
-// roomsense-demo [--output DIR] [--runtime MANIFEST] [ROOMFILE]
+// roomsense-demo [--output DIR] [--runtime MANIFEST] [--runtime-extensions LIST] [ROOMFILE]
 //
 // A real OpenXR application: through the Khronos loader, the simulated runtime (serving ROOMFILE, or the
 // built-in default room) and the implicit roomsense layer, it enables XR_EXTX_room_understanding, computes
@@ -12,7 +12,10 @@
 #include "roomsense/export.h"
 #include "roomsense/report.h"
 
+#include <nlohmann/json.hpp>
+
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -26,16 +29,20 @@ namespace fs = std::filesystem;
 using namespace roomsense;
 
 constexpr const char* kUsage =
-    "usage: roomsense-demo [--output DIR] [--runtime MANIFEST] [ROOMFILE]\n"
+    "usage: roomsense-demo [--output DIR] [--runtime MANIFEST] [--runtime-extensions LIST] [ROOMFILE]\n"
     "  ROOMFILE   a room for the simulated runtime: OBJ, PLY, glTF/GLB, a Quest capture .json, or\n"
     "             synthetic:NAME (default: synthetic:default, the built-in 5 x 4 m room)\n"
     "  --output   where to write analysis.json, bounds.obj, bounds.glb, plan.svg, scene.glb (default: demo-output)\n"
-    "  --runtime  another OpenXR runtime's manifest (default: the simulated runtime beside this program)\n";
+    "  --runtime  another OpenXR runtime's manifest (default: the simulated runtime beside this program)\n"
+    "  --runtime-extensions LIST\n"
+    "             the scene extensions the simulated runtime offers, comma-separated, to play a given headset\n"
+    "             (sets ROOMSENSE_SIM_EXTENSIONS; default: all it serves), e.g. XR_META_spatial_entity_mesh\n";
 
 struct Options {
   std::string room = "synthetic:default";
   std::string output = "demo-output";
   std::string runtime;
+  std::string runtime_extensions;
 };
 
 Options parse(int argc, char** argv) {
@@ -48,6 +55,9 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     } else if ((a == "--output" || a == "--runtime") && i + 1 < argc) {
       (a == "--output" ? o.output : o.runtime) = argv[++i];
+    } else if (a == "--runtime-extensions" && i + 1 < argc) {
+      o.runtime_extensions = argv[++i];
+      if (o.runtime_extensions.empty()) throw std::invalid_argument("--runtime-extensions needs at least one extension");
     } else if (!a.empty() && a[0] != '-' && !room_given) {
       o.room = a;
       room_given = true;
@@ -75,6 +85,9 @@ void print_report(const demo::Setup& setup, const demo::RoomReport& r, const std
   std::printf("room        %s\n", room.c_str());
   std::printf("input       %u vertices, %u triangles of the runtime's scene meshes\n", l.inputVertexCount,
               l.inputTriangleCount);
+  const auto openxr = nlohmann::json::parse(r.json).value("openxr", nlohmann::json::object());
+  std::printf("source      %s: %s\n", openxr.value("mesh_source", std::string("none")).c_str(),
+              openxr.value("mesh_source_reason", std::string()).c_str());
   std::printf("floor       y = %.2f m\n", double(l.floorHeight));
   std::printf("ceiling     y = %.2f m (room height %.2f m, %u storey%s)\n", double(l.ceilingHeight),
               double(l.ceilingHeight - l.floorHeight), l.storeyCount, l.storeyCount == 1 ? "" : "s");
@@ -149,6 +162,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    if (!options.runtime_extensions.empty()) setenv("ROOMSENSE_SIM_EXTENSIONS", options.runtime_extensions.c_str(), 1);
     const demo::Setup setup = demo::prepare_environment(options.runtime, options.room);
     std::printf("roomsense-demo: an OpenXR app through the Khronos loader, the %s runtime and the roomsense layer\n",
                 options.runtime.empty() ? "simulated" : "given");

@@ -73,8 +73,8 @@ RoomReport analyse_room_through_openxr() {
   if (!runtime_offers(XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME))
     throw std::runtime_error("the loader offers no " XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME
                              ": the roomsense layer was not found or is disabled");
+  // No scene extension of its own: the layer enables whichever the runtime has (its mesh sources).
   std::vector<const char*> extensions = {XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME, XR_MND_HEADLESS_EXTENSION_NAME};
-  if (runtime_offers(XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME)) extensions.push_back(XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME);
 
   Instance instance;
   XrInstanceCreateInfo create{XR_TYPE_INSTANCE_CREATE_INFO, nullptr};

@@ -1,5 +1,5 @@
-// The demo's OpenXR application: an instance with XR_EXTX_room_understanding, XR_MND_headless and (when the
-// runtime has it) XR_MSFT_scene_understanding, a headless session running its frame loop, and one analysis
+// The demo's OpenXR application: an instance with XR_EXTX_room_understanding and XR_MND_headless (the layer
+// enables the runtime's scene extensions itself), a headless session running its frame loop, and one analysis
 // of the runtime's scene meshes through the layer. Everything goes through the Khronos loader.
 #pragma once
 #include <openxr/openxr.h>

@@ -20,7 +20,7 @@ namespace {
 
 constexpr std::size_t kMaxTrackedSpaces = 4096;  // reference spaces remembered for baseSpace checks
 
-enum class HookGroup { Always, Session, Spaces, Extx };
+enum class HookGroup { Always, Session, Spaces, Events, Extx };
 
 struct Hook {
   PFN_xrVoidFunction function;
@@ -34,15 +34,18 @@ const std::unordered_map<std::string_view, Hook>& hooks() {
 #define ROOMSENSE_ALWAYS(name) ROOMSENSE_ENTRY(name, HookGroup::Always)
 #define ROOMSENSE_SESSION(name) ROOMSENSE_ENTRY(name, HookGroup::Session)
 #define ROOMSENSE_SPACES(name) ROOMSENSE_ENTRY(name, HookGroup::Spaces)
+#define ROOMSENSE_EVENTS(name) ROOMSENSE_ENTRY(name, HookGroup::Events)
 #define ROOMSENSE_EXTX(name) ROOMSENSE_ENTRY(name, HookGroup::Extx)
     ROOMSENSE_HOOKS_ALWAYS(ROOMSENSE_ALWAYS)
     ROOMSENSE_HOOKS_SESSION(ROOMSENSE_SESSION)
     ROOMSENSE_HOOKS_SPACES(ROOMSENSE_SPACES)
+    ROOMSENSE_HOOKS_EVENTS(ROOMSENSE_EVENTS)
     ROOMSENSE_EXTX_FUNCTIONS(ROOMSENSE_EXTX)
 #undef ROOMSENSE_ENTRY
 #undef ROOMSENSE_ALWAYS
 #undef ROOMSENSE_SESSION
 #undef ROOMSENSE_SPACES
+#undef ROOMSENSE_EVENTS
 #undef ROOMSENSE_EXTX
     return t;
   }();
@@ -183,9 +186,10 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
       return next_create(&down, &down_layer_info, instance);
     };
     // Where the runtime's extension list could not be read, ask for every source and drop the least preferred
-    // until the runtime accepts.
+    // until the chain accepts (a layer below may answer an extension it does not know with another error than
+    // XR_ERROR_EXTENSION_NOT_PRESENT). The application's own request is tried last, unchanged.
     XrResult result = create_with(candidates);
-    while (result == XR_ERROR_EXTENSION_NOT_PRESENT && !added.empty()) {
+    while (XR_FAILED(result) && !added.empty()) {
       candidates.pop_back();
       result = create_with(candidates);
     }
@@ -217,6 +221,10 @@ void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa,
   state->capture = capture;
   state->config = config;
   state->layer_enabled_extensions = added;
+  for (const SourceInfo* source : sources)
+    for (const ExtensionFunctions& e : source->extensions)
+      if (std::find(added.begin(), added.end(), e.extension) != added.end())
+        state->hidden_events.insert(state->hidden_events.end(), e.events.begin(), e.events.end());
   NextDispatch& next = state->next;
   next.xrGetInstanceProcAddr = next_gipa;
 #define ROOMSENSE_LOAD(name)                                                                       \
@@ -258,7 +266,8 @@ XrResult XRAPI_CALL xrGetInstanceProcAddr(XrInstance instance, const char* name,
     if (it != hooks().end()) {
       const HookGroup g = it->second.group;
       const bool ours = g == HookGroup::Always || (g == HookGroup::Extx && state->extx) ||
-                        (g == HookGroup::Session && state->capture) || (g == HookGroup::Spaces && state->extx);
+                        (g == HookGroup::Session && state->capture) || (g == HookGroup::Spaces && state->extx) ||
+                        (g == HookGroup::Events && !state->hidden_events.empty());
       if (g == HookGroup::Extx && !state->extx) return XR_ERROR_FUNCTION_UNSUPPORTED;
       if (ours) {
         *function = it->second.function;
@@ -277,6 +286,26 @@ XrResult XRAPI_CALL xrGetInstanceProcAddr(XrInstance instance, const char* name,
       if (std::find(added.begin(), added.end(), it->second) != added.end()) return XR_ERROR_FUNCTION_UNSUPPORTED;
     }
     return state->next.xrGetInstanceProcAddr(instance, name, function);
+  });
+}
+
+// ---- xrPollEvent (only when the layer enabled an extension with events of its own)
+
+XrResult XRAPI_CALL xrPollEvent(XrInstance instance, XrEventDataBuffer* eventData) {
+  return guarded("xrPollEvent", [&]() -> XrResult {
+    const std::shared_ptr<InstanceState> state = registry().instance(instance);
+    if (!state) return XR_ERROR_HANDLE_INVALID;
+    if (eventData == nullptr) return state->next.xrPollEvent(instance, eventData);  // the runtime's to reject
+    const XrEventDataBuffer asked = *eventData;
+    // Bounded: a queue of nothing but the layer's events cannot keep the application in here.
+    for (int skipped = 0; skipped < 1024; ++skipped) {
+      const XrResult result = state->next.xrPollEvent(instance, eventData);
+      const auto& hidden = state->hidden_events;
+      if (result != XR_SUCCESS || std::find(hidden.begin(), hidden.end(), eventData->type) == hidden.end()) return result;
+      eventData->type = asked.type;
+      eventData->next = asked.next;
+    }
+    return XR_EVENT_UNAVAILABLE;
   });
 }
 

@@ -11,8 +11,9 @@
 #include <type_traits>
 
 // Core functions the layer calls on the next layer (or the runtime).
-#define ROOMSENSE_NEXT_CORE_FUNCTIONS(_) \
-  _(xrDestroyInstance) _(xrCreateSession) _(xrDestroySession) _(xrCreateReferenceSpace) _(xrDestroySpace) _(xrLocateSpace)
+#define ROOMSENSE_NEXT_CORE_FUNCTIONS(_)                                                                    \
+  _(xrDestroyInstance) _(xrCreateSession) _(xrDestroySession) _(xrCreateReferenceSpace) _(xrDestroySpace) _(xrLocateSpace) \
+  _(xrPollEvent)
 
 // Hooked on every instance.
 #define ROOMSENSE_HOOKS_ALWAYS(_) _(xrGetInstanceProcAddr) _(xrDestroyInstance)
@@ -23,6 +24,10 @@
 // Hooked when the application enabled the extension: reference spaces, so that an analyzer's baseSpace can
 // be checked (LOCAL or STAGE) and copied (the analyzer keeps its own space of the same kind and pose).
 #define ROOMSENSE_HOOKS_SPACES(_) _(xrCreateReferenceSpace)
+
+// Hooked when the layer enabled an extension with events the application did not ask for (the mesh sources'
+// ExtensionFunctions::events): those events are the layer's, and are taken out of the application's queue.
+#define ROOMSENSE_HOOKS_EVENTS(_) _(xrPollEvent)
 
 // XR_EXTX_room_understanding: all of them the layer's own.
 #define ROOMSENSE_EXTX_FUNCTIONS(_)                                                                     \
@@ -36,6 +41,7 @@ namespace roomsense::layer {
 ROOMSENSE_HOOKS_ALWAYS(ROOMSENSE_DECLARE)
 ROOMSENSE_HOOKS_SESSION(ROOMSENSE_DECLARE)
 ROOMSENSE_HOOKS_SPACES(ROOMSENSE_DECLARE)
+ROOMSENSE_HOOKS_EVENTS(ROOMSENSE_DECLARE)
 ROOMSENSE_EXTX_FUNCTIONS(ROOMSENSE_DECLARE)
 #undef ROOMSENSE_DECLARE
 

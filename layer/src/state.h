@@ -41,6 +41,7 @@ struct InstanceState {
   bool capture = false;   // sessions are tracked and the scene meshes the application reads are captured
   std::vector<EnabledSource> sources;  // best first (mesh_sources() order)
   std::vector<std::string> layer_enabled_extensions;  // enabled below us by the layer, not the application
+  std::vector<XrStructureType> hidden_events;          // their events, kept from the application
   Config config;
 
   // The instance's source of this kind, or null when it is not enabled.

@@ -47,3 +47,24 @@ TEST(LayerSources, NoSceneExtensionMeansSubmittedMeshesOnlyAndOneClearReason) {
 }
 
 }  // namespace
+
+namespace {
+
+// The layer's own requests through an extension only it enabled (Quest's space queries) answer with events; they
+// are the layer's, of types the application never asked for, and must not reach the application's queue.
+TEST(LayerEvents, EventsOfExtensionsOnlyTheLayerEnabledStayWithTheLayer) {
+  ScopedEnv quest("ROOMSENSE_SIM_EXTENSIONS", std::string("XR_FB_spatial_entity,XR_FB_spatial_entity_query,XR_FB_scene,"
+                                                          "XR_FB_spatial_entity_container,XR_META_spatial_entity_mesh"));
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  App app;
+  const XrRoomAnalyzerEXTX a = app.analyzer();
+  ASSERT_EQ(app.compute(a, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  EXPECT_EQ(nlohmann::json::parse(read_result(app.extx, a).json).at("openxr").at("mesh_source"), "XR_META_spatial_entity_mesh");
+  XrEventDataBuffer event{XR_TYPE_EVENT_DATA_BUFFER, nullptr};
+  while (xrPollEvent(app.instance, &event) == XR_SUCCESS) {
+    EXPECT_LT(event.type, 1000000000) << "an extension's event reached the application: type " << event.type;
+    event = {XR_TYPE_EVENT_DATA_BUFFER, nullptr};
+  }
+}
+
+}  // namespace

@@ -56,6 +56,9 @@ struct HookEntry {
 struct ExtensionFunctions {
   const char* extension;
   std::vector<const char*> functions;
+  // Its event structures: when only the layer enabled the extension, xrPollEvent keeps them from the
+  // application (they answer the layer's own requests and are types the application never asked for).
+  std::vector<XrStructureType> events = {};
 };
 
 struct SourceInfo {

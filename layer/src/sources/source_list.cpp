@@ -1,11 +1,13 @@
 // The mesh sources the layer knows, best first. A new runtime extension is one file pair in this folder and
 // one line here.
+#include "meta_spatial_entity_mesh.h"
 #include "msft_scene_understanding.h"
 
 namespace roomsense::layer {
 
 const std::vector<const SourceInfo*>& mesh_sources() {
   static const std::vector<const SourceInfo*> list = {
+      &meta_spatial_entity_mesh_source(),
       &msft_scene_understanding_source(),
   };
   return list;

@@ -4,6 +4,7 @@
 
 #include "../functions.h"
 #include "ext_future.h"
+#include "meta_spatial_entity_mesh.h"
 #include "msft_scene_understanding.h"
 
 #include <cstdlib>
@@ -36,6 +37,11 @@ const std::vector<const ServedExtension*>& served_extensions() {
       &timespec_extension(),
       &ext_future_extension(),
       &msft_scene_understanding_extension(),
+      &fb_spatial_entity_extension(),
+      &fb_spatial_entity_query_extension(),
+      &fb_scene_extension(),
+      &fb_spatial_entity_container_extension(),
+      &meta_spatial_entity_mesh_extension(),
   };
   return list;
 }

@@ -1,0 +1,219 @@
+// The active query, step by step:
+// 1. xrQuerySpacesFB for the spaces with XR_SPACE_COMPONENT_TYPE_TRIANGLE_MESH_META (a Quest has one, labelled
+//    GLOBAL_MESH).
+// 2. Completion without xrPollEvent, which is the application's: the spec has xrRetrieveSpaceQueryResultsFB
+//    answer XR_ERROR_VALIDATION_FAILURE while a request is not complete, so the layer calls it until it
+//    succeeds (10 s at most, or until stopped). The runtime still posts the query's events to the
+//    application's queue; an application matches them against its own request ids, so it skips them.
+// 3. Per space: the locatable and triangle-mesh components enabled where they are not (and, likewise, the
+//    status polled rather than the completion event awaited), the space located in the base space with
+//    xrLocateSpace, the mesh read with the two-call idiom and moved into the base space.
+// The spaces are left as they are (not destroyed, components left enabled): a runtime may hand the layer the
+// very handles the application holds for the same anchors.
+#include "meta_spatial_entity_mesh.h"
+
+#include "../guard.h"
+#include "../log.h"
+#include "roomsense/xr/ext/XR_FB_scene.h"
+#include "roomsense/xr/ext/XR_FB_spatial_entity.h"
+#include "roomsense/xr/ext/XR_META_spatial_entity_mesh.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+namespace roomsense::layer {
+namespace {
+
+using xr::check;
+
+#define META_FUNCTIONS(_)                                                                                      \
+  _(xrQuerySpacesFB) _(xrRetrieveSpaceQueryResultsFB) _(xrEnumerateSpaceSupportedComponentsFB)                 \
+  _(xrGetSpaceComponentStatusFB) _(xrSetSpaceComponentStatusFB) _(xrGetSpaceTriangleMeshMETA) _(xrLocateSpace)
+
+constexpr auto kPollInterval = std::chrono::milliseconds(2);
+constexpr auto kTimeout = std::chrono::seconds(10);  // for the query, and for each component to be enabled
+constexpr std::uint32_t kMaxResults = 4096;
+constexpr std::size_t kMaxBufferElements = 1u << 26;  // per mesh: far beyond any room
+constexpr XrSpaceLocationFlags kValid = XR_SPACE_LOCATION_POSITION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_VALID_BIT;
+
+std::string chunk_id(const XrUuidEXT& id) {
+  std::string s = "meta:";
+  char hex[3];
+  for (std::uint8_t b : id.data) {
+    std::snprintf(hex, sizeof hex, "%02x", b);
+    s += hex;
+  }
+  return s;
+}
+
+class MetaSource final : public MeshSource {
+ public:
+#define META_MEMBER(name) PFN_##name name = nullptr;
+  META_FUNCTIONS(META_MEMBER)
+#undef META_MEMBER
+
+  std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop) override;
+
+ private:
+  std::vector<XrSpaceQueryResultFB> find_mesh_spaces(XrSession session, std::stop_token stop) const;
+  bool enable(XrSpace space, XrSpaceComponentTypeFB component, std::stop_token stop) const;
+  MeshPiece read_mesh(XrSpace space) const;
+};
+
+// Calls `step` until it returns true, every kPollInterval, for at most kTimeout; false when stopped.
+template <typename Step>
+bool poll(const char* what, std::stop_token stop, Step&& step) {
+  const auto deadline = std::chrono::steady_clock::now() + kTimeout;
+  while (!step()) {
+    if (stop.stop_requested()) return false;
+    if (std::chrono::steady_clock::now() > deadline) throw std::runtime_error(std::string(what) + " timed out");
+    std::this_thread::sleep_for(kPollInterval);
+  }
+  return true;
+}
+
+std::vector<XrSpaceQueryResultFB> MetaSource::find_mesh_spaces(XrSession session, std::stop_token stop) const {
+  auto filter = xr_struct<XrSpaceComponentFilterInfoFB>(XR_TYPE_SPACE_COMPONENT_FILTER_INFO_FB);
+  filter.componentType = XR_SPACE_COMPONENT_TYPE_TRIANGLE_MESH_META;
+  auto info = xr_struct<XrSpaceQueryInfoFB>(XR_TYPE_SPACE_QUERY_INFO_FB);
+  info.queryAction = XR_SPACE_QUERY_ACTION_LOAD_FB;
+  info.maxResultCount = kMaxResults;
+  info.timeout = 0;  // the runtime's own
+  info.filter = reinterpret_cast<const XrSpaceFilterInfoBaseHeaderFB*>(&filter);
+  XrAsyncRequestIdFB request = 0;
+  check(xrQuerySpacesFB(session, reinterpret_cast<const XrSpaceQueryInfoBaseHeaderFB*>(&info), &request), "xrQuerySpacesFB");
+
+  // The count call succeeds once the request is complete (validation failure before).
+  auto results = xr_struct<XrSpaceQueryResultsFB>(XR_TYPE_SPACE_QUERY_RESULTS_FB);
+  const bool done = poll("the runtime's space query", stop, [&] {
+    const XrResult r = xrRetrieveSpaceQueryResultsFB(session, request, &results);
+    if (r == XR_ERROR_VALIDATION_FAILURE) return false;
+    check(r, "xrRetrieveSpaceQueryResultsFB");
+    return true;
+  });
+  if (!done || results.resultCountOutput == 0) return {};
+  if (results.resultCountOutput > kMaxResults) throw std::runtime_error("xrRetrieveSpaceQueryResultsFB reported an absurd result count");
+  std::vector<XrSpaceQueryResultFB> found(results.resultCountOutput);
+  results.resultCapacityInput = static_cast<std::uint32_t>(found.size());
+  results.results = found.data();
+  check(xrRetrieveSpaceQueryResultsFB(session, request, &results), "xrRetrieveSpaceQueryResultsFB");
+  found.resize(std::min<std::size_t>(found.size(), results.resultCountOutput));
+  return found;
+}
+
+// Makes sure a component of the space is enabled; false when it is not supported, or when stopped.
+bool MetaSource::enable(XrSpace space, XrSpaceComponentTypeFB component, std::stop_token stop) const {
+  const auto supported = xr::read_two_call<XrSpaceComponentTypeFB>(
+      "xrEnumerateSpaceSupportedComponentsFB",
+      [&](std::uint32_t capacity, std::uint32_t* count, XrSpaceComponentTypeFB* out) {
+        return xrEnumerateSpaceSupportedComponentsFB(space, capacity, count, out);
+      },
+      256);
+  if (std::find(supported.begin(), supported.end(), component) == supported.end()) return false;
+  auto status = xr_struct<XrSpaceComponentStatusFB>(XR_TYPE_SPACE_COMPONENT_STATUS_FB);
+  check(xrGetSpaceComponentStatusFB(space, component, &status), "xrGetSpaceComponentStatusFB");
+  if (status.enabled && !status.changePending) return true;
+  if (!status.changePending) {
+    auto set = xr_struct<XrSpaceComponentStatusSetInfoFB>(XR_TYPE_SPACE_COMPONENT_STATUS_SET_INFO_FB);
+    set.componentType = component;
+    set.enabled = XR_TRUE;
+    XrAsyncRequestIdFB request = 0;
+    const XrResult r = xrSetSpaceComponentStatusFB(space, &set, &request);
+    // Already set or pending: the application got there first.
+    if (r != XR_ERROR_SPACE_COMPONENT_STATUS_ALREADY_SET_FB && r != XR_ERROR_SPACE_COMPONENT_STATUS_PENDING_FB)
+      check(r, "xrSetSpaceComponentStatusFB");
+  }
+  return poll("enabling a space component", stop, [&] {
+    check(xrGetSpaceComponentStatusFB(space, component, &status), "xrGetSpaceComponentStatusFB");
+    if (status.changePending) return false;
+    if (!status.enabled) throw std::runtime_error("the runtime did not enable component " + std::to_string(component));
+    return true;
+  });
+}
+
+MeshPiece MetaSource::read_mesh(XrSpace space) const {
+  const auto get = xr_struct<XrSpaceTriangleMeshGetInfoMETA>(XR_TYPE_SPACE_TRIANGLE_MESH_GET_INFO_META);
+  auto mesh = xr_struct<XrSpaceTriangleMeshMETA>(XR_TYPE_SPACE_TRIANGLE_MESH_META);
+  check(xrGetSpaceTriangleMeshMETA(space, &get, &mesh), "xrGetSpaceTriangleMeshMETA");
+  if (mesh.vertexCountOutput > kMaxBufferElements || mesh.indexCountOutput > kMaxBufferElements)
+    throw std::runtime_error("xrGetSpaceTriangleMeshMETA reported an absurd mesh size");
+  std::vector<XrVector3f> vertices(mesh.vertexCountOutput);
+  std::vector<std::uint32_t> indices(mesh.indexCountOutput);
+  mesh.vertexCapacityInput = mesh.vertexCountOutput;
+  mesh.vertices = vertices.data();
+  mesh.indexCapacityInput = mesh.indexCountOutput;
+  mesh.indices = indices.data();
+  if (!vertices.empty() || !indices.empty()) check(xrGetSpaceTriangleMeshMETA(space, &get, &mesh), "xrGetSpaceTriangleMeshMETA");
+  vertices.resize(std::min<std::size_t>(vertices.size(), mesh.vertexCountOutput));
+  indices.resize(std::min<std::size_t>(indices.size(), mesh.indexCountOutput) / 3 * 3);
+  if (std::any_of(indices.begin(), indices.end(), [&](std::uint32_t v) { return v >= vertices.size(); }))
+    throw std::runtime_error("the runtime served a mesh with an index out of range");
+  MeshPiece piece;
+  piece.vertices.reserve(vertices.size());
+  for (const XrVector3f& v : vertices) piece.vertices.emplace_back(v.x, v.y, v.z);
+  piece.indices = std::move(indices);
+  return piece;
+}
+
+std::vector<SourceChunk> MetaSource::query(const QueryContext& context, std::stop_token stop) {
+  const std::vector<XrSpaceQueryResultFB> spaces = find_mesh_spaces(context.session, stop);
+  std::vector<SourceChunk> out;
+  std::size_t unlocated = 0;
+  for (const XrSpaceQueryResultFB& found : spaces) {
+    if (stop.stop_requested()) return {};
+    if (!enable(found.space, XR_SPACE_COMPONENT_TYPE_TRIANGLE_MESH_META, stop)) continue;
+    if (!enable(found.space, XR_SPACE_COMPONENT_TYPE_LOCATABLE_FB, stop)) continue;
+    if (stop.stop_requested()) return {};
+    auto location = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
+    check(xrLocateSpace(found.space, context.base, context.time, &location), "xrLocateSpace");
+    if ((location.locationFlags & kValid) != kValid) {
+      ++unlocated;
+      continue;
+    }
+    SourceChunk chunk;
+    chunk.id = chunk_id(found.uuid);
+    chunk.mesh = read_mesh(found.space);
+    chunk.change = content_hash(chunk.mesh);  // the mesh as served, in its own space
+    transform_in_place(chunk.mesh.vertices, to_rigid(location.pose));
+    out.push_back(std::move(chunk));  // the global mesh has no semantic labels per triangle
+  }
+  if (unlocated > 0) log_warn(std::to_string(unlocated) + " runtime mesh(es) could not be located and were left out");
+  return out;
+}
+
+std::unique_ptr<MeshSource> create(PFN_xrGetInstanceProcAddr next, XrInstance instance) {
+  auto source = std::make_unique<MetaSource>();
+#define META_LOAD(name) load_next(next, instance, #name, source->name);
+  META_FUNCTIONS(META_LOAD)
+#undef META_LOAD
+  return source;
+}
+
+const SourceInfo& info() {
+  static const SourceInfo source{
+      XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME,
+      "the room's global mesh, one scene space",
+      {{XR_FB_SPATIAL_ENTITY_EXTENSION_NAME,
+        {"xrCreateSpatialAnchorFB", "xrGetSpaceUuidFB", "xrEnumerateSpaceSupportedComponentsFB", "xrSetSpaceComponentStatusFB",
+         "xrGetSpaceComponentStatusFB"},
+        {XR_TYPE_EVENT_DATA_SPATIAL_ANCHOR_CREATE_COMPLETE_FB, XR_TYPE_EVENT_DATA_SPACE_SET_STATUS_COMPLETE_FB}},
+       {XR_FB_SPATIAL_ENTITY_QUERY_EXTENSION_NAME,
+        {"xrQuerySpacesFB", "xrRetrieveSpaceQueryResultsFB"},
+        {XR_TYPE_EVENT_DATA_SPACE_QUERY_RESULTS_AVAILABLE_FB, XR_TYPE_EVENT_DATA_SPACE_QUERY_COMPLETE_FB}},
+       {XR_FB_SCENE_EXTENSION_NAME,
+        {"xrGetSpaceBoundingBox2DFB", "xrGetSpaceBoundingBox3DFB", "xrGetSpaceSemanticLabelsFB", "xrGetSpaceBoundary2DFB",
+         "xrGetSpaceRoomLayoutFB"}},
+       {XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME, {"xrGetSpaceTriangleMeshMETA"}}},
+      {},  // no passive capture yet
+      &create,
+  };
+  return source;
+}
+
+}  // namespace
+
+const SourceInfo& meta_spatial_entity_mesh_source() { return info(); }
+
+}  // namespace roomsense::layer

@@ -44,6 +44,14 @@ TEST(ServedExtensions, TheVariableLimitsTheSceneExtensions) {
     EXPECT_FALSE(has(names, other)) << other;
 }
 
+TEST(ServedExtensions, AnExtensionBringsThoseItBuildsOn) {
+  ScopedEnv only("ROOMSENSE_SIM_EXTENSIONS", std::string("XR_META_spatial_entity_mesh"));
+  const auto names = advertised();
+  for (const char* quest : {"XR_META_spatial_entity_mesh", "XR_FB_spatial_entity", "XR_FB_spatial_entity_query", "XR_FB_scene"})
+    EXPECT_TRUE(has(names, quest)) << quest;
+  EXPECT_FALSE(has(names, XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME));
+}
+
 TEST(ServedExtensions, AnUnknownNameFailsInstanceCreation) {
   ScopedEnv only("ROOMSENSE_SIM_EXTENSIONS", std::string("XR_MSFT_scene_understanding,XR_FOO_bar"));
   XrInstance instance = XR_NULL_HANDLE;

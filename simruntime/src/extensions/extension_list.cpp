@@ -7,6 +7,7 @@
 #include "meta_spatial_entity_mesh.h"
 #include "msft_scene_understanding.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
@@ -70,11 +71,11 @@ std::vector<const ServedExtension*> advertised_extensions() {
                                   "' is not a scene extension this runtime serves");
     names.push_back(item);
   }
-  for (const ServedExtension* e : served_extensions()) {
-    bool named = false;
-    for (const auto& n : names) named = named || n == e->name;
-    if (!e->scene || named) out.push_back(e);
-  }
+  for (std::size_t i = 0; i < names.size(); ++i)  // grows while it runs: requirements of requirements
+    for (const char* r : served_extension(names[i])->builds_on)
+      if (std::find(names.begin(), names.end(), r) == names.end()) names.emplace_back(r);
+  for (const ServedExtension* e : served_extensions())
+    if (!e->scene || std::find(names.begin(), names.end(), e->name) != names.end()) out.push_back(e);
   return out;
 }
 

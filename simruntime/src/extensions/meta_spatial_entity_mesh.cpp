@@ -673,7 +673,11 @@ const ServedExtension& meta_spatial_entity_mesh_extension() {
   static const ServedExtension e{XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME,
                                  XR_META_spatial_entity_mesh_SPEC_VERSION,
                                  true,
-                                 {SIM_SERVE(xrGetSpaceTriangleMeshMETA)}};
+                                 {SIM_SERVE(xrGetSpaceTriangleMeshMETA)},
+                                 nullptr,
+                                 nullptr,
+                                 {XR_FB_SPATIAL_ENTITY_EXTENSION_NAME, XR_FB_SPATIAL_ENTITY_QUERY_EXTENSION_NAME,
+                                  XR_FB_SCENE_EXTENSION_NAME, XR_FB_SPATIAL_ENTITY_CONTAINER_EXTENSION_NAME}};
   return e;
 }
 

@@ -26,6 +26,8 @@ struct ServedExtension {
   // Objects of a session or instance going away: forget them (called without the runtime's lock).
   void (*forget_session)(std::uint64_t session) = nullptr;
   void (*forget_instance)(std::uint64_t instance) = nullptr;
+  // Extensions it builds on: naming it in ROOMSENSE_SIM_EXTENSIONS advertises them too, as the device would.
+  std::vector<const char*> builds_on = {};
 };
 
 // Every extension the runtime can serve.
@@ -34,7 +36,8 @@ const std::vector<const ServedExtension*>& served_extensions();
 // The extension served under `name`, or null.
 const ServedExtension* served_extension(std::string_view name);
 
-// The scene extensions ROOMSENSE_SIM_EXTENSIONS names (all of them when unset). Throws std::invalid_argument
+// The extensions an instance advertises: the base ones, and the scene extensions ROOMSENSE_SIM_EXTENSIONS names
+// with those they require (all of them when unset). Throws std::invalid_argument
 // naming the variable for a name that is not one of them.
 std::vector<const ServedExtension*> advertised_extensions();
 

@@ -5,12 +5,14 @@
 
 #include <nlohmann/json.hpp>
 
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <string>
 #include <unistd.h>
@@ -103,6 +105,60 @@ inline void diff_json(const nlohmann::json& g, const nlohmann::json& w, const st
   } else if (g != w) {
     d.mismatches.push_back(path + ": " + g.dump() + " against " + w.dump());
   }
+}
+
+// The room files every runtime-mesh comparison runs on: every scan of ../shared/rooms.
+inline const char* const kRealRooms[] = {
+    "quest-iwer/living_room_global_mesh.obj",  "quest-iwer/meeting_room_global_mesh.obj",
+    "quest-iwer/music_room_global_mesh.obj",   "quest-iwer/office_large_global_mesh.obj",
+    "quest-iwer/office_small_global_mesh.obj", "quest-iwer/living_room.json",
+    "quest-iwer/meeting_room.json",            "quest-iwer/music_room.json",
+    "quest-iwer/office_large.json",            "quest-iwer/office_small.json",
+    "hololens1/holotoolkit_fake_spatial_mapping.obj", "hololens1/mrtk_example_spatial_mesh.obj",
+    "hololens2-su/SU_Kitchen_world_mesh.obj",  "hololens2-su/SU_Apartment_world_mesh.obj"};
+
+// A headset the simulated runtime plays (ROOMSENSE_SIM_EXTENSIONS) and the mesh source the layer must use on it.
+struct Headset {
+  const char* name;
+  std::optional<std::string> extensions;  // nullopt: everything the runtime serves
+  const char* mesh_source;
+};
+
+// The layer's analysis of the runtime's meshes of `source` against `roomsense analyze` of the same file: the
+// same structure and every number within 1e-4 m (test_results.cpp says why not bit for bit). Returns the areas.
+inline std::size_t expect_runtime_matches_cli(const std::string& source, const std::optional<std::string>& chunk,
+                                              const Headset& headset) {
+  ScopedEnv only("ROOMSENSE_SIM_EXTENSIONS", headset.extensions);
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", source);
+  ScopedEnv chunk_size("ROOMSENSE_SIM_CHUNK_SIZE", chunk);
+  Result got;
+  double query_ms = 0.0;
+  {
+    App app;
+    const XrRoomAnalyzerEXTX a = app.analyzer();
+    EXPECT_EQ(app.compute(a, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX) << source << " on " << headset.name;
+    got = read_result(app.extx, a);
+  }
+  if (got.json.empty()) return 0;
+  const nlohmann::json layer = nlohmann::json::parse(got.json);
+  const nlohmann::json& openxr = layer.at("openxr");
+  EXPECT_EQ(openxr.at("mesh_source"), headset.mesh_source) << source << " on " << headset.name;
+  EXPECT_GE(openxr.at("runtime_meshes").get<int>(), 1);
+  query_ms = openxr.at("mesh_query_ms").get<double>();
+  const nlohmann::json cli = run_cli(source);
+  JsonDiff d;
+  for (const char* member : kRoomMembers) {
+    nlohmann::json g = layer.at(member), w = cli.at(member);
+    if (std::string(member) == "grid") g.erase("backend"), w.erase("backend");
+    diff_json(g, w, member, d);
+  }
+  for (const std::string& m : d.mismatches) ADD_FAILURE() << source << " on " << headset.name << ": " << m;
+  EXPECT_LE(d.max_number_difference, 1e-4) << source << " on " << headset.name;
+  std::printf("[ figures  ] %s on %s (chunks %s): %zu areas, %zu bounds triangles, largest difference to the CLI "
+              "%.2g m, capture through %s %.1f ms\n",
+              source.c_str(), headset.name, chunk ? chunk->c_str() : "2 m", got.areas.size(), got.indices.size() / 3,
+              d.max_number_difference, headset.mesh_source, query_ms);
+  return got.areas.size();
 }
 
 }  // namespace layertest

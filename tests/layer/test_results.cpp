@@ -13,6 +13,7 @@
 #include "rooms.h"
 #include "roomsense/analysis.h"
 #include "roomsense/export.h"
+#include "roomsense/quest_capture.h"
 #include "roomsense/scanio.h"
 #include "roomsense/synthetic.h"
 
@@ -84,7 +85,9 @@ class LayerRealRoom : public testing::TestWithParam<const char*> {};
 
 TEST_P(LayerRealRoom, SubmittedScanMatchesAnalyzeAndTheCliExactly) {
   ROOMSENSE_REQUIRE_ROOM(path, GetParam());
-  const roomsense::Scan scan = roomsense::scanio::load_mesh_file(path.string());
+  const roomsense::Scan scan = roomsense::scanio::is_quest_capture_path(path.string())
+                                   ? roomsense::scanio::load_quest_capture(path.string()).mesh
+                                   : roomsense::scanio::load_mesh_file(path.string());
   const Result got = analyse_submitted(scan);
   const roomsense::AnalysisResult want = roomsense::analyze(scan);
   ASSERT_TRUE(want.ok());
@@ -93,30 +96,11 @@ TEST_P(LayerRealRoom, SubmittedScanMatchesAnalyzeAndTheCliExactly) {
 }
 
 // The room through the simulated runtime and the layer's own scene query, against the CLI on the same file.
+// Every scene extension the runtime serves: the layer takes the best (test_sources_rooms.cpp: one at a time).
+const Headset kEverything{"every extension", std::nullopt, "XR_META_spatial_entity_mesh"};
+
 void expect_runtime_matches_cli(const std::string& source, const std::optional<std::string>& chunk) {
-  ScopedEnv scene("ROOMSENSE_SIM_SCENE", source);
-  ScopedEnv chunk_size("ROOMSENSE_SIM_CHUNK_SIZE", chunk);
-  Result got;
-  {
-    App app;
-    const XrRoomAnalyzerEXTX a = app.analyzer();
-    ASSERT_EQ(app.compute(a, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
-    got = read_result(app.extx, a);
-  }
-  const nlohmann::json layer = nlohmann::json::parse(got.json);
-  const nlohmann::json cli = run_cli(source);
-  EXPECT_GE(layer.at("openxr").at("runtime_meshes").get<int>(), 1);
-  JsonDiff d;
-  for (const char* member : kRoomMembers) {
-    nlohmann::json g = layer.at(member), w = cli.at(member);
-    if (std::string(member) == "grid") g.erase("backend"), w.erase("backend");
-    diff_json(g, w, member, d);
-  }
-  for (const std::string& m : d.mismatches) ADD_FAILURE() << source << ": " << m;
-  EXPECT_LE(d.max_number_difference, 1e-4) << source;
-  std::printf("[ figures  ] %s (chunks %s): %zu areas, %zu bounds triangles, largest difference to the CLI %.2g m\n",
-              source.c_str(), chunk ? chunk->c_str() : "2 m", got.areas.size(), got.indices.size() / 3,
-              d.max_number_difference);
+  layertest::expect_runtime_matches_cli(source, chunk, kEverything);
 }
 
 TEST(LayerResults, RuntimeMeshesOfTheDefaultRoomMatchTheCliAsOneComponent) {
@@ -137,12 +121,6 @@ TEST_P(LayerRealRoom, RuntimeMeshesMatchTheCliInChunks) {
   expect_runtime_matches_cli(path.string(), std::nullopt);
 }
 
-INSTANTIATE_TEST_SUITE_P(Rooms, LayerRealRoom,
-                         testing::Values("quest-iwer/living_room_global_mesh.obj", "quest-iwer/meeting_room_global_mesh.obj",
-                                         "quest-iwer/music_room_global_mesh.obj", "quest-iwer/office_large_global_mesh.obj",
-                                         "quest-iwer/office_small_global_mesh.obj",
-                                         "hololens1/holotoolkit_fake_spatial_mapping.obj",
-                                         "hololens1/mrtk_example_spatial_mesh.obj", "hololens2-su/SU_Kitchen_world_mesh.obj",
-                                         "hololens2-su/SU_Apartment_world_mesh.obj"));
+INSTANTIATE_TEST_SUITE_P(Rooms, LayerRealRoom, testing::ValuesIn(kRealRooms));
 
 }  // namespace

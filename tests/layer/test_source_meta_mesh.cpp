@@ -1,7 +1,6 @@
-// The XR_META_spatial_entity_mesh source: the simulated runtime plays a Quest (ROOMSENSE_SIM_EXTENSIONS names only
-// the Quest's scene extensions), and the layer's room, read from the one global-mesh space (served in its own
-// frame, located with xrLocateSpace), matches `roomsense analyze` of the same file within 1e-4 m, as the
-// MSFT source's does (see test_results.cpp for why not bit for bit).
+// The XR_META_spatial_entity_mesh source on a simulated Quest (ROOMSENSE_SIM_EXTENSIONS names only the Quest's
+// scene extensions): what it hides from and leaves to the application. Its rooms against the CLI's are in
+// test_sources_rooms.cpp.
 #include "compare.h"
 #include "rooms.h"
 #include "roomsense/xr/ext/XR_FB_scene.h"
@@ -18,48 +17,6 @@ using namespace layertest;
 
 const std::string kQuest = "XR_FB_spatial_entity,XR_FB_spatial_entity_query,XR_FB_scene,XR_FB_spatial_entity_container,"
                            "XR_META_spatial_entity_mesh";
-
-void expect_quest_room_matches_cli(const std::string& source) {
-  ScopedEnv only("ROOMSENSE_SIM_EXTENSIONS", kQuest);
-  ScopedEnv scene("ROOMSENSE_SIM_SCENE", source);
-  Result got;
-  {
-    App app;
-    const XrRoomAnalyzerEXTX a = app.analyzer();
-    ASSERT_EQ(app.compute(a, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX) << source;
-    got = read_result(app.extx, a);
-  }
-  const nlohmann::json layer = nlohmann::json::parse(got.json);
-  const nlohmann::json& openxr = layer.at("openxr");
-  EXPECT_EQ(openxr.at("mesh_source"), XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME) << source;
-  EXPECT_EQ(openxr.at("runtime_meshes").get<int>(), 1) << source << ": a Quest has one global mesh";
-  const nlohmann::json cli = run_cli(source);
-  JsonDiff d;
-  for (const char* member : kRoomMembers) {
-    nlohmann::json g = layer.at(member), w = cli.at(member);
-    if (std::string(member) == "grid") g.erase("backend"), w.erase("backend");
-    diff_json(g, w, member, d);
-  }
-  for (const std::string& m : d.mismatches) ADD_FAILURE() << source << ": " << m;
-  EXPECT_LE(d.max_number_difference, 1e-4) << source;
-  std::printf("[ figures  ] %s (Quest global mesh): %zu areas, largest difference to the CLI %.2g m\n", source.c_str(),
-              got.areas.size(), d.max_number_difference);
-}
-
-TEST(LayerSourceMetaMesh, TheDefaultRoomMatchesTheCli) { expect_quest_room_matches_cli("synthetic:default"); }
-
-class LayerSourceMetaMeshRoom : public testing::TestWithParam<const char*> {};
-
-TEST_P(LayerSourceMetaMeshRoom, MatchesTheCli) {
-  ROOMSENSE_REQUIRE_ROOM(path, GetParam());
-  expect_quest_room_matches_cli(path.string());
-}
-
-INSTANTIATE_TEST_SUITE_P(Rooms, LayerSourceMetaMeshRoom,
-                         testing::Values("quest-iwer/living_room.json", "quest-iwer/meeting_room.json",
-                                         "quest-iwer/music_room.json", "quest-iwer/office_large.json",
-                                         "quest-iwer/office_small.json", "hololens1/mrtk_example_spatial_mesh.obj",
-                                         "hololens2-su/SU_Kitchen_world_mesh.obj"));
 
 // The layer enabled the Quest extensions below itself: an application that did not must not see their functions.
 TEST(LayerSourceMetaMesh, LayerEnabledQuestFunctionsStayHidden) {

@@ -1,6 +1,6 @@
 // The mesh-source seam: which runtime extension the layer's meshes came through, and why, as an app and
 // analysis.json see it; ROOMSENSE_SIM_EXTENSIONS playing one headset at a time.
-#include "layer_harness.h"
+#include "compare.h"
 
 #include <nlohmann/json.hpp>
 
@@ -65,6 +65,41 @@ TEST(LayerEvents, EventsOfExtensionsOnlyTheLayerEnabledStayWithTheLayer) {
     EXPECT_LT(event.type, 1000000000) << "an extension's event reached the application: type " << event.type;
     event = {XR_TYPE_EVENT_DATA_BUFFER, nullptr};
   }
+}
+
+}  // namespace
+
+namespace {
+
+// The same surfaces through two extensions count once: an app that reads the room through
+// XR_MSFT_scene_understanding on a runtime that also has Quest's global mesh gets a room from the global mesh
+// alone, equal to the CLI's, not the room twice over.
+TEST(LayerSources, TheSameRoomReadThroughTwoExtensionsCountsOnce) {
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  App app({XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME, XR_MND_HEADLESS_EXTENSION_NAME, XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME});
+  EXPECT_GT(read_scene_meshes(app), 1u);  // captured by the layer as the app reads them
+  const XrRoomAnalyzerEXTX a = app.analyzer();
+  ASSERT_EQ(app.compute(a, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  const Result got = read_result(app.extx, a);
+  const nlohmann::json layer = nlohmann::json::parse(got.json);
+  EXPECT_EQ(layer.at("openxr").at("mesh_source"), "XR_META_spatial_entity_mesh");
+  EXPECT_EQ(layer.at("openxr").at("app_read_meshes"), 0);
+  const nlohmann::json cli = run_cli("synthetic:default");
+  EXPECT_EQ(layer.at("input").at("triangles"), cli.at("input").at("triangles"));
+  EXPECT_EQ(layer.at("areas").size(), cli.at("areas").size());
+}
+
+// The app's reads through the very extension the layer queried add nothing twice (the same chunk ids).
+TEST(LayerSources, ReadsOfTheQueriedSourceAddNothingTwice) {
+  ScopedEnv only("ROOMSENSE_SIM_EXTENSIONS", std::string(XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME));
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  App app({XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME, XR_MND_HEADLESS_EXTENSION_NAME, XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME});
+  EXPECT_GT(read_scene_meshes(app), 1u);
+  const XrRoomAnalyzerEXTX a = app.analyzer();
+  ASSERT_EQ(app.compute(a, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  const nlohmann::json layer = nlohmann::json::parse(read_result(app.extx, a).json);
+  EXPECT_EQ(layer.at("openxr").at("app_read_meshes"), 0);
+  EXPECT_EQ(layer.at("input").at("triangles"), run_cli("synthetic:default").at("input").at("triangles"));
 }
 
 }  // namespace

@@ -9,8 +9,8 @@
 #include "state.h"
 
 #include <algorithm>
-#include <optional>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <unordered_map>
@@ -162,7 +162,8 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
       if (const char* name = info->enabledExtensionNames[i];
           name == nullptr || std::strcmp(name, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME) != 0)
         extensions.push_back(name);  // a null name is the layers' and runtime's to reject below
-    const std::optional<std::vector<std::string>> offered = runtime_extensions(next_gipa);
+    // Only an instance the layer captures for asks the runtime: a pass-through one costs nothing.
+    const std::optional<std::vector<std::string>> offered = capture ? runtime_extensions(next_gipa) : std::nullopt;
     std::vector<const SourceInfo*> candidates;
     if (capture)
       for (const SourceInfo* source : mesh_sources())

@@ -1,5 +1,7 @@
 // The mesh sources the layer knows, best first. A new runtime extension is one file pair in this folder and
 // one line here.
+#include "android_scene_meshing.h"
+#include "ext_spatial_plane_tracking.h"
 #include "meta_spatial_entity_mesh.h"
 #include "msft_scene_understanding.h"
 
@@ -9,6 +11,8 @@ const std::vector<const SourceInfo*>& mesh_sources() {
   static const std::vector<const SourceInfo*> list = {
       &meta_spatial_entity_mesh_source(),
       &msft_scene_understanding_source(),
+      &android_scene_meshing_source(),
+      &ext_spatial_plane_tracking_source(),
   };
   return list;
 }

@@ -3,7 +3,9 @@
 #include "served_extension.h"
 
 #include "../functions.h"
+#include "android_scene_meshing.h"
 #include "ext_future.h"
+#include "ext_spatial_plane_tracking.h"
 #include "meta_spatial_entity_mesh.h"
 #include "msft_scene_understanding.h"
 
@@ -38,11 +40,14 @@ const std::vector<const ServedExtension*>& served_extensions() {
       &timespec_extension(),
       &ext_future_extension(),
       &msft_scene_understanding_extension(),
+      &android_scene_meshing_extension(),
       &fb_spatial_entity_extension(),
       &fb_spatial_entity_query_extension(),
       &fb_scene_extension(),
       &fb_spatial_entity_container_extension(),
       &meta_spatial_entity_mesh_extension(),
+      &ext_spatial_entity_extension(),
+      &ext_spatial_plane_tracking_extension(),
   };
   return list;
 }

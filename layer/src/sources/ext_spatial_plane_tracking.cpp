@@ -1,0 +1,351 @@
+// The active query, step by step:
+// 1. The plane tracking capability and the components the runtime offers for it (BOUNDED_2D, POLYGON_2D,
+//    MESH_2D, PLANE_SEMANTIC_LABEL of them).
+// 2. A spatial context with those components, then a discovery snapshot in the base space at the query's time:
+//    each through a future, polled (xrPollFutureEXT) for 10 s at most and cancelled when the query is stopped.
+// 3. The snapshot's component data (two-call idiom), each plane's mesh, polygon or rectangle read and moved
+//    into the base space. The snapshot and the context are destroyed on every path.
+// No passive capture: the application's own spatial queries are not watched.
+#include "ext_spatial_plane_tracking.h"
+
+#include "../guard.h"
+#include "../log.h"
+#include "roomsense/xr/ext/XR_EXT_future.h"
+#include "roomsense/xr/ext/XR_EXT_spatial_entity.h"
+#include "roomsense/xr/ext/XR_EXT_spatial_plane_tracking.h"
+
+#include <glm/vec2.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
+namespace roomsense::layer {
+namespace {
+
+using xr::check;
+
+#define EXT_FUTURE_FUNCTIONS(_) _(xrPollFutureEXT) _(xrCancelFutureEXT)
+#define EXT_SPATIAL_FUNCTIONS(_)                                                                               \
+  _(xrEnumerateSpatialCapabilitiesEXT) _(xrEnumerateSpatialCapabilityComponentTypesEXT)                        \
+  _(xrEnumerateSpatialCapabilityFeaturesEXT) _(xrCreateSpatialContextAsyncEXT) _(xrCreateSpatialContextCompleteEXT) \
+  _(xrDestroySpatialContextEXT) _(xrCreateSpatialDiscoverySnapshotAsyncEXT)                                    \
+  _(xrCreateSpatialDiscoverySnapshotCompleteEXT) _(xrQuerySpatialComponentDataEXT) _(xrDestroySpatialSnapshotEXT) \
+  _(xrCreateSpatialEntityFromIdEXT) _(xrDestroySpatialEntityEXT) _(xrCreateSpatialUpdateSnapshotEXT)           \
+  _(xrGetSpatialBufferStringEXT) _(xrGetSpatialBufferUint8EXT) _(xrGetSpatialBufferUint16EXT)                  \
+  _(xrGetSpatialBufferUint32EXT) _(xrGetSpatialBufferFloatEXT) _(xrGetSpatialBufferVector2fEXT)                \
+  _(xrGetSpatialBufferVector3fEXT)
+
+constexpr auto kPollInterval = std::chrono::milliseconds(2);
+constexpr auto kTimeout = std::chrono::seconds(10);  // for each future
+constexpr std::size_t kMaxEntities = 1u << 16;
+constexpr std::size_t kMaxBufferElements = 1u << 24;  // per buffer: far beyond any plane
+
+const XrSpatialComponentTypeEXT kWanted[] = {
+    XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT, XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT,
+    XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT, XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT};
+
+SurfaceLabel surface_label(XrSpatialPlaneSemanticLabelEXT label) {
+  switch (label) {
+    case XR_SPATIAL_PLANE_SEMANTIC_LABEL_FLOOR_EXT: return SurfaceLabel::Floor;
+    case XR_SPATIAL_PLANE_SEMANTIC_LABEL_CEILING_EXT: return SurfaceLabel::Ceiling;
+    case XR_SPATIAL_PLANE_SEMANTIC_LABEL_WALL_EXT: return SurfaceLabel::Wall;
+    case XR_SPATIAL_PLANE_SEMANTIC_LABEL_TABLE_EXT: return SurfaceLabel::Table;
+    default: return SurfaceLabel::Unknown;  // UNCATEGORIZED: the runtime does not know either
+  }
+}
+
+class ExtPlaneSource final : public MeshSource {
+ public:
+#define EXT_MEMBER(name) PFN_##name name = nullptr;
+  EXT_FUTURE_FUNCTIONS(EXT_MEMBER)
+  EXT_SPATIAL_FUNCTIONS(EXT_MEMBER)
+#undef EXT_MEMBER
+
+  std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop) override;
+
+  // Waits for a future to be ready; false when stopped (the future is cancelled then, and on a timeout).
+  bool wait(XrInstance instance, XrFutureEXT future, const char* what, std::stop_token stop) const;
+};
+
+// Destroys what the query created, whatever happens.
+struct QueryHandles {
+  const ExtPlaneSource& next;
+  XrSpatialContextEXT context = XR_NULL_HANDLE;
+  XrSpatialSnapshotEXT snapshot = XR_NULL_HANDLE;
+  ~QueryHandles() {
+    if (snapshot != XR_NULL_HANDLE) next.xrDestroySpatialSnapshotEXT(snapshot);
+    if (context != XR_NULL_HANDLE) next.xrDestroySpatialContextEXT(context);
+  }
+};
+
+bool ExtPlaneSource::wait(XrInstance instance, XrFutureEXT future, const char* what, std::stop_token stop) const {
+  auto cancel = [&] {
+    auto info = xr_struct<XrFutureCancelInfoEXT>(XR_TYPE_FUTURE_CANCEL_INFO_EXT);
+    info.future = future;
+    xrCancelFutureEXT(instance, &info);
+  };
+  const auto deadline = std::chrono::steady_clock::now() + kTimeout;
+  for (;;) {
+    auto poll = xr_struct<XrFuturePollInfoEXT>(XR_TYPE_FUTURE_POLL_INFO_EXT);
+    poll.future = future;
+    auto state = xr_struct<XrFuturePollResultEXT>(XR_TYPE_FUTURE_POLL_RESULT_EXT);
+    check(xrPollFutureEXT(instance, &poll, &state), "xrPollFutureEXT");
+    if (state.state == XR_FUTURE_STATE_READY_EXT) return true;
+    if (stop.stop_requested()) {
+      cancel();
+      return false;
+    }
+    if (std::chrono::steady_clock::now() > deadline) {
+      cancel();
+      throw std::runtime_error(std::string(what) + ": the runtime's future was not ready within 10 s");
+    }
+    std::this_thread::sleep_for(kPollInterval);
+  }
+}
+
+// Ear clipping of a simple outline (either winding); a fan when it is not simple enough to clip.
+std::vector<std::uint32_t> triangulate(const std::vector<XrVector2f>& outline) {
+  const std::size_t n = outline.size();
+  std::vector<std::uint32_t> out;
+  if (n < 3) return out;
+  double area2 = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const XrVector2f& a = outline[i];
+    const XrVector2f& b = outline[(i + 1) % n];
+    area2 += double(a.x) * b.y - double(b.x) * a.y;
+  }
+  std::vector<std::uint32_t> ring(n);
+  for (std::size_t i = 0; i < n; ++i) ring[i] = static_cast<std::uint32_t>(area2 >= 0 ? i : n - 1 - i);  // counter-clockwise
+  auto cross = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    const XrVector2f &p = outline[a], &q = outline[b], &r = outline[c];
+    return (double(q.x) - p.x) * (double(r.y) - p.y) - (double(q.y) - p.y) * (double(r.x) - p.x);
+  };
+  std::size_t guard = 0;
+  while (ring.size() > 3 && guard++ < n * n) {
+    bool clipped = false;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const std::uint32_t a = ring[(i + ring.size() - 1) % ring.size()], b = ring[i], c = ring[(i + 1) % ring.size()];
+      if (cross(a, b, c) <= 0) continue;  // reflex or flat
+      bool inside = false;
+      for (std::uint32_t p : ring)
+        if (p != a && p != b && p != c && cross(a, b, p) >= 0 && cross(b, c, p) >= 0 && cross(c, a, p) >= 0) {
+          inside = true;
+          break;
+        }
+      if (inside) continue;
+      out.insert(out.end(), {a, b, c});
+      ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i));
+      clipped = true;
+      break;
+    }
+    if (!clipped) break;
+  }
+  if (ring.size() == 3) {
+    out.insert(out.end(), {ring[0], ring[1], ring[2]});
+  } else {  // not simple: a fan over what is left
+    for (std::size_t i = 1; i + 1 < ring.size(); ++i) out.insert(out.end(), {ring[0], ring[i], ring[i + 1]});
+  }
+  return out;
+}
+
+// 2D points of a plane's frame, moved into the base space by the frame's pose.
+MeshPiece place(const XrPosef& origin, const std::vector<XrVector2f>& points, std::vector<std::uint32_t> indices) {
+  std::vector<XrVector3f> flat;
+  flat.reserve(points.size());
+  for (const XrVector2f& p : points) flat.push_back({p.x, p.y, 0.0f});
+  MeshPiece piece;
+  piece.vertices = transformed(flat.data(), flat.size(), to_rigid(origin));
+  indices.resize(indices.size() / 3 * 3);
+  if (std::any_of(indices.begin(), indices.end(), [&](std::uint32_t v) { return v >= points.size(); }))
+    throw std::runtime_error("the runtime served a plane mesh with an index out of range");
+  piece.indices = std::move(indices);
+  return piece;
+}
+
+std::vector<SourceChunk> ExtPlaneSource::query(const QueryContext& context, std::stop_token stop) {
+  // 1. The capability and its components.
+  const auto capabilities = xr::read_two_call<XrSpatialCapabilityEXT>(
+      "xrEnumerateSpatialCapabilitiesEXT",
+      [&](std::uint32_t capacity, std::uint32_t* count, XrSpatialCapabilityEXT* out) {
+        return xrEnumerateSpatialCapabilitiesEXT(context.instance, context.system, capacity, count, out);
+      },
+      256);
+  if (std::find(capabilities.begin(), capabilities.end(), XR_SPATIAL_CAPABILITY_PLANE_TRACKING_EXT) == capabilities.end())
+    throw std::runtime_error("the runtime offers no plane tracking capability");
+  auto types = xr_struct<XrSpatialCapabilityComponentTypesEXT>(XR_TYPE_SPATIAL_CAPABILITY_COMPONENT_TYPES_EXT);
+  const auto offered = xr::read_two_call<XrSpatialComponentTypeEXT>(
+      "xrEnumerateSpatialCapabilityComponentTypesEXT",
+      [&](std::uint32_t capacity, std::uint32_t* count, XrSpatialComponentTypeEXT* out) {
+        types.componentTypeCapacityInput = capacity;
+        types.componentTypes = out;
+        const XrResult r = xrEnumerateSpatialCapabilityComponentTypesEXT(context.instance, context.system,
+                                                                          XR_SPATIAL_CAPABILITY_PLANE_TRACKING_EXT, &types);
+        *count = types.componentTypeCountOutput;
+        return r;
+      },
+      256);
+  std::vector<XrSpatialComponentTypeEXT> enabled;
+  for (XrSpatialComponentTypeEXT c : kWanted)
+    if (std::find(offered.begin(), offered.end(), c) != offered.end()) enabled.push_back(c);
+  auto has = [&](XrSpatialComponentTypeEXT c) { return std::find(enabled.begin(), enabled.end(), c) != enabled.end(); };
+  if (!has(XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT) && !has(XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT) &&
+      !has(XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT))
+    throw std::runtime_error("the runtime's plane tracking offers no plane geometry");
+
+  // 2. Context, then discovery snapshot, each through a future.
+  QueryHandles handles{*this};
+  auto config = xr_struct<XrSpatialCapabilityConfigurationPlaneTrackingEXT>(XR_TYPE_SPATIAL_CAPABILITY_CONFIGURATION_PLANE_TRACKING_EXT);
+  config.capability = XR_SPATIAL_CAPABILITY_PLANE_TRACKING_EXT;
+  config.enabledComponentCount = static_cast<uint32_t>(enabled.size());
+  config.enabledComponents = enabled.data();
+  const auto* config_header = reinterpret_cast<const XrSpatialCapabilityConfigurationBaseHeaderEXT*>(&config);
+  auto create = xr_struct<XrSpatialContextCreateInfoEXT>(XR_TYPE_SPATIAL_CONTEXT_CREATE_INFO_EXT);
+  create.capabilityConfigCount = 1;
+  create.capabilityConfigs = &config_header;
+  XrFutureEXT future = XR_NULL_FUTURE_EXT;
+  check(xrCreateSpatialContextAsyncEXT(context.session, &create, &future), "xrCreateSpatialContextAsyncEXT");
+  if (!wait(context.instance, future, "xrCreateSpatialContextAsyncEXT", stop)) return {};
+  auto created = xr_struct<XrCreateSpatialContextCompletionEXT>(XR_TYPE_CREATE_SPATIAL_CONTEXT_COMPLETION_EXT);
+  check(xrCreateSpatialContextCompleteEXT(context.session, future, &created), "xrCreateSpatialContextCompleteEXT");
+  check(created.futureResult, "xrCreateSpatialContextCompleteEXT (future result)");
+  handles.context = created.spatialContext;
+
+  auto discover = xr_struct<XrSpatialDiscoverySnapshotCreateInfoEXT>(XR_TYPE_SPATIAL_DISCOVERY_SNAPSHOT_CREATE_INFO_EXT);
+  discover.componentTypeCount = static_cast<uint32_t>(enabled.size());
+  discover.componentTypes = enabled.data();
+  check(xrCreateSpatialDiscoverySnapshotAsyncEXT(handles.context, &discover, &future), "xrCreateSpatialDiscoverySnapshotAsyncEXT");
+  if (!wait(context.instance, future, "xrCreateSpatialDiscoverySnapshotAsyncEXT", stop)) return {};
+  auto completion_info = xr_struct<XrCreateSpatialDiscoverySnapshotCompletionInfoEXT>(XR_TYPE_CREATE_SPATIAL_DISCOVERY_SNAPSHOT_COMPLETION_INFO_EXT);
+  completion_info.baseSpace = context.base;
+  completion_info.time = context.time;
+  completion_info.future = future;
+  auto snapshot = xr_struct<XrCreateSpatialDiscoverySnapshotCompletionEXT>(XR_TYPE_CREATE_SPATIAL_DISCOVERY_SNAPSHOT_COMPLETION_EXT);
+  check(xrCreateSpatialDiscoverySnapshotCompleteEXT(handles.context, &completion_info, &snapshot),
+        "xrCreateSpatialDiscoverySnapshotCompleteEXT");
+  check(snapshot.futureResult, "xrCreateSpatialDiscoverySnapshotCompleteEXT (future result)");
+  handles.snapshot = snapshot.snapshot;
+  if (stop.stop_requested()) return {};
+
+  // 3. The component data: counts first, then every list at once.
+  auto condition = xr_struct<XrSpatialComponentDataQueryConditionEXT>(XR_TYPE_SPATIAL_COMPONENT_DATA_QUERY_CONDITION_EXT);
+  condition.componentTypeCount = static_cast<uint32_t>(enabled.size());
+  condition.componentTypes = enabled.data();
+  auto result = xr_struct<XrSpatialComponentDataQueryResultEXT>(XR_TYPE_SPATIAL_COMPONENT_DATA_QUERY_RESULT_EXT);
+  check(xrQuerySpatialComponentDataEXT(handles.snapshot, &condition, &result), "xrQuerySpatialComponentDataEXT");
+  const std::size_t n = result.entityIdCountOutput;
+  if (n > kMaxEntities) throw std::runtime_error("the runtime reported an absurd number of planes");
+  if (n == 0) return {};
+  std::vector<XrSpatialEntityIdEXT> ids(n);
+  std::vector<XrSpatialEntityTrackingStateEXT> states(n);
+  std::vector<XrSpatialBounded2DDataEXT> bounds(n);
+  std::vector<XrSpatialPolygon2DDataEXT> polygons(n);
+  std::vector<XrSpatialMeshDataEXT> meshes(n);
+  std::vector<XrSpatialPlaneSemanticLabelEXT> labels(n, XR_SPATIAL_PLANE_SEMANTIC_LABEL_UNCATEGORIZED_EXT);
+  auto bound_list = xr_struct<XrSpatialComponentBounded2DListEXT>(XR_TYPE_SPATIAL_COMPONENT_BOUNDED_2D_LIST_EXT);
+  auto polygon_list = xr_struct<XrSpatialComponentPolygon2DListEXT>(XR_TYPE_SPATIAL_COMPONENT_POLYGON_2D_LIST_EXT);
+  auto mesh_list = xr_struct<XrSpatialComponentMesh2DListEXT>(XR_TYPE_SPATIAL_COMPONENT_MESH_2D_LIST_EXT);
+  auto label_list = xr_struct<XrSpatialComponentPlaneSemanticLabelListEXT>(XR_TYPE_SPATIAL_COMPONENT_PLANE_SEMANTIC_LABEL_LIST_EXT);
+  const auto count = static_cast<uint32_t>(n);
+  void* chain = nullptr;
+  if (has(XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT)) bound_list = {bound_list.type, chain, count, bounds.data()}, chain = &bound_list;
+  if (has(XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT)) polygon_list = {polygon_list.type, chain, count, polygons.data()}, chain = &polygon_list;
+  if (has(XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT)) mesh_list = {mesh_list.type, chain, count, meshes.data()}, chain = &mesh_list;
+  if (has(XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT)) label_list = {label_list.type, chain, count, labels.data()}, chain = &label_list;
+  result.next = chain;
+  result.entityIdCapacityInput = count;
+  result.entityIds = ids.data();
+  result.entityStateCapacityInput = count;
+  result.entityStates = states.data();
+  check(xrQuerySpatialComponentDataEXT(handles.snapshot, &condition, &result), "xrQuerySpatialComponentDataEXT");
+  const std::size_t got = std::min<std::size_t>(n, result.entityIdCountOutput);
+
+  auto buffer_get = [&](XrSpatialBufferIdEXT id) {
+    auto info = xr_struct<XrSpatialBufferGetInfoEXT>(XR_TYPE_SPATIAL_BUFFER_GET_INFO_EXT);
+    info.bufferId = id;
+    return info;
+  };
+  auto read_points = [&](const XrSpatialBufferEXT& buffer) {
+    if (buffer.bufferType != XR_SPATIAL_BUFFER_TYPE_VECTOR2F_EXT)
+      throw std::runtime_error("the runtime served plane vertices of buffer type " + std::to_string(buffer.bufferType));
+    const auto info = buffer_get(buffer.bufferId);
+    return xr::read_two_call<XrVector2f>(
+        "xrGetSpatialBufferVector2fEXT",
+        [&](std::uint32_t capacity, std::uint32_t* c, XrVector2f* out) {
+          return xrGetSpatialBufferVector2fEXT(handles.snapshot, &info, capacity, c, out);
+        },
+        kMaxBufferElements);
+  };
+  auto read_indices = [&](const XrSpatialBufferEXT& buffer) -> std::vector<std::uint32_t> {
+    const auto info = buffer_get(buffer.bufferId);
+    if (buffer.bufferType == XR_SPATIAL_BUFFER_TYPE_UINT32_EXT)
+      return xr::read_two_call<std::uint32_t>(
+          "xrGetSpatialBufferUint32EXT",
+          [&](std::uint32_t capacity, std::uint32_t* c, std::uint32_t* out) {
+            return xrGetSpatialBufferUint32EXT(handles.snapshot, &info, capacity, c, out);
+          },
+          kMaxBufferElements);
+    if (buffer.bufferType == XR_SPATIAL_BUFFER_TYPE_UINT16_EXT) {
+      const auto small = xr::read_two_call<std::uint16_t>(
+          "xrGetSpatialBufferUint16EXT",
+          [&](std::uint32_t capacity, std::uint32_t* c, std::uint16_t* out) {
+            return xrGetSpatialBufferUint16EXT(handles.snapshot, &info, capacity, c, out);
+          },
+          kMaxBufferElements);
+      return {small.begin(), small.end()};
+    }
+    throw std::runtime_error("the runtime served plane indices of buffer type " + std::to_string(buffer.bufferType));
+  };
+
+  std::vector<SourceChunk> out;
+  out.reserve(got);
+  for (std::size_t i = 0; i < got; ++i) {
+    if (stop.stop_requested()) return {};
+    if (states[i] != XR_SPATIAL_ENTITY_TRACKING_STATE_TRACKING_EXT) continue;
+    SourceChunk chunk;
+    chunk.id = "ext:" + std::to_string(static_cast<std::uint64_t>(ids[i]));
+    if (has(XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT) && meshes[i].vertexBuffer.bufferId != XR_NULL_SPATIAL_BUFFER_ID_EXT) {
+      chunk.mesh = place(meshes[i].origin, read_points(meshes[i].vertexBuffer), read_indices(meshes[i].indexBuffer));
+    } else if (has(XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT) && polygons[i].vertexBuffer.bufferId != XR_NULL_SPATIAL_BUFFER_ID_EXT) {
+      const std::vector<XrVector2f> outline = read_points(polygons[i].vertexBuffer);
+      chunk.mesh = place(polygons[i].origin, outline, triangulate(outline));
+    } else if (has(XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT)) {
+      const float w = bounds[i].extents.width * 0.5f, h = bounds[i].extents.height * 0.5f;
+      chunk.mesh = place(bounds[i].center, {{-w, -h}, {w, -h}, {w, h}, {-w, h}}, {0, 1, 2, 0, 2, 3});
+    }
+    if (chunk.mesh.indices.empty()) continue;
+    const SurfaceLabel label = surface_label(labels[i]);
+    chunk.labels.assign(chunk.mesh.indices.size() / 3, label);
+    chunk.change = content_hash(chunk.mesh) ^ (static_cast<std::uint64_t>(label) * 0x9E3779B97F4A7C15ull);
+    out.push_back(std::move(chunk));
+  }
+  return out;
+}
+
+std::unique_ptr<MeshSource> create(PFN_xrGetInstanceProcAddr next, XrInstance instance) {
+  auto source = std::make_unique<ExtPlaneSource>();
+#define EXT_LOAD(name) load_next(next, instance, #name, source->name);
+  EXT_FUTURE_FUNCTIONS(EXT_LOAD)
+  EXT_SPATIAL_FUNCTIONS(EXT_LOAD)
+#undef EXT_LOAD
+  return source;
+}
+
+}  // namespace
+
+const SourceInfo& ext_spatial_plane_tracking_source() {
+#define EXT_NAME(name) #name,
+  static const SourceInfo source{
+      XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME,
+      "planes of a discovery snapshot (2D meshes, polygons or bounds) with their labels",
+      {{XR_EXT_FUTURE_EXTENSION_NAME, {EXT_FUTURE_FUNCTIONS(EXT_NAME)}},
+       {XR_EXT_SPATIAL_ENTITY_EXTENSION_NAME, {EXT_SPATIAL_FUNCTIONS(EXT_NAME)}, {XR_TYPE_EVENT_DATA_SPATIAL_DISCOVERY_RECOMMENDED_EXT}},
+       {XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME, {}}},
+      {},  // no passive capture
+      &create,
+  };
+#undef EXT_NAME
+  return source;
+}
+
+}  // namespace roomsense::layer

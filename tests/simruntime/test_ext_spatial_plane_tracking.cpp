@@ -3,6 +3,7 @@
 // generator's heights), buffers, entities from ids, validation, a Quest capture's labelled planes, and a runtime
 // that plays an OpenXR 1.1 device (ROOMSENSE_SIM_EXTENSIONS).
 #include "rooms.h"
+#include "roomsense/synthetic.h"
 #include "sim_env.h"
 #include "xr_harness.h"
 
@@ -24,9 +25,9 @@ namespace {
 using simtest::proc;
 using simtest::ScopedEnv;
 
-// synth::default_room()'s ground truth (synthetic/room_generator.cpp); this target does not link the generator.
-constexpr float kFloorY = 0.0f;
-constexpr float kCeilingY = 2.6f;
+// The default room's ground truth.
+const float kFloorY = roomsense::synth::default_room().floor_y;
+const float kCeilingY = roomsense::synth::default_room().ceiling_y;
 
 const std::vector<XrSpatialComponentTypeEXT> kAll = {
     XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT, XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT,

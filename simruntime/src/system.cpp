@@ -2,6 +2,7 @@
 #include "functions.h"
 #include "runtime.h"
 #include "validate.h"
+#include "roomsense/xr/ext/XR_ANDROID_scene_meshing.h"
 
 #include <cstring>
 
@@ -48,6 +49,8 @@ XrResult XRAPI_CALL xrGetSystemProperties(XrInstance instance, XrSystemId system
     properties->systemName[XR_MAX_SYSTEM_NAME_SIZE - 1] = '\0';
     properties->graphicsProperties = {0, 0, 0};  // headless: no swapchains
     properties->trackingProperties = {XR_TRUE, XR_TRUE};
+    if (auto* meshing = find_next<XrSystemSceneMeshingPropertiesANDROID>(properties->next, XR_TYPE_SYSTEM_SCENE_MESHING_PROPERTIES_ANDROID))
+      meshing->supportsSceneMeshing = runtime().instance(instance)->has(XR_ANDROID_SCENE_MESHING_EXTENSION_NAME) ? XR_TRUE : XR_FALSE;
     return XR_SUCCESS;
   });
 }

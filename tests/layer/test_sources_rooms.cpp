@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <tuple>
 
 namespace {
@@ -15,6 +16,8 @@ using namespace layertest;
 const Headset kHeadsets[] = {
     {"HoloLens 2", std::string("XR_MSFT_scene_understanding"), "XR_MSFT_scene_understanding"},
     {"Quest 3", std::string("XR_META_spatial_entity_mesh"), "XR_META_spatial_entity_mesh"},
+    {"Android XR", std::string("XR_ANDROID_scene_meshing"), "XR_ANDROID_scene_meshing"},
+    {"Magic Leap 2", std::string("XR_ML_world_mesh_detection"), "XR_ML_world_mesh_detection"},
 };
 
 class LayerSourceRoom : public testing::TestWithParam<std::tuple<Headset, const char*>> {};
@@ -26,7 +29,10 @@ TEST_P(LayerSourceRoom, MatchesTheCli) {
 }
 
 TEST(LayerSourceDefaultRoom, EveryHeadsetMatchesTheCli) {
-  for (const Headset& headset : kHeadsets) expect_runtime_matches_cli("synthetic:default", std::nullopt, headset);
+  for (const Headset& headset : kHeadsets) {
+    EXPECT_GT(expect_runtime_matches_cli("synthetic:default", std::nullopt, headset), 0u) << headset.name;
+    expect_runtime_matches_cli("synthetic:default", std::string("1.0"), headset);  // many small chunks
+  }
 }
 
 std::string name_of(const testing::TestParamInfo<LayerSourceRoom::ParamType>& info) {

@@ -147,6 +147,10 @@ TEST(AndroidSceneMeshing, SubmeshesPosedInLocalAreTheRoom) {
   SIM_CHECK(a.labelSets(a.instance, a.system, count, &count, sets.data()));
   EXPECT_EQ(sets, (std::vector<XrSceneMeshSemanticLabelSetANDROID>{XR_SCENE_MESH_SEMANTIC_LABEL_SET_NONE_ANDROID,
                                                                     XR_SCENE_MESH_SEMANTIC_LABEL_SET_DEFAULT_ANDROID}));
+  XrSystemSceneMeshingPropertiesANDROID meshing{XR_TYPE_SYSTEM_SCENE_MESHING_PROPERTIES_ANDROID};
+  XrSystemProperties properties{XR_TYPE_SYSTEM_PROPERTIES, &meshing};
+  SIM_CHECK(xrGetSystemProperties(a.instance, a.system, &properties));
+  EXPECT_EQ(meshing.supportsSceneMeshing, XR_TRUE);
   const auto tracker = a.tracker(XR_SCENE_MESH_SEMANTIC_LABEL_SET_NONE_ANDROID);
   const auto snapshot = a.snapshot(tracker);
   std::vector<simtest::ComponentMesh> meshes;

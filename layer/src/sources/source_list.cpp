@@ -3,6 +3,7 @@
 #include "android_scene_meshing.h"
 #include "ext_spatial_plane_tracking.h"
 #include "meta_spatial_entity_mesh.h"
+#include "ml_world_mesh_detection.h"
 #include "msft_scene_understanding.h"
 
 namespace roomsense::layer {
@@ -12,6 +13,7 @@ const std::vector<const SourceInfo*>& mesh_sources() {
       &meta_spatial_entity_mesh_source(),
       &msft_scene_understanding_source(),
       &android_scene_meshing_source(),
+      &ml_world_mesh_detection_source(),
       &ext_spatial_plane_tracking_source(),
   };
   return list;

@@ -7,6 +7,7 @@
 #include "ext_future.h"
 #include "ext_spatial_plane_tracking.h"
 #include "meta_spatial_entity_mesh.h"
+#include "ml_world_mesh_detection.h"
 #include "msft_scene_understanding.h"
 
 #include <algorithm>
@@ -41,6 +42,7 @@ const std::vector<const ServedExtension*>& served_extensions() {
       &ext_future_extension(),
       &msft_scene_understanding_extension(),
       &android_scene_meshing_extension(),
+      &ml_world_mesh_detection_extension(),
       &fb_spatial_entity_extension(),
       &fb_spatial_entity_query_extension(),
       &fb_scene_extension(),

@@ -7,6 +7,8 @@
 // triangles in the submesh have.
 #include "android_scene_meshing.h"
 
+#include "stable_uuid.h"
+
 #include "../functions.h"
 #include "../log.h"
 #include "../runtime.h"
@@ -73,29 +75,8 @@ State& state() {
   return s;
 }
 
-std::uint64_t mix(std::uint64_t x) {  // splitmix64's finaliser
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
 
-// Stable per room file, chunk size and chunk; a version-4 layout.
-XrUuid make_uuid(const std::string& source, double chunk_size, std::uint64_t index) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (unsigned char c : source) h = (h ^ c) * 0x100000001b3ull;
-  std::uint64_t size_bits = 0;
-  std::memcpy(&size_bits, &chunk_size, sizeof size_bits);
-  const std::uint64_t a = mix(h ^ mix(size_bits) ^ (index * 0x9E37ull)), b = mix(a ^ 0x414e44524f4944ull);
-  XrUuid u{};
-  std::memcpy(u.data, &a, 8);
-  std::memcpy(u.data + 8, &b, 8);
-  u.data[6] = static_cast<std::uint8_t>((u.data[6] & 0x0f) | 0x40);
-  u.data[8] = static_cast<std::uint8_t>((u.data[8] & 0x3f) | 0x80);
-  return u;
-}
 
-bool uuid_equal(const XrUuid& a, const XrUuid& b) { return std::memcmp(a.data, b.data, sizeof a.data) == 0; }
 
 std::uint8_t label_of_name(const std::string& name) {
   auto has = [&](const char* word) { return name.find(word) != std::string::npos; };
@@ -158,7 +139,7 @@ std::shared_ptr<const MeshScene> build_mesh_scene(const Room& room, double chunk
   std::uint64_t index = 0;
   for (Chunk& chunk : split_into_chunks(room.mesh, chunk_size)) {
     Submesh s;
-    s.uuid = make_uuid(room.source, chunk_size, index++);
+    s.uuid = stable_uuid(room.source, chunked_salt(0x414e44524f4944ull /* "ANDROID" */, chunk_size), index++);
     // The pose as an XrPosef holds it; the vertices were made in the unrounded frame, so move them over.
     s.pose = to_rigid(to_pose(chunk.pose));
     const Rigid to_local = s.pose.inverse() * chunk.pose;
@@ -357,7 +338,7 @@ XrResult XRAPI_CALL xrGetSubmeshDataANDROID(XrSceneMeshSnapshotANDROID snapshot,
       const XrSceneSubmeshDataANDROID& d = data[i];
       if (d.type != XR_TYPE_SCENE_SUBMESH_DATA_ANDROID) return XR_ERROR_VALIDATION_FAILURE;
       for (std::size_t k : s.submeshes)
-        if (uuid_equal(s.scene->submeshes[k].uuid, d.submeshId)) found[i] = &s.scene->submeshes[k];
+        if (same_uuid(s.scene->submeshes[k].uuid, d.submeshId)) found[i] = &s.scene->submeshes[k];
       if (found[i] == nullptr) return XR_ERROR_VALIDATION_FAILURE;  // not a submesh of this snapshot
       for (uint32_t j = 0; j < i; ++j)
         if (found[j] == found[i]) return XR_ERROR_VALIDATION_FAILURE;  // the same id twice

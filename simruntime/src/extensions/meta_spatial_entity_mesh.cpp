@@ -5,6 +5,8 @@
 // layer) enables first, as on a device.
 #include "meta_spatial_entity_mesh.h"
 
+#include "stable_uuid.h"
+
 #include "../functions.h"
 #include "../log.h"
 #include "../runtime.h"
@@ -35,6 +37,7 @@ constexpr XrSpaceComponentTypeFB kLabels = XR_SPACE_COMPONENT_TYPE_SEMANTIC_LABE
 constexpr XrSpaceComponentTypeFB kRoomLayout = XR_SPACE_COMPONENT_TYPE_ROOM_LAYOUT_FB;
 constexpr XrSpaceComponentTypeFB kContainer = XR_SPACE_COMPONENT_TYPE_SPACE_CONTAINER_FB;
 constexpr XrSpaceComponentTypeFB kMesh = XR_SPACE_COMPONENT_TYPE_TRIANGLE_MESH_META;
+constexpr std::uint64_t kQuestSalt = 0x5155455354ull;  // "QUEST"
 constexpr std::uint32_t kMaxUuidFilter = 1024;  // the most uuids one filter may name
 
 // One anchor of the room, immutable once built.
@@ -92,27 +95,9 @@ State& state() {
 
 // ---- the model
 
-std::uint64_t mix(std::uint64_t x) {  // splitmix64's finaliser
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
 
 // Stable per room file and anchor, as a device's anchors keep their uuids; a version-4 layout.
-XrUuidEXT make_uuid(const std::string& source, std::uint64_t index) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (unsigned char c : source) h = (h ^ c) * 0x100000001b3ull;
-  const std::uint64_t a = mix(h ^ index), b = mix(a ^ 0x5155455354ull);
-  XrUuidEXT u{};
-  std::memcpy(u.data, &a, 8);
-  std::memcpy(u.data + 8, &b, 8);
-  u.data[6] = static_cast<std::uint8_t>((u.data[6] & 0x0f) | 0x40);
-  u.data[8] = static_cast<std::uint8_t>((u.data[8] & 0x3f) | 0x80);
-  return u;
-}
 
-bool uuid_equal(const XrUuidEXT& a, const XrUuidEXT& b) { return std::memcmp(a.data, b.data, sizeof a.data) == 0; }
 
 Rigid as_stored(const Rigid& pose) { return to_rigid(to_pose(pose)); }  // what the space's XrPosef will hold
 
@@ -121,12 +106,12 @@ std::shared_ptr<const QuestScene> build_quest_scene(const Room& room) {
   std::uint64_t index = 0;
 
   auto room_anchor = std::make_shared<Anchor>();
-  room_anchor->uuid = make_uuid(room.source, index++);
+  room_anchor->uuid = stable_uuid(room.source, kQuestSalt, index++);
   room_anchor->components = {kLocatable, kStorable, kRoomLayout, kContainer};
 
   // The global mesh, in a space turned by 30 degrees about +Y around the room's floor centre.
   auto mesh = std::make_shared<Anchor>();
-  mesh->uuid = make_uuid(room.source, index++);
+  mesh->uuid = stable_uuid(room.source, kQuestSalt, index++);
   mesh->labels = "GLOBAL_MESH";
   mesh->components = {kLocatable, kStorable, kLabels, kBounded3D, kMesh};
   glm::dvec3 lo(0.0), hi(0.0);
@@ -156,7 +141,7 @@ std::shared_ptr<const QuestScene> build_quest_scene(const Room& room) {
   bool have_floor = false, have_ceiling = false;
   for (const RoomObject& o : room.objects) {
     auto a = std::make_shared<Anchor>();
-    a->uuid = make_uuid(room.source, index++);
+    a->uuid = stable_uuid(room.source, kQuestSalt, index++);
     a->labels = o.label;
     a->components = {kLocatable, kStorable, kLabels, kBounded2D};
     a->pose = as_stored(to_rigid(o.plane_pose));  // +Z the normal into the room, as Meta's planes
@@ -321,7 +306,7 @@ bool matches(const Filter& f, const Anchor& a) {
   if (f.nothing) return false;
   if (f.by_component && !a.has(f.component)) return false;
   if (!f.uuids.empty() &&
-      std::none_of(f.uuids.begin(), f.uuids.end(), [&](const XrUuidEXT& u) { return uuid_equal(u, a.uuid); }))
+      std::none_of(f.uuids.begin(), f.uuids.end(), [&](const XrUuidEXT& u) { return same_uuid(u, a.uuid); }))
     return false;
   return true;
 }
@@ -361,7 +346,7 @@ XrResult XRAPI_CALL xrCreateSpatialAnchorFB(XrSession session, const XrSpatialAn
     SessionAnchors& sa = session_anchors(id_of(session), *owner);
     auto model = std::make_shared<Anchor>();
     const std::uint64_t id = runtime().new_id();
-    model->uuid = make_uuid("spatial anchor", id);
+    model->uuid = stable_uuid("spatial anchor", kQuestSalt, id);
     model->pose = as_stored(base_world * to_rigid(info->poseInSpace));
     model->stored = false;  // XR_FB_spatial_entity_storage is not served: never saved, never found by queries
     model->components = {kLocatable, kStorable};

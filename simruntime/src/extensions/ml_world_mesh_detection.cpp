@@ -5,6 +5,8 @@
 // the result with the future's detector until a call takes every state.
 #include "ml_world_mesh_detection.h"
 
+#include "stable_uuid.h"
+
 #include "../functions.h"
 #include "../log.h"
 #include "../runtime.h"
@@ -82,26 +84,7 @@ State& state() {
   return s;
 }
 
-std::uint64_t mix(std::uint64_t x) {  // splitmix64's finaliser
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
 
-XrUuidEXT make_uuid(const std::string& source, double chunk_size, std::uint64_t index) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (unsigned char c : source) h = (h ^ c) * 0x100000001b3ull;
-  std::uint64_t size_bits = 0;
-  std::memcpy(&size_bits, &chunk_size, sizeof size_bits);
-  const std::uint64_t a = mix(h ^ mix(size_bits ^ 0x4d4c) ^ (index * 0x9E37ull)), b = mix(a ^ 0x4d4c32ull);
-  XrUuidEXT u{};
-  std::memcpy(u.data, &a, 8);
-  std::memcpy(u.data + 8, &b, 8);
-  u.data[6] = static_cast<std::uint8_t>((u.data[6] & 0x0f) | 0x40);
-  u.data[8] = static_cast<std::uint8_t>((u.data[8] & 0x3f) | 0x80);
-  return u;
-}
 
 std::string key(const XrUuidEXT& u) { return std::string(reinterpret_cast<const char*>(u.data), sizeof u.data); }
 glm::dvec3 to_glm(const XrVector3f& v) { return {v.x, v.y, v.z}; }
@@ -143,7 +126,7 @@ std::shared_ptr<const BlockScene> build_block_scene(const Room& room, double chu
     std::set<std::uint32_t> in_block;
     auto flush = [&](const std::vector<std::uint32_t>& lone) {
       Block b = make_block(chunk, pose, triangles, lone);
-      b.uuid = make_uuid(room.source, chunk_size, index++);
+      b.uuid = stable_uuid(room.source, chunked_salt(0x4d4c32ull /* "ML2" */, chunk_size), index++);
       scene->blocks.push_back(std::move(b));
       triangles.clear();
       in_block.clear();

@@ -10,10 +10,15 @@
 //    xrLocateSpace, the mesh read with the two-call idiom and moved into the base space.
 // The spaces are left as they are (not destroyed, components left enabled): a runtime may hand the layer the
 // very handles the application holds for the same anchors.
+// Passive capture: the spaces (and their uuids) the application's queries return are remembered per session
+// (xrRetrieveSpaceQueryResultsFB); a triangle mesh it reads in full of one of them is located in the session's
+// capture space and kept, with the active query's chunk id.
 #include "meta_spatial_entity_mesh.h"
 
+#include "../capture.h"
 #include "../guard.h"
 #include "../log.h"
+#include "../state.h"
 #include "roomsense/xr/ext/XR_FB_scene.h"
 #include "roomsense/xr/ext/XR_FB_spatial_entity.h"
 #include "roomsense/xr/ext/XR_META_spatial_entity_mesh.h"
@@ -21,7 +26,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <deque>
+#include <mutex>
 #include <thread>
+#include <unordered_map>
 
 namespace roomsense::layer {
 namespace {
@@ -55,6 +63,7 @@ class MetaSource final : public MeshSource {
 #undef META_MEMBER
 
   std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop) override;
+  void forget_session(XrSession session) override;
 
  private:
   std::vector<XrSpaceQueryResultFB> find_mesh_spaces(XrSession session, std::stop_token stop) const;
@@ -183,6 +192,126 @@ std::vector<SourceChunk> MetaSource::query(const QueryContext& context, std::sto
   return out;
 }
 
+// ---- passive capture: the spaces the application's queries returned, and the triangle meshes it reads of them
+
+constexpr std::size_t kMaxRecordedSpaces = 4096;  // per process; the oldest is forgotten first
+
+struct SpaceRecord {
+  std::shared_ptr<SessionState> session;
+  XrUuidEXT uuid{};
+};
+
+// The application's spaces. Lock `mutex` only to look up or change them, never while calling down the chain.
+struct Records {
+  std::mutex mutex;
+  std::unordered_map<XrSpace, SpaceRecord> spaces;
+  std::deque<XrSpace> order;  // first recorded first, to bound `spaces`
+};
+
+Records& records() {
+  static Records r;
+  return r;
+}
+
+void MetaSource::forget_session(XrSession session) {
+  Records& r = records();
+  std::lock_guard lock(r.mutex);
+  std::erase_if(r.spaces, [&](const auto& entry) { return entry.second.session->handle == session; });
+  std::erase_if(r.order, [&](XrSpace space) { return !r.spaces.contains(space); });
+}
+
+const SourceInfo& info();
+
+MetaSource* source_of(const InstanceState& instance) { return instance.source<MetaSource>(info()); }
+
+// The source of the instance a space belongs to, with the space's record when the application's queries
+// returned it. A space found otherwise (not through xrQuerySpacesFB) is still served, by the first instance
+// whose application enabled the extension (the next function is the same for every instance of the process).
+MetaSource* source_for(XrSpace space, SpaceRecord& record) {
+  Registry& reg = registry();
+  {
+    Records& r = records();
+    std::lock_guard lock(r.mutex);
+    if (const auto it = r.spaces.find(space); it != r.spaces.end()) record = it->second;
+  }
+  if (record.session) return source_of(*record.session->instance);
+  std::lock_guard lock(reg.mutex);
+  for (const auto& [handle, instance] : reg.instances)
+    for (const EnabledSource& s : instance->sources)
+      if (s.info == &info() && s.app_enabled) return static_cast<MetaSource*>(s.source.get());
+  return nullptr;
+}
+
+// A time the runtime can locate a scene anchor at. Scene anchors do not move, so any recent time serves; on
+// Android (Quest) the runtime's XrTime is CLOCK_MONOTONIC in nanoseconds, which steady_clock reads there.
+XrTime locate_time() {
+  const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  return ns > 0 ? static_cast<XrTime>(ns) : 1;
+}
+
+XrResult XRAPI_CALL hook_xrRetrieveSpaceQueryResultsFB(XrSession session, XrAsyncRequestIdFB requestId, XrSpaceQueryResultsFB* results) {
+  return guarded("xrRetrieveSpaceQueryResultsFB", [&]() -> XrResult {
+    const std::shared_ptr<SessionState> s = registry().session(session);
+    if (!s) return XR_ERROR_HANDLE_INVALID;
+    MetaSource* source = source_of(*s->instance);
+    if (source == nullptr) throw std::logic_error("XR_META_spatial_entity_mesh hook without its source");
+    const XrResult result = source->xrRetrieveSpaceQueryResultsFB(session, requestId, results);
+    if (result != XR_SUCCESS || results == nullptr || results->results == nullptr || results->resultCapacityInput == 0)
+      return result;
+    const std::uint32_t n = std::min(results->resultCountOutput, results->resultCapacityInput);
+    Records& r = records();
+    std::lock_guard lock(r.mutex);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const XrSpaceQueryResultFB& found = results->results[i];
+      if (found.space == XR_NULL_HANDLE) continue;
+      const auto [it, added] = r.spaces.insert_or_assign(found.space, SpaceRecord{s, found.uuid});
+      (void)it;
+      if (!added) continue;
+      r.order.push_back(found.space);
+      if (r.order.size() > kMaxRecordedSpaces) {
+        r.spaces.erase(r.order.front());
+        r.order.pop_front();
+      }
+    }
+    return result;
+  });
+}
+
+XrResult XRAPI_CALL hook_xrGetSpaceTriangleMeshMETA(XrSpace space, const XrSpaceTriangleMeshGetInfoMETA* getInfo,
+                                                    XrSpaceTriangleMeshMETA* triangleMeshOutput) {
+  return guarded("xrGetSpaceTriangleMeshMETA", [&]() -> XrResult {
+    SpaceRecord record;
+    MetaSource* source = source_for(space, record);
+    if (source == nullptr) return XR_ERROR_HANDLE_INVALID;
+    const XrResult result = source->xrGetSpaceTriangleMeshMETA(space, getInfo, triangleMeshOutput);
+    if (result != XR_SUCCESS || !record.session || triangleMeshOutput == nullptr) return result;
+    const XrSpaceTriangleMeshMETA& mesh = *triangleMeshOutput;
+    // Only a read in full: both arrays given and large enough (the count call and a short read are not).
+    if (mesh.vertices == nullptr || mesh.indices == nullptr || mesh.vertexCapacityInput == 0 || mesh.indexCapacityInput == 0 ||
+        mesh.vertexCapacityInput < mesh.vertexCountOutput || mesh.indexCapacityInput < mesh.indexCountOutput ||
+        mesh.vertexCountOutput > kMaxBufferElements || mesh.indexCountOutput > kMaxBufferElements)
+      return result;
+    const std::size_t vertex_count = mesh.vertexCountOutput, index_count = mesh.indexCountOutput / 3 * 3;
+    if (std::any_of(mesh.indices, mesh.indices + index_count, [&](std::uint32_t v) { return v >= vertex_count; })) return result;
+    SessionState& session = *record.session;
+    const XrSpace capture = capture_space(session);
+    if (capture == XR_NULL_HANDLE) return result;
+    auto location = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
+    if (XR_FAILED(source->xrLocateSpace(space, capture, locate_time(), &location)) || (location.locationFlags & kValid) != kValid) {
+      log_debug([] { return std::string("a scene mesh the application read cannot be located; not captured"); });
+      return result;
+    }
+    SourceChunk chunk;
+    chunk.id = chunk_id(record.uuid);
+    chunk.change = content_hash(mesh.vertices, vertex_count, mesh.indices, index_count);  // as served, in its own space
+    chunk.mesh.vertices = transformed(mesh.vertices, vertex_count, to_rigid(location.pose));
+    chunk.mesh.indices.assign(mesh.indices, mesh.indices + index_count);
+    keep_capture(session, info(), std::move(chunk));
+    capture_read_done(record.session);  // a mesh read in full is a complete read
+    return result;
+  });
+}
+
 std::unique_ptr<MeshSource> create(PFN_xrGetInstanceProcAddr next, XrInstance instance) {
   auto source = std::make_unique<MetaSource>();
 #define META_LOAD(name) load_next(next, instance, #name, source->name);
@@ -206,7 +335,8 @@ const SourceInfo& info() {
         {"xrGetSpaceBoundingBox2DFB", "xrGetSpaceBoundingBox3DFB", "xrGetSpaceSemanticLabelsFB", "xrGetSpaceBoundary2DFB",
          "xrGetSpaceRoomLayoutFB"}},
        {XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME, {"xrGetSpaceTriangleMeshMETA"}}},
-      {},  // no passive capture yet
+      {{"xrRetrieveSpaceQueryResultsFB", reinterpret_cast<PFN_xrVoidFunction>(&hook_xrRetrieveSpaceQueryResultsFB)},
+       {"xrGetSpaceTriangleMeshMETA", reinterpret_cast<PFN_xrVoidFunction>(&hook_xrGetSpaceTriangleMeshMETA)}},
       &create,
   };
   return source;

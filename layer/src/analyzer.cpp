@@ -3,6 +3,7 @@
 #include "guard.h"
 #include "log.h"
 #include "capture.h"
+#include "sources/source_support.h"
 
 #include <cmath>
 #include <unordered_set>
@@ -162,9 +163,8 @@ void Analyzer::run(std::stop_token stop, Job job) {
         std::unordered_set<std::string> ids;
         for (const SourceChunk& m : runtime) hashes.insert(content_hash(m.mesh)), ids.insert(m.id);
         auto where = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
-        const XrResult located = instance.next.xrLocateSpace(job.capture_space, settings_.base_space, job.time, &where);
-        constexpr XrSpaceLocationFlags kValid = XR_SPACE_LOCATION_POSITION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_VALID_BIT;
-        if (XR_FAILED(located) || (where.locationFlags & kValid) != kValid) {
+        const XrResult result = instance.next.xrLocateSpace(job.capture_space, settings_.base_space, job.time, &where);
+        if (XR_FAILED(result) || !located(where.locationFlags)) {
           log_warn("the scene meshes the application read cannot be located in the base space; left out");
         } else {
           const Rigid capture_to_base = to_rigid(where.pose);

@@ -1,11 +1,20 @@
 #include "android_scene_meshing.h"
 
+#include "source_support.h"
+
+#include "../capture.h"
 #include "../guard.h"
 #include "../log.h"
+#include "../state.h"
 #include "roomsense/xr/ext/XR_ANDROID_scene_meshing.h"
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
+#include <deque>
+#include <mutex>
+#include <optional>
+#include <unordered_map>
 
 namespace roomsense::layer {
 namespace {
@@ -21,15 +30,7 @@ constexpr float kQueryExtent = 200.0f;              // metres, a box about the b
 constexpr std::size_t kMaxSubmeshes = 1u << 20;
 constexpr std::uint32_t kMaxElements = 1u << 26;    // per submesh: far beyond any room
 
-std::string chunk_id(const XrUuid& id) {
-  std::string s = "android:";
-  char hex[3];
-  for (std::uint8_t b : id.data) {
-    std::snprintf(hex, sizeof hex, "%02x", b);
-    s += hex;
-  }
-  return s;
-}
+std::string chunk_id(const XrUuid& id) { return uuid_chunk_id("android", id.data); }
 
 SurfaceLabel surface_label(std::uint8_t label) {
   switch (label) {
@@ -45,6 +46,27 @@ SurfaceLabel surface_label(std::uint8_t label) {
 // The label most of a triangle's three vertices have; with three different ones, the first vertex's.
 std::uint8_t majority(std::uint8_t a, std::uint8_t b, std::uint8_t c) { return (b == c && a != b) ? b : a; }
 
+// One submesh as the runtime served it (vertices in the submesh's space), moved by `pose`; with per-vertex
+// labels, one label per triangle (the majority). Empty when an index is out of range. Shared by the active
+// query and the passive capture.
+std::optional<SourceChunk> submesh_chunk(const XrUuid& id, XrTime updated, const Rigid& pose, const XrVector3f* vertices,
+                                         std::size_t vertex_count, const std::uint8_t* semantics, const std::uint32_t* indices,
+                                         std::size_t index_count) {
+  index_count = index_count / 3 * 3;
+  if (std::any_of(indices, indices + index_count, [&](std::uint32_t v) { return v >= vertex_count; })) return std::nullopt;
+  SourceChunk chunk;
+  chunk.id = chunk_id(id);
+  chunk.change = static_cast<std::uint64_t>(updated);
+  chunk.mesh.vertices = transformed(vertices, vertex_count, pose);
+  if (semantics != nullptr && vertex_count > 0) {
+    chunk.labels.reserve(index_count / 3);
+    for (std::size_t t = 0; t < index_count; t += 3)
+      chunk.labels.push_back(surface_label(majority(semantics[indices[t]], semantics[indices[t + 1]], semantics[indices[t + 2]])));
+  }
+  chunk.mesh.indices.assign(indices, indices + index_count);
+  return chunk;
+}
+
 class AndroidSource final : public MeshSource {
  public:
 #define ANDROID_MEMBER(name) PFN_##name name = nullptr;
@@ -52,6 +74,7 @@ class AndroidSource final : public MeshSource {
 #undef ANDROID_MEMBER
 
   std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop) override;
+  void forget_session(XrSession session) override;
 };
 
 // Destroys what the query created, whatever happens.
@@ -127,24 +150,261 @@ std::vector<SourceChunk> AndroidSource::query(const QueryContext& context, std::
       semantics.resize(std::min<std::size_t>(semantics.size(), vertices.size()));
       indices.resize(std::min<std::size_t>(indices.size(), data.indexCountOutput));
     }
-    indices.resize(indices.size() / 3 * 3);
-    if (std::any_of(indices.begin(), indices.end(), [&](std::uint32_t v) { return v >= vertices.size(); }))
-      throw std::runtime_error("the runtime served a submesh with an index out of range");
-
-    SourceChunk chunk;
-    chunk.id = chunk_id(state.submeshId);
-    chunk.change = static_cast<std::uint64_t>(state.lastUpdatedTime);
-    chunk.mesh.vertices = transformed(vertices.data(), vertices.size(), to_rigid(state.submeshPoseInBaseSpace));
-    if (labelled && !semantics.empty()) {
-      chunk.labels.reserve(indices.size() / 3);
-      for (std::size_t t = 0; t < indices.size(); t += 3)
-        chunk.labels.push_back(surface_label(majority(semantics[indices[t]], semantics[indices[t + 1]], semantics[indices[t + 2]])));
-    }
-    chunk.mesh.indices = std::move(indices);
-    out.push_back(std::move(chunk));
+    std::optional<SourceChunk> chunk =
+        submesh_chunk(state.submeshId, state.lastUpdatedTime, to_rigid(state.submeshPoseInBaseSpace), vertices.data(),
+                      vertices.size(), labelled && !semantics.empty() ? semantics.data() : nullptr, indices.data(), indices.size());
+    if (!chunk) throw std::runtime_error("the runtime served a submesh with an index out of range");
+    out.push_back(std::move(*chunk));
   }
   if (unposed > 0) log_warn(std::to_string(unposed) + " runtime submesh(es) had no valid pose and were left out");
   return out;
+}
+
+// ---- passive capture: the application's trackers and snapshots, and the submeshes it reads of them
+
+constexpr std::size_t kMaxRecords = 4096;  // per snapshot (submesh states) and per session (snapshots): bounded
+
+struct TrackerRecord {
+  std::shared_ptr<SessionState> session;
+  std::uint64_t serial = 0;
+  bool labelled = false;  // made with a semantic label set: the runtime writes per-vertex labels
+};
+
+struct SnapshotRecord {
+  std::shared_ptr<SessionState> session;
+  XrSceneMeshingTrackerANDROID tracker = XR_NULL_HANDLE;
+  std::uint64_t tracker_serial = 0, serial = 0;
+  bool labelled = false;
+  XrSpace base = XR_NULL_HANDLE;  // the create info's: submesh poses are in it, at `time`
+  XrTime time = 0;
+  struct Submesh {
+    XrPosef pose{};
+    XrTime updated = 0;
+    std::uint64_t order = 0;  // when it was recorded, to drop the oldest
+    bool kept = false;        // read in full and captured already
+  };
+  std::mutex mutex;  // the application may read submeshes from several threads
+  std::unordered_map<std::string, Submesh> submeshes;  // uuid bytes -> state
+  std::deque<std::pair<std::string, std::uint64_t>> order;  // insertion order, for the bound
+  std::uint64_t next_order = 0;
+};
+
+// The application's handles. Lock `mutex` only to look up or change them, never while calling down the chain.
+struct Records {
+  std::mutex mutex;
+  std::unordered_map<XrSceneMeshingTrackerANDROID, TrackerRecord> trackers;
+  std::unordered_map<XrSceneMeshSnapshotANDROID, std::shared_ptr<SnapshotRecord>> snapshots;
+  std::uint64_t serial = 0;
+};
+
+Records& records() {
+  static Records r;
+  return r;
+}
+
+void AndroidSource::forget_session(XrSession session) {
+  Records& r = records();
+  std::lock_guard lock(r.mutex);
+  std::erase_if(r.trackers, [&](const auto& entry) { return entry.second.session->handle == session; });
+  std::erase_if(r.snapshots, [&](const auto& entry) { return entry.second->session->handle == session; });
+}
+
+std::string uuid_key(const XrUuid& u) { return std::string(reinterpret_cast<const char*>(u.data), sizeof u.data); }
+
+AndroidSource& source_of(const SessionState& session) {
+  AndroidSource* s = session.instance->source<AndroidSource>(android_scene_meshing_source());
+  if (s == nullptr) throw std::logic_error("XR_ANDROID_scene_meshing hook without its source");
+  return *s;
+}
+
+std::shared_ptr<SnapshotRecord> snapshot_record(XrSceneMeshSnapshotANDROID snapshot) {
+  Records& r = records();
+  std::lock_guard lock(r.mutex);
+  const auto it = r.snapshots.find(snapshot);
+  return it == r.snapshots.end() ? nullptr : it->second;
+}
+
+// Records a submesh's state (under the record's mutex), dropping the oldest beyond the bound.
+void remember_submesh(SnapshotRecord& record, const XrSceneSubmeshStateANDROID& state) {
+  const std::string key = uuid_key(state.submeshId);
+  auto [it, added] = record.submeshes.try_emplace(key);
+  if (!added && std::memcmp(&it->second.pose, &state.submeshPoseInBaseSpace, sizeof(XrPosef)) == 0 &&
+      it->second.updated == state.lastUpdatedTime)
+    return;  // read again, unchanged
+  it->second.pose = state.submeshPoseInBaseSpace;
+  it->second.updated = state.lastUpdatedTime;
+  it->second.kept = false;
+  if (!added) return;
+  it->second.order = ++record.next_order;
+  record.order.emplace_back(key, it->second.order);
+  while (record.submeshes.size() > kMaxRecords && !record.order.empty()) {
+    const auto [oldest, order] = record.order.front();
+    record.order.pop_front();
+    const auto o = record.submeshes.find(oldest);
+    if (o != record.submeshes.end() && o->second.order == order) record.submeshes.erase(o);
+  }
+}
+
+// A submesh the application read in full: placed in the capture space (its pose in the snapshot's base space,
+// then the base space located in the capture space at the snapshot's time) and kept.
+void keep_submesh(const SnapshotRecord& record, const SnapshotRecord::Submesh& state, const XrSceneSubmeshDataANDROID& data) {
+  SessionState& session = *record.session;
+  const XrSpace space = capture_space(session);
+  if (space == XR_NULL_HANDLE || !is_valid_pose(state.pose)) return;
+  auto where = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
+  if (XR_FAILED(session.instance->next.xrLocateSpace(record.base, space, record.time, &where)) ||
+      !located(where.locationFlags)) {
+    log_debug([] { return std::string("a submesh the application read cannot be located; not captured"); });
+    return;
+  }
+  const std::uint8_t* semantics = record.labelled ? data.vertexSemantics : nullptr;
+  std::optional<SourceChunk> chunk = submesh_chunk(data.submeshId, state.updated, to_rigid(where.pose) * to_rigid(state.pose),
+                                                   data.vertexPositions, data.vertexCountOutput, semantics, data.indices,
+                                                   data.indexCountOutput);
+  if (!chunk) return;  // the runtime's business; nothing we can analyse
+  keep_capture(session, android_scene_meshing_source(), std::move(*chunk), record.tracker_serial, record.serial);
+}
+
+XrResult XRAPI_CALL hook_xrCreateSceneMeshingTrackerANDROID(XrSession session, const XrSceneMeshingTrackerCreateInfoANDROID* createInfo,
+                                                            XrSceneMeshingTrackerANDROID* tracker) {
+  return guarded("xrCreateSceneMeshingTrackerANDROID", [&]() -> XrResult {
+    const std::shared_ptr<SessionState> s = registry().session(session);
+    if (!s) return XR_ERROR_HANDLE_INVALID;
+    const XrResult result = source_of(*s).xrCreateSceneMeshingTrackerANDROID(session, createInfo, tracker);
+    if (XR_SUCCEEDED(result) && createInfo != nullptr && tracker != nullptr) {
+      Records& r = records();
+      std::lock_guard lock(r.mutex);
+      r.trackers[*tracker] = {s, ++r.serial, createInfo->semanticLabelSet != XR_SCENE_MESH_SEMANTIC_LABEL_SET_NONE_ANDROID};
+    }
+    return result;
+  });
+}
+
+XrResult XRAPI_CALL hook_xrDestroySceneMeshingTrackerANDROID(XrSceneMeshingTrackerANDROID tracker) {
+  return guarded("xrDestroySceneMeshingTrackerANDROID", [&]() -> XrResult {
+    std::shared_ptr<SessionState> s;
+    {
+      Records& r = records();
+      std::lock_guard lock(r.mutex);
+      const auto it = r.trackers.find(tracker);
+      if (it == r.trackers.end()) return XR_ERROR_HANDLE_INVALID;
+      s = it->second.session;
+    }
+    const XrResult result = source_of(*s).xrDestroySceneMeshingTrackerANDROID(tracker);
+    if (XR_SUCCEEDED(result)) {
+      bool had_snapshots = false;
+      {
+        Records& r = records();
+        std::lock_guard lock(r.mutex);
+        r.trackers.erase(tracker);
+        // Its snapshots go with it.
+        had_snapshots = std::erase_if(r.snapshots, [&](const auto& entry) { return entry.second->tracker == tracker; }) > 0;
+      }
+      if (had_snapshots) capture_read_done(s);
+    }
+    return result;
+  });
+}
+
+XrResult XRAPI_CALL hook_xrCreateSceneMeshSnapshotANDROID(XrSceneMeshingTrackerANDROID tracker,
+                                                          const XrSceneMeshSnapshotCreateInfoANDROID* createInfo,
+                                                          XrSceneMeshSnapshotCreationResultANDROID* outSnapshotCreationResult) {
+  return guarded("xrCreateSceneMeshSnapshotANDROID", [&]() -> XrResult {
+    TrackerRecord tracker_record;
+    {
+      Records& r = records();
+      std::lock_guard lock(r.mutex);
+      const auto it = r.trackers.find(tracker);
+      if (it == r.trackers.end()) return XR_ERROR_HANDLE_INVALID;
+      tracker_record = it->second;
+    }
+    const XrResult result =
+        source_of(*tracker_record.session).xrCreateSceneMeshSnapshotANDROID(tracker, createInfo, outSnapshotCreationResult);
+    if (!XR_SUCCEEDED(result) || createInfo == nullptr || outSnapshotCreationResult == nullptr ||
+        outSnapshotCreationResult->snapshot == XR_NULL_HANDLE)
+      return result;
+    auto record = std::make_shared<SnapshotRecord>();
+    record->session = tracker_record.session;
+    record->tracker = tracker;
+    record->tracker_serial = tracker_record.serial;
+    record->labelled = tracker_record.labelled;
+    record->base = createInfo->baseSpace;
+    record->time = createInfo->time;
+    Records& r = records();
+    std::lock_guard lock(r.mutex);
+    record->serial = ++r.serial;
+    r.snapshots[outSnapshotCreationResult->snapshot] = std::move(record);
+    // An application that never destroys its snapshots: forget the session's oldest beyond the bound.
+    std::size_t of_session = 0;
+    auto oldest = r.snapshots.end();
+    for (auto it = r.snapshots.begin(); it != r.snapshots.end(); ++it) {
+      if (it->second->session != tracker_record.session) continue;
+      ++of_session;
+      if (oldest == r.snapshots.end() || it->second->serial < oldest->second->serial) oldest = it;
+    }
+    if (of_session > kMaxRecords) r.snapshots.erase(oldest);
+    return result;
+  });
+}
+
+XrResult XRAPI_CALL hook_xrDestroySceneMeshSnapshotANDROID(XrSceneMeshSnapshotANDROID snapshot) {
+  return guarded("xrDestroySceneMeshSnapshotANDROID", [&]() -> XrResult {
+    const std::shared_ptr<SnapshotRecord> record = snapshot_record(snapshot);
+    if (!record) return XR_ERROR_HANDLE_INVALID;
+    const XrResult result = source_of(*record->session).xrDestroySceneMeshSnapshotANDROID(snapshot);
+    if (XR_SUCCEEDED(result)) {
+      {
+        Records& r = records();
+        std::lock_guard lock(r.mutex);
+        r.snapshots.erase(snapshot);
+      }
+      capture_read_done(record->session);  // the application is done with this snapshot
+    }
+    return result;
+  });
+}
+
+XrResult XRAPI_CALL hook_xrGetAllSubmeshStatesANDROID(XrSceneMeshSnapshotANDROID snapshot, uint32_t submeshStateCapacityInput,
+                                                      uint32_t* submeshStateCountOutput, XrSceneSubmeshStateANDROID* submeshStates) {
+  return guarded("xrGetAllSubmeshStatesANDROID", [&]() -> XrResult {
+    const std::shared_ptr<SnapshotRecord> record = snapshot_record(snapshot);
+    if (!record) return XR_ERROR_HANDLE_INVALID;
+    const XrResult result = source_of(*record->session)
+                                .xrGetAllSubmeshStatesANDROID(snapshot, submeshStateCapacityInput, submeshStateCountOutput, submeshStates);
+    if (result != XR_SUCCESS || submeshStateCapacityInput == 0 || submeshStates == nullptr || submeshStateCountOutput == nullptr)
+      return result;
+    const std::uint32_t n = std::min(*submeshStateCountOutput, submeshStateCapacityInput);
+    std::lock_guard lock(record->mutex);
+    for (std::uint32_t i = 0; i < n; ++i) remember_submesh(*record, submeshStates[i]);
+    return result;
+  });
+}
+
+XrResult XRAPI_CALL hook_xrGetSubmeshDataANDROID(XrSceneMeshSnapshotANDROID snapshot, uint32_t submeshDataCount,
+                                                 XrSceneSubmeshDataANDROID* inoutSubmeshData) {
+  return guarded("xrGetSubmeshDataANDROID", [&]() -> XrResult {
+    const std::shared_ptr<SnapshotRecord> record = snapshot_record(snapshot);
+    if (!record) return XR_ERROR_HANDLE_INVALID;
+    const XrResult result = source_of(*record->session).xrGetSubmeshDataANDROID(snapshot, submeshDataCount, inoutSubmeshData);
+    if (result != XR_SUCCESS || inoutSubmeshData == nullptr) return result;
+    for (std::uint32_t i = 0; i < submeshDataCount; ++i) {
+      const XrSceneSubmeshDataANDROID& d = inoutSubmeshData[i];
+      // Read in full: both arrays given and large enough (counts-only calls and partial reads are left alone).
+      if (d.vertexPositions == nullptr || d.indices == nullptr || d.vertexCountOutput == 0 || d.indexCountOutput == 0 ||
+          d.vertexCapacityInput < d.vertexCountOutput || d.indexCapacityInput < d.indexCountOutput)
+        continue;
+      SnapshotRecord::Submesh state;
+      {
+        std::lock_guard lock(record->mutex);
+        const auto known = record->submeshes.find(uuid_key(d.submeshId));
+        if (known == record->submeshes.end() || known->second.kept) continue;  // no state read, or captured already
+        known->second.kept = true;
+        state = known->second;
+      }
+      keep_submesh(*record, state, d);
+    }
+    return result;
+  });
 }
 
 std::unique_ptr<MeshSource> create(PFN_xrGetInstanceProcAddr next, XrInstance instance) {
@@ -159,14 +419,18 @@ std::unique_ptr<MeshSource> create(PFN_xrGetInstanceProcAddr next, XrInstance in
 
 const SourceInfo& android_scene_meshing_source() {
 #define ANDROID_NAME(name) #name,
+#define ANDROID_HOOK(name) HookEntry{#name, reinterpret_cast<PFN_xrVoidFunction>(&hook_##name)},
   static const SourceInfo source{
       XR_ANDROID_SCENE_MESHING_EXTENSION_NAME,
       "submeshes of a scene mesh snapshot, with per-vertex labels",
       {{XR_ANDROID_SCENE_MESHING_EXTENSION_NAME, {ANDROID_FUNCTIONS(ANDROID_NAME)}}},
-      {},  // no passive capture
+      {ANDROID_HOOK(xrCreateSceneMeshingTrackerANDROID) ANDROID_HOOK(xrDestroySceneMeshingTrackerANDROID)
+           ANDROID_HOOK(xrCreateSceneMeshSnapshotANDROID) ANDROID_HOOK(xrDestroySceneMeshSnapshotANDROID)
+               ANDROID_HOOK(xrGetAllSubmeshStatesANDROID) ANDROID_HOOK(xrGetSubmeshDataANDROID)},
       &create,
   };
 #undef ANDROID_NAME
+#undef ANDROID_HOOK
   return source;
 }
 

@@ -10,6 +10,8 @@
 // each plane whose geometry it read in full is triangulated as the active query does and kept.
 #include "ext_spatial_plane_tracking.h"
 
+#include "source_support.h"
+
 #include "../capture.h"
 #include "../guard.h"
 #include "../log.h"
@@ -45,8 +47,6 @@ using xr::check;
   _(xrGetSpatialBufferUint32EXT) _(xrGetSpatialBufferFloatEXT) _(xrGetSpatialBufferVector2fEXT)                \
   _(xrGetSpatialBufferVector3fEXT)
 
-constexpr auto kPollInterval = std::chrono::milliseconds(2);
-constexpr auto kTimeout = std::chrono::seconds(10);  // for each future
 constexpr std::size_t kMaxEntities = 1u << 16;
 constexpr std::size_t kMaxBufferElements = 1u << 24;  // per buffer: far beyond any plane
 
@@ -75,7 +75,9 @@ class ExtPlaneSource final : public MeshSource {
   void forget_session(XrSession session) override;
 
   // Waits for a future to be ready; false when stopped (the future is cancelled then, and on a timeout).
-  bool wait(XrInstance instance, XrFutureEXT future, const char* what, std::stop_token stop) const;
+  bool wait(XrInstance instance, XrFutureEXT future, const char* what, std::stop_token stop) const {
+    return wait_for_future(xrPollFutureEXT, xrCancelFutureEXT, instance, future, what, stop);
+  }
 };
 
 // Destroys what the query created, whatever happens.
@@ -88,31 +90,6 @@ struct QueryHandles {
     if (context != XR_NULL_HANDLE) next.xrDestroySpatialContextEXT(context);
   }
 };
-
-bool ExtPlaneSource::wait(XrInstance instance, XrFutureEXT future, const char* what, std::stop_token stop) const {
-  auto cancel = [&] {
-    auto info = xr_struct<XrFutureCancelInfoEXT>(XR_TYPE_FUTURE_CANCEL_INFO_EXT);
-    info.future = future;
-    xrCancelFutureEXT(instance, &info);
-  };
-  const auto deadline = std::chrono::steady_clock::now() + kTimeout;
-  for (;;) {
-    auto poll = xr_struct<XrFuturePollInfoEXT>(XR_TYPE_FUTURE_POLL_INFO_EXT);
-    poll.future = future;
-    auto state = xr_struct<XrFuturePollResultEXT>(XR_TYPE_FUTURE_POLL_RESULT_EXT);
-    check(xrPollFutureEXT(instance, &poll, &state), "xrPollFutureEXT");
-    if (state.state == XR_FUTURE_STATE_READY_EXT) return true;
-    if (stop.stop_requested()) {
-      cancel();
-      return false;
-    }
-    if (std::chrono::steady_clock::now() > deadline) {
-      cancel();
-      throw std::runtime_error(std::string(what) + ": the runtime's future was not ready within 10 s");
-    }
-    std::this_thread::sleep_for(kPollInterval);
-  }
-}
 
 // Ear clipping of a simple outline (either winding); a fan when it is not simple enough to clip.
 std::vector<std::uint32_t> triangulate(const std::vector<XrVector2f>& outline) {
@@ -520,9 +497,8 @@ XrResult XRAPI_CALL hook_xrCreateSpatialDiscoverySnapshotCompleteEXT(XrSpatialCo
     const XrSpace capture = capture_space(*s);
     if (capture == XR_NULL_HANDLE) return result;
     auto location = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
-    constexpr XrSpaceLocationFlags kValid = XR_SPACE_LOCATION_POSITION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_VALID_BIT;
     if (XR_FAILED(s->instance->next.xrLocateSpace(info->baseSpace, capture, info->time, &location)) ||
-        (location.locationFlags & kValid) != kValid) {
+        !located(location.locationFlags)) {
       log_debug([] { return std::string("a snapshot's base space cannot be located; its planes are not captured"); });
       return result;
     }

@@ -15,6 +15,8 @@
 // capture space and kept, with the active query's chunk id.
 #include "meta_spatial_entity_mesh.h"
 
+#include "source_support.h"
+
 #include "../capture.h"
 #include "../guard.h"
 #include "../log.h"
@@ -40,21 +42,9 @@ using xr::check;
   _(xrQuerySpacesFB) _(xrRetrieveSpaceQueryResultsFB) _(xrEnumerateSpaceSupportedComponentsFB)                 \
   _(xrGetSpaceComponentStatusFB) _(xrSetSpaceComponentStatusFB) _(xrGetSpaceTriangleMeshMETA) _(xrLocateSpace)
 
-constexpr auto kPollInterval = std::chrono::milliseconds(2);
-constexpr auto kTimeout = std::chrono::seconds(10);  // for the query, and for each component to be enabled
 constexpr std::uint32_t kMaxResults = 4096;
-constexpr std::size_t kMaxBufferElements = 1u << 26;  // per mesh: far beyond any room
-constexpr XrSpaceLocationFlags kValid = XR_SPACE_LOCATION_POSITION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_VALID_BIT;
 
-std::string chunk_id(const XrUuidEXT& id) {
-  std::string s = "meta:";
-  char hex[3];
-  for (std::uint8_t b : id.data) {
-    std::snprintf(hex, sizeof hex, "%02x", b);
-    s += hex;
-  }
-  return s;
-}
+std::string chunk_id(const XrUuidEXT& id) { return uuid_chunk_id("meta", id.data); }
 
 class MetaSource final : public MeshSource {
  public:
@@ -71,14 +61,14 @@ class MetaSource final : public MeshSource {
   MeshPiece read_mesh(XrSpace space) const;
 };
 
-// Calls `step` until it returns true, every kPollInterval, for at most kTimeout; false when stopped.
+// Calls `step` until it returns true, every kRuntimePollInterval, for at most kRuntimeTimeout; false when stopped.
 template <typename Step>
 bool poll(const char* what, std::stop_token stop, Step&& step) {
-  const auto deadline = std::chrono::steady_clock::now() + kTimeout;
+  const auto deadline = std::chrono::steady_clock::now() + kRuntimeTimeout;
   while (!step()) {
     if (stop.stop_requested()) return false;
     if (std::chrono::steady_clock::now() > deadline) throw std::runtime_error(std::string(what) + " timed out");
-    std::this_thread::sleep_for(kPollInterval);
+    std::this_thread::sleep_for(kRuntimePollInterval);
   }
   return true;
 }
@@ -146,7 +136,7 @@ MeshPiece MetaSource::read_mesh(XrSpace space) const {
   const auto get = xr_struct<XrSpaceTriangleMeshGetInfoMETA>(XR_TYPE_SPACE_TRIANGLE_MESH_GET_INFO_META);
   auto mesh = xr_struct<XrSpaceTriangleMeshMETA>(XR_TYPE_SPACE_TRIANGLE_MESH_META);
   check(xrGetSpaceTriangleMeshMETA(space, &get, &mesh), "xrGetSpaceTriangleMeshMETA");
-  if (mesh.vertexCountOutput > kMaxBufferElements || mesh.indexCountOutput > kMaxBufferElements)
+  if (mesh.vertexCountOutput > kMaxRuntimeBufferElements || mesh.indexCountOutput > kMaxRuntimeBufferElements)
     throw std::runtime_error("xrGetSpaceTriangleMeshMETA reported an absurd mesh size");
   std::vector<XrVector3f> vertices(mesh.vertexCountOutput);
   std::vector<std::uint32_t> indices(mesh.indexCountOutput);
@@ -177,7 +167,7 @@ std::vector<SourceChunk> MetaSource::query(const QueryContext& context, std::sto
     if (stop.stop_requested()) return {};
     auto location = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
     check(xrLocateSpace(found.space, context.base, context.time, &location), "xrLocateSpace");
-    if ((location.locationFlags & kValid) != kValid) {
+    if (!located(location.locationFlags)) {
       ++unlocated;
       continue;
     }
@@ -289,7 +279,7 @@ XrResult XRAPI_CALL hook_xrGetSpaceTriangleMeshMETA(XrSpace space, const XrSpace
     // Only a read in full: both arrays given and large enough (the count call and a short read are not).
     if (mesh.vertices == nullptr || mesh.indices == nullptr || mesh.vertexCapacityInput == 0 || mesh.indexCapacityInput == 0 ||
         mesh.vertexCapacityInput < mesh.vertexCountOutput || mesh.indexCapacityInput < mesh.indexCountOutput ||
-        mesh.vertexCountOutput > kMaxBufferElements || mesh.indexCountOutput > kMaxBufferElements)
+        mesh.vertexCountOutput > kMaxRuntimeBufferElements || mesh.indexCountOutput > kMaxRuntimeBufferElements)
       return result;
     const std::size_t vertex_count = mesh.vertexCountOutput, index_count = mesh.indexCountOutput / 3 * 3;
     if (std::any_of(mesh.indices, mesh.indices + index_count, [&](std::uint32_t v) { return v >= vertex_count; })) return result;
@@ -297,7 +287,7 @@ XrResult XRAPI_CALL hook_xrGetSpaceTriangleMeshMETA(XrSpace space, const XrSpace
     const XrSpace capture = capture_space(session);
     if (capture == XR_NULL_HANDLE) return result;
     auto location = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
-    if (XR_FAILED(source->xrLocateSpace(space, capture, locate_time(), &location)) || (location.locationFlags & kValid) != kValid) {
+    if (XR_FAILED(source->xrLocateSpace(space, capture, locate_time(), &location)) || !located(location.locationFlags)) {
       log_debug([] { return std::string("a scene mesh the application read cannot be located; not captured"); });
       return result;
     }

@@ -7,16 +7,24 @@
 //    the detector are freed on every path.
 #include "ml_world_mesh_detection.h"
 
+#include "source_support.h"
+
+#include "../capture.h"
 #include "../guard.h"
 #include "../log.h"
+#include "../state.h"
 #include "roomsense/xr/ext/XR_ML_world_mesh_detection.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <thread>
+#include <unordered_map>
 
 namespace roomsense::layer {
 namespace {
@@ -30,21 +38,25 @@ using xr::check;
   _(xrFreeWorldMeshBufferML) _(xrRequestWorldMeshAsyncML) _(xrRequestWorldMeshCompleteML)
 
 constexpr float kQueryExtent = 200.0f;  // metres, a box about the base space's origin: any room
-constexpr auto kPollInterval = std::chrono::milliseconds(2);
-constexpr auto kTimeout = std::chrono::seconds(10);  // for each future
 constexpr std::uint32_t kMaxBlocks = 1u << 16;
 
-std::string chunk_id(const XrUuidEXT& id) {
-  std::string s = "ml:";
-  char hex[3];
-  for (std::uint8_t b : id.data) {
-    std::snprintf(hex, sizeof hex, "%02x", b);
-    s += hex;
-  }
-  return s;
-}
+std::string chunk_id(const XrUuidEXT& id) { return uuid_chunk_id("ml", id.data); }
 
 std::string key(const XrUuidEXT& u) { return std::string(reinterpret_cast<const char*>(u.data), sizeof u.data); }
+
+// One block as the runtime served it (vertices in the block's space, uint16 indices), moved by `pose`. Empty
+// when an index is out of range. Shared by the active query and the passive capture.
+std::optional<SourceChunk> block_chunk(const XrWorldMeshBlockML& m, XrTime updated, const Rigid& pose) {
+  const std::size_t index_count = std::size_t(m.indexCount / 3) * 3;
+  if (std::any_of(m.indexBuffer, m.indexBuffer + index_count, [&](std::uint16_t v) { return v >= m.vertexCount; }))
+    return std::nullopt;
+  SourceChunk chunk;
+  chunk.id = chunk_id(m.uuid);
+  chunk.change = static_cast<std::uint64_t>(updated);
+  chunk.mesh.vertices = transformed(m.vertexBuffer, m.vertexCount, pose);
+  chunk.mesh.indices.assign(m.indexBuffer, m.indexBuffer + index_count);
+  return chunk;
+}
 
 class MlSource final : public MeshSource {
  public:
@@ -54,10 +66,13 @@ class MlSource final : public MeshSource {
 #undef ML_MEMBER
 
   std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop) override;
+  void forget_session(XrSession session) override;
 
  private:
   // Polls until the future is ready (true), or the query is stopped (false, future cancelled); throws after 10 s.
-  bool wait(XrInstance instance, XrFutureEXT future, const char* what, std::stop_token stop) const;
+  bool wait(XrInstance instance, XrFutureEXT future, const char* what, std::stop_token stop) const {
+    return wait_for_future(xrPollFutureEXT, xrCancelFutureEXT, instance, future, what, stop);
+  }
 };
 
 // Frees what the query made, whatever happens.
@@ -71,31 +86,6 @@ struct QueryHandles {
     next.xrDestroyWorldMeshDetectorML(detector);
   }
 };
-
-bool MlSource::wait(XrInstance instance, XrFutureEXT future, const char* what, std::stop_token stop) const {
-  auto cancel = [&] {
-    auto info = xr_struct<XrFutureCancelInfoEXT>(XR_TYPE_FUTURE_CANCEL_INFO_EXT);
-    info.future = future;
-    xrCancelFutureEXT(instance, &info);
-  };
-  const auto deadline = std::chrono::steady_clock::now() + kTimeout;
-  for (;;) {
-    auto poll = xr_struct<XrFuturePollInfoEXT>(XR_TYPE_FUTURE_POLL_INFO_EXT);
-    poll.future = future;
-    auto state = xr_struct<XrFuturePollResultEXT>(XR_TYPE_FUTURE_POLL_RESULT_EXT);
-    check(xrPollFutureEXT(instance, &poll, &state), "xrPollFutureEXT");
-    if (state.state == XR_FUTURE_STATE_READY_EXT) return true;
-    if (stop.stop_requested()) {
-      cancel();
-      return false;
-    }
-    if (std::chrono::steady_clock::now() > deadline) {
-      cancel();
-      throw std::runtime_error(std::string(what) + ": the runtime's future was not ready within 10 s");
-    }
-    std::this_thread::sleep_for(kPollInterval);
-  }
-}
 
 std::vector<SourceChunk> MlSource::query(const QueryContext& context, std::stop_token stop) {
   QueryHandles handles{*this};
@@ -178,17 +168,215 @@ std::vector<SourceChunk> MlSource::query(const QueryContext& context, std::stop_
     }
     if ((m.vertexCount > 0 && m.vertexBuffer == nullptr) || (m.indexCount > 0 && m.indexBuffer == nullptr))
       throw std::runtime_error("the runtime delivered a world mesh block without its arrays");
-    SourceChunk chunk;
-    chunk.id = chunk_id(m.uuid);
-    chunk.change = static_cast<std::uint64_t>(state->second->lastUpdateTime);
-    chunk.mesh.vertices = transformed(m.vertexBuffer, m.vertexCount, to_rigid(state->second->meshBoundingBoxCenter));
-    const std::uint32_t triangles = m.indexCount / 3;
-    chunk.mesh.indices.assign(m.indexBuffer, m.indexBuffer + std::size_t(triangles) * 3);
-    if (std::any_of(chunk.mesh.indices.begin(), chunk.mesh.indices.end(), [&](std::uint32_t v) { return v >= m.vertexCount; }))
-      throw std::runtime_error("the runtime served a world mesh block with an index out of range");
-    out.push_back(std::move(chunk));
+    std::optional<SourceChunk> chunk = block_chunk(m, state->second->lastUpdateTime, to_rigid(state->second->meshBoundingBoxCenter));
+    if (!chunk) throw std::runtime_error("the runtime served a world mesh block with an index out of range");
+    out.push_back(std::move(*chunk));
   }
   return out;
+}
+
+// ---- passive capture: the application's detectors, the block states it asked for, and the blocks it received
+
+constexpr std::size_t kMaxRecords = 4096;  // per detector (block states, pending state requests): bounded
+
+struct DetectorRecord {
+  std::shared_ptr<SessionState> session;
+  std::uint64_t serial = 0;
+  struct Where {
+    XrSpace base = XR_NULL_HANDLE;  // the state request's: block poses are in it, at `time`
+    XrTime time = 0;
+  };
+  struct Block {
+    XrPosef pose{};
+    XrTime updated = 0;
+    Where where;
+    std::uint64_t order = 0;  // when it was recorded, to drop the oldest
+  };
+  std::mutex mutex;  // the application may call from several threads
+  std::map<XrFutureEXT, std::pair<Where, std::uint64_t>> state_requests;  // pending, with their order
+  std::unordered_map<std::string, Block> blocks;                          // uuid bytes -> latest state
+  std::deque<std::pair<std::string, std::uint64_t>> order;                // insertion order, for the bound
+  std::uint64_t next_order = 0;
+};
+
+// The application's detectors. Lock `mutex` only to look up or change them, never while calling down the chain.
+struct Records {
+  std::mutex mutex;
+  std::unordered_map<XrWorldMeshDetectorML, std::shared_ptr<DetectorRecord>> detectors;
+  std::uint64_t serial = 0;
+};
+
+Records& records() {
+  static Records r;
+  return r;
+}
+
+void MlSource::forget_session(XrSession session) {
+  Records& r = records();
+  std::lock_guard lock(r.mutex);
+  std::erase_if(r.detectors, [&](const auto& entry) { return entry.second->session->handle == session; });
+}
+
+MlSource& source_of(const SessionState& session) {
+  MlSource* s = session.instance->source<MlSource>(ml_world_mesh_detection_source());
+  if (s == nullptr) throw std::logic_error("XR_ML_world_mesh_detection hook without its source");
+  return *s;
+}
+
+std::shared_ptr<DetectorRecord> detector_record(XrWorldMeshDetectorML detector) {
+  Records& r = records();
+  std::lock_guard lock(r.mutex);
+  const auto it = r.detectors.find(detector);
+  return it == r.detectors.end() ? nullptr : it->second;
+}
+
+// Records a block's state (under the record's mutex), dropping the oldest beyond the bound.
+void remember_block(DetectorRecord& record, const XrWorldMeshBlockStateML& state, const DetectorRecord::Where& where) {
+  const std::string k = key(state.uuid);
+  if (state.status == XR_WORLD_MESH_BLOCK_STATUS_DELETED_ML) {
+    record.blocks.erase(k);
+    return;
+  }
+  auto [it, added] = record.blocks.try_emplace(k);
+  it->second.pose = state.meshBoundingBoxCenter;
+  it->second.updated = state.lastUpdateTime;
+  it->second.where = where;
+  if (!added) return;
+  it->second.order = ++record.next_order;
+  record.order.emplace_back(k, it->second.order);
+  while (record.blocks.size() > kMaxRecords && !record.order.empty()) {
+    const auto [oldest, order] = record.order.front();
+    record.order.pop_front();
+    const auto o = record.blocks.find(oldest);
+    if (o != record.blocks.end() && o->second.order == order) record.blocks.erase(o);
+  }
+  if (record.order.size() > 2 * kMaxRecords) {  // stale entries of erased blocks: rebuild
+    record.order.clear();
+    for (const auto& [b, block] : record.blocks) record.order.emplace_back(b, block.order);
+    std::sort(record.order.begin(), record.order.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  }
+}
+
+XrResult XRAPI_CALL hook_xrCreateWorldMeshDetectorML(XrSession session, const XrWorldMeshDetectorCreateInfoML* createInfo,
+                                                     XrWorldMeshDetectorML* detector) {
+  return guarded("xrCreateWorldMeshDetectorML", [&]() -> XrResult {
+    const std::shared_ptr<SessionState> s = registry().session(session);
+    if (!s) return XR_ERROR_HANDLE_INVALID;
+    const XrResult result = source_of(*s).xrCreateWorldMeshDetectorML(session, createInfo, detector);
+    if (XR_SUCCEEDED(result) && detector != nullptr) {
+      auto record = std::make_shared<DetectorRecord>();
+      record->session = s;
+      Records& r = records();
+      std::lock_guard lock(r.mutex);
+      record->serial = ++r.serial;
+      r.detectors[*detector] = std::move(record);
+    }
+    return result;
+  });
+}
+
+XrResult XRAPI_CALL hook_xrDestroyWorldMeshDetectorML(XrWorldMeshDetectorML detector) {
+  return guarded("xrDestroyWorldMeshDetectorML", [&]() -> XrResult {
+    const std::shared_ptr<DetectorRecord> record = detector_record(detector);
+    if (!record) return XR_ERROR_HANDLE_INVALID;
+    const XrResult result = source_of(*record->session).xrDestroyWorldMeshDetectorML(detector);
+    if (XR_SUCCEEDED(result)) {
+      Records& r = records();
+      std::lock_guard lock(r.mutex);
+      r.detectors.erase(detector);
+    }
+    return result;
+  });
+}
+
+XrResult XRAPI_CALL hook_xrRequestWorldMeshStateAsyncML(XrWorldMeshDetectorML detector, const XrWorldMeshStateRequestInfoML* stateRequest,
+                                                        XrFutureEXT* future) {
+  return guarded("xrRequestWorldMeshStateAsyncML", [&]() -> XrResult {
+    const std::shared_ptr<DetectorRecord> record = detector_record(detector);
+    if (!record) return XR_ERROR_HANDLE_INVALID;
+    const XrResult result = source_of(*record->session).xrRequestWorldMeshStateAsyncML(detector, stateRequest, future);
+    if (XR_SUCCEEDED(result) && stateRequest != nullptr && future != nullptr) {
+      std::lock_guard lock(record->mutex);
+      record->state_requests[*future] = {{stateRequest->baseSpace, stateRequest->time}, ++record->next_order};
+      if (record->state_requests.size() > kMaxRecords)  // never completed: forget the oldest
+        record->state_requests.erase(std::min_element(record->state_requests.begin(), record->state_requests.end(),
+                                                      [](const auto& a, const auto& b) { return a.second.second < b.second.second; }));
+    }
+    return result;
+  });
+}
+
+XrResult XRAPI_CALL hook_xrRequestWorldMeshStateCompleteML(XrWorldMeshDetectorML detector, XrFutureEXT future,
+                                                           XrWorldMeshStateRequestCompletionML* completion) {
+  return guarded("xrRequestWorldMeshStateCompleteML", [&]() -> XrResult {
+    const std::shared_ptr<DetectorRecord> record = detector_record(detector);
+    if (!record) return XR_ERROR_HANDLE_INVALID;
+    const XrResult result = source_of(*record->session).xrRequestWorldMeshStateCompleteML(detector, future, completion);
+    if (result != XR_SUCCESS || completion == nullptr) return result;
+    std::lock_guard lock(record->mutex);
+    const auto request = record->state_requests.find(future);
+    if (request == record->state_requests.end()) return result;
+    if (completion->futureResult != XR_SUCCESS) {
+      record->state_requests.erase(request);
+      return result;
+    }
+    if (completion->meshBlockStateCapacityInput == 0 || completion->meshBlockStates == nullptr) return result;  // counts only
+    const DetectorRecord::Where where = request->second.first;
+    record->state_requests.erase(request);  // taken in full: the future is spent
+    const std::uint32_t n = std::min(completion->meshBlockStateCountOutput, completion->meshBlockStateCapacityInput);
+    for (std::uint32_t i = 0; i < n; ++i) remember_block(*record, completion->meshBlockStates[i], where);
+    return result;
+  });
+}
+
+XrResult XRAPI_CALL hook_xrRequestWorldMeshCompleteML(XrWorldMeshDetectorML detector, const XrWorldMeshRequestCompletionInfoML* completionInfo,
+                                                      XrFutureEXT future, XrWorldMeshRequestCompletionML* completion) {
+  return guarded("xrRequestWorldMeshCompleteML", [&]() -> XrResult {
+    const std::shared_ptr<DetectorRecord> record = detector_record(detector);
+    if (!record) return XR_ERROR_HANDLE_INVALID;
+    const std::uint32_t capacity = completion != nullptr ? completion->blockCount : 0;  // the application's array
+    const XrResult result = source_of(*record->session).xrRequestWorldMeshCompleteML(detector, completionInfo, future, completion);
+    if (result != XR_SUCCESS || completion == nullptr || completion->futureResult != XR_SUCCESS || completion->blocks == nullptr)
+      return result;
+    SessionState& session = *record->session;
+    const XrSpace space = capture_space(session);
+    if (space == XR_NULL_HANDLE) return result;
+    // Each block's state as recorded, looked up first; then located and copied without the record's lock.
+    std::vector<std::pair<const XrWorldMeshBlockML*, DetectorRecord::Block>> received;
+    {
+      std::lock_guard lock(record->mutex);
+      for (std::uint32_t i = 0; i < std::min(capacity, completion->blockCount); ++i) {
+        const XrWorldMeshBlockML& m = completion->blocks[i];
+        if (m.blockResult != XR_WORLD_MESH_BLOCK_RESULT_SUCCESS_ML || m.vertexCount == 0 || m.indexCount < 3 ||
+            m.vertexBuffer == nullptr || m.indexBuffer == nullptr)
+          continue;
+        const auto state = record->blocks.find(key(m.uuid));
+        if (state == record->blocks.end() || !is_valid_pose(state->second.pose)) continue;  // no state read
+        received.emplace_back(&m, state->second);
+      }
+    }
+    std::map<std::pair<XrSpace, XrTime>, std::optional<Rigid>> to_capture;  // base space -> capture space, once each
+    std::size_t unlocated = 0;
+    for (const auto& [m, state] : received) {
+      auto [where, added] = to_capture.try_emplace({state.where.base, state.where.time});
+      if (added) {
+        auto location = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
+        if (XR_SUCCEEDED(session.instance->next.xrLocateSpace(state.where.base, space, state.where.time, &location)) &&
+            located(location.locationFlags))
+          where->second = to_rigid(location.pose);
+      }
+      if (!where->second) {
+        ++unlocated;
+        continue;
+      }
+      std::optional<SourceChunk> chunk = block_chunk(*m, state.updated, *where->second * to_rigid(state.pose));
+      if (chunk) keep_capture(session, ml_world_mesh_detection_source(), std::move(*chunk), record->serial, 0);
+    }
+    if (unlocated > 0)
+      log_debug([&] { return std::to_string(unlocated) + " world mesh block(s) the application read cannot be located; not captured"; });
+    capture_read_done(record->session);  // the application has what it asked for
+    return result;
+  });
 }
 
 std::unique_ptr<MeshSource> create(PFN_xrGetInstanceProcAddr next, XrInstance instance) {
@@ -204,15 +392,18 @@ std::unique_ptr<MeshSource> create(PFN_xrGetInstanceProcAddr next, XrInstance in
 
 const SourceInfo& ml_world_mesh_detection_source() {
 #define ML_NAME(name) #name,
+#define ML_HOOK(name) HookEntry{#name, reinterpret_cast<PFN_xrVoidFunction>(&hook_##name)},
   static const SourceInfo source{
       XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME,
       "world mesh blocks around the base space (uint16 indices)",
       {{XR_EXT_FUTURE_EXTENSION_NAME, {ML_FUTURE_FUNCTIONS(ML_NAME)}},
        {XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME, {ML_FUNCTIONS(ML_NAME)}}},
-      {},  // no passive capture
+      {ML_HOOK(xrCreateWorldMeshDetectorML) ML_HOOK(xrDestroyWorldMeshDetectorML) ML_HOOK(xrRequestWorldMeshStateAsyncML)
+           ML_HOOK(xrRequestWorldMeshStateCompleteML) ML_HOOK(xrRequestWorldMeshCompleteML)},
       &create,
   };
 #undef ML_NAME
+#undef ML_HOOK
   return source;
 }
 

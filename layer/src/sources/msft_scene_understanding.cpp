@@ -1,5 +1,7 @@
 #include "msft_scene_understanding.h"
 
+#include "source_support.h"
+
 #include "../capture.h"
 #include "../guard.h"
 #include "../log.h"
@@ -26,18 +28,8 @@ constexpr float kQueryRadius = 100.0f;  // metres around the base space's origin
 constexpr auto kPollInterval = std::chrono::milliseconds(5);
 constexpr auto kComputeTimeout = std::chrono::seconds(60);
 constexpr std::size_t kMaxComponents = 1u << 20;
-constexpr std::size_t kMaxBufferElements = 1u << 26;  // per mesh buffer: far beyond any room
-constexpr XrSpaceLocationFlags kValid = XR_SPACE_LOCATION_POSITION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_VALID_BIT;
 
-std::string chunk_id(const XrUuidMSFT& id) {
-  std::string s = "msft:";
-  char hex[3];
-  for (std::uint8_t b : id.bytes) {
-    std::snprintf(hex, sizeof hex, "%02x", b);
-    s += hex;
-  }
-  return s;
-}
+std::string chunk_id(const XrUuidMSFT& id) { return uuid_chunk_id("msft", id.bytes); }
 
 bool is_mesh_component(XrSceneComponentTypeMSFT type) {
   return type == XR_SCENE_COMPONENT_TYPE_VISUAL_MESH_MSFT || type == XR_SCENE_COMPONENT_TYPE_COLLIDER_MESH_MSFT;
@@ -83,7 +75,7 @@ MeshPiece read_mesh_buffer(const MsftSource& next, XrSceneMSFT scene, std::uint6
         *count = vertex_buffer.vertexCountOutput;
         return r;
       },
-      kMaxBufferElements);
+      kMaxRuntimeBufferElements);
   auto index_buffer = xr_struct<XrSceneMeshIndicesUint32MSFT>(XR_TYPE_SCENE_MESH_INDICES_UINT32_MSFT);
   buffers.next = &index_buffer;
   std::vector<std::uint32_t> indices = xr::read_two_call<std::uint32_t>(
@@ -95,7 +87,7 @@ MeshPiece read_mesh_buffer(const MsftSource& next, XrSceneMSFT scene, std::uint6
         *count = index_buffer.indexCountOutput;
         return r;
       },
-      kMaxBufferElements);
+      kMaxRuntimeBufferElements);
   indices.resize(indices.size() / 3 * 3);
   if (std::any_of(indices.begin(), indices.end(), [&](std::uint32_t v) { return v >= vertices.size(); }))
     throw std::runtime_error("the runtime served a mesh with an index out of range");
@@ -182,17 +174,17 @@ std::vector<SourceChunk> MsftSource::query(const QueryContext& context, std::sto
   locate.time = context.time;
   locate.componentIdCount = static_cast<uint32_t>(ids.size());
   locate.componentIds = ids.data();
-  auto located = xr_struct<XrSceneComponentLocationsMSFT>(XR_TYPE_SCENE_COMPONENT_LOCATIONS_MSFT);
-  located.locationCount = static_cast<uint32_t>(locations.size());
-  located.locations = locations.data();
-  check(xrLocateSceneComponentsMSFT(handles.scene, &locate, &located), "xrLocateSceneComponentsMSFT");
+  auto where = xr_struct<XrSceneComponentLocationsMSFT>(XR_TYPE_SCENE_COMPONENT_LOCATIONS_MSFT);
+  where.locationCount = static_cast<uint32_t>(locations.size());
+  where.locations = locations.data();
+  check(xrLocateSceneComponentsMSFT(handles.scene, &locate, &where), "xrLocateSceneComponentsMSFT");
 
   std::vector<SourceChunk> out;
   out.reserve(components.size());
   std::size_t unlocated = 0;
   for (std::size_t i = 0; i < components.size(); ++i) {
     if (stop.stop_requested()) return {};
-    if ((locations[i].flags & kValid) != kValid) {
+    if (!located(locations[i].flags)) {
       ++unlocated;
       continue;
     }
@@ -278,10 +270,10 @@ void keep_buffer(XrSceneMSFT scene, SceneRecord& record, const SceneRecord::Comp
   locate.time = component.update_time;
   locate.componentIdCount = 1;
   locate.componentIds = &component.id;
-  auto located = xr_struct<XrSceneComponentLocationsMSFT>(XR_TYPE_SCENE_COMPONENT_LOCATIONS_MSFT);
-  located.locationCount = 1;
-  located.locations = &location;
-  if (XR_FAILED(source_of(session).xrLocateSceneComponentsMSFT(scene, &locate, &located)) || (location.flags & kValid) != kValid) {
+  auto where = xr_struct<XrSceneComponentLocationsMSFT>(XR_TYPE_SCENE_COMPONENT_LOCATIONS_MSFT);
+  where.locationCount = 1;
+  where.locations = &location;
+  if (XR_FAILED(source_of(session).xrLocateSceneComponentsMSFT(scene, &locate, &where)) || !located(location.flags)) {
     log_debug([] { return std::string("a scene mesh the application read cannot be located; not captured"); });
     return;
   }

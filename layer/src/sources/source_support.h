@@ -1,0 +1,33 @@
+// What the mesh sources share: how long the layer waits for a runtime, the location check, chunk ids made from
+// a runtime's uuid, and waiting on an XR_EXT_future with a deadline and the analysis's stop token.
+#pragma once
+#include <openxr/openxr.h>
+
+#include "roomsense/xr/ext/XR_EXT_future.h"
+
+#include <chrono>
+#include <cstdint>
+#include <stop_token>
+#include <string>
+
+namespace roomsense::layer {
+
+inline constexpr auto kRuntimePollInterval = std::chrono::milliseconds(2);
+inline constexpr auto kRuntimeTimeout = std::chrono::seconds(10);  // a future or query that never completes
+inline constexpr std::size_t kMaxRuntimeBufferElements = 1u << 26;  // per mesh buffer: far beyond any room
+
+// Position and orientation both valid: the only locations the layer places meshes with.
+inline bool located(XrSpaceLocationFlags flags) {
+  constexpr XrSpaceLocationFlags kBoth = XR_SPACE_LOCATION_POSITION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_VALID_BIT;
+  return (flags & kBoth) == kBoth;
+}
+
+// "prefix:" and the 16 bytes of a runtime's uuid in hex: the chunk id the active and the passive capture share.
+std::string uuid_chunk_id(const char* prefix, const std::uint8_t (&bytes)[16]);
+
+// Polls `future` until it is ready (true), the stop token is set (cancels it, false) or kRuntimeTimeout passes
+// (cancels it, throws std::runtime_error naming `what`). A failing poll throws too.
+bool wait_for_future(PFN_xrPollFutureEXT poll, PFN_xrCancelFutureEXT cancel, XrInstance instance, XrFutureEXT future,
+                     const char* what, std::stop_token stop);
+
+}  // namespace roomsense::layer

@@ -4,6 +4,7 @@
 #include "guard.h"
 #include "log.h"
 #include "results.h"
+#include "sources/source_support.h"
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +26,15 @@ XrSpace capture_space(SessionState& session) {
     }
   }
   return session.capture_space;
+}
+
+std::optional<Rigid> locate_in_capture_space(SessionState& session, XrSpace space, XrTime time) {
+  const XrSpace capture = capture_space(session);
+  if (capture == XR_NULL_HANDLE) return std::nullopt;
+  auto where = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
+  if (XR_FAILED(session.instance->next.xrLocateSpace(space, capture, time, &where)) || !located(where.locationFlags))
+    return std::nullopt;
+  return to_rigid(where.pose);
 }
 
 void keep_capture(SessionState& session, const SourceInfo& source, SourceChunk chunk, std::uint64_t group,

@@ -6,11 +6,16 @@
 #include "state.h"
 
 #include <memory>
+#include <optional>
 
 namespace roomsense::layer {
 
 // The session's capture space, created on first use; XR_NULL_HANDLE when the runtime refuses one.
 XrSpace capture_space(SessionState& session);
+
+// Where `space` is in the session's capture space at `time` (created on first use); nothing when either cannot
+// be located. The pose that moves what an application read in `space` into the capture space.
+std::optional<Rigid> locate_in_capture_space(SessionState& session, XrSpace space, XrTime time);
 
 // Keeps a chunk the application read (in the capture space). It replaces a kept chunk of the same source with
 // the same id or content, and every chunk of an earlier epoch of the same group; a chunk of an earlier epoch

@@ -2,6 +2,7 @@
 // again, sessions and analyzers destroyed while an analysis runs, and the capture of the meshes an
 // application reads (with the extension, and without it through ROOMSENSE_EXPORT_DIR).
 #include "compare.h"
+#include "passive_capture.h"
 #include "layer_harness.h"
 #include "roomsense/synthetic.h"
 
@@ -25,12 +26,6 @@ struct Room {
     indices = s.indices;
   }
 };
-
-std::filesystem::path temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::path(::testing::TempDir()) / (name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir;
-}
 
 TEST(LayerLifecycle, GettersOnSeveralThreadsWhileAComputeRuns) {
   App app;

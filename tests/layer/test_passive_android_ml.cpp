@@ -3,6 +3,7 @@
 // ROOMSENSE_EXPORT_DIR the layer analyses what it read and exports the CLI's room, and the application receives
 // exactly what the runtime sends without the layer.
 #include "compare.h"
+#include "passive_capture.h"
 
 #include "roomsense/xr/ext/XR_ANDROID_scene_meshing.h"
 #include "roomsense/xr/ext/XR_ML_world_mesh_detection.h"
@@ -19,33 +20,6 @@
 namespace {
 
 using namespace layertest;
-
-std::filesystem::path temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::path(::testing::TempDir()) / (name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir;
-}
-
-// What the application received: counts, and FNV-1a over every byte in the order received.
-struct Received {
-  std::size_t meshes = 0, vertices = 0, indices = 0, labels = 0;
-  std::uint64_t checksum = 1469598103934665603ull;
-
-  void add(const void* data, std::size_t bytes) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i) checksum = (checksum ^ p[i]) * 1099511628211ull;
-  }
-  template <typename T>
-  void add(const std::vector<T>& v) {
-    add(v.data(), v.size() * sizeof(T));
-  }
-  bool operator==(const Received&) const = default;
-};
-
-std::ostream& operator<<(std::ostream& out, const Received& r) {
-  return out << r.meshes << " meshes, " << r.vertices << " vertices, " << r.indices << " indices, " << r.labels
-             << " labels, checksum " << r.checksum;
-}
 
 // ---- an Android XR application: a tracker with labels, one snapshot, every submesh read in full
 

@@ -3,6 +3,7 @@
 // reads the room itself; with ROOMSENSE_EXPORT_DIR the layer analyses what it read and exports the result, and
 // the application receives exactly what the runtime sends without the layer.
 #include "compare.h"
+#include "passive_capture.h"
 
 #include "roomsense/xr/ext/XR_EXT_future.h"
 #include "roomsense/xr/ext/XR_EXT_spatial_entity.h"
@@ -28,28 +29,6 @@ using namespace layertest;
 const std::string kQuest = "XR_FB_spatial_entity,XR_FB_spatial_entity_query,XR_FB_scene,XR_FB_spatial_entity_container,"
                            "XR_META_spatial_entity_mesh";
 const std::string kPlanesOnly = "XR_EXT_spatial_entity,XR_EXT_spatial_plane_tracking";
-
-std::filesystem::path temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::path(::testing::TempDir()) / (name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir;
-}
-
-// What the application received: counts, and FNV-1a over every byte in the order received.
-struct Received {
-  std::size_t meshes = 0, vertices = 0, indices = 0;
-  std::uint64_t checksum = 1469598103934665603ull;
-
-  void add(const void* data, std::size_t bytes) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i) checksum = (checksum ^ p[i]) * 1099511628211ull;
-  }
-  template <typename T>
-  void add(const std::vector<T>& v) {
-    add(v.data(), v.size() * sizeof(T));
-  }
-  bool operator==(const Received&) const = default;
-};
 
 // ---- a Quest application: the global mesh's space through a space query, its mesh component enabled, the
 // mesh read with the two-call idiom

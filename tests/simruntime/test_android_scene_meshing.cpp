@@ -23,11 +23,7 @@ namespace {
 using simtest::proc;
 using simtest::ScopedEnv;
 
-struct Android {
-  XrInstance instance = XR_NULL_HANDLE;
-  XrSystemId system = XR_NULL_SYSTEM_ID;
-  XrSession session = XR_NULL_HANDLE;
-  XrSpace local = XR_NULL_HANDLE;
+struct Android : simtest::App {
   PFN_xrEnumerateSupportedSemanticLabelSetsANDROID labelSets = nullptr;
   PFN_xrCreateSceneMeshingTrackerANDROID createTracker = nullptr;
   PFN_xrDestroySceneMeshingTrackerANDROID destroyTracker = nullptr;
@@ -36,8 +32,7 @@ struct Android {
   PFN_xrGetAllSubmeshStatesANDROID states = nullptr;
   PFN_xrGetSubmeshDataANDROID data = nullptr;
 
-  Android() {
-    SIM_CHECK(simtest::create_instance(&instance, {XR_MND_HEADLESS_EXTENSION_NAME, XR_ANDROID_SCENE_MESHING_EXTENSION_NAME}));
+  Android() : simtest::App({XR_MND_HEADLESS_EXTENSION_NAME, XR_ANDROID_SCENE_MESHING_EXTENSION_NAME}) {
     labelSets = proc<PFN_xrEnumerateSupportedSemanticLabelSetsANDROID>(instance, "xrEnumerateSupportedSemanticLabelSetsANDROID");
     createTracker = proc<PFN_xrCreateSceneMeshingTrackerANDROID>(instance, "xrCreateSceneMeshingTrackerANDROID");
     destroyTracker = proc<PFN_xrDestroySceneMeshingTrackerANDROID>(instance, "xrDestroySceneMeshingTrackerANDROID");
@@ -45,25 +40,6 @@ struct Android {
     destroySnapshot = proc<PFN_xrDestroySceneMeshSnapshotANDROID>(instance, "xrDestroySceneMeshSnapshotANDROID");
     states = proc<PFN_xrGetAllSubmeshStatesANDROID>(instance, "xrGetAllSubmeshStatesANDROID");
     data = proc<PFN_xrGetSubmeshDataANDROID>(instance, "xrGetSubmeshDataANDROID");
-    start_session();
-  }
-  ~Android() {
-    if (instance != XR_NULL_HANDLE) xrDestroyInstance(instance);
-  }
-  Android(const Android&) = delete;
-  Android& operator=(const Android&) = delete;
-
-  void start_session() {
-    XrSystemGetInfo system_info{XR_TYPE_SYSTEM_GET_INFO};
-    system_info.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
-    SIM_CHECK(xrGetSystem(instance, &system_info, &system));
-    XrSessionCreateInfo session_info{XR_TYPE_SESSION_CREATE_INFO};
-    session_info.systemId = system;
-    SIM_CHECK(xrCreateSession(instance, &session_info, &session));
-    XrReferenceSpaceCreateInfo space_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
-    space_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
-    space_info.poseInReferenceSpace.orientation.w = 1;
-    SIM_CHECK(xrCreateReferenceSpace(session, &space_info, &local));
   }
 
   XrSceneMeshingTrackerANDROID tracker(XrSceneMeshSemanticLabelSetANDROID set, bool normals = false) const {

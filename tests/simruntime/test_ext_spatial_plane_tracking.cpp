@@ -52,11 +52,7 @@ glm::vec3 apply(const XrPosef& p, glm::vec3 v) {
          glm::vec3(p.position.x, p.position.y, p.position.z);
 }
 
-struct Device {
-  XrInstance instance = XR_NULL_HANDLE;
-  XrSystemId system = XR_NULL_SYSTEM_ID;
-  XrSession session = XR_NULL_HANDLE;
-  XrSpace local = XR_NULL_HANDLE;
+struct Device : simtest::App {
   PFN_xrPollFutureEXT poll = nullptr;
   PFN_xrEnumerateSpatialCapabilitiesEXT capabilities = nullptr;
   PFN_xrEnumerateSpatialCapabilityComponentTypesEXT componentTypes = nullptr;
@@ -78,8 +74,8 @@ struct Device {
 
   explicit Device(std::vector<const char*> extensions = {XR_MND_HEADLESS_EXTENSION_NAME, XR_EXT_FUTURE_EXTENSION_NAME,
                                                          XR_EXT_SPATIAL_ENTITY_EXTENSION_NAME,
-                                                         XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME}) {
-    SIM_CHECK(simtest::create_instance(&instance, extensions));
+                                                         XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME})
+      : simtest::App(extensions) {
     poll = proc<PFN_xrPollFutureEXT>(instance, "xrPollFutureEXT");
     capabilities = proc<PFN_xrEnumerateSpatialCapabilitiesEXT>(instance, "xrEnumerateSpatialCapabilitiesEXT");
     componentTypes = proc<PFN_xrEnumerateSpatialCapabilityComponentTypesEXT>(instance, "xrEnumerateSpatialCapabilityComponentTypesEXT");
@@ -98,22 +94,7 @@ struct Device {
     uint16 = proc<PFN_xrGetSpatialBufferUint16EXT>(instance, "xrGetSpatialBufferUint16EXT");
     uint32 = proc<PFN_xrGetSpatialBufferUint32EXT>(instance, "xrGetSpatialBufferUint32EXT");
     floats = proc<PFN_xrGetSpatialBufferFloatEXT>(instance, "xrGetSpatialBufferFloatEXT");
-    XrSystemGetInfo system_info{XR_TYPE_SYSTEM_GET_INFO};
-    system_info.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
-    SIM_CHECK(xrGetSystem(instance, &system_info, &system));
-    XrSessionCreateInfo session_info{XR_TYPE_SESSION_CREATE_INFO};
-    session_info.systemId = system;
-    SIM_CHECK(xrCreateSession(instance, &session_info, &session));
-    XrReferenceSpaceCreateInfo space_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
-    space_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
-    space_info.poseInReferenceSpace.orientation.w = 1;
-    SIM_CHECK(xrCreateReferenceSpace(session, &space_info, &local));
   }
-  ~Device() {
-    if (instance != XR_NULL_HANDLE) xrDestroyInstance(instance);
-  }
-  Device(const Device&) = delete;
-  Device& operator=(const Device&) = delete;
 
   void wait(XrFutureEXT future) const {
     XrFuturePollInfoEXT info{XR_TYPE_FUTURE_POLL_INFO_EXT};

@@ -32,10 +32,7 @@ using simtest::ScopedEnv;
 const char* const kQuestExtensions = "XR_FB_spatial_entity,XR_FB_spatial_entity_query,XR_FB_scene,"
                                      "XR_FB_spatial_entity_container,XR_META_spatial_entity_mesh";
 
-struct Quest {
-  XrInstance instance = XR_NULL_HANDLE;
-  XrSession session = XR_NULL_HANDLE;
-  XrSpace local = XR_NULL_HANDLE;
+struct Quest : simtest::App {
   PFN_xrQuerySpacesFB query = nullptr;
   PFN_xrRetrieveSpaceQueryResultsFB retrieve = nullptr;
   PFN_xrEnumerateSpaceSupportedComponentsFB components = nullptr;
@@ -51,11 +48,10 @@ struct Quest {
   PFN_xrGetSpaceContainerFB container = nullptr;
   PFN_xrGetSpaceTriangleMeshMETA mesh = nullptr;
 
-  Quest() {
-    SIM_CHECK(simtest::create_instance(
-        &instance, {XR_MND_HEADLESS_EXTENSION_NAME, XR_FB_SPATIAL_ENTITY_EXTENSION_NAME, XR_FB_SPATIAL_ENTITY_QUERY_EXTENSION_NAME,
-                    XR_FB_SCENE_EXTENSION_NAME, XR_FB_SPATIAL_ENTITY_CONTAINER_EXTENSION_NAME,
-                    XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME}));
+  Quest()
+      : simtest::App({XR_MND_HEADLESS_EXTENSION_NAME, XR_FB_SPATIAL_ENTITY_EXTENSION_NAME,
+                      XR_FB_SPATIAL_ENTITY_QUERY_EXTENSION_NAME, XR_FB_SCENE_EXTENSION_NAME,
+                      XR_FB_SPATIAL_ENTITY_CONTAINER_EXTENSION_NAME, XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME}) {
     query = proc<PFN_xrQuerySpacesFB>(instance, "xrQuerySpacesFB");
     retrieve = proc<PFN_xrRetrieveSpaceQueryResultsFB>(instance, "xrRetrieveSpaceQueryResultsFB");
     components = proc<PFN_xrEnumerateSpaceSupportedComponentsFB>(instance, "xrEnumerateSpaceSupportedComponentsFB");
@@ -70,26 +66,6 @@ struct Quest {
     layout = proc<PFN_xrGetSpaceRoomLayoutFB>(instance, "xrGetSpaceRoomLayoutFB");
     container = proc<PFN_xrGetSpaceContainerFB>(instance, "xrGetSpaceContainerFB");
     mesh = proc<PFN_xrGetSpaceTriangleMeshMETA>(instance, "xrGetSpaceTriangleMeshMETA");
-    start_session();
-  }
-  ~Quest() {
-    if (instance != XR_NULL_HANDLE) xrDestroyInstance(instance);
-  }
-  Quest(const Quest&) = delete;
-  Quest& operator=(const Quest&) = delete;
-
-  void start_session() {
-    XrSystemGetInfo system_info{XR_TYPE_SYSTEM_GET_INFO};
-    system_info.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
-    XrSystemId system = XR_NULL_SYSTEM_ID;
-    SIM_CHECK(xrGetSystem(instance, &system_info, &system));
-    XrSessionCreateInfo session_info{XR_TYPE_SESSION_CREATE_INFO};
-    session_info.systemId = system;
-    SIM_CHECK(xrCreateSession(instance, &session_info, &session));
-    XrReferenceSpaceCreateInfo space_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
-    space_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
-    space_info.poseInReferenceSpace.orientation.w = 1;
-    SIM_CHECK(xrCreateReferenceSpace(session, &space_info, &local));
   }
 
   // Every event queued now (session state changes included).

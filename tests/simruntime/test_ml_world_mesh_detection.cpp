@@ -22,10 +22,7 @@ namespace {
 using simtest::proc;
 using simtest::ScopedEnv;
 
-struct MagicLeap {
-  XrInstance instance = XR_NULL_HANDLE;
-  XrSession session = XR_NULL_HANDLE;
-  XrSpace local = XR_NULL_HANDLE;
+struct MagicLeap : simtest::App {
   PFN_xrPollFutureEXT poll = nullptr;
   PFN_xrCancelFutureEXT cancel = nullptr;
   PFN_xrCreateWorldMeshDetectorML createDetector = nullptr;
@@ -38,9 +35,8 @@ struct MagicLeap {
   PFN_xrRequestWorldMeshAsyncML meshAsync = nullptr;
   PFN_xrRequestWorldMeshCompleteML meshComplete = nullptr;
 
-  MagicLeap() {
-    SIM_CHECK(simtest::create_instance(&instance, {XR_MND_HEADLESS_EXTENSION_NAME, XR_EXT_FUTURE_EXTENSION_NAME,
-                                                   XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME}));
+  MagicLeap()
+      : simtest::App({XR_MND_HEADLESS_EXTENSION_NAME, XR_EXT_FUTURE_EXTENSION_NAME, XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME}) {
     poll = proc<PFN_xrPollFutureEXT>(instance, "xrPollFutureEXT");
     cancel = proc<PFN_xrCancelFutureEXT>(instance, "xrCancelFutureEXT");
     createDetector = proc<PFN_xrCreateWorldMeshDetectorML>(instance, "xrCreateWorldMeshDetectorML");
@@ -52,23 +48,7 @@ struct MagicLeap {
     free = proc<PFN_xrFreeWorldMeshBufferML>(instance, "xrFreeWorldMeshBufferML");
     meshAsync = proc<PFN_xrRequestWorldMeshAsyncML>(instance, "xrRequestWorldMeshAsyncML");
     meshComplete = proc<PFN_xrRequestWorldMeshCompleteML>(instance, "xrRequestWorldMeshCompleteML");
-    XrSystemGetInfo system_info{XR_TYPE_SYSTEM_GET_INFO};
-    system_info.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
-    XrSystemId system = XR_NULL_SYSTEM_ID;
-    SIM_CHECK(xrGetSystem(instance, &system_info, &system));
-    XrSessionCreateInfo session_info{XR_TYPE_SESSION_CREATE_INFO};
-    session_info.systemId = system;
-    SIM_CHECK(xrCreateSession(instance, &session_info, &session));
-    XrReferenceSpaceCreateInfo space_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
-    space_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
-    space_info.poseInReferenceSpace.orientation.w = 1;
-    SIM_CHECK(xrCreateReferenceSpace(session, &space_info, &local));
   }
-  ~MagicLeap() {
-    if (instance != XR_NULL_HANDLE) xrDestroyInstance(instance);
-  }
-  MagicLeap(const MagicLeap&) = delete;
-  MagicLeap& operator=(const MagicLeap&) = delete;
 
   XrWorldMeshDetectorML detector() const {
     XrWorldMeshDetectorCreateInfoML info{XR_TYPE_WORLD_MESH_DETECTOR_CREATE_INFO_ML};

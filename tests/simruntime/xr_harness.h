@@ -69,11 +69,25 @@ struct App {
   XrSpace local = XR_NULL_HANDLE;
   Msft msft;
 
-  App() {
-    SIM_CHECK(create_instance(&instance, {XR_MND_HEADLESS_EXTENSION_NAME, XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME}));
+  // A headset with these extensions enabled (the scene extension tests build on it with their own functions).
+  explicit App(const std::vector<const char*>& extensions = {XR_MND_HEADLESS_EXTENSION_NAME,
+                                                             XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME}) {
+    SIM_CHECK(create_instance(&instance, extensions));
     XrSystemGetInfo system_info{XR_TYPE_SYSTEM_GET_INFO};
     system_info.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
     SIM_CHECK(xrGetSystem(instance, &system_info, &system));
+    start_session();
+    for (const char* e : extensions)
+      if (std::strcmp(e, XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME) == 0) msft.load(instance);
+  }
+  ~App() {
+    if (instance != XR_NULL_HANDLE) xrDestroyInstance(instance);  // takes the session and spaces with it
+  }
+  App(const App&) = delete;
+  App& operator=(const App&) = delete;
+
+  // A new session and LOCAL space (the constructor's, or after a test destroyed the session).
+  void start_session() {
     XrSessionCreateInfo session_info{XR_TYPE_SESSION_CREATE_INFO};
     session_info.systemId = system;
     SIM_CHECK(xrCreateSession(instance, &session_info, &session));
@@ -81,13 +95,7 @@ struct App {
     space_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
     space_info.poseInReferenceSpace.orientation.w = 1;
     SIM_CHECK(xrCreateReferenceSpace(session, &space_info, &local));
-    msft.load(instance);
   }
-  ~App() {
-    if (instance != XR_NULL_HANDLE) xrDestroyInstance(instance);  // takes the session and spaces with it
-  }
-  App(const App&) = delete;
-  App& operator=(const App&) = delete;
 
   XrTime now() const {
     // Any positive time will do for a runtime where nothing moves; use the clock like an app would.

@@ -249,16 +249,14 @@ void remember_submesh(SnapshotRecord& record, const XrSceneSubmeshStateANDROID& 
 // then the base space located in the capture space at the snapshot's time) and kept.
 void keep_submesh(const SnapshotRecord& record, const SnapshotRecord::Submesh& state, const XrSceneSubmeshDataANDROID& data) {
   SessionState& session = *record.session;
-  const XrSpace space = capture_space(session);
-  if (space == XR_NULL_HANDLE || !is_valid_pose(state.pose)) return;
-  auto where = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
-  if (XR_FAILED(session.instance->next.xrLocateSpace(record.base, space, record.time, &where)) ||
-      !located(where.locationFlags)) {
+  if (!is_valid_pose(state.pose)) return;
+  const std::optional<Rigid> base_in_capture = locate_in_capture_space(session, record.base, record.time);
+  if (!base_in_capture) {
     log_debug([] { return std::string("a submesh the application read cannot be located; not captured"); });
     return;
   }
   const std::uint8_t* semantics = record.labelled ? data.vertexSemantics : nullptr;
-  std::optional<SourceChunk> chunk = submesh_chunk(data.submeshId, state.updated, to_rigid(where.pose) * to_rigid(state.pose),
+  std::optional<SourceChunk> chunk = submesh_chunk(data.submeshId, state.updated, *base_in_capture * to_rigid(state.pose),
                                                    data.vertexPositions, data.vertexCountOutput, semantics, data.indices,
                                                    data.indexCountOutput);
   if (!chunk) return;  // the runtime's business; nothing we can analyse

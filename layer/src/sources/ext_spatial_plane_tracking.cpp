@@ -494,17 +494,14 @@ XrResult XRAPI_CALL hook_xrCreateSpatialDiscoverySnapshotCompleteEXT(XrSpatialCo
         completion->snapshot == XR_NULL_HANDLE)
       return result;
     // Where the snapshot's base space is in the capture space, now that both exist.
-    const XrSpace capture = capture_space(*s);
-    if (capture == XR_NULL_HANDLE) return result;
-    auto location = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
-    if (XR_FAILED(s->instance->next.xrLocateSpace(info->baseSpace, capture, info->time, &location)) ||
-        !located(location.locationFlags)) {
+    const std::optional<Rigid> base_in_capture = locate_in_capture_space(*s, info->baseSpace, info->time);
+    if (!base_in_capture) {
       log_debug([] { return std::string("a snapshot's base space cannot be located; its planes are not captured"); });
       return result;
     }
     auto record = std::make_shared<SnapshotRecord>();
     record->session = s;
-    record->base_in_capture = to_rigid(location.pose);
+    record->base_in_capture = *base_in_capture;
     Records& r = records();
     std::lock_guard lock(r.mutex);
     r.snapshots.put(completion->snapshot, std::move(record));

@@ -282,19 +282,16 @@ XrResult XRAPI_CALL hook_xrGetSpaceTriangleMeshMETA(XrSpace space, const XrSpace
         mesh.vertexCountOutput > kMaxRuntimeBufferElements || mesh.indexCountOutput > kMaxRuntimeBufferElements)
       return result;
     const std::size_t vertex_count = mesh.vertexCountOutput, index_count = mesh.indexCountOutput / 3 * 3;
-    if (std::any_of(mesh.indices, mesh.indices + index_count, [&](std::uint32_t v) { return v >= vertex_count; })) return result;
     SessionState& session = *record.session;
-    const XrSpace capture = capture_space(session);
-    if (capture == XR_NULL_HANDLE) return result;
-    auto location = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
-    if (XR_FAILED(source->xrLocateSpace(space, capture, locate_time(), &location)) || !located(location.locationFlags)) {
+    const std::optional<Rigid> in_capture = locate_in_capture_space(session, space, locate_time());
+    if (!in_capture) {
       log_debug([] { return std::string("a scene mesh the application read cannot be located; not captured"); });
       return result;
     }
     SourceChunk chunk;
     chunk.id = chunk_id(record.uuid);
     chunk.change = content_hash(mesh.vertices, vertex_count, mesh.indices, index_count);  // as served, in its own space
-    chunk.mesh.vertices = transformed(mesh.vertices, vertex_count, to_rigid(location.pose));
+    chunk.mesh.vertices = transformed(mesh.vertices, vertex_count, *in_capture);
     chunk.mesh.indices.assign(mesh.indices, mesh.indices + index_count);
     keep_capture(session, info(), std::move(chunk));
     capture_read_done(record.session);  // a mesh read in full is a complete read

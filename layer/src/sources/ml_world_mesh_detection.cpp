@@ -339,8 +339,6 @@ XrResult XRAPI_CALL hook_xrRequestWorldMeshCompleteML(XrWorldMeshDetectorML dete
     if (result != XR_SUCCESS || completion == nullptr || completion->futureResult != XR_SUCCESS || completion->blocks == nullptr)
       return result;
     SessionState& session = *record->session;
-    const XrSpace space = capture_space(session);
-    if (space == XR_NULL_HANDLE) return result;
     // Each block's state as recorded, looked up first; then located and copied without the record's lock.
     std::vector<std::pair<const XrWorldMeshBlockML*, DetectorRecord::Block>> received;
     {
@@ -359,12 +357,7 @@ XrResult XRAPI_CALL hook_xrRequestWorldMeshCompleteML(XrWorldMeshDetectorML dete
     std::size_t unlocated = 0;
     for (const auto& [m, state] : received) {
       auto [where, added] = to_capture.try_emplace({state.where.base, state.where.time});
-      if (added) {
-        auto location = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
-        if (XR_SUCCEEDED(session.instance->next.xrLocateSpace(state.where.base, space, state.where.time, &location)) &&
-            located(location.locationFlags))
-          where->second = to_rigid(location.pose);
-      }
+      if (added) where->second = locate_in_capture_space(session, state.where.base, state.where.time);
       if (!where->second) {
         ++unlocated;
         continue;

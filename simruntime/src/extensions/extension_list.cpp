@@ -33,6 +33,15 @@ const ServedExtension& timespec_extension() {
   return e;
 }
 
+// A value as one short line of the message: control characters as '?', at most 64 characters.
+std::string shown(std::string text) {
+  constexpr std::size_t kMax = 64;
+  if (text.size() > kMax) text = text.substr(0, kMax) + "...";
+  for (char& c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  return text;
+}
+
 }  // namespace
 
 const std::vector<const ServedExtension*>& served_extensions() {
@@ -74,7 +83,7 @@ std::vector<const ServedExtension*> advertised_extensions() {
     item.erase(item.find_last_not_of(' ') + 1);
     const ServedExtension* e = served_extension(item);
     if (e == nullptr || !e->scene)
-      throw std::invalid_argument("ROOMSENSE_SIM_EXTENSIONS='" + std::string(wanted) + "': '" + item +
+      throw std::invalid_argument("ROOMSENSE_SIM_EXTENSIONS: '" + shown(item) +
                                   "' is not a scene extension this runtime serves");
     names.push_back(item);
   }

@@ -55,7 +55,7 @@ std::shared_ptr<Prepared> prepare(const Scan& scan) {
   p->input = prepare_input(scan);
   p->spec = make_grid_spec(p->input.lo, p->input.hi, kDefaultVoxelSize);
   p->grid_vertices = to_grid_units(p->input.vertices, p->spec);
-  p->voxels = CpuVoxelStage().run({p->spec, p->grid_vertices, p->input.indices, VoxelMode::Triangles, 15});
+  p->voxels = CpuVoxelStage().run({p->spec, p->grid_vertices, p->input.indices, VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}});
   p->features = detect_features(p->voxels, {});
   const float s = p->spec.voxel_size;
   p->surfaces = {p->spec.origin.y + float(p->features.levels.floor + 1) * s,
@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(("voxelize/" + room.name).c_str(), [&room, p](benchmark::State& state) {
       CpuVoxelStage stage;
       for (auto _ : state)
-        benchmark::DoNotOptimize(stage.run({p->spec, p->grid_vertices, p->input.indices, VoxelMode::Triangles, 15}));
+        benchmark::DoNotOptimize(stage.run({p->spec, p->grid_vertices, p->input.indices, VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}));
       counters(state, room);
     })->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("features/" + room.name).c_str(), [&room, p](benchmark::State& state) {
@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
         const PreparedInput in = prepare_input(room.scan);
         const GridSpec spec = make_grid_spec(in.lo, in.hi, kDefaultVoxelSize);
         const std::vector<glm::vec3> g = to_grid_units(in.vertices, spec);
-        const VoxelStageResult v = CpuVoxelStage().run({spec, g, in.indices, VoxelMode::Triangles, 15});
+        const VoxelStageResult v = CpuVoxelStage().run({spec, g, in.indices, VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}});
         const int y_end = v.levels->floor + voxels_for(1.5f, spec.voxel_size);
         const std::vector<std::uint8_t> room_mask = detect_room(spec, v.column_any);
         benchmark::DoNotOptimize(build_bounds(v.grid, *v.levels, y_end, room_mask));

@@ -1,57 +1,41 @@
-#include "roomsense/error.h"
+// Which reader a mesh file goes to. By content first for PLY (its "ply" magic, whatever the file is called),
+// then by extension, case-insensitively: .obj to tinyobjloader, .ply to our PLY reader (which then says the
+// magic is missing), .gltf/.glb to assimp. Anything else is refused by name, rather than handed to assimp's
+// dozens of importers that nobody tests here.
 #include "roomsense/scanio.h"
-#include "ply_header_check.h"
 
-#include <assimp/Importer.hpp>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
+#include "read_gltf.h"
+#include "scan_file.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
-#include <limits>
 
 namespace roomsense::scanio {
 namespace {
 
-void append_node(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, Scan& out) {
-  const aiMatrix4x4 transform = parent * node.mTransformation;
-  for (unsigned m = 0; m < node.mNumMeshes; ++m) {
-    const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
-    const std::size_t base = out.vertices.size();
-    if (base + mesh.mNumVertices > std::numeric_limits<std::uint32_t>::max())
-      throw Error(ErrorCode::Io, "the scan has more vertices than 32-bit indices can address");
-    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
-      const aiVector3D p = transform * mesh.mVertices[v];
-      out.vertices.emplace_back(p.x, p.y, p.z);
-    }
-    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-      const aiFace& face = mesh.mFaces[f];
-      if (face.mNumIndices != 3) continue;  // points and lines carry no surface
-      for (unsigned k = 0; k < 3; ++k) out.indices.push_back(static_cast<std::uint32_t>(base + face.mIndices[k]));
-    }
-  }
-  for (unsigned c = 0; c < node.mNumChildren; ++c) append_node(scene, *node.mChildren[c], transform, out);
+bool starts_with_ply_magic(const std::string& head) {
+  return head.rfind("ply\n", 0) == 0 || head.rfind("ply\r\n", 0) == 0;
 }
 
 }  // namespace
 
 Scan load_mesh_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw Error(ErrorCode::Io, "cannot read '" + path + "': no such file");
-  check_ply_header(path);
-  Assimp::Importer importer;
-  // No normals, UVs or materials are needed: keep the import to positions and faces.
-  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_TEXCOORDS |
-                                                          aiComponent_COLORS | aiComponent_MATERIALS |
-                                                          aiComponent_TANGENTS_AND_BITANGENTS);
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices);
-  if (scene == nullptr || scene->mRootNode == nullptr)
-    throw Error(ErrorCode::Io, "cannot read '" + path + "': " + importer.GetErrorString());
-  Scan scan;
-  append_node(*scene, *scene->mRootNode, aiMatrix4x4(), scan);
-  if (scan.vertices.empty()) throw Error(ErrorCode::Io, "cannot read '" + path + "': it holds no vertices");
-  return scan;
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string head = file_head(path, 5);  // also refuses directories, FIFOs and devices by name
+  if (starts_with_ply_magic(head) || ext == ".ply") {
+    std::ifstream in = open_scan_file(path);
+    return read_ply(in, path);
+  }
+  if (ext == ".obj") {
+    std::ifstream in = open_scan_file(path);
+    return read_obj(in, path);
+  }
+  if (ext == ".gltf" || ext == ".glb" || head.rfind("glTF", 0) == 0) return read_gltf_file(path);
+  throw_read_error(path, (ext.empty() ? std::string("it has no extension and is not PLY")
+                                      : "unknown mesh format '" + ext + "'") +
+                             " (roomsense reads .obj, .ply, .gltf and .glb)");
 }
 
 }  // namespace roomsense::scanio

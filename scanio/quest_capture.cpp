@@ -2,6 +2,7 @@
 #include "roomsense/quest_capture.h"
 
 #include "roomsense/error.h"
+#include "scan_file.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -15,7 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <iterator>
 
 namespace roomsense::scanio {
 namespace {
@@ -26,8 +27,21 @@ using nlohmann::json;
   throw Error(ErrorCode::Io, "cannot read Quest capture '" + source + "': " + what);
 }
 
-// Strict RFC 4648 decoding: padding only at the end, no stray characters, whole quanta.
-std::vector<std::uint8_t> decode_base64(const std::string& text, const std::string& source, const std::string& field) {
+// Strict RFC 4648 decoding: padding only at the end, no stray characters, whole quanta. The bytes go to
+// `sink(data, size)` in runs of kBase64Run (a multiple of 12: whole vertices and whole triangles), never as
+// one buffer of the whole field: a capture can hold a gigabyte of base64, and the decoded copy would be a
+// second gigabyte next to the Scan it is decoded into.
+constexpr std::size_t kBase64Run = 3 * 1024;
+
+std::size_t base64_decoded_size(const std::string& text, const std::string& source, const std::string& field) {
+  if (text.size() % 4 != 0) fail(source, field + " is not whole base64 (length " + std::to_string(text.size()) + ")");
+  std::size_t padding = 0;
+  if (!text.empty() && text.back() == '=') padding = (text.size() >= 2 && text[text.size() - 2] == '=') ? 2 : 1;
+  return text.size() / 4 * 3 - padding;
+}
+
+template <class Sink>
+void decode_base64(const std::string& text, const std::string& source, const std::string& field, Sink&& sink) {
   static const std::array<std::int8_t, 256> table = [] {
     std::array<std::int8_t, 256> t{};
     t.fill(-1);
@@ -35,11 +49,9 @@ std::vector<std::uint8_t> decode_base64(const std::string& text, const std::stri
     for (int i = 0; i < 64; ++i) t[static_cast<unsigned char>(alphabet[i])] = static_cast<std::int8_t>(i);
     return t;
   }();
-  if (text.size() % 4 != 0) fail(source, field + " is not whole base64 (length " + std::to_string(text.size()) + ")");
-  std::size_t padding = 0;
-  if (!text.empty() && text.back() == '=') padding = (text.size() >= 2 && text[text.size() - 2] == '=') ? 2 : 1;
-  std::vector<std::uint8_t> out;
-  out.reserve(text.size() / 4 * 3);
+  const std::size_t padding = text.size() / 4 * 3 - base64_decoded_size(text, source, field);
+  std::array<std::uint8_t, kBase64Run> run{};
+  std::size_t used = 0;
   for (std::size_t i = 0; i < text.size(); i += 4) {
     std::uint32_t quantum = 0;
     const bool last = i + 4 == text.size();
@@ -50,11 +62,14 @@ std::vector<std::uint8_t> decode_base64(const std::string& text, const std::stri
       else if ((value = table[static_cast<unsigned char>(c)]) < 0) fail(source, field + " holds a character that is not base64");
       quantum = (quantum << 6) | static_cast<std::uint32_t>(value);
     }
-    out.push_back(static_cast<std::uint8_t>(quantum >> 16));
-    if (!last || padding < 2) out.push_back(static_cast<std::uint8_t>(quantum >> 8));
-    if (!last || padding < 1) out.push_back(static_cast<std::uint8_t>(quantum));
+    run[used++] = static_cast<std::uint8_t>(quantum >> 16);
+    if (!last || padding < 2) run[used++] = static_cast<std::uint8_t>(quantum >> 8);
+    if (!last || padding < 1) run[used++] = static_cast<std::uint8_t>(quantum);
+    if (used == run.size() || last) {
+      sink(run.data(), used);
+      used = 0;
+    }
   }
-  return out;
 }
 
 const json* member(const json& object, const char* key) {
@@ -98,35 +113,44 @@ std::string text_at(const json& parent, const char* key) {
   return value != nullptr && value->is_string() ? value->get<std::string>() : std::string();
 }
 
-void append_mesh(const json& triangles, const QuestPose& pose, Scan& out, const std::string& source, const std::string& where) {
-  const json* vertices = member(triangles, "vertices");
-  const json* indices = member(triangles, "indices");
+// Decodes one mesh into `out` and then frees its base64 text: the capture's DOM shrinks while the Scan grows.
+void append_mesh(json& triangles, const QuestPose& pose, Scan& out, const std::string& source, const std::string& where) {
+  json* vertices = triangles.contains("vertices") ? &triangles["vertices"] : nullptr;
+  json* indices = triangles.contains("indices") ? &triangles["indices"] : nullptr;
   if (vertices == nullptr || !vertices->is_string()) fail(source, where + ".vertices is not a base64 string");
   if (indices == nullptr || !indices->is_string()) fail(source, where + ".indices is not a base64 string");
-  const auto vertex_bytes = decode_base64(vertices->get_ref<const std::string&>(), source, where + ".vertices");
-  const auto index_bytes = decode_base64(indices->get_ref<const std::string&>(), source, where + ".indices");
-  if (vertex_bytes.size() % 12 != 0) fail(source, where + ".vertices is not a whole number of float32 xyz");
-  if (index_bytes.size() % 12 != 0) fail(source, where + ".indices is not a whole number of uint32 triangles");
-  const std::size_t vertex_count = vertex_bytes.size() / 12;
+  std::string& vertex_text = vertices->get_ref<std::string&>();
+  std::string& index_text = indices->get_ref<std::string&>();
+  const std::size_t vertex_bytes = base64_decoded_size(vertex_text, source, where + ".vertices");
+  const std::size_t index_bytes = base64_decoded_size(index_text, source, where + ".indices");
+  if (vertex_bytes % 12 != 0) fail(source, where + ".vertices is not a whole number of float32 xyz");
+  if (index_bytes % 12 != 0) fail(source, where + ".indices is not a whole number of uint32 triangles");
+  const std::size_t vertex_count = vertex_bytes / 12;
   const std::size_t base = out.vertices.size();
   if (base + vertex_count > UINT32_MAX) fail(source, "too many vertices for 32-bit indices");
+  // The counts come from the decoded sizes of strings already in memory: reserving them is safe.
   out.vertices.reserve(base + vertex_count);
-  for (std::size_t v = 0; v < vertex_count; ++v) {
-    float xyz[3];
-    std::memcpy(xyz, vertex_bytes.data() + v * 12, sizeof xyz);  // the file is little-endian, like the hosts we build for
-    if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2]))
-      fail(source, where + ".vertices holds a NaN or infinite coordinate");
-    out.vertices.push_back(pose.apply({xyz[0], xyz[1], xyz[2]}));
-  }
-  const std::size_t index_count = index_bytes.size() / 4;
-  out.indices.reserve(out.indices.size() + index_count);
-  for (std::size_t i = 0; i < index_count; ++i) {
-    std::uint32_t index = 0;
-    std::memcpy(&index, index_bytes.data() + i * 4, sizeof index);
-    if (index >= vertex_count) fail(source, where + ".indices holds index " + std::to_string(index) + " beyond " +
-                                               std::to_string(vertex_count) + " vertices");
-    out.indices.push_back(static_cast<std::uint32_t>(base + index));
-  }
+  decode_base64(vertex_text, source, where + ".vertices", [&](const std::uint8_t* bytes, std::size_t size) {
+    for (std::size_t offset = 0; offset < size; offset += 12) {
+      float xyz[3];
+      std::memcpy(xyz, bytes + offset, sizeof xyz);  // the file is little-endian, like the hosts we build for
+      if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2]))
+        fail(source, where + ".vertices holds a NaN or infinite coordinate");
+      out.vertices.push_back(pose.apply({xyz[0], xyz[1], xyz[2]}));
+    }
+  });
+  std::string().swap(vertex_text);
+  out.indices.reserve(out.indices.size() + index_bytes / 4);
+  decode_base64(index_text, source, where + ".indices", [&](const std::uint8_t* bytes, std::size_t size) {
+    for (std::size_t offset = 0; offset < size; offset += 4) {
+      std::uint32_t index = 0;
+      std::memcpy(&index, bytes + offset, sizeof index);
+      if (index >= vertex_count) fail(source, where + ".indices holds index " + std::to_string(index) + " beyond " +
+                                                 std::to_string(vertex_count) + " vertices");
+      out.indices.push_back(static_cast<std::uint32_t>(base + index));
+    }
+  });
+  std::string().swap(index_text);
 }
 
 // Builds the rect pose from a centre and the three axes (columns) of the OpenXR-convention frame, given in the
@@ -166,16 +190,17 @@ OrientedRect volume_top_rect(const QuestVolume& volume) {
   return rect_in_entity(volume.pose, centre, glm::mat3(x, y, z), volume.extent[u], volume.extent[v]);
 }
 
-QuestCapture parse_quest_capture(std::string_view json_text, const std::string& source) {
-  const json root = json::parse(json_text.begin(), json_text.end(), nullptr, /*allow_exceptions=*/false);
+namespace {
+
+QuestCapture capture_from(json& root, const std::string& source) {
   if (root.is_discarded()) fail(source, "it is not valid JSON");
   if (!root.is_object()) fail(source, "the top level is not a JSON object");
-  const json* entities = member(root, "spatialEntities");
+  json* entities = root.contains("spatialEntities") ? &root["spatialEntities"] : nullptr;
   if (entities == nullptr || !entities->is_array()) fail(source, "it has no \"spatialEntities\" array");
 
   QuestCapture capture;
   std::size_t index = 0;
-  for (const json& entity : *entities) {
+  for (json& entity : *entities) {
     const std::string where = "spatialEntities[" + std::to_string(index++) + "]";
     if (!entity.is_object()) fail(source, where + " is not an object");
     const json* locatable = member(entity, "locatable_META");
@@ -186,7 +211,7 @@ QuestCapture parse_quest_capture(std::string_view json_text, const std::string& 
     if (!locatable->is_object()) fail(source, where + ".locatable_META is not an object");
     const QuestPose pose = pose_from(*locatable, source, where + ".locatable_META");
     const std::string label = text_at(entity, "semanticLabel_META");
-    if (const json* mesh = member(entity, "triangleMesh_META"); mesh != nullptr) {
+    if (json* mesh = entity.contains("triangleMesh_META") ? &entity["triangleMesh_META"] : nullptr; mesh != nullptr) {
       if (!mesh->is_object()) fail(source, where + ".triangleMesh_META is not an object");
       append_mesh(*mesh, pose, capture.mesh, source, where + ".triangleMesh_META");
     }
@@ -218,13 +243,21 @@ QuestCapture parse_quest_capture(std::string_view json_text, const std::string& 
   return capture;
 }
 
+}  // namespace
+
+QuestCapture parse_quest_capture(std::string_view json_text, const std::string& source) {
+  json root = json::parse(json_text.begin(), json_text.end(), nullptr, /*allow_exceptions=*/false);
+  return capture_from(root, source);
+}
+
 QuestCapture load_quest_capture(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw Error(ErrorCode::Io, "cannot read '" + path + "': no such file");
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (!(in && (text << in.rdbuf()))) throw Error(ErrorCode::Io, "cannot read '" + path + "': the file cannot be opened");
-  return parse_quest_capture(text.str(), path);
+  // Parsed straight from the file: a copy of the whole text next to its DOM would double the peak of a
+  // gigabyte capture.
+  std::ifstream in = open_scan_file(path);
+  json root = json::parse(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>(), nullptr,
+                          /*allow_exceptions=*/false);
+  if (in.bad()) throw_read_error(path, "reading it failed");
+  return capture_from(root, path);
 }
 
 bool is_quest_capture_path(const std::string& path) {

@@ -9,7 +9,7 @@ shift || true
 packages=(cmake g++ ninja-build pkg-config
           libopenxr-dev libopenxr-loader1 openxr-layer-corevalidation libopenxr-utils
           libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools glslang-dev
-          libglm-dev nlohmann-json3-dev libassimp-dev libgtest-dev libbenchmark-dev
+          libglm-dev nlohmann-json3-dev libassimp-dev libtinyobjloader-dev libgtest-dev libbenchmark-dev
           libxml2-dev)  # libxml2: tests only (plan.svg is checked with a real XML parser)
 missing=()
 for p in "${packages[@]}"; do

@@ -71,6 +71,8 @@ rs_result to_result(ErrorCode code) {
     case ErrorCode::GridTooLarge: return RS_ERROR_GRID_TOO_LARGE;
     case ErrorCode::BadParameter: return RS_ERROR_INVALID_ARGUMENT;
     case ErrorCode::Io: return RS_ERROR_INTERNAL;
+    case ErrorCode::TooMuchWork: return RS_ERROR_TOO_MUCH_WORK;
+    case ErrorCode::Cancelled: return RS_ERROR_INTERNAL;  // never seen: only a destroyed analyzer is cancelled
   }
   return RS_ERROR_INTERNAL;
 }
@@ -210,6 +212,7 @@ const char* rs_result_string(rs_result result) {
     RS_NAME(RS_ERROR_NO_ROOM)
     RS_NAME(RS_ERROR_OUT_OF_MEMORY)
     RS_NAME(RS_ERROR_INTERNAL)
+    RS_NAME(RS_ERROR_TOO_MUCH_WORK)
 #undef RS_NAME
     default: break;
   }
@@ -239,8 +242,13 @@ rs_result rs_analyzer_create(const rs_analyzer_options* options, rs_analyzer** o
   }
   const float voxel = o.voxel_size == 0.0f ? roomsense::kDefaultVoxelSize : o.voxel_size;
   if (!(voxel >= roomsense::kMinVoxelSize && voxel <= roomsense::kMaxVoxelSize)) return RS_ERROR_INVALID_ARGUMENT;
-  if (o.up_axis != RS_UP_AXIS_Y && o.up_axis != RS_UP_AXIS_Z) return RS_ERROR_INVALID_ARGUMENT;
-  if (o.units != RS_UNITS_METRES && o.units != RS_UNITS_CENTIMETRES && o.units != RS_UNITS_MILLIMETRES)
+  // A C or C# caller can pass any 32 bits in an enum field; a C++ enum cannot hold values beyond its
+  // enumerators' range (reading one is undefined: UBSan's enum check), so they are checked as raw integers.
+  std::uint32_t up_axis = 0, units = 0;
+  std::memcpy(&up_axis, &o.up_axis, sizeof up_axis);
+  std::memcpy(&units, &o.units, sizeof units);
+  if (up_axis != RS_UP_AXIS_Y && up_axis != RS_UP_AXIS_Z) return RS_ERROR_INVALID_ARGUMENT;
+  if (units != RS_UNITS_METRES && units != RS_UNITS_CENTIMETRES && units != RS_UNITS_MILLIMETRES)
     return RS_ERROR_INVALID_ARGUMENT;
   const std::uint32_t all = RS_COMPUTE_AREAS | RS_COMPUTE_BOUNDS;
   if ((o.compute_flags & ~all) != 0) return RS_ERROR_INVALID_ARGUMENT;
@@ -263,7 +271,7 @@ rs_result rs_analyzer_create(const rs_analyzer_options* options, rs_analyzer** o
 
 void rs_analyzer_destroy(rs_analyzer* analyzer) {
   try {
-    delete analyzer;  // ~Job joins a running worker
+    delete analyzer;  // ~Job stops a running worker and joins it
   } catch (...) {
   }
 }
@@ -283,10 +291,13 @@ rs_result rs_analyzer_compute(rs_analyzer* analyzer, const float* xyz, uint32_t 
       scan.vertices[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
     scan.indices.assign(indices, indices + index_count);
     const roomsense::SourceFrame frame = analyzer->frame;
-    const roomsense::AnalysisOptions options = analyzer->options;
+    roomsense::AnalysisOptions options = analyzer->options;
     try {
       const bool started = analyzer->job.start(
-          [scan = std::move(scan), frame, options]() mutable { return run(scan, frame, options); },
+          [scan = std::move(scan), frame, options](std::stop_token stop) mutable {
+            options.stop = std::move(stop);
+            return run(scan, frame, options);
+          },
           /*replace_result=*/true);
       return started ? RS_SUCCESS : RS_ERROR_BUSY;
     } catch (const std::system_error&) {

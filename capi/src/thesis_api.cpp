@@ -52,8 +52,9 @@ void append_area(std::vector<float>& out, const Area& a) {
                          a.half_width, a.rotation_deg, a.volume_height, static_cast<float>(a.flags)});
 }
 
-ThesisOutput understand(const Scan& scan) {
+ThesisOutput understand(const Scan& scan, std::stop_token stop) {
   AnalysisOptions options;
+  options.stop = std::move(stop);
   options.build_bounds = false;
   const AnalysisResult result = analyze(scan, options);
   ThesisOutput out;
@@ -66,8 +67,9 @@ ThesisOutput understand(const Scan& scan) {
   return out;
 }
 
-ThesisOutput bound(const Scan& scan) {
+ThesisOutput bound(const Scan& scan, std::stop_token stop) {
   AnalysisOptions options;
+  options.stop = std::move(stop);
   options.find_areas = false;
   const AnalysisResult result = analyze(scan, options);
   ThesisOutput out;
@@ -84,7 +86,7 @@ ThesisOutput bound(const Scan& scan) {
   return out;
 }
 
-int start(Job<ThesisOutput>& job, const float* positions, int size, ThesisOutput (*work)(const Scan&)) {
+int start(Job<ThesisOutput>& job, const float* positions, int size, ThesisOutput (*work)(const Scan&, std::stop_token)) {
   // Input checks first, without touching the job: bad input is reported as such even while it is busy.
   if (positions == nullptr || size < 1) return kNoInput;
   if (size % 3 != 0) return kSizeNotMultipleOf3;
@@ -98,7 +100,7 @@ int start(Job<ThesisOutput>& job, const float* positions, int size, ThesisOutput
     return job.finish_now(ThesisOutput{}) ? kOk : kBusy;
   }
   try {
-    return job.start([work, scan = std::move(scan)] { return work(scan); }, /*replace_result=*/false) ? kOk
+    return job.start([work, scan = std::move(scan)](std::stop_token stop) { return work(scan, std::move(stop)); }, /*replace_result=*/false) ? kOk
                                                                                                        : kBusy;
   } catch (...) {  // no thread, or no memory for the closure
     return job.finish_now(ThesisOutput{}) ? kOk : kBusy;

@@ -3,6 +3,8 @@
 // with a barrier between dependent passes. Buffers are sized from the grid and kept for later runs.
 #include "roomsense/vulkan_voxel_stage.h"
 
+#include "roomsense/cancel.h"
+
 #include "device_choice.h"
 #include "gpu_buffer.h"
 #include "triangle_work.h"
@@ -36,6 +38,8 @@ namespace {
 static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "vertices are uploaded as packed float triples");
 
 using Clock = std::chrono::steady_clock;
+// How often a wait for the GPU looks at the stop token.
+constexpr std::uint64_t kStopSliceNs = 10'000'000;
 double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 // Where each result lives in the Out buffer (shaders/common.glsl), in 32-bit words.
@@ -106,6 +110,8 @@ class VulkanVoxelStage::Impl {
   std::vector<std::uint32_t> work_;  // the triangle pass's work list (triangle_work.h), reused
   std::chrono::milliseconds timeout_;
   bool unusable_ = false;  // after a timeout or device loss every run goes to the CPU
+  bool submitted_ = false;  // a submission not yet waited for (its run was cancelled)
+  void finish_submission();
   CpuVoxelStage cpu_;
 };
 
@@ -343,6 +349,16 @@ void VulkanVoxelStage::Impl::read_timestamps() {
   timings.gpu_timestamps = true;
 }
 
+void VulkanVoxelStage::Impl::finish_submission() {
+  if (!submitted_) return;
+  const auto timeout_ns = std::uint64_t(std::chrono::nanoseconds(timeout_).count());
+  if (ctx->vk().vkWaitForFences(ctx->device(), 1, fence_.address(), VK_TRUE, timeout_ns) != VK_SUCCESS) {
+    unusable_ = true;
+    throw std::runtime_error("a cancelled submission did not finish within " + std::to_string(timeout_.count()) + " ms");
+  }
+  submitted_ = false;
+}
+
 VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
   if (unusable_) return fall_back(request, "the device timed out or was lost earlier");
   if (const std::string why = unsupported_reason(request); !why.empty()) return fall_back(request, why);
@@ -352,6 +368,14 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
   VulkanRunTimings t;
   auto t0 = Clock::now();
   work_.clear();
+  // The boxes are the GPU's work: past the budget the work list alone could take gigabytes. The CPU scans
+  // only near each triangle's plane, so it may still fit the budget there.
+  const std::uint64_t tests =
+      count_box_tests(request.grid_vertices, request.indices.first(triangles * 3), s.nx, s.ny, s.nz);
+  if (tests > request.test_budget)
+    return fall_back(request, "the triangles' boxes need " + std::to_string(tests) +
+                                  " triangle-voxel tests, more than the work budget of " +
+                                  std::to_string(request.test_budget));
   if (triangles > 0) build_triangle_work(request.grid_vertices, request.indices.first(triangles * 3), s.nx, s.ny, s.nz, work_);
   t.host_work_list_ms = ms_since(t0);
   const std::uint64_t index_words = triangles * 3;
@@ -382,6 +406,7 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
 
   try {
     const DeviceFunctions& vk = ctx->vk();
+    finish_submission();  // a cancelled run's work still owns the buffers
     ensure_buffers(vertex_bytes, index_bytes, bits_bytes, out_bytes);
 
     t0 = Clock::now();
@@ -402,13 +427,21 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
     si.commandBufferCount = 1;
     si.pCommandBuffers = &cmd_;
     check(vk.vkQueueSubmit(ctx->queue(), 1, &si, fence_.get()), "vkQueueSubmit");  // the one submission
-    const auto timeout_ns = std::uint64_t(std::chrono::nanoseconds(timeout_).count());
-    const VkResult waited = vk.vkWaitForFences(ctx->device(), 1, fence_.address(), VK_TRUE, timeout_ns);
+    submitted_ = true;
+    // Waited for in short slices: a stop request returns at once, and the submission, which cannot be
+    // recalled, is waited for by the next run or the destructor (the budget bounds how long it runs).
+    const auto deadline = Clock::now() + timeout_;
+    VkResult waited = VK_TIMEOUT;
+    while (waited == VK_TIMEOUT && Clock::now() < deadline) {
+      stop_point(request.stop);
+      waited = vk.vkWaitForFences(ctx->device(), 1, fence_.address(), VK_TRUE, kStopSliceNs);
+    }
     if (waited == VK_TIMEOUT) {
       unusable_ = true;
       return fall_back(request, "the GPU did not finish within " + std::to_string(timeout_.count()) + " ms");
     }
     check(waited, "vkWaitForFences");
+    submitted_ = false;
     t.submit_wait_ms = ms_since(t0);
 
     t0 = Clock::now();
@@ -416,6 +449,7 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
     if (src == nullptr) throw std::runtime_error("readback memory is not mapped");
     const auto words = [&](std::uint64_t offset) { return src + offset * 4; };
     VoxelStageResult r;
+    r.voxel_tests = tests;
     r.grid = VoxelGrid(s);
     std::memcpy(r.grid.cells.data(), words(0), s.voxel_count());
     r.level_counts.resize(std::size_t(s.ny));
@@ -431,6 +465,8 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
     timings = t;
     read_timestamps();
     return r;
+  } catch (const Error&) {
+    throw;  // cancelled: no fallback
   } catch (const VulkanError& e) {
     if (e.result() == VK_ERROR_DEVICE_LOST) unusable_ = true;
     return fall_back(request, e.what());

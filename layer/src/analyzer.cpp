@@ -49,10 +49,12 @@ std::vector<SourceChunk> query_best_source(const InstanceState& instance, const 
 
 }  // namespace
 
-AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, float voxel_size, BackendChoice backend) {
+AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, float voxel_size, BackendChoice backend,
+                              std::stop_token stop) {
   const Scan scan = merge(pieces);
   AnalysisOptions options;
   options.voxel_size = voxel_size;
+  options.stop = std::move(stop);
   std::unique_ptr<VoxelStage> stage;
 #if ROOMSENSE_HAVE_COMPUTE
   std::string note;
@@ -189,7 +191,7 @@ void Analyzer::run(std::stop_token stop, Job job) {
     if (pieces.empty())
       throw std::runtime_error(job.include_runtime ? "no meshes to analyse: the runtime served none and none were submitted"
                                                    : "no meshes to analyse: none were submitted");
-    const AnalysisResult analysis = analyze_pieces(pieces, settings_.voxel_size, settings_.backend);
+    const AnalysisResult analysis = analyze_pieces(pieces, settings_.voxel_size, settings_.backend, stop);
     if (!analysis.ok()) throw std::runtime_error(analysis.status_message);
     if (stop.stop_requested()) return;
     const auto elapsed = std::chrono::steady_clock::now() - job.started;

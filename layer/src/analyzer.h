@@ -11,6 +11,7 @@
 #include <chrono>
 #include <memory>
 #include <mutex>
+#include <stop_token>
 #include <thread>
 #include <vector>
 
@@ -66,6 +67,8 @@ class Analyzer {
 };
 
 // Runs the core pipeline on `pieces` with the given settings; the stage note (which backend) goes to the log.
-AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, float voxel_size, BackendChoice backend);
+// A stop request ends it with Error(Cancelled) within about 100 ms.
+AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, float voxel_size, BackendChoice backend,
+                              std::stop_token stop = {});
 
 }  // namespace roomsense::layer

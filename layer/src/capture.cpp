@@ -6,6 +6,8 @@
 #include "results.h"
 #include "sources/source_support.h"
 
+#include "roomsense/error.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstring>
@@ -22,7 +24,7 @@ XrSpace capture_space(SessionState& session) {
     if (XR_FAILED(r)) {
       session.capture_space = XR_NULL_HANDLE;
       session.capture_space_failed = true;
-      log_warn("cannot create a LOCAL space for capturing scene meshes (XrResult " + std::to_string(r) + ")");
+      log_warn("cannot create a LOCAL space for capturing scene meshes (" + xr::result_name(r) + ")");
     }
   }
   return session.capture_space;
@@ -93,7 +95,7 @@ void capture_read_done(const std::shared_ptr<SessionState>& session) {
 
 // ---- export-only analyses
 
-void export_captured(SessionState& session) {
+void export_captured(SessionState& session, std::stop_token stop) {
   std::vector<std::shared_ptr<const CapturedMesh>> captured;
   std::uint64_t generation;
   {
@@ -106,7 +108,7 @@ void export_captured(SessionState& session) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<const MeshPiece*> pieces;
     for (const auto& c : captures_of_best_source(captured)) pieces.push_back(&c->chunk.mesh);
-    const AnalysisResult analysis = analyze_pieces(pieces, kDefaultVoxelSize, session.instance->config.env_backend);
+    const AnalysisResult analysis = analyze_pieces(pieces, kDefaultVoxelSize, session.instance->config.env_backend, stop);
     if (!analysis.ok()) {
       log_warn("export: the scene meshes the application read hold no room yet: " + analysis.status_message);
     } else {
@@ -117,6 +119,9 @@ void export_captured(SessionState& session) {
       const RoomResult result = make_room_result(analysis, sources, elapsed.count());
       export_files(session.instance->config.export_dir, result, analysis.bounds);
     }
+  } catch (const Error& e) {
+    if (e.code() == ErrorCode::Cancelled) return;  // not exported: the session's end exports it
+    log_warn(std::string("export: analysis of the captured scene meshes failed: ") + e.what());
   } catch (const std::exception& e) {
     log_warn(std::string("export: analysis of the captured scene meshes failed: ") + e.what());
   }
@@ -136,7 +141,7 @@ void request_export(const std::shared_ptr<SessionState>& session) {
           if (!s->export_wake.wait(lock, stop, [s] { return s->export_pending; })) return;
           s->export_pending = false;
         }
-        export_captured(*s);
+        export_captured(*s, stop);
       }
     });
   }

@@ -36,6 +36,7 @@ void capture_read_done(const std::shared_ptr<SessionState>& session);
 void request_export(const std::shared_ptr<SessionState>& session);
 
 // Analyses and exports what was captured since the last export-only analysis, on the calling thread.
-void export_captured(SessionState& session);
+// A stop request abandons the analysis (the export worker's shutdown).
+void export_captured(SessionState& session, std::stop_token stop = {});
 
 }  // namespace roomsense::layer

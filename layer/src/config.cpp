@@ -1,6 +1,7 @@
 #include "config.h"
 
 #include "log.h"
+#include "sources/source_support.h"
 
 #include <algorithm>
 #include <cctype>
@@ -19,6 +20,13 @@ Config read_config() {
     else if (v == "vulkan") c.env_backend = BackendChoice::Vulkan;
     else log_warn(std::string("ROOMSENSE_BACKEND='") + env + "' ignored (auto, cpu or vulkan)");
   }
+  if (const char* env = std::getenv("ROOMSENSE_RUNTIME_TIMEOUT_MS"); env != nullptr && *env != '\0') {
+    char* end = nullptr;
+    const long long ms = std::strtoll(env, &end, 10);
+    if (*end == '\0' && ms >= 1 && ms <= 600000) c.runtime_timeout = std::chrono::milliseconds(ms);
+    else log_warn(std::string("ROOMSENSE_RUNTIME_TIMEOUT_MS='") + env + "' ignored (1 to 600000)");
+  }
+  set_runtime_timeout(c.runtime_timeout);  // the sources' waits (one instance at a time: the loader's limit)
   return c;
 }
 

@@ -1,7 +1,9 @@
 // The layer's configuration, read from the environment at each xrCreateInstance (DESIGN.md's table):
-// ROOMSENSE_EXPORT_DIR and ROOMSENSE_BACKEND here; ROOMSENSE_LOG and ROOMSENSE_LOG_FILE in log.h.
+// ROOMSENSE_EXPORT_DIR, ROOMSENSE_BACKEND and ROOMSENSE_RUNTIME_TIMEOUT_MS here; ROOMSENSE_LOG and
+// ROOMSENSE_LOG_FILE in log.h.
 // DISABLE_XR_APILAYER_ROOMSENSE is the loader's business (the manifest's disable_environment).
 #pragma once
+#include <chrono>
 #include <string>
 
 namespace roomsense::layer {
@@ -11,6 +13,8 @@ enum class BackendChoice { Auto, Cpu, Vulkan };
 struct Config {
   std::string export_dir;                          // empty: no export
   BackendChoice env_backend = BackendChoice::Auto;  // ROOMSENSE_BACKEND; applies where the app asks for AUTO
+  // ROOMSENSE_RUNTIME_TIMEOUT_MS: how long a mesh source waits for a future or query that never completes.
+  std::chrono::milliseconds runtime_timeout = std::chrono::seconds(10);
 };
 
 Config read_config();

@@ -237,6 +237,7 @@ void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa,
   for (const SourceInfo* source : sources) {
     try {
       EnabledSource e{source, source->create(next_gipa, instance), true};
+      e.source->name = source->name;
       for (const ExtensionFunctions& x : source->extensions) e.app_enabled = e.app_enabled && enabled(info, x.extension);
       state->sources.push_back(std::move(e));
       used += std::string(used.empty() ? "" : ", ") + source->name;

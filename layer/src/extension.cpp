@@ -36,6 +36,7 @@ XrResult XRAPI_CALL xrCreateRoomAnalyzerEXTX(XrSession session, const XrRoomAnal
     if (!s) return XR_ERROR_HANDLE_INVALID;
     if (!s->instance->extx) return XR_ERROR_FUNCTION_UNSUPPORTED;
     if (!has_type(createInfo, XR_TYPE_ROOM_ANALYZER_CREATE_INFO_EXTX) || analyzer == nullptr) return XR_ERROR_VALIDATION_FAILURE;
+    if (s->lost.load()) return XR_ERROR_SESSION_LOST;  // the runtime said so to one of the layer's calls
     if (createInfo->baseSpace == XR_NULL_HANDLE) return XR_ERROR_HANDLE_INVALID;
     const float voxel = createInfo->voxelSize;
     if (!std::isfinite(voxel) || (voxel != 0.0f && (voxel < kMinVoxel || voxel > kMaxVoxel))) return XR_ERROR_VALIDATION_FAILURE;
@@ -124,6 +125,7 @@ XrResult XRAPI_CALL xrComputeRoomEXTX(XrRoomAnalyzerEXTX analyzer, const XrRoomC
     if (!a) return XR_ERROR_HANDLE_INVALID;
     if (!has_type(computeInfo, XR_TYPE_ROOM_COMPUTE_INFO_EXTX)) return XR_ERROR_VALIDATION_FAILURE;
     if (computeInfo->time <= 0) return XR_ERROR_TIME_INVALID;
+    if (a->session()->lost.load()) return XR_ERROR_SESSION_LOST;  // the runtime said so to one of the layer's calls
     return a->compute(*computeInfo);
   });
 }

@@ -9,6 +9,7 @@
 
 #include <openxr/openxr.h>
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -66,6 +67,8 @@ struct SessionState {
   XrSession handle = XR_NULL_HANDLE;
   std::shared_ptr<InstanceState> instance;
   XrSystemId system = XR_NULL_SYSTEM_ID;
+  // A call of the layer's in it came back XR_ERROR_SESSION_LOST: queries and computes stop calling the runtime.
+  std::atomic<bool> lost{false};
 
   std::mutex mutex;  // guards everything below
   XrSpace capture_space = XR_NULL_HANDLE;  // a LOCAL space of the layer's, created at the first capture

@@ -1,6 +1,7 @@
 // Parsing of the ROOMSENSE_SIM_* environment variables (documented in ../README.md).
 #include "config.h"
 
+#include "faults.h"
 #include "pose_math.h"
 
 #include <cmath>
@@ -65,6 +66,9 @@ Config config_from_environment() {
       throw std::invalid_argument(std::string("ROOMSENSE_SIM_COMPUTE_DELAY_MS='") + delay + "' must be in [0, 60000]");
     config.compute_delay_ms = static_cast<int>(v[0]);
   }
+  // Parsed before anything is installed: a bad value leaves the previous instance's plan (and fails this one).
+  const char* fault_spec = env("ROOMSENSE_SIM_FAULTS");
+  faults::install(std::make_shared<const faults::Plan>(faults::parse(fault_spec != nullptr ? fault_spec : "")));
   return config;
 }
 

@@ -13,7 +13,8 @@ struct Config {
   int compute_delay_ms = 20;        // ROOMSENSE_SIM_COMPUTE_DELAY_MS: how long a scene compute stays UPDATING
 };
 
-// Throws std::invalid_argument with a message naming the variable when a value cannot be parsed.
+// Throws std::invalid_argument with a message naming the variable when a value cannot be parsed. Also parses
+// ROOMSENSE_SIM_FAULTS and installs it (faults.h) for every call until the next instance.
 Config config_from_environment();
 
 }  // namespace roomsense::sim

@@ -1,5 +1,5 @@
-// The frame loop of a headless session: paced at 90 Hz, never asks to render, accepts no layers (there are
-// no swapchains). Also xrLocateViews, so an app can ask where the eyes are.
+// The frame loop of a headless session: paced at 90 Hz, never asks to render, accepts and ignores layers
+// (there are no swapchains to compose). Also xrLocateViews, so an app can ask where the eyes are.
 #include "functions.h"
 #include "runtime.h"
 #include "spaces.h"
@@ -73,8 +73,15 @@ XrResult XRAPI_CALL xrEndFrame(XrSession session, const XrFrameEndInfo* frameEnd
         blend != XR_ENVIRONMENT_BLEND_MODE_ALPHA_BLEND)
       return XR_ERROR_VALIDATION_FAILURE;
     if (blend != XR_ENVIRONMENT_BLEND_MODE_OPAQUE) return XR_ERROR_ENVIRONMENT_BLEND_MODE_UNSUPPORTED;
-    // Any layer would name a swapchain, and a headless session has none.
-    if (frameEndInfo->layerCount > 0) return XR_ERROR_LAYER_INVALID;
+    // Headless: nothing is composed, so the layers' contents (swapchains, views) are ignored; only what the
+    // spec asks of every runtime is checked.
+    if (frameEndInfo->layerCount > kMaxLayerCount) return XR_ERROR_LAYER_LIMIT_EXCEEDED;
+    for (uint32_t i = 0; i < frameEndInfo->layerCount; ++i) {
+      const XrCompositionLayerBaseHeader* layer = frameEndInfo->layers[i];
+      if (layer == nullptr) return XR_ERROR_LAYER_INVALID;
+      if (layer->type != XR_TYPE_COMPOSITION_LAYER_PROJECTION && layer->type != XR_TYPE_COMPOSITION_LAYER_QUAD)
+        return XR_ERROR_LAYER_INVALID;
+    }
     state->frame_begun = false;
     return XR_SUCCESS;
   });
@@ -90,9 +97,18 @@ XrResult XRAPI_CALL xrLocateViews(XrSession session, const XrViewLocateInfo* vie
     const SpaceState* base = runtime().space(viewLocateInfo->space);
     if (base == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (base->session != id_of(session)) return XR_ERROR_VALIDATION_FAILURE;
+    if (!is_view_configuration_type(viewLocateInfo->viewConfigurationType)) return XR_ERROR_VALIDATION_FAILURE;
     if (viewLocateInfo->viewConfigurationType != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO)
       return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
     if (viewLocateInfo->displayTime <= 0) return XR_ERROR_TIME_INVALID;
+    if (base->action != 0) {
+      // An action space is never located, so neither are the views in it.
+      viewState->viewStateFlags = 0;
+      return two_call_typed(capacity, countOutput, views, 2, XR_TYPE_VIEW, [](XrView& v, std::size_t) {
+        v.pose = {{0, 0, 0, 1}, {0, 0, 0}};
+        v.fov = {};
+      });
+    }
     Rigid base_world;
     if (!space_in_world(*base, base_world)) return XR_ERROR_HANDLE_INVALID;
     const InstanceState* owner = Runtime::find(runtime().instances, runtime().session(session)->instance);

@@ -17,17 +17,23 @@
   _(xrGetReferenceSpaceBoundsRect) _(xrLocateSpace) _(xrDestroySpace) _(xrEnumerateViewConfigurations)       \
   _(xrGetViewConfigurationProperties) _(xrEnumerateViewConfigurationViews) _(xrBeginSession) _(xrEndSession) \
   _(xrRequestExitSession) _(xrWaitFrame) _(xrBeginFrame) _(xrEndFrame) _(xrLocateViews) _(xrStringToPath)    \
-  _(xrPathToString)
+  _(xrPathToString) SIM_SWAPCHAIN_FUNCTIONS(_) SIM_ACTION_FUNCTIONS(_)
 
-// Core functions a headless scene simulator has no use for: they answer XR_ERROR_FUNCTION_UNSUPPORTED.
-#define SIM_UNSUPPORTED_CORE_FUNCTIONS(_)                                                                   \
+// Swapchains of a headless session (swapchains.cpp): zero formats, so none can be created.
+#define SIM_SWAPCHAIN_FUNCTIONS(_)                                                                          \
   _(xrEnumerateSwapchainFormats) _(xrCreateSwapchain) _(xrDestroySwapchain) _(xrEnumerateSwapchainImages)    \
-  _(xrAcquireSwapchainImage) _(xrWaitSwapchainImage) _(xrReleaseSwapchainImage) _(xrCreateActionSpace)       \
+  _(xrAcquireSwapchainImage) _(xrWaitSwapchainImage) _(xrReleaseSwapchainImage)
+
+// The action system (actions.cpp, input.cpp, action_spaces.cpp): with no device, every action is inactive.
+#define SIM_ACTION_FUNCTIONS(_)                                                                             \
   _(xrCreateActionSet) _(xrDestroyActionSet) _(xrCreateAction) _(xrDestroyAction)                            \
   _(xrSuggestInteractionProfileBindings) _(xrAttachSessionActionSets) _(xrGetCurrentInteractionProfile)     \
   _(xrGetActionStateBoolean) _(xrGetActionStateFloat) _(xrGetActionStateVector2f) _(xrGetActionStatePose)    \
   _(xrSyncActions) _(xrEnumerateBoundSourcesForAction) _(xrGetInputSourceLocalizedName)                      \
-  _(xrApplyHapticFeedback) _(xrStopHapticFeedback)
+  _(xrApplyHapticFeedback) _(xrStopHapticFeedback) _(xrCreateActionSpace)
+
+// Core functions that answer XR_ERROR_FUNCTION_UNSUPPORTED: none (every OpenXR 1.0 function is served).
+#define SIM_UNSUPPORTED_CORE_FUNCTIONS(_)
 
 // XR_KHR_convert_timespec_time.
 #define SIM_TIMESPEC_FUNCTIONS(_) _(xrConvertTimespecTimeToTimeKHR) _(xrConvertTimeToTimespecTimeKHR)

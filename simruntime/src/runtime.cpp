@@ -45,6 +45,7 @@ void Runtime::destroy_session(std::uint64_t id, Graveyard& graveyard) {
     if (InstanceState* owner = find(instances, it->second->instance))
       std::erase_if(owner->events, [id](const SessionEvent& e) { return e.session == id; });
     sessions.erase(it);
+    input.forget_session(id);
     graveyard.sessions.push_back(id);
   }
 }
@@ -54,6 +55,7 @@ void Runtime::destroy_instance(std::uint64_t id, Graveyard& graveyard) {
   for (const auto& [sid, session] : sessions)
     if (session->instance == id) owned.push_back(sid);
   for (std::uint64_t sid : owned) destroy_session(sid, graveyard);
+  input.forget_instance(id);
   if (instances.erase(id) > 0) graveyard.instances.push_back(id);
 }
 

@@ -2,6 +2,7 @@
 // plenty for a simulator and makes every entry point trivially thread-safe; the only long work (a scene
 // compute) runs on its own thread with its own lock (ComputeJob).
 #pragma once
+#include "actions.h"
 #include "config.h"
 #include "room_source.h"
 #include "scene_data.h"
@@ -25,6 +26,14 @@ namespace roomsense::sim {
 inline constexpr XrSystemId kSystemId = 1;
 inline constexpr const char* kRuntimeName = "roomsense simulated runtime";
 inline constexpr const char* kSystemName = "roomsense simulated headset (headless)";
+inline constexpr uint32_t kMaxLayerCount = 16;            // XrSystemGraphicsProperties: the spec's minimum
+inline constexpr uint32_t kMaxSwapchainImageSize = 4096;  // ... and at least the views' maximum image rectangles
+
+// A view configuration type valid here: the core ones (no extension that adds one is ever enabled). Others are
+// XR_ERROR_VALIDATION_FAILURE; valid ones other than stereo are XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED.
+inline bool is_view_configuration_type(XrViewConfigurationType type) {
+  return type == XR_VIEW_CONFIGURATION_TYPE_PRIMARY_MONO || type == XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
+}
 
 XrTime now_time();  // CLOCK_MONOTONIC in nanoseconds, as XR_KHR_convert_timespec_time says
 
@@ -69,7 +78,8 @@ struct SessionState {
 struct SpaceState {
   std::uint64_t session = 0;
   XrReferenceSpaceType type = XR_REFERENCE_SPACE_TYPE_LOCAL;
-  XrPosef pose_in_reference{{0, 0, 0, 1}, {0, 0, 0}};
+  XrPosef pose_in_reference{{0, 0, 0, 1}, {0, 0, 0}};  // or in the action's pose, for an action space
+  std::uint64_t action = 0;  // an action space's pose action (actions.h); 0 for a reference space
 };
 
 // Shared between an observer and its compute thread.
@@ -99,6 +109,7 @@ struct Runtime {
   std::unordered_map<std::uint64_t, std::unique_ptr<SpaceState>> spaces;
   std::unordered_map<std::uint64_t, std::unique_ptr<ObserverState>> observers;
   std::unordered_map<std::uint64_t, std::unique_ptr<SceneState>> scenes;
+  ActionSystem input;  // action sets and actions
   std::uint64_t next_id = 0x52530001;  // one counter for every type: a handle of the wrong type is never found
 
   std::uint64_t new_id() { return next_id++; }

@@ -71,9 +71,7 @@ XrResult XRAPI_CALL xrBeginSession(XrSession session, const XrSessionBeginInfo* 
     if (state == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (!has_type(beginInfo, XR_TYPE_SESSION_BEGIN_INFO)) return XR_ERROR_VALIDATION_FAILURE;
     const XrViewConfigurationType view = beginInfo->primaryViewConfigurationType;
-    if (view != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_MONO && view != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO &&
-        view != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_QUAD_VARJO && view != XR_VIEW_CONFIGURATION_TYPE_SECONDARY_MONO_FIRST_PERSON_OBSERVER_MSFT)
-      return XR_ERROR_VALIDATION_FAILURE;
+    if (!is_view_configuration_type(view)) return XR_ERROR_VALIDATION_FAILURE;
     if (view != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
     if (state->running) return XR_ERROR_SESSION_RUNNING;
     if (state->state != XR_SESSION_STATE_READY) return XR_ERROR_SESSION_NOT_READY;

@@ -24,6 +24,7 @@ bool space_in_world(const SpaceState& space, Rigid& out) {
   const SessionState* session = Runtime::find(rt.sessions, space.session);
   const InstanceState* instance = session ? Runtime::find(rt.instances, session->instance) : nullptr;
   if (instance == nullptr) return false;
+  if (space.action != 0) return false;  // action spaces are never located
   out = reference_in_world(instance->config, space.type) * to_rigid(space.pose_in_reference);
   return true;
 }
@@ -43,7 +44,7 @@ XrResult XRAPI_CALL xrCreateReferenceSpace(XrSession session, const XrReferenceS
     std::lock_guard lock(runtime().mutex);
     if (runtime().session(session) == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (!has_type(createInfo, XR_TYPE_REFERENCE_SPACE_CREATE_INFO) || space == nullptr) return XR_ERROR_VALIDATION_FAILURE;
-    if (!is_reference_space_type(createInfo->referenceSpaceType)) return XR_ERROR_VALIDATION_FAILURE;
+    // Any other value, defined or not, is unsupported (the CTS asks for this code for ..._MAX_ENUM too).
     if (!is_supported_reference_space(createInfo->referenceSpaceType)) return XR_ERROR_REFERENCE_SPACE_UNSUPPORTED;
     if (!is_valid_pose(createInfo->poseInReferenceSpace)) return XR_ERROR_POSE_INVALID;
     auto state = std::make_unique<SpaceState>();
@@ -78,6 +79,13 @@ XrResult XRAPI_CALL xrLocateSpace(XrSpace space, XrSpace baseSpace, XrTime time,
     if (target->session != base->session) return XR_ERROR_VALIDATION_FAILURE;
     if (!has_type(location, XR_TYPE_SPACE_LOCATION)) return XR_ERROR_VALIDATION_FAILURE;
     if (time <= 0) return XR_ERROR_TIME_INVALID;
+    if (target->action != 0 || base->action != 0) {
+      // An action space follows a device, and there is none: not located.
+      location->pose = {{0, 0, 0, 1}, {0, 0, 0}};
+      location->locationFlags = 0;
+      if (auto* velocity = find_next<XrSpaceVelocity>(location->next, XR_TYPE_SPACE_VELOCITY)) velocity->velocityFlags = 0;
+      return XR_SUCCESS;
+    }
     Rigid target_world, base_world;
     if (!space_in_world(*target, target_world) || !space_in_world(*base, base_world)) return XR_ERROR_HANDLE_INVALID;
     location->pose = to_pose(base_world.inverse() * target_world);

@@ -8,7 +8,8 @@ namespace roomsense::sim {
 bool is_reference_space_type(XrReferenceSpaceType type);  // a value the spec defines
 bool is_supported_reference_space(XrReferenceSpaceType type);
 Rigid reference_in_world(const Config& config, XrReferenceSpaceType type);
-// Looks the space's session and instance up; null result pointer on a broken chain. Call under the lock.
+// Looks the space's session and instance up; false on a broken chain and for action spaces (never located).
+// Call under the lock.
 bool space_in_world(const SpaceState& space, Rigid& out);
 
 }  // namespace roomsense::sim

@@ -9,14 +9,6 @@
 namespace roomsense::sim {
 namespace {
 
-bool is_form_factor(XrFormFactor f) {
-  return f == XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY || f == XR_FORM_FACTOR_HANDHELD_DISPLAY;
-}
-bool is_view_configuration(XrViewConfigurationType t) {
-  return t == XR_VIEW_CONFIGURATION_TYPE_PRIMARY_MONO || t == XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO ||
-         t == XR_VIEW_CONFIGURATION_TYPE_PRIMARY_QUAD_VARJO ||
-         t == XR_VIEW_CONFIGURATION_TYPE_SECONDARY_MONO_FIRST_PERSON_OBSERVER_MSFT;
-}
 
 // Common prologue: a live instance and our system id.
 XrResult check_system(XrInstance instance, XrSystemId systemId) {
@@ -31,7 +23,8 @@ XrResult XRAPI_CALL xrGetSystem(XrInstance instance, const XrSystemGetInfo* getI
     std::lock_guard lock(runtime().mutex);
     if (runtime().instance(instance) == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (!has_type(getInfo, XR_TYPE_SYSTEM_GET_INFO) || systemId == nullptr) return XR_ERROR_VALIDATION_FAILURE;
-    if (!is_form_factor(getInfo->formFactor)) return XR_ERROR_VALIDATION_FAILURE;
+    // Any other value, defined or not, is a form factor this runtime does not support (the CTS asks for this
+    // code for XR_FORM_FACTOR_MAX_ENUM too).
     if (getInfo->formFactor != XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY) return XR_ERROR_FORM_FACTOR_UNSUPPORTED;
     *systemId = kSystemId;
     return XR_SUCCESS;
@@ -47,7 +40,9 @@ XrResult XRAPI_CALL xrGetSystemProperties(XrInstance instance, XrSystemId system
     properties->vendorId = 0x5253;  // "RS"
     std::strncpy(properties->systemName, kSystemName, XR_MAX_SYSTEM_NAME_SIZE - 1);
     properties->systemName[XR_MAX_SYSTEM_NAME_SIZE - 1] = '\0';
-    properties->graphicsProperties = {0, 0, 0};  // headless: no swapchains
+    // Headless sessions have no swapchains, but the limits are the system's: the spec's minimum of 16 layers,
+    // and images at least as large as the views' maximum image rectangles.
+    properties->graphicsProperties = {kMaxSwapchainImageSize, kMaxSwapchainImageSize, kMaxLayerCount};
     properties->trackingProperties = {XR_TRUE, XR_TRUE};
     if (auto* meshing = find_next<XrSystemSceneMeshingPropertiesANDROID>(properties->next, XR_TYPE_SYSTEM_SCENE_MESHING_PROPERTIES_ANDROID))
       meshing->supportsSceneMeshing = runtime().instance(instance)->has(XR_ANDROID_SCENE_MESHING_EXTENSION_NAME) ? XR_TRUE : XR_FALSE;
@@ -60,7 +55,7 @@ XrResult XRAPI_CALL xrEnumerateEnvironmentBlendModes(XrInstance instance, XrSyst
   return guarded("xrEnumerateEnvironmentBlendModes", [&]() -> XrResult {
     std::lock_guard lock(runtime().mutex);
     if (XrResult r = check_system(instance, systemId); r != XR_SUCCESS) return r;
-    if (!is_view_configuration(type)) return XR_ERROR_VALIDATION_FAILURE;
+    if (!is_view_configuration_type(type)) return XR_ERROR_VALIDATION_FAILURE;
     if (type != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
     return two_call(capacity, countOutput, modes, std::vector<XrEnvironmentBlendMode>{XR_ENVIRONMENT_BLEND_MODE_OPAQUE});
   });
@@ -80,7 +75,7 @@ XrResult XRAPI_CALL xrGetViewConfigurationProperties(XrInstance instance, XrSyst
   return guarded("xrGetViewConfigurationProperties", [&]() -> XrResult {
     std::lock_guard lock(runtime().mutex);
     if (XrResult r = check_system(instance, systemId); r != XR_SUCCESS) return r;
-    if (!has_type(properties, XR_TYPE_VIEW_CONFIGURATION_PROPERTIES) || !is_view_configuration(type)) return XR_ERROR_VALIDATION_FAILURE;
+    if (!has_type(properties, XR_TYPE_VIEW_CONFIGURATION_PROPERTIES) || !is_view_configuration_type(type)) return XR_ERROR_VALIDATION_FAILURE;
     if (type != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
     properties->viewConfigurationType = type;
     properties->fovMutable = XR_FALSE;
@@ -93,7 +88,7 @@ XrResult XRAPI_CALL xrEnumerateViewConfigurationViews(XrInstance instance, XrSys
   return guarded("xrEnumerateViewConfigurationViews", [&]() -> XrResult {
     std::lock_guard lock(runtime().mutex);
     if (XrResult r = check_system(instance, systemId); r != XR_SUCCESS) return r;
-    if (!is_view_configuration(type)) return XR_ERROR_VALIDATION_FAILURE;
+    if (!is_view_configuration_type(type)) return XR_ERROR_VALIDATION_FAILURE;
     if (type != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
     return two_call_typed(capacity, countOutput, views, 2, XR_TYPE_VIEW_CONFIGURATION_VIEW, [](XrViewConfigurationView& v, std::size_t) {
       v.recommendedImageRectWidth = v.maxImageRectWidth = 1024;

@@ -207,3 +207,60 @@ INSTANTIATE_TEST_SUITE_P(Rooms, CapiConsistency, ::testing::Values("default", "r
 
 }  // namespace
 }  // namespace roomsense
+
+namespace roomsense {
+namespace {
+
+std::vector<float> flat_xyz(const Scan& scan) {
+  std::vector<float> xyz;
+  for (const glm::vec3& v : scan.vertices) xyz.insert(xyz.end(), {v.x, v.y, v.z});
+  return xyz;
+}
+
+// Destroying an analyzer stops its compute: the default room at 2 cm voxels takes seconds (most of it in
+// the area search), and the destroy must not wait for them. The bound is a hang detector; the promise is
+// 100 ms (measured in the issue-18 note).
+TEST(CapiCancellation, DestroyDuringAComputeReturnsPromptly) {
+  const Scan scan = synth::generate(synth::default_room());
+  const std::vector<float> xyz = flat_xyz(scan);
+  for (const int delay_ms : {0, 30, 300}) {
+    rs_analyzer_options options;
+    rs_analyzer_options_init(&options);
+    options.voxel_size = 0.02f;
+    rs_analyzer* analyzer = nullptr;
+    ASSERT_EQ(rs_analyzer_create(&options, &analyzer), RS_SUCCESS);
+    ASSERT_EQ(rs_analyzer_compute(analyzer, xyz.data(), std::uint32_t(scan.vertices.size()), scan.indices.data(),
+                                  std::uint32_t(scan.indices.size())),
+              RS_SUCCESS);
+    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+    rs_state state;
+    ASSERT_EQ(rs_analyzer_state(analyzer, &state), RS_SUCCESS);
+    EXPECT_EQ(state, RS_STATE_RUNNING) << "the compute finished before the destroy: make it slower";
+    const auto start = std::chrono::steady_clock::now();
+    rs_analyzer_destroy(analyzer);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(3)) << "after " << delay_ms << " ms";
+  }
+}
+
+TEST(CapiCancellation, TooMuchWorkIsItsOwnResult) {
+  // Room-sized triangles at 1 cm voxels: hundreds of millions of triangle-voxel tests.
+  const std::vector<float> xyz = {0, 0, 0, 3, 0, 0, 3, 2.5f, 0, 0, 2.5f, 2.5f, 3, 0, 2.5f, 0, 0, 2.5f};
+  std::vector<std::uint32_t> indices;
+  for (int i = 0; i < 1500; ++i) indices.insert(indices.end(), {std::uint32_t(i % 3), 3, std::uint32_t(4 + i % 2)});
+  rs_analyzer_options options;
+  rs_analyzer_options_init(&options);
+  options.voxel_size = 0.01f;
+  rs_analyzer* analyzer = nullptr;
+  ASSERT_EQ(rs_analyzer_create(&options, &analyzer), RS_SUCCESS);
+  ASSERT_EQ(rs_analyzer_compute(analyzer, xyz.data(), 6, indices.data(), std::uint32_t(indices.size())), RS_SUCCESS);
+  rs_state state = RS_STATE_RUNNING;
+  ASSERT_EQ(rs_analyzer_wait(analyzer, 60'000, &state), RS_SUCCESS);
+  EXPECT_EQ(state, RS_STATE_FAILED);
+  rs_layout layout;
+  EXPECT_EQ(rs_analyzer_get_layout(analyzer, &layout), RS_ERROR_TOO_MUCH_WORK);
+  EXPECT_STREQ(rs_result_string(RS_ERROR_TOO_MUCH_WORK), "RS_ERROR_TOO_MUCH_WORK");
+  rs_analyzer_destroy(analyzer);
+}
+
+}  // namespace
+}  // namespace roomsense

@@ -230,8 +230,7 @@ void expect_export_of_what_the_app_read(const Headset& headset, const std::strin
   // The whole room, within the submeshes' (blocks') rounding.
   JsonDiff d;
   for (const char* member : kRoomMembers) {
-    nlohmann::json g = doc.at(member), w = cli.at(member);
-    if (std::string(member) == "grid") g.erase("backend"), w.erase("backend");
+    nlohmann::json g = room_member(doc, member), w = room_member(cli, member);
     diff_json(g, w, member, d);
   }
   for (const std::string& m : d.mismatches) ADD_FAILURE() << headset.extension << ": " << m;

@@ -29,6 +29,24 @@ inline glm::dvec3 posed(const XrPosef& pose, const XrVector3f& v) {
   return q * glm::dvec3(v.x, v.y, v.z) + glm::dvec3(pose.position.x, pose.position.y, pose.position.z);
 }
 
+// The file's mesh with vertices of equal position joined, in first-seen order (what assimp's loader gave
+// before scanio read OBJ and PLY itself): a runtime serves each position once per chunk, so the comparison
+// below maps served vertices to distinct file positions.
+inline roomsense::Scan join_identical_vertices(const roomsense::Scan& file) {
+  roomsense::Scan joined;
+  std::map<std::array<float, 3>, uint32_t> ids;
+  std::vector<uint32_t> to_joined(file.vertices.size());
+  for (std::size_t v = 0; v < file.vertices.size(); ++v) {
+    const glm::vec3& p = file.vertices[v];
+    const auto [it, fresh] = ids.emplace(std::array<float, 3>{p.x, p.y, p.z}, uint32_t(joined.vertices.size()));
+    if (fresh) joined.vertices.push_back(p);
+    to_joined[v] = it->second;
+  }
+  joined.indices.reserve(file.indices.size());
+  for (const uint32_t i : file.indices) joined.indices.push_back(to_joined[i]);
+  return joined;
+}
+
 inline MeshComparison compare_with_file(const roomsense::Scan& file, const std::vector<ComponentMesh>& served) {
   // Hash grid over the file's vertices, 1 cm cells.
   constexpr double cell = 0.01;

@@ -1,11 +1,11 @@
 // A whole headless app run as one process: instance, session state machine, a scene with every mesh read,
-// a few frames, exit. ctest runs it plain and with the core validation layer stacked (which must stay
+// input (actions, all inactive) and a few frames, exit. ctest runs it plain and with the core validation layer stacked (which must stay
 // silent); --provoke makes one invalid call so that the layer's reporting can be seen to work.
 // --skip-mesh-buffers leaves out xrGetSceneMeshBuffersMSFT: Debian's core validation 1.0.20 rejects every
 // XrSceneMeshBuffersMSFT whose next chain holds the vertex or index structs the spec requires there
 // (VUID-XrSceneMeshBuffersMSFT-next-next, a false positive on the app's input before the runtime is called),
 // so that one call cannot be run under the layer. The plain smoke run and the gtest suite cover it.
-#include "xr_harness.h"
+#include "input_harness.h"
 
 #include <cstdio>
 #include <cstring>
@@ -49,11 +49,16 @@ int run(int argc, char** argv) {
     }
   }
   App app;
+  const Input input(app);
   if (drain(app, XR_SESSION_STATE_UNKNOWN) != XR_SESSION_STATE_READY) throw std::runtime_error("session not READY");
   XrSessionBeginInfo begin{XR_TYPE_SESSION_BEGIN_INFO};
   begin.primaryViewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
   SIM_CHECK(xrBeginSession(app.session, &begin));
   if (drain(app, XR_SESSION_STATE_READY) != XR_SESSION_STATE_FOCUSED) throw std::runtime_error("session not FOCUSED");
+
+  uint32_t formats = 1;
+  SIM_CHECK(xrEnumerateSwapchainFormats(app.session, 0, &formats, nullptr));
+  if (formats != 0) throw std::runtime_error("a headless session with swapchain formats");
 
   XrSceneObserverMSFT observer = XR_NULL_HANDLE;
   XrSceneObserverCreateInfoMSFT observer_info{XR_TYPE_SCENE_OBSERVER_CREATE_INFO_MSFT};
@@ -80,6 +85,13 @@ int run(int argc, char** argv) {
     SIM_CHECK(xrBeginFrame(app.session, &frame_begin));
     XrSpaceLocation location{XR_TYPE_SPACE_LOCATION};
     SIM_CHECK(xrLocateSpace(view, app.local, state.predictedDisplayTime, &location));
+    SIM_CHECK(sync(app.session, input.set));
+    XrActionStateGetInfo get{XR_TYPE_ACTION_STATE_GET_INFO};
+    get.action = input.select;
+    XrActionStateBoolean select{XR_TYPE_ACTION_STATE_BOOLEAN};
+    SIM_CHECK(xrGetActionStateBoolean(app.session, &get, &select));
+    SIM_CHECK(xrLocateSpace(input.grip_space, app.local, state.predictedDisplayTime, &location));
+    if (select.isActive || location.locationFlags != 0) throw std::runtime_error("input from a headset with no controllers");
     XrFrameEndInfo end{XR_TYPE_FRAME_END_INFO};
     end.displayTime = state.predictedDisplayTime;
     end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
@@ -94,6 +106,8 @@ int run(int argc, char** argv) {
   SIM_CHECK(app.msft.destroyScene(scene));
   SIM_CHECK(app.msft.destroyObserver(observer));
   SIM_CHECK(xrDestroySpace(view));
+  SIM_CHECK(xrDestroySpace(input.grip_space));
+  SIM_CHECK(xrDestroyActionSet(input.set));
   SIM_CHECK(xrRequestExitSession(app.session));
   if (drain(app, XR_SESSION_STATE_FOCUSED) != XR_SESSION_STATE_STOPPING) throw std::runtime_error("session not STOPPING");
   SIM_CHECK(xrEndSession(app.session));

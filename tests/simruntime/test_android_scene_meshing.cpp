@@ -113,7 +113,7 @@ std::string key(const XrUuid& u) { return std::string(reinterpret_cast<const cha
 
 TEST(AndroidSceneMeshing, SubmeshesPosedInLocalAreTheRoom) {
   const auto path = simtest::write_box_room("android_box.obj");
-  const roomsense::Scan file = roomsense::scanio::load_mesh_file(path.string());
+  const roomsense::Scan file = simtest::join_identical_vertices(roomsense::scanio::load_mesh_file(path.string()));
   ScopedEnv scene("ROOMSENSE_SIM_SCENE", path.string());
   ScopedEnv chunk("ROOMSENSE_SIM_CHUNK_SIZE", std::string("1.0"));
   Android a;

@@ -159,7 +159,7 @@ void expect_room(const roomsense::Scan& file, const std::vector<simtest::Compone
 
 TEST(MlWorldMeshDetection, BlocksPosedInLocalAreTheRoom) {
   const auto path = simtest::write_box_room("ml_box.obj");
-  const roomsense::Scan file = roomsense::scanio::load_mesh_file(path.string());
+  const roomsense::Scan file = simtest::join_identical_vertices(roomsense::scanio::load_mesh_file(path.string()));
   ScopedEnv scene("ROOMSENSE_SIM_SCENE", path.string());
   ScopedEnv chunk("ROOMSENSE_SIM_CHUNK_SIZE", std::string("1.0"));
   MagicLeap ml;
@@ -184,7 +184,7 @@ TEST(MlWorldMeshDetection, BlocksPosedInLocalAreTheRoom) {
 
 TEST(MlWorldMeshDetection, AChunkPastUint16IsSplitIntoBlocks) {
   const auto path = simtest::write_box_room("ml_big_box.obj", 200);  // 2 x 201^2 grid vertices
-  const roomsense::Scan file = roomsense::scanio::load_mesh_file(path.string());
+  const roomsense::Scan file = simtest::join_identical_vertices(roomsense::scanio::load_mesh_file(path.string()));
   ASSERT_GT(file.vertices.size(), 65536u);
   ScopedEnv scene("ROOMSENSE_SIM_SCENE", path.string());
   ScopedEnv chunk("ROOMSENSE_SIM_CHUNK_SIZE", std::string("1000"));  // one chunk

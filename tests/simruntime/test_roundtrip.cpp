@@ -38,13 +38,13 @@ void expect_served_exactly(const roomsense::Scan& file, const std::string& scene
 
 TEST(SimRoundTrip, OwnObjRoom) {
   const auto path = write_box_room("roundtrip_box.obj");
-  const roomsense::Scan file = roomsense::scanio::load_mesh_file(path.string());
+  const roomsense::Scan file = simtest::join_identical_vertices(roomsense::scanio::load_mesh_file(path.string()));
   expect_served_exactly(file, path.string(), "1.0", false);
 }
 
 TEST(SimRoundTrip, OwnObjRoomUint16Indices) {
   const auto path = write_box_room("roundtrip_box16.obj");
-  const roomsense::Scan file = roomsense::scanio::load_mesh_file(path.string());
+  const roomsense::Scan file = simtest::join_identical_vertices(roomsense::scanio::load_mesh_file(path.string()));
   expect_served_exactly(file, path.string(), "1.5", true);
 }
 
@@ -56,7 +56,7 @@ TEST(SimRoundTrip, QuestCapture) {
 
 TEST(SimRoundTrip, SharedObj) {
   ROOMSENSE_REQUIRE_ROOM(path, "hololens2-su/SU_Kitchen_world_mesh.obj");
-  const roomsense::Scan file = roomsense::scanio::load_mesh_file(path.string());
+  const roomsense::Scan file = simtest::join_identical_vertices(roomsense::scanio::load_mesh_file(path.string()));
   expect_served_exactly(file, path.string(), "3.0", true);
 }
 

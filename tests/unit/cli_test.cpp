@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <vector>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <cstdio>
@@ -20,9 +21,10 @@ struct CliRun {
 // Per-process file names: ctest runs tests of this binary in parallel processes.
 std::string temp_path(const std::string& name) { return testing::TempDir() + "/" + std::to_string(getpid()) + "_" + name; }
 
-CliRun run_cli(const std::string& args) {
+// `shell_prefix` runs first in the same shell, e.g. a ulimit.
+CliRun run_cli(const std::string& args, const std::string& shell_prefix = "") {
   const std::string err_path = temp_path("cli_stderr.txt");
-  const std::string cmd = std::string(ROOMSENSE_CLI) + " " + args + " >/dev/null 2>" + err_path;
+  const std::string cmd = shell_prefix + std::string(ROOMSENSE_CLI) + " " + args + " >/dev/null 2>" + err_path;
   const int raw = std::system(cmd.c_str());
   CliRun r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -63,8 +65,7 @@ TEST(Cli, BadInputGetsOneClearLineAndAnErrorStatus) {
                                                   "property float y\nproperty float z\nend_header\n0 0 0\n");
   const std::string bad_index = write_file("bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n");
   for (const std::string& args : std::vector<std::string>{"analyze /no/such/file.obj", "analyze " + nan_obj, "analyze " + empty_obj,
-                                  "analyze " + garbage, "analyze " + flat, "analyze " + huge, "analyze " + bad_index, "analyze synthetic:nope",
-                                  "analyze synthetic:default --voxel 0", "analyze synthetic:default --voxel 1e9"}) {
+                                  "analyze " + garbage, "analyze " + flat, "analyze " + huge, "analyze " + bad_index, "analyze synthetic:nope"}) {
     const CliRun r = run_cli(args);
     EXPECT_EQ(r.status, 1) << args << "\n" << r.err;
     EXPECT_EQ(lines(r.err), 1) << args << "\n" << r.err;
@@ -74,12 +75,98 @@ TEST(Cli, BadInputGetsOneClearLineAndAnErrorStatus) {
 
 TEST(Cli, BadUsageGetsStatus2) {
   for (const char* args : {"", "frobnicate", "analyze", "analyze a.obj --up w", "analyze a.obj --voxel x",
-                           "analyze a.obj --threads -1", "analyze a.obj b.obj", "analyze a.obj --json"}) {
+                           "analyze a.obj --threads -1", "analyze a.obj b.obj", "analyze a.obj --json",
+                           "analyze synthetic:default --voxel 0", "analyze synthetic:default --voxel 1e9",
+                           "analyze synthetic:default --voxel nan", "analyze synthetic:default --voxel 1e999",
+                           "analyze synthetic:default --min-plateau -1"}) {
     const CliRun r = run_cli(args);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
   }
   EXPECT_EQ(run_cli("--help").status, 0);
   EXPECT_EQ(run_cli("analyze --help").status, 0);
+}
+
+// Issue 18: PLY files that crashed assimp (SIGSEGV, SIGABRT) or went unreported exit 1 with one line naming
+// the face and the index.
+TEST(Cli, MalformedPlyFilesGetOneLineAndStatus1) {
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                             "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  const std::string five = "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+                           "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {header + "3 0 1 -1\n", "face 0 refers to vertex -1, but the file has 3 vertices"},
+      {header + "3 0 1 100000000\n", "face 0 refers to vertex 100000000, but the file has 3 vertices"},
+      {header + "3 0 1 5\n", "face 0 refers to vertex 5, but the file has 3 vertices"},
+      {header + "0\n", "no floor and ceiling"},  // a face of no vertices is skipped: three points remain
+      {five, "declares more data"},
+  };
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const std::string path = write_file("malformed" + std::to_string(i) + ".ply", cases[i].first);
+    const CliRun r = run_cli("analyze " + path);
+    EXPECT_EQ(r.status, 1) << path << "\n" << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(cases[i].second), std::string::npos) << r.err;
+    if (i != 3) {
+      EXPECT_EQ(r.err.rfind("roomsense analyze: cannot read '" + path + "': ", 0), 0u) << r.err;
+    }
+  }
+}
+
+TEST(Cli, SaysWhatAScanPathIsWhenItIsNoFile) {
+  const std::string fifo = temp_path("scan.fifo");
+  std::remove(fifo.c_str());
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const std::string dir = testing::TempDir();
+  for (const auto& [path, what] : std::vector<std::pair<std::string, std::string>>{
+           {dir, "it is a directory"},
+           {fifo, "it is not a regular file (a FIFO)"},
+           {"/dev/zero", "it is not a regular file (a character device)"},
+           {"/no/such/room.ply", "no such file"},
+           {dir + "/room.json", "no such file"}}) {
+    const CliRun r = run_cli("analyze " + path);
+    EXPECT_EQ(r.status, 1) << path;
+    EXPECT_EQ(r.err, "roomsense analyze: cannot read '" + path + "': " + what + "\n");
+  }
+  std::remove(fifo.c_str());
+}
+
+// --voxel is checked with the options, before the scan is opened: here it would block on a FIFO forever.
+TEST(Cli, VoxelOutOfRangeExits2BeforeReadingTheScan) {
+  const std::string fifo = temp_path("voxel.fifo");
+  std::remove(fifo.c_str());
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const CliRun r = run_cli("analyze " + fifo + " --voxel 0.0001");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "roomsense analyze: --voxel takes a size from 0.01 to 1 m, not '0.0001' (see roomsense analyze --help)\n");
+  std::remove(fifo.c_str());
+}
+
+// Huge spans print as %g, not as forty digits.
+TEST(Cli, HugeNumbersArePrintedCompactly) {
+  const std::string path = write_file("huge_span.obj", "v 0 0 0\nv 1e30 0 0\nv 0 1e30 0\nv 0 0 1e30\nf 1 2 3\nf 1 3 4\n");
+  const CliRun r = run_cli("analyze " + path);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(lines(r.err), 1);
+  EXPECT_NE(r.err.find("the scan spans 1e+30 x 1e+30 x 1e+30 m, which needs 1e+93 voxels"), std::string::npos) << r.err;
+  EXPECT_LT(r.err.size(), 160u) << r.err;
+}
+
+// A Quest capture bigger than the address space allows: one line and status 1, never an abort.
+TEST(Cli, OutOfMemoryIsOneLineAndStatus1) {
+  // 64 MiB of base64 vertices under a 150 MB address-space limit (enough to start the process and read small scans).
+  const std::string path = temp_path("big_capture.json");
+  {
+    std::ofstream out(path);
+    out << R"({"spatialEntities":[{"locatable_META":{"position":{},"orientation":{"w":1}},"triangleMesh_META":{"vertices":")";
+    const std::string chunk(1 << 20, 'A');
+    for (int i = 0; i < 64; ++i) out << chunk;
+    out << R"(","indices":""}}]})";
+  }
+  const CliRun r = run_cli("analyze " + path, "ulimit -v 150000; ");
+  std::remove(path.c_str());
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("out of memory reading '" + path + "'"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -14,7 +14,7 @@ namespace {
 VoxelGrid voxelize(const GridSpec& spec, const std::vector<glm::vec3>& world, const std::vector<std::uint32_t>& indices,
                    VoxelMode mode, unsigned threads = 1) {
   const std::vector<glm::vec3> g = to_grid_units(world, spec);
-  return voxelize_cpu({spec, g, indices, mode, 15}, threads);
+  return voxelize_cpu({spec, g, indices, mode, 15, kDefaultVoxelTestBudget, {}}, threads);
 }
 
 TEST(Voxelize, VertexModeFollowsEq36) {

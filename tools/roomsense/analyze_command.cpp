@@ -67,9 +67,11 @@ int analyze_command(const std::vector<std::string>& args) {
     std::fprintf(stderr, "roomsense analyze: %s (see roomsense analyze --help)\n", e.what());
     return 2;
   }
+  const char* step = "reading";  // for the out-of-memory line
   try {
     const auto start = std::chrono::steady_clock::now();
     Scan scan = load_scan(options.scan);
+    step = "analysing";
     convert_to_roomsense_frame(scan, options.frame);
     const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
@@ -90,6 +92,7 @@ int analyze_command(const std::vector<std::string>& args) {
 #endif
     analysis.voxel_stage = stage.get();
     const AnalysisResult result = analyze(scan, analysis);
+    step = "writing the results of";
 
     if (options.bounds_path) {
       if (!result.ok()) throw Error(ErrorCode::BadParameter, "no bounds to write: " + result.status_message);
@@ -110,7 +113,13 @@ int analyze_command(const std::vector<std::string>& args) {
     std::fprintf(stderr, "roomsense analyze: %s\n", e.what());
     return 1;
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "roomsense analyze: out of memory\n");
+    std::fprintf(stderr, "roomsense analyze: out of memory %s '%s'\n", step, options.scan.c_str());
+    return 1;
+  } catch (const std::length_error&) {  // a container asked for more than it can hold: memory, too
+    std::fprintf(stderr, "roomsense analyze: out of memory %s '%s'\n", step, options.scan.c_str());
+    return 1;
+  } catch (const std::exception& e) {  // e.g. std::system_error when no thread can be started
+    std::fprintf(stderr, "roomsense analyze: %s '%s': %s\n", step, options.scan.c_str(), e.what());
     return 1;
   }
 }

@@ -3,10 +3,15 @@
 #include "options.h"
 
 #include <cstdio>
+#include <exception>
+#include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
     std::fputs(roomsense::cli::kUsage, args.empty() ? stderr : stdout);
@@ -23,4 +28,20 @@ int main(int argc, char** argv) {
   }
   std::fprintf(stderr, "roomsense: unknown command '%s' (try roomsense --help)\n", args[0].c_str());
   return 2;
+}
+
+}  // namespace
+
+// Nothing may end the process with an abort: whatever escapes the command is one line and status 1.
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::fputs("roomsense: out of memory\n", stderr);
+  } catch (const std::length_error&) {
+    std::fputs("roomsense: out of memory\n", stderr);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "roomsense: %s\n", e.what());
+  }
+  return 1;
 }

@@ -1,6 +1,11 @@
 #include "options.h"
 
+#include "roomsense/grid.h"
+
 #include <charconv>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace roomsense::cli {
@@ -38,15 +43,16 @@ Output coordinates are in the scan's frame after --up/--units/--left-handed conv
 right-handed, +Y up, metres. Exit status: 0 on success, 1 on bad input, 2 on bad usage.
 )";
 
+// The help text states the voxel range in words: keep it in step with core's definition.
+static_assert(kMinVoxelSize == 0.01f && kMaxVoxelSize == 1.0f, "update --voxel in kUsage");
+
 namespace {
 
-float parse_float(const std::string& flag, const std::string& value) {
-  try {
-    std::size_t used = 0;
-    const float v = std::stof(value, &used);
-    if (used == value.size()) return v;
-  } catch (const std::exception&) {
-  }
+// A whole number in C syntax; an overflow reads as ±inf, for the caller's range check to refuse.
+double parse_number(const std::string& flag, const std::string& value) {
+  char* end = nullptr;
+  const double v = value.empty() || std::isspace(static_cast<unsigned char>(value[0])) ? 0.0 : std::strtod(value.c_str(), &end);
+  if (end != nullptr && end != value.c_str() && *end == '\0') return v;
   throw std::invalid_argument(flag + " needs a number, not '" + value + "'");
 }
 
@@ -75,11 +81,20 @@ AnalyzeOptions parse_analyze_options(const std::vector<std::string>& args) {
       else if (v == "mm") o.frame.units = Units::Millimetres;
       else throw std::invalid_argument("--units takes m, cm or mm, not '" + v + "'");
     } else if (a == "--left-handed") o.frame.left_handed = true;
-    else if (a == "--voxel") o.voxel_size = parse_float(a, value());
+    else if (a == "--voxel") {
+      // Checked here, with core's range (make_grid_spec would refuse it too, but only after the scan is read).
+      const std::string& v = value();
+      const double size = parse_number(a, v);
+      if (!(size >= double(kMinVoxelSize) && size <= double(kMaxVoxelSize)))
+        throw std::invalid_argument("--voxel takes a size from 0.01 to 1 m, not '" + v + "'");
+      o.voxel_size = float(size);
+    }
     else if (a == "--min-plateau") {
-      o.min_plateau = parse_float(a, value());
-      if (!(o.min_plateau >= 0.0f && o.min_plateau <= 100.0f))
-        throw std::invalid_argument("--min-plateau takes an area from 0 to 100 m²");
+      const std::string& v = value();
+      const double area = parse_number(a, v);
+      if (!(area >= 0.0 && area <= 100.0))
+        throw std::invalid_argument("--min-plateau takes an area from 0 to 100 m², not '" + v + "'");
+      o.min_plateau = float(area);
     }
     else if (a == "--backend") {
       o.backend = value();

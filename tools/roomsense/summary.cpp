@@ -1,5 +1,7 @@
 #include "summary.h"
 
+#include "number_format.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -39,31 +41,31 @@ std::string summary(const AnalysisResult& r, const std::string& source, double l
   out += format("  input     %zu vertices, %zu triangles (%s mode)\n", r.input.vertices, r.input.triangles,
                 r.mode == VoxelMode::Triangles ? "triangle" : "vertex");
   for (const std::string& w : r.warnings) out += "  warning   " + w + "\n";
-  out += format("  grid      %d x %d x %d voxels of %.2f m (%s backend)\n", g.nx, g.ny, g.nz, double(g.voxel_size),
-                r.backend.c_str());
+  out += format("  grid      %d x %d x %d voxels of %s m (%s backend)\n", g.nx, g.ny, g.nz,
+                fixed_or_g(g.voxel_size, 2).c_str(), r.backend.c_str());
   if (!r.ok()) return out + "  status    " + r.status_message + "\n";
   const RoomFeatures& f = *r.features;
-  out += format("  floor     y = %.2f m\n  ceiling   y = %.2f m (room height %.2f m)\n", double(r.floor_y),
-                double(r.ceiling_y), double(r.ceiling_y - r.floor_y));
+  out += format("  floor     y = %s m\n  ceiling   y = %s m (room height %s m)\n", fixed_or_g(r.floor_y, 2).c_str(),
+                fixed_or_g(r.ceiling_y, 2).c_str(), fixed_or_g(double(r.ceiling_y) - double(r.floor_y), 2).c_str());
   if (r.storeys.size() > 1) {
     out += format("  storeys   %zu:", r.storeys.size());
-    for (const Storey& s : r.storeys) out += format(" [%.2f, %.2f]", double(s.floor_y), double(s.ceiling_y));
+    for (const Storey& s : r.storeys) out += format(" [%s, %s]", fixed_or_g(s.floor_y, 2).c_str(), fixed_or_g(s.ceiling_y, 2).c_str());
     out += "\n";
   }
   const std::size_t furniture =
       std::size_t(std::count_if(f.furniture.begin(), f.furniture.end(), [](int c) { return c != kNoFurniture; }));
   const std::size_t normals =
       std::size_t(std::count_if(f.normals.begin(), f.normals.end(), [](std::uint8_t n) { return n != 0; }));
-  out += format("  room      %.1f m2 inside the walls\n", double(count_set(f.room)) * tile);
+  out += format("  room      %s m2 inside the walls\n", fixed_or_g(double(count_set(f.room)) * tile, 1).c_str());
   out += format("  walls     %zu wall columns, %zu voxels facing into the room\n", count_set(f.walls), normals);
-  out += format("  floor     %.1f m2 free floor (1.5 m clear above)\n", double(count_set(f.free_floor)) * tile);
-  out += format("  ceiling   %.1f m2 free ceiling (1 m clear below)\n", double(count_set(f.free_ceiling)) * tile);
-  out += format("  furniture %.1f m2 of furniture tops below 1.5 m\n", double(furniture) * tile);
+  out += format("  floor     %s m2 free floor (1.5 m clear above)\n", fixed_or_g(double(count_set(f.free_floor)) * tile, 1).c_str());
+  out += format("  ceiling   %s m2 free ceiling (1 m clear below)\n", fixed_or_g(double(count_set(f.free_ceiling)) * tile, 1).c_str());
+  out += format("  furniture %s m2 of furniture tops below 1.5 m\n", fixed_or_g(double(furniture) * tile, 1).c_str());
   out += areas_summary(r.areas);
   const std::size_t bt = r.bounds.indices.size() / 3;
   out += format("  bounds    %zu vertices, %zu triangles, %s", r.bounds.vertices.size(), bt,
                 check_closure(r.bounds).closed() ? "closed" : "NOT closed");
-  if (r.input.triangles > 0 && bt > 0) out += format(" (%.1fx fewer triangles than the scan)", double(r.input.triangles) / double(bt));
+  if (r.input.triangles > 0 && bt > 0) out += format(" (%sx fewer triangles than the scan)", fixed_or_g(double(r.input.triangles) / double(bt), 1).c_str());
   out += "\n";
   const StageTimings& t = r.timings;
   out += format("  time      load %.1f ms; voxelize %.2f, features %.2f, areas %.2f, reduce %.2f, classify %.2f,"

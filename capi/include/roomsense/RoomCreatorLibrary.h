@@ -41,7 +41,7 @@
  *   Retrieve may be called any number of times; it returns the same array each time.
  *
  * CleanUp*(): frees the job's array and makes the job idle; returns 0. Called while the job runs, it
- *   waits for the worker to finish (the pipeline cannot stop mid-stage) and discards its result. Calling
+ *   stops the worker (within about 100 ms) and discards its result. Calling
  *   it with no job is harmless. Without it the array stays allocated and Start keeps returning 4.
  *
  * RetrieveRoomUnderstanding: *OutArraySize floats, 11 per area (a multiple of 11), in the thesis's order:

@@ -72,6 +72,7 @@ typedef enum rs_result {
   RS_ERROR_NO_ROOM = -11,            /* no floor and ceiling at least 1.5 m apart: nothing to analyse */
   RS_ERROR_OUT_OF_MEMORY = -12,
   RS_ERROR_INTERNAL = -13,           /* a bug; rs_analyzer_get_message says more */
+  RS_ERROR_TOO_MUCH_WORK = -14,      /* the triangles need more voxel tests than the work budget: use larger voxels */
   RS_RESULT_MAX_ENUM = 0x7FFFFFFF
 } rs_result;
 
@@ -111,8 +112,8 @@ typedef struct rs_analyzer rs_analyzer;
  * the first version's, or an option out of range. */
 ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_create(const rs_analyzer_options* options, rs_analyzer** out);
 
-/* Frees the analyzer and its results. A running compute is waited for first (the pipeline cannot stop
- * mid-stage; a room takes tens of milliseconds, a large house about a second). NULL is ignored. */
+/* Frees the analyzer and its results. A running compute is stopped first; this returns within about
+ * 100 ms whatever the compute is doing. NULL is ignored. */
 ROOMSENSE_CAPI_EXPORT void rs_analyzer_destroy(rs_analyzer* analyzer);
 
 /* Starts analysing a scan on a worker thread and returns at once. The scan is copied before the call

@@ -9,6 +9,7 @@
 #include "roomsense/voxelize.h"
 
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,8 @@ namespace roomsense {
 struct AnalysisOptions {
   float voxel_size = kDefaultVoxelSize;
   std::optional<VoxelMode> mode;  // default: triangles when the scan has indices, else vertices
-  std::size_t voxel_budget = kDefaultVoxelBudget;
+  std::size_t voxel_budget = kDefaultVoxelBudget;            // voxels of the grid (memory)
+  std::uint64_t voxel_test_budget = kDefaultVoxelTestBudget;  // triangle-voxel tests (time)
   bool reject_outliers = true;
   unsigned threads = 0;           // 0: one per hardware thread; results do not depend on it
   FeatureParams features;
@@ -26,6 +28,7 @@ struct AnalysisOptions {
   bool find_areas = true;     // §3.3-3.5; off for a bounds-only run (thesis StartRoomBounds)
   bool build_bounds = true;   // §3.6; off for an areas-only run (thesis StartRoomUnderstanding)
   VoxelStage* voxel_stage = nullptr;  // not owned; nullptr: the CPU stage
+  std::stop_token stop;               // a stop request ends analyze() with Error(Cancelled) within ~100 ms
 };
 
 enum class AnalysisStatus {
@@ -68,8 +71,10 @@ struct AnalysisResult {
   bool ok() const { return status == AnalysisStatus::Ok; }
 };
 
-// Throws Error for bad input (see input.h and grid.h). A scan without a floor/ceiling pair is no error:
-// it returns status NoFloorCeiling with the grid and counts filled in.
+// Throws Error for bad input (see input.h and grid.h), Error(TooMuchWork) past voxel_test_budget and
+// Error(Cancelled) on a stop request. A scan without a floor/ceiling pair at least
+// features.min_floor_ceiling apart is no error: it returns status NoFloorCeiling with the grid and counts
+// filled in.
 AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options = {});
 
 }  // namespace roomsense

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <stop_token>
 #include <string_view>
 #include <vector>
 
@@ -117,6 +118,7 @@ struct SurfaceLevels {
 // §3.3-3.5 on the features of one grid. The 12 searches run in parallel unless threads == 1; the result
 // does not depend on the thread count.
 AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const SurfaceLevels& surfaces,
-                      const AreaParams& params, const FeatureParams& feature_params, unsigned threads = 0);
+                      const AreaParams& params, const FeatureParams& feature_params, unsigned threads = 0,
+                      std::stop_token stop = {});
 
 }  // namespace roomsense

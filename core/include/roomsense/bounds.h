@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <stop_token>
 #include <vector>
 
 namespace roomsense {
@@ -28,7 +29,7 @@ struct BoundsParams {
 // three-plane hole filling of §3.6. One byte per voxel, GridSpec::index.
 std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
                                         const std::vector<std::uint8_t>& room, const BoundsParams& params = {},
-                                        unsigned threads = 0);
+                                        unsigned threads = 0, const std::stop_token& stop = {});
 
 // Ours: fills the empty voxels of every 2x2 block around an edge where two solid voxels touch only along
 // that edge. Their surface would have an edge shared by four faces; after this, every edge has two.
@@ -41,12 +42,13 @@ void fill_edge_contacts(const GridSpec& spec, std::vector<std::uint8_t>& volume)
 // triangles, with the fewest vertices any closed mesh of the volume can have. The thesis's half-voxel shift
 // is built in: the mesh is made on the voxel lattice, where voxel (x,y,z) spans [x, x+1), not on centres.
 // `threads`: as AnalysisOptions::threads; the mesh does not depend on it.
-BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& volume, unsigned threads = 0);
+BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& volume, unsigned threads = 0,
+                       std::stop_token stop = {});
 
 // bounds_volume, fill_edge_contacts and mesh_volume in order.
 BoundsMesh build_bounds(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
                         const std::vector<std::uint8_t>& room, const BoundsParams& params = {},
-                        unsigned threads = 0);
+                        unsigned threads = 0, std::stop_token stop = {});
 
 // Edges used by other than exactly two triangles, and edges not used once in each direction (a closed,
 // consistently oriented surface has none of either). For tests and for the CLI's report.

@@ -15,6 +15,8 @@ enum class ErrorCode {
   GridTooLarge = 12,    // extents need more voxels than the memory budget allows
   BadParameter = 13,    // voxel size or another option out of its range
   Io = 14,              // a file could not be read or written
+  TooMuchWork = 15,     // voxelization needs more triangle-voxel tests than the work budget allows
+  Cancelled = 16,       // the caller asked the analysis to stop
 };
 
 class Error : public std::runtime_error {

@@ -5,6 +5,7 @@
 #include "roomsense/voxelize.h"
 
 #include <cstdint>
+#include <stop_token>
 #include <vector>
 
 namespace roomsense {
@@ -61,6 +62,8 @@ std::vector<std::uint8_t> detect_wall_normals(const VoxelGrid& grid, const Floor
 
 // All of §3.2 on a voxel stage's result that found a floor and a ceiling. C, D and E run in parallel
 // when threads allows; the result does not depend on the thread count.
-RoomFeatures detect_features(const VoxelStageResult& voxels, const FeatureParams& params, unsigned threads = 0);
+// A stop request throws Error(Cancelled) between the steps.
+RoomFeatures detect_features(const VoxelStageResult& voxels, const FeatureParams& params, unsigned threads = 0,
+                             const std::stop_token& stop = {});
 
 }  // namespace roomsense

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -51,12 +52,21 @@ struct FloorCeiling {
 inline constexpr std::uint64_t kSurfaceBandDivisor = 4;
 std::optional<FloorCeiling> select_floor_ceiling(std::span<const std::uint32_t> level_counts, int min_separation);
 
+// The work budget of triangle mode, in triangle-voxel tests. A real scan needs few: our recorded rooms
+// need 3e4-4e5 at 10 cm voxels and at most 4e6 at 2 cm. Room-sized triangles at a fine voxel need 1e5
+// each, so a few thousand of them would run for minutes. Past the budget a backend throws
+// Error(TooMuchWork) with too_much_work_message(); on a 2-core machine the budget is 2-3 s of work.
+inline constexpr std::uint64_t kDefaultVoxelTestBudget = std::uint64_t{1} << 27;
+std::string too_much_work_message(std::uint64_t budget);
+
 struct VoxelizeRequest {
   GridSpec spec;
   std::span<const glm::vec3> grid_vertices;  // from to_grid_units
   std::span<const std::uint32_t> indices;    // validated: every index < grid_vertices.size()
   VoxelMode mode = VoxelMode::Triangles;
   int min_separation_levels = 15;            // 1.5 m at 0.1 m voxels
+  std::uint64_t test_budget = kDefaultVoxelTestBudget;
+  std::stop_token stop;                      // a stop request makes run() throw Error(Cancelled)
 };
 
 struct VoxelStageResult {
@@ -65,6 +75,7 @@ struct VoxelStageResult {
   std::optional<FloorCeiling> levels;        // Eq. 3.9/3.10 on level_counts
   std::vector<std::uint32_t> column_counts;  // |V_xz| for y in [floor, ceiling], per GridSpec::column; all 0 without levels
   std::vector<std::uint8_t> column_any;      // 1 where any voxel lies in y in [floor, ceiling]; all 0 without levels
+  std::uint64_t voxel_tests = 0;             // triangle-voxel tests done, the work VoxelizeRequest::test_budget bounds
 };
 
 // A backend for the voxel stage. Implementations are not required to be thread-safe.
@@ -87,7 +98,8 @@ class CpuVoxelStage final : public VoxelStage {
 };
 
 // The pieces of CpuVoxelStage, for tests and for backends that do part of the work on the CPU.
-VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads = 0);
+// `tests`, when given, receives the triangle-voxel tests done (the work the budget counts).
+VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads = 0, std::uint64_t* tests = nullptr);
 std::vector<std::uint32_t> count_levels(const VoxelGrid& grid);
 void count_columns(const VoxelGrid& grid, const std::optional<FloorCeiling>& levels,
                    std::vector<std::uint32_t>& column_counts, std::vector<std::uint8_t>& column_any);

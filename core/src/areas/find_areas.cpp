@@ -1,5 +1,6 @@
 // §3.3-3.5 in the thesis's order: the 12 searches in parallel (§3.7), reduction per type, classification.
 #include "../parallel.h"
+#include "roomsense/cancel.h"
 #include "classify.h"
 #include "reduce.h"
 #include "search.h"
@@ -19,7 +20,8 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
 }  // namespace
 
 AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const SurfaceLevels& surfaces,
-                      const AreaParams& params, const FeatureParams& feature_params, unsigned threads) {
+                      const AreaParams& params, const FeatureParams& feature_params, unsigned threads,
+                      std::stop_token stop) {
   using namespace detail;
   const GridSpec& spec = grid.spec;
   const float voxel = spec.voxel_size;
@@ -52,17 +54,18 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
       return;
     }
     if (type == 0) {
-      found[type][size] = search_walls(spec, features, normals, range, params.wall_fill);
+      found[type][size] = search_walls(spec, features, normals, range, params.wall_fill, stop);
       return;
     }
     const Surface surface = type == 1 ? Surface::Floor : type == 2 ? Surface::Ceiling : Surface::Furniture;
-    found[type][size] = search_squares(spec, features, surface, range, params.horizontal_fill);
+    found[type][size] = search_squares(spec, features, surface, range, params.horizontal_fill, stop);
   });
   for (std::size_t t = 0; t < skipped.size(); ++t)
     if (skipped[t])
       result.warnings.push_back(std::string(to_string(kAreaSizes[t % 3])) + " " + std::string(to_string(kAreaTypes[t / 3])) +
                                 " areas not searched: too many corner pairs for this room at " +
                                 std::to_string(voxel).substr(0, 5) + " m voxels (a coarser --voxel searches them)");
+  stop_point(stop);
   result.timings.search = elapsed_ms(clock);
   clock = std::chrono::steady_clock::now();
 
@@ -79,6 +82,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
     result.counts.deduplicated[type] = deduplicated[type].size();
     result.counts.reduced[type] = kept[type].size();
   }
+  stop_point(stop);
   result.timings.reduce = elapsed_ms(clock);
   clock = std::chrono::steady_clock::now();
 

@@ -3,6 +3,8 @@
 #include "candidate.h"
 #include "roomsense/features.h"
 
+#include <stop_token>
+
 namespace roomsense::detail {
 
 // Per-column prefix counts over y of "has a wall normal" (F != 0) in [floor, ceiling]: shared by the three
@@ -17,13 +19,13 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features);
 // Alg. 2 (Eq. 3.20-3.27). Returns the first valid rectangle for each distinct centre, in search order: a
 // later rectangle with the same centre would always be dropped by Eq. 3.44, so this changes nothing.
 Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, const NormalCounts& normals,
-                        const SizeRange& size, float fill);
+                        const SizeRange& size, float fill, const std::stop_token& stop = {});
 
 enum class Surface { Floor, Ceiling, Furniture };
 
 // Alg. 3 (Eq. 3.28-3.39) on free floor D (Surface::Floor) or free ceiling E (Surface::Ceiling), and its
 // furniture variant (§3.3.4, Eq. 3.40/3.41) on every level of C. Same first-per-centre rule as above.
 Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Surface surface,
-                          const SizeRange& size, float fill);
+                          const SizeRange& size, float fill, const std::stop_token& stop = {});
 
 }  // namespace roomsense::detail

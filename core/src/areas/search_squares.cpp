@@ -3,6 +3,7 @@
 #include "cell_cover.h"
 #include "ring_offsets.h"
 #include "search.h"
+#include "roomsense/cancel.h"
 
 #include <algorithm>
 #include <array>
@@ -49,7 +50,7 @@ class CentreSet {
 }  // namespace
 
 Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Surface surface,
-                          const SizeRange& size, float fill) {
+                          const SizeRange& size, float fill, const std::stop_token& stop) {
   // The orientations, split by the parity of dx - dz (= that of dx + dz), most nearly axis-aligned first.
   std::vector<RingOffset> ring = ring_offsets(size, Shape::Square);
   std::stable_sort(ring.begin(), ring.end(), [](const RingOffset& a, const RingOffset& b) {
@@ -132,7 +133,7 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
     // Eq. 3.44 keeps one square per centre, so we search centre by centre (on the half-voxel lattice where
     // square centres lie) and stop at the first valid orientation, most nearly axis-aligned first: the same
     // centres as the thesis's loop over first corners, found without trying every orientation of each.
-    for (int cz = 0; cz <= 2 * (spec.nz - 1); ++cz)
+    for (int cz = 0; cz <= 2 * (spec.nz - 1); ++cz, stop_point(stop))
       for (int cx = 0; cx <= 2 * (spec.nx - 1); ++cx) {
         if ((cx - cz) % 2 != 0) continue;  // dx - dz and dx + dz share their parity: no square centres here
         const glm::ivec3 sum(2 * cx, 0, 2 * cz);

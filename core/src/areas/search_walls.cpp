@@ -2,6 +2,7 @@
 #include "cell_cover.h"
 #include "ring_offsets.h"
 #include "search.h"
+#include "roomsense/cancel.h"
 
 #include <algorithm>
 #include <limits>
@@ -42,7 +43,7 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
 }
 
 Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, const NormalCounts& normals,
-                        const SizeRange& size, float fill) {
+                        const SizeRange& size, float fill, const std::stop_token& stop) {
   const std::vector<RingOffset> ring = ring_offsets(size, Shape::WallTop);
   const int floor = normals.y0, ceiling = normals.y0 + normals.levels - 1;
   // Alg. 2 starts the top row at I_Floor + ⌊w_min/2⌋, leaving room for the height below it.
@@ -83,7 +84,7 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
   const auto centre_bit = [&](int sx, int sy, int sz) {
     return (std::size_t(sz) * std::size_t(2 * spec.nx) + std::size_t(sx)) * std::size_t(y_span) + std::size_t(sy - y_base);
   };
-  for (int z1 = 0; z1 < spec.nz; ++z1)
+  for (int z1 = 0; z1 < spec.nz; ++z1, stop_point(stop))
     for (int x1 = 0; x1 < spec.nx; ++x1)
       for (int y1 = std::max(y_first, floor); y1 <= ceiling; ++y1) {
         const std::uint8_t f1 = f[spec.index(x1, y1, z1)];

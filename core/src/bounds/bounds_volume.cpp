@@ -1,5 +1,6 @@
 // The bounds volume I (Eq. 3.60-3.62) and the hole filling of §3.6.
 #include "roomsense/bounds.h"
+#include "roomsense/cancel.h"
 
 #include "parallel.h"
 
@@ -102,7 +103,7 @@ void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& 
 
 std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
                                         const std::vector<std::uint8_t>& room, const BoundsParams& params,
-                                        unsigned threads) {
+                                        unsigned threads, const std::stop_token& stop) {
   const GridSpec& s = grid.spec;
   y_end = std::clamp(y_end, levels.floor + 1, levels.ceiling - 1);
   std::vector<int> g(s.column_count()), h(s.column_count());
@@ -126,12 +127,14 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeilin
         }
     }
   });
+  stop_point(stop);
   // In cells, rounding 0.04 m² at 0.1 m to 4, not 5; NaN or <= 0 turns the step off.
   const double cells = params.min_plateau_area > 0.0f
                            ? std::ceil(double(params.min_plateau_area) / (double(s.voxel_size) * s.voxel_size) - 1e-4)
                            : 0.0;
   const int min_cells = int(std::min(cells, double(s.column_count())));
   detail::parallel_tasks(2, threads, [&](std::size_t i) { flatten_small_plateaus(s, room, min_cells, i == 0 ? g : h); });
+  stop_point(stop);
   // I (Eq. 3.62).
   std::vector<std::uint8_t> volume(s.voxel_count(), 0);
   detail::parallel_for(s.column_count(), threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
@@ -141,6 +144,7 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeilin
       for (int y = h[col]; y <= levels.ceiling; ++y) out[y] = 1;
     }
   });
+  stop_point(stop);
   fill_plane_holes(s, levels, volume, threads);
   return volume;
 }
@@ -192,10 +196,12 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
 }
 
 BoundsMesh build_bounds(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
-                        const std::vector<std::uint8_t>& room, const BoundsParams& params, unsigned threads) {
-  std::vector<std::uint8_t> volume = bounds_volume(grid, levels, y_end, room, params, threads);
+                        const std::vector<std::uint8_t>& room, const BoundsParams& params, unsigned threads,
+                        std::stop_token stop) {
+  std::vector<std::uint8_t> volume = bounds_volume(grid, levels, y_end, room, params, threads, stop);
+  stop_point(stop);
   fill_edge_contacts(grid.spec, volume);
-  return mesh_volume(grid.spec, volume, threads);
+  return mesh_volume(grid.spec, volume, threads, stop);
 }
 
 }  // namespace roomsense

@@ -4,6 +4,7 @@
 // surface: the fewest a closed triangulation of the same surface can have, and a closed triangle mesh has
 // about twice as many triangles as vertices.
 #include "roomsense/bounds.h"
+#include "roomsense/cancel.h"
 
 #include "parallel.h"
 #include "polygon_triangulation.h"
@@ -101,7 +102,8 @@ class SurfaceCorners {
   }();
 
  public:
-  SurfaceCorners(const GridSpec& s, const std::vector<std::uint8_t>& volume, const Box& box, unsigned threads) {
+  SurfaceCorners(const GridSpec& s, const std::vector<std::uint8_t>& volume, const Box& box, unsigned threads,
+                 const std::stop_token& stop) {
     for (int k = 0; k < 3; ++k) {
       lo_[k] = box.lo[k];
       n_[k] = box.hi[k] - box.lo[k] + 2;
@@ -115,7 +117,7 @@ class SurfaceCorners {
     };
     const int y_first = lo_[1], y_last = lo_[1] + n_[1] - 1;  // lattice levels; voxel levels y-1 and y
     detail::parallel_for(std::size_t(n_[2]), threads, 16, [&](std::size_t z_begin, std::size_t z_end, std::size_t) {
-      for (int z = lo_[2] + int(z_begin); z < lo_[2] + int(z_end); ++z)
+      for (int z = lo_[2] + int(z_begin); z < lo_[2] + int(z_end); ++z, stop_point(stop))
         for (int x = lo_[0]; x < lo_[0] + n_[0]; ++x) {
           const std::uint8_t* cols[4] = {column(x - 1, z - 1), column(x, z - 1), column(x - 1, z), column(x, z)};
           // The four voxels of level y - 1 (bits dy = 0), carried up from the previous level.
@@ -192,7 +194,7 @@ class SliceMesher {
 
   // `to_point` maps mask lattice point (a, b) to the 3D lattice.
   template <class ToPoint>
-  void mesh(const SurfaceCorners& corners, const ToPoint& to_point, MeshBuilder& out) {
+  void mesh(const SurfaceCorners& corners, const ToPoint& to_point, MeshBuilder& out, const std::stop_token& stop) {
     label_regions();
     loops_.clear();
     visited_.assign(mask_.size(), 0);
@@ -214,7 +216,7 @@ class SliceMesher {
       holes_.clear();
       while (j < loops_.size() && loops_[j].region == loops_[i].region) holes_.push_back(std::move(loops_[j++].points));
       triangles_.clear();
-      detail::triangulate_polygon(loops_[i].points, holes_, triangles_);
+      detail::triangulate_polygon(loops_[i].points, holes_, triangles_, stop);
       for (const auto& t : triangles_) {
         if (loops_[i].value > 0) out.triangle(t[0], t[1], t[2]);
         else out.triangle(t[0], t[2], t[1]);  // the face points -c: reverse the turn
@@ -309,7 +311,7 @@ class SliceMesher {
 };
 
 void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const Box& box, const Axes& ax,
-               const SurfaceCorners& corners, MeshBuilder& out) {
+               const SurfaceCorners& corners, MeshBuilder& out, const std::stop_token& stop) {
   // Strides of GridSpec::index per axis: x -> ny, y -> 1, z -> nx * ny.
   const std::ptrdiff_t stride[3] = {s.ny, 1, std::ptrdiff_t(s.nx) * s.ny};
   const std::ptrdiff_t sa = stride[ax.a], sb = stride[ax.b], sc = stride[ax.c];
@@ -318,6 +320,7 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
   const std::uint8_t* base = volume.data() + a0 * sa + b0 * sb;
   SliceMesher slice(na, nb);
   for (int c = c0 - 1; c <= c_end; ++c) {
+    stop_point(stop);
     const std::uint8_t* below = c >= c0 ? base + c * sc : nullptr;
     const std::uint8_t* above = c + 1 <= c_end ? base + (c + 1) * sc : nullptr;
     bool any = false;
@@ -339,21 +342,25 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
           p.v[ax.c] = c + 1;
           return p;
         },
-        out);
+        out, stop);
   }
 }
 
 }  // namespace
 
-BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& volume, unsigned threads) {
+BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& volume, unsigned threads,
+                       std::stop_token stop) {
   const Box box = solid_box(spec, volume);
   if (box.hi[0] < box.lo[0]) return {};
-  const SurfaceCorners corners(spec, volume, box, threads);
+  const SurfaceCorners corners(spec, volume, box, threads, stop);
   MeshBuilder parts[3];
-  detail::parallel_tasks(3, threads, [&](std::size_t axis) { mesh_axis(spec, volume, box, kAxes[axis], corners, parts[axis]); });
+  detail::parallel_tasks(3, threads, [&](std::size_t axis) { mesh_axis(spec, volume, box, kAxes[axis], corners, parts[axis], stop); });
   BoundsMesh mesh;
   std::unordered_map<Point, std::uint32_t, PointHash> index;
-  for (const MeshBuilder& part : parts) part.append_to(mesh, index, spec);
+  for (const MeshBuilder& part : parts) {
+    stop_point(stop);
+    part.append_to(mesh, index, spec);
+  }
   return mesh;
 }
 

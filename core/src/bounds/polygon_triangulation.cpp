@@ -5,6 +5,8 @@
 // or on it. Coordinates are small integers, so every orientation test is exact.
 #include "polygon_triangulation.h"
 
+#include "roomsense/cancel.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -236,10 +238,11 @@ bool is_ear(const Ring& r, const NodeGrid& grid, int ear) {
   });
 }
 
-void clip_ears(Ring& r, int ear, Triangles& out) {
+void clip_ears(Ring& r, int ear, Triangles& out, const std::stop_token& cancel) {
   const NodeGrid grid(r, ear);
   int stop = ear;
-  while (r.prev(ear) != r.next(ear)) {
+  for (std::uint32_t step = 1; r.prev(ear) != r.next(ear); ++step) {
+    if (step % 4096 == 0) stop_point(cancel);
     const int prev = r.prev(ear), next = r.next(ear);
     if (is_ear(r, grid, ear)) {
       out.push_back({r[prev].id, r[ear].id, r[next].id});
@@ -258,7 +261,8 @@ void clip_ears(Ring& r, int ear, Triangles& out) {
 
 }  // namespace
 
-void triangulate_polygon(const Loop& outer, const std::vector<Loop>& holes, Triangles& out) {
+void triangulate_polygon(const Loop& outer, const std::vector<Loop>& holes, Triangles& out,
+                         const std::stop_token& stop) {
   if (outer.size() < 3) return;
   std::size_t total = outer.size();
   for (const Loop& h : holes) total += h.size() + 2;
@@ -277,11 +281,12 @@ void triangulate_polygon(const Loop& outer, const std::vector<Loop>& holes, Tria
   }
   std::sort(lefts.begin(), lefts.end(), [&](int x, int y) { return r[x].a != r[y].a ? r[x].a < r[y].a : r[x].b < r[y].b; });
   for (const int h : lefts) {
+    stop_point(stop);
     const int bridge = find_bridge(r, h, start);
     if (bridge < 0) continue;  // the hole is not inside the outer loop: left open (breaks the contract)
     start = r.drop_repeats(r.split(bridge, h));
   }
-  clip_ears(r, r.drop_repeats(start), out);
+  clip_ears(r, r.drop_repeats(start), out, stop);
 }
 
 }  // namespace roomsense::detail

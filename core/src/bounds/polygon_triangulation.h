@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <stop_token>
 #include <vector>
 
 namespace roomsense::detail {
@@ -23,6 +24,8 @@ using Triangles = std::vector<std::array<std::uint32_t, 3>>;  // counter-clockwi
 // Appends the n + 2h - 2 triangles of a polygon of n vertices and h holes to `out`. On input that breaks the
 // contract above, where no ear can be found, the rest of the ring is fanned: the surface stays closed but
 // those triangles may overlap (the exact-area tests would show it).
-void triangulate_polygon(const Loop& outer, const std::vector<Loop>& holes, Triangles& out);
+// A stop request throws Error(Cancelled) (roomsense/cancel.h).
+void triangulate_polygon(const Loop& outer, const std::vector<Loop>& holes, Triangles& out,
+                         const std::stop_token& stop = {});
 
 }  // namespace roomsense::detail

@@ -2,9 +2,14 @@
 // This file is compiled with -ffp-contract=off: a fused multiply-add would round differently from the
 // Vulkan shaders, which mark their arithmetic `precise`.
 #include "../parallel.h"
+#include "roomsense/cancel.h"
+#include "roomsense/error.h"
 #include "roomsense/voxelize.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 
@@ -31,6 +36,107 @@ int clamp_index(float v, int n) {
 void mark(std::uint8_t& cell) { std::atomic_ref<std::uint8_t>(cell).store(1, std::memory_order_relaxed); }
 bool marked(std::uint8_t& cell) { return std::atomic_ref<std::uint8_t>(cell).load(std::memory_order_relaxed) != 0; }
 
+// The work of triangle mode, counted in triangle-voxel tests: the budget bounds what hostile input costs
+// (a few room-sized triangles at a fine voxel need billions of tests), and the stop token is checked
+// wherever the count is flushed.
+class TestCounter {
+ public:
+  static constexpr std::uint64_t kFlushEvery = 1 << 14;
+  explicit TestCounter(const VoxelizeRequest& r) : budget_(r.test_budget), stop_(r.stop) {}
+  std::uint64_t total() const { return total_.load(std::memory_order_relaxed); }
+  void flush(std::uint64_t& tests) {
+    const std::uint64_t total = total_.fetch_add(tests, std::memory_order_relaxed) + tests;
+    tests = 0;
+    stop_point(stop_);
+    if (total > budget_) throw Error(ErrorCode::TooMuchWork, too_much_work_message(budget_));
+  }
+
+ private:
+  const std::uint64_t budget_;
+  const std::stop_token& stop_;
+  std::atomic<std::uint64_t> total_{0};
+};
+
+// How triangle mode visits one triangle: its box, and the axis d along which its columns run. Only the
+// voxels near the triangle's plane are tested: along the axis where the normal is largest, each column
+// of the other two axes gets the plane's range over the column's square, widened by a voxel each way
+// against rounding, so the marked set is exactly that of testing the whole box, and the cost follows the
+// surface, not the box. A degenerate triangle has no plane: its whole box is tested, columns along y.
+struct TriangleScan {
+  int first[3], last[3];
+  int d = 1, u = 0, v = 2;
+  glm::dvec3 normal{0.0};
+  bool one_voxel() const { return first[0] == last[0] && first[1] == last[1] && first[2] == last[2]; }
+  bool planar() const { return normal[d] != 0.0; }
+
+  TriangleScan(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const GridSpec& s) {
+    const int n[3] = {s.nx, s.ny, s.nz};
+    const glm::vec3 lo = glm::min(glm::min(a, b), c), hi = glm::max(glm::max(a, b), c);
+    for (int k = 0; k < 3; ++k) {
+      first[k] = box_index(lo[k], n[k]);
+      last[k] = box_index(hi[k], n[k]);
+    }
+    normal = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
+    const glm::dvec3 m = glm::abs(normal);
+    if (m.x >= m.y && m.x >= m.z && m.x != 0.0) d = 0;
+    else if (m.z > m.y) d = 2;
+    u = d == 0 ? 1 : 0;
+    v = d == 2 ? 1 : 2;
+  }
+
+  // At least the tests scan_triangle does (each column spans the plane's rise over a unit square, plus
+  // the margins): summed before the scan, it refuses hopeless input at once.
+  std::uint64_t tests_bound() const {
+    if (one_voxel()) return 0;
+    const auto extent = [&](int k) { return std::uint64_t(last[k] - first[k] + 1); };
+    std::uint64_t span = extent(d);
+    if (planar())
+      span = std::min<std::uint64_t>(
+          span, std::uint64_t(std::ceil((std::fabs(normal[u]) + std::fabs(normal[v])) / std::fabs(normal[d]))) + 3);
+    return extent(u) * extent(v) * span;
+  }
+};
+
+// Marks every voxel of the triangle's box whose test cube the triangle touches (see TriangleScan).
+void scan_triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const GridSpec& s, VoxelGrid& grid,
+                   std::uint64_t& tests, TestCounter& counter) {
+  const TriangleScan scan(a, b, c, s);
+  const int(&first)[3] = scan.first;
+  const int(&last)[3] = scan.last;
+  if (scan.one_voxel()) {  // inside one test cube: no test
+    mark(grid.cells[s.index(first[0], first[1], first[2])]);
+    return;
+  }
+  const int d = scan.d, u = scan.u, v = scan.v;
+  const glm::dvec3& normal = scan.normal;
+  int cell[3];
+  for (cell[v] = first[v]; cell[v] <= last[v]; ++cell[v]) {
+    for (cell[u] = first[u]; cell[u] <= last[u]; ++cell[u]) {
+      int from = first[d], to = last[d];
+      if (scan.planar()) {
+        // The plane's d over the square [i - eps, i + 1 - eps] of this column: extremes at its corners.
+        double d_lo = HUGE_VAL, d_hi = -HUGE_VAL;
+        for (int corner = 0; corner < 4; ++corner) {
+          const double pu = cell[u] - double(kVoxelTestEpsilon) + (corner & 1);
+          const double pv = cell[v] - double(kVoxelTestEpsilon) + (corner >> 1);
+          const double pd = a[d] - (normal[u] * (pu - a[u]) + normal[v] * (pv - a[v])) / normal[d];
+          d_lo = std::min(d_lo, pd);
+          d_hi = std::max(d_hi, pd);
+        }
+        const double eps = kVoxelTestEpsilon;
+        from = int(std::max<double>(from, std::floor(d_lo + eps) - 1.0));
+        to = int(std::min<double>(to, std::floor(d_hi + eps) + 1.0));
+      }
+      for (cell[d] = from; cell[d] <= to; ++cell[d]) {
+        std::uint8_t& voxel = grid.cells[s.index(cell[0], cell[1], cell[2])];
+        if (!marked(voxel) && triangle_overlaps_voxel(a, b, c, cell[0], cell[1], cell[2])) mark(voxel);
+      }
+      if (to >= from) tests += std::uint64_t(to - from + 1);
+      if (tests >= TestCounter::kFlushEvery) counter.flush(tests);
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const GridSpec& spec) {
@@ -40,6 +146,11 @@ std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const Gri
 }
 
 int box_index(float v, int n) { return clamp_index(v + kVoxelTestEpsilon, n); }
+
+std::string too_much_work_message(std::uint64_t budget) {
+  return "voxelization needs more than " + std::to_string(budget) +
+         " triangle-voxel tests (large triangles at a small voxel size): use a larger voxel size";
+}
 
 bool triangle_overlaps_voxel(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, int x, int y, int z) {
   constexpr float h = 0.5f;                         // half extent of [i - eps, i + 1 - eps]
@@ -65,7 +176,7 @@ bool triangle_overlaps_voxel(const glm::vec3& a, const glm::vec3& b, const glm::
   return !(d > r || d < -r);
 }
 
-VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads) {
+VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads, std::uint64_t* tests_done) {
   VoxelGrid grid(request.spec);
   const GridSpec& s = request.spec;
   const auto& p = request.grid_vertices;
@@ -74,34 +185,42 @@ VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads) {
   };
   if (request.mode == VoxelMode::Vertices) {  // Eq. 3.6
     detail::parallel_for(p.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
-      for (std::size_t i = begin; i < end; ++i) mark(voxel_of(p[i]));
+      for (std::size_t i = begin; i < end; ++i) {
+        if ((i & 0xffff) == 0) stop_point(request.stop);
+        mark(voxel_of(p[i]));
+      }
     });
     return grid;
   }
   // Triangle mode marks the voxels whose test cubes the triangles touch, and nothing else: a vertex no
   // triangle uses adds nothing, as it has no surface.
   const std::size_t triangles = request.indices.size() / 3;
-  detail::parallel_for(triangles, threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t) {
+  const auto corners = [&](std::size_t t) {
+    return std::array<const glm::vec3*, 3>{&p[request.indices[3 * t]], &p[request.indices[3 * t + 1]],
+                                           &p[request.indices[3 * t + 2]]};
+  };
+  std::atomic<std::uint64_t> bound{0};
+  detail::parallel_for(triangles, threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
+    std::uint64_t sum = 0;
     for (std::size_t t = begin; t < end; ++t) {
-      const glm::vec3& a = p[request.indices[3 * t]];
-      const glm::vec3& b = p[request.indices[3 * t + 1]];
-      const glm::vec3& c = p[request.indices[3 * t + 2]];
-      const glm::vec3 lo = glm::min(glm::min(a, b), c), hi = glm::max(glm::max(a, b), c);
-      const int x0 = box_index(lo.x, s.nx), x1 = box_index(hi.x, s.nx);
-      const int y0 = box_index(lo.y, s.ny), y1 = box_index(hi.y, s.ny);
-      const int z0 = box_index(lo.z, s.nz), z1 = box_index(hi.z, s.nz);
-      if (x0 == x1 && y0 == y1 && z0 == z1) {  // inside one test cube: no test needed
-        mark(grid.cells[s.index(x0, y0, z0)]);
-        continue;
-      }
-      for (int z = z0; z <= z1; ++z)
-        for (int x = x0; x <= x1; ++x)
-          for (int y = y0; y <= y1; ++y) {
-            std::uint8_t& cell = grid.cells[s.index(x, y, z)];
-            if (!marked(cell) && triangle_overlaps_voxel(a, b, c, x, y, z)) mark(cell);
-          }
+      const auto [a, b, c] = corners(t);
+      sum += TriangleScan(*a, *b, *c, s).tests_bound();
+      if ((t & 0xffff) == 0) stop_point(request.stop);
     }
+    bound.fetch_add(sum, std::memory_order_relaxed);
   });
+  if (bound.load() > request.test_budget) throw Error(ErrorCode::TooMuchWork, too_much_work_message(request.test_budget));
+  TestCounter counter(request);
+  detail::parallel_for(triangles, threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t) {
+    std::uint64_t tests = 0;
+    for (std::size_t t = begin; t < end; ++t) {
+      const auto [a, b, c] = corners(t);
+      scan_triangle(*a, *b, *c, s, grid, tests, counter);
+      if (tests >= TestCounter::kFlushEvery || (t & 0xff) == 0) counter.flush(tests);
+    }
+    counter.flush(tests);
+  });
+  if (tests_done != nullptr) *tests_done = counter.total();
   return grid;
 }
 
@@ -157,7 +276,7 @@ void count_columns(const VoxelGrid& grid, const std::optional<FloorCeiling>& lev
 
 VoxelStageResult CpuVoxelStage::run(const VoxelizeRequest& request) {
   VoxelStageResult r;
-  r.grid = voxelize_cpu(request, threads_);
+  r.grid = voxelize_cpu(request, threads_, &r.voxel_tests);
   r.level_counts = count_levels(r.grid);
   r.levels = select_floor_ceiling(r.level_counts, request.min_separation_levels);
   count_columns(r.grid, r.levels, r.column_counts, r.column_any);

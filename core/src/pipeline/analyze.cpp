@@ -1,9 +1,11 @@
 // The pipeline of thesis chapter 3 in the order of DESIGN.md's data flow.
 #include "roomsense/analysis.h"
+#include "roomsense/cancel.h"
 #include "roomsense/error.h"
 #include "surface_heights.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 namespace roomsense {
@@ -22,11 +24,19 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// "1.50 m", "-0.12 m", "3e+12 m": two decimals for room sizes, never forty digits for absurd ones.
+std::string metres(float value) {
+  char text[32];
+  std::snprintf(text, sizeof text, std::fabs(value) < 1e6f ? "%.2f m" : "%.3g m", double(value));
+  return text;
+}
+
 }  // namespace
 
 AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
   Stopwatch clock;
   AnalysisResult r;
+  stop_point(options.stop);
   const PreparedInput in = prepare_input(scan, options.reject_outliers);
   r.input = {in.input_vertices, in.input_triangles, in.skipped_vertices, in.outlier_vertices, in.dropped_triangles};
   if (in.skipped_vertices > 0)
@@ -46,35 +56,47 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
   const int min_separation = voxels_for(options.features.min_floor_ceiling, spec.voxel_size);
   r.timings.prepare = clock.lap();
 
+  stop_point(options.stop);
   CpuVoxelStage cpu(options.threads);
   VoxelStage& stage = options.voxel_stage != nullptr ? *options.voxel_stage : cpu;
   r.backend = stage.name();
-  r.voxels = stage.run({spec, grid_vertices, in.indices, r.mode, min_separation});
+  r.voxels = stage.run({spec, grid_vertices, in.indices, r.mode, min_separation, options.voxel_test_budget,
+                        options.stop});
   r.timings.voxelize = clock.lap();
+  stop_point(options.stop);
 
-  if (!r.voxels.levels) {
+  const float min_height = options.features.min_floor_ceiling;
+  const auto no_room = [&](std::string message) {
     r.status = AnalysisStatus::NoFloorCeiling;
-    char separation[32];
-    std::snprintf(separation, sizeof separation, "%.2g", double(options.features.min_floor_ceiling));
-    r.status_message = std::string("no floor and ceiling found: no two horizontal levels are at least ") +
-                       separation + " m apart (" + std::to_string(spec.ny) + " levels scanned)";
+    r.status_message = std::move(message);
     r.timings.total = r.timings.prepare + r.timings.voxelize;
     return r;
-  }
+  };
+  if (!r.voxels.levels)
+    return no_room("no floor and ceiling found: no two horizontal levels are at least " + metres(min_height) +
+                   " apart (" + std::to_string(spec.ny) + " levels scanned)");
   const FloorCeiling& levels = *r.voxels.levels;
-  r.features = detect_features(r.voxels, options.features, options.threads);
-  r.floor_y = detail::surface_height(spec, in.vertices, in.indices, levels.floor_peak, levels.floor);
-  r.ceiling_y = detail::surface_height(spec, in.vertices, in.indices, levels.ceiling, levels.ceiling_peak);
+  const auto height = [&](int lower, int upper) { return detail::surface_height(spec, in.vertices, in.indices, lower, upper); };
+  r.floor_y = height(levels.floor_peak, levels.floor);
+  r.ceiling_y = height(levels.ceiling, levels.ceiling_peak);
+  // Eq. 3.9/3.10 keep levels 1.5 m apart, but the surfaces inside them may be closer (a lone wall's two
+  // ends): what is less than 1.5 m high is no room, as the thesis and DESIGN.md state.
+  if (r.ceiling_y - r.floor_y < min_height)
+    return no_room("no floor and ceiling found: the fullest levels, at " + metres(r.floor_y) + " and " +
+                   metres(r.ceiling_y) + ", are less than " + metres(min_height) + " apart");
   r.storeys.push_back({r.floor_y, r.ceiling_y});
-  for (const FloorCeiling& other : detail::other_storeys(r.voxels.level_counts, levels, min_separation))
-    r.storeys.push_back({detail::surface_height(spec, in.vertices, in.indices, other.floor_peak, other.floor),
-                         detail::surface_height(spec, in.vertices, in.indices, other.ceiling, other.ceiling_peak)});
+  for (const FloorCeiling& other : detail::other_storeys(r.voxels.level_counts, levels, min_separation)) {
+    const Storey storey{height(other.floor_peak, other.floor), height(other.ceiling, other.ceiling_peak)};
+    if (storey.ceiling_y - storey.floor_y >= min_height) r.storeys.push_back(storey);
+  }
+  r.features = detect_features(r.voxels, options.features, options.threads, options.stop);
   r.status_message = "ok";
   r.timings.features = clock.lap();
+  stop_point(options.stop);
 
   if (options.find_areas) {
     AreaResult found = find_areas(r.voxels.grid, *r.features, {r.floor_y, r.ceiling_y}, options.areas,
-                                  options.features, options.threads);
+                                  options.features, options.threads, options.stop);
     r.areas = std::move(found.areas);
     r.area_counts = found.counts;
     r.warnings.insert(r.warnings.end(), found.warnings.begin(), found.warnings.end());
@@ -83,9 +105,10 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
     r.timings.classify = found.timings.classify;
     clock.lap();
   }
+  stop_point(options.stop);
   if (options.build_bounds) {
     r.bounds = build_bounds(r.voxels.grid, levels, r.features->y_end, r.features->room, options.bounds,
-                            options.threads);
+                            options.threads, options.stop);
     r.timings.bounds = clock.lap();
   }
   r.timings.total = r.timings.prepare + r.timings.voxelize + r.timings.features + r.timings.areas +

@@ -20,7 +20,9 @@
 **   5. xrGetRoomLayoutEXTX, xrGetRoomAreasEXTX (two-call idiom) and xrGetRoomBoundsMeshEXTX (two-call idiom on
 **      both arrays) return the latest completed result; before any result exists they return
 **      XR_ERROR_CALL_ORDER_INVALID. A failed compute leaves the previous result in place.
-**   Destroying the session (or the instance) destroys its analyzers, also while an analysis runs.
+**   Destroying the session (or the instance) destroys its analyzers, also while an analysis runs. Once the
+**   runtime answered one of the layer's calls in the session with XR_ERROR_SESSION_LOST (the compute then ends
+**   FAILED), xrCreateRoomAnalyzerEXTX and xrComputeRoomEXTX return XR_ERROR_SESSION_LOST for that session.
 **
 ** Everything is in the analyzer's baseSpace: right-handed, +Y up, metres.
 **

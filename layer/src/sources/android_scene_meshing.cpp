@@ -47,21 +47,21 @@ SurfaceLabel surface_label(std::uint8_t label) {
 std::uint8_t majority(std::uint8_t a, std::uint8_t b, std::uint8_t c) { return (b == c && a != b) ? b : a; }
 
 // One submesh as the runtime served it (vertices in the submesh's space), moved by `pose`; with per-vertex
-// labels, one label per triangle (the majority). Empty when an index is out of range. Shared by the active
-// query and the passive capture.
-std::optional<SourceChunk> submesh_chunk(const XrUuid& id, XrTime updated, const Rigid& pose, const XrVector3f* vertices,
-                                         std::size_t vertex_count, const std::uint8_t* semantics, const std::uint32_t* indices,
-                                         std::size_t index_count) {
-  index_count = index_count / 3 * 3;
-  if (std::any_of(indices, indices + index_count, [&](std::uint32_t v) { return v >= vertex_count; })) return std::nullopt;
+// labels, one label per triangle (the majority; none for a triangle with an index out of range). Every index is
+// kept as served: broken triangles and a ragged end are for checked_chunks (active query) and keep_capture
+// (passive capture) to drop. Shared by the active query and the passive capture.
+SourceChunk submesh_chunk(const XrUuid& id, XrTime updated, const Rigid& pose, const XrVector3f* vertices,
+                          std::size_t vertex_count, const std::uint8_t* semantics, const std::uint32_t* indices,
+                          std::size_t index_count) {
   SourceChunk chunk;
   chunk.id = chunk_id(id);
   chunk.change = static_cast<std::uint64_t>(updated);
   chunk.mesh.vertices = transformed(vertices, vertex_count, pose);
   if (semantics != nullptr && vertex_count > 0) {
     chunk.labels.reserve(index_count / 3);
-    for (std::size_t t = 0; t < index_count; t += 3)
-      chunk.labels.push_back(surface_label(majority(semantics[indices[t]], semantics[indices[t + 1]], semantics[indices[t + 2]])));
+    const auto label = [&](std::uint32_t i) { return i < vertex_count ? semantics[i] : std::uint8_t{0xff}; };
+    for (std::size_t t = 0; t + 3 <= index_count; t += 3)
+      chunk.labels.push_back(surface_label(majority(label(indices[t]), label(indices[t + 1]), label(indices[t + 2]))));
   }
   chunk.mesh.indices.assign(indices, indices + index_count);
   return chunk;
@@ -73,7 +73,7 @@ class AndroidSource final : public MeshSource {
   ANDROID_FUNCTIONS(ANDROID_MEMBER)
 #undef ANDROID_MEMBER
 
-  std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop) override;
+  std::vector<SourceChunk> run_query(const QueryContext& context, std::stop_token stop) override;
   void forget_session(XrSession session) override;
 };
 
@@ -88,7 +88,7 @@ struct QueryHandles {
   }
 };
 
-std::vector<SourceChunk> AndroidSource::query(const QueryContext& context, std::stop_token stop) {
+std::vector<SourceChunk> AndroidSource::run_query(const QueryContext& context, std::stop_token stop) {
   const auto sets = xr::read_two_call<XrSceneMeshSemanticLabelSetANDROID>(
       "xrEnumerateSupportedSemanticLabelSetsANDROID",
       [&](std::uint32_t capacity, std::uint32_t* count, XrSceneMeshSemanticLabelSetANDROID* out) {
@@ -113,6 +113,7 @@ std::vector<SourceChunk> AndroidSource::query(const QueryContext& context, std::
   handles.snapshot = created.snapshot;
   if (created.trackingState == XR_SCENE_MESH_TRACKING_STATE_ERROR_ANDROID)
     throw std::runtime_error("the runtime's scene meshing is in its error state");
+  const bool tracking = created.trackingState == XR_SCENE_MESH_TRACKING_STATE_TRACKING_ANDROID;
 
   const auto states = xr::read_two_call<XrSceneSubmeshStateANDROID>(
       "xrGetAllSubmeshStatesANDROID",
@@ -135,7 +136,8 @@ std::vector<SourceChunk> AndroidSource::query(const QueryContext& context, std::
     data.submeshId = state.submeshId;
     check(xrGetSubmeshDataANDROID(handles.snapshot, 1, &data), "xrGetSubmeshDataANDROID");
     if (data.vertexCountOutput > kMaxElements || data.indexCountOutput > kMaxElements)
-      throw std::runtime_error("xrGetSubmeshDataANDROID reported a submesh over the size limit");
+      throw std::runtime_error("xrGetSubmeshDataANDROID reported " + std::to_string(data.vertexCountOutput) + " vertices and " +
+                               std::to_string(data.indexCountOutput) + " indices, over the limit");
     std::vector<XrVector3f> vertices(data.vertexCountOutput);
     std::vector<std::uint8_t> semantics(labelled ? vertices.size() : 0);
     std::vector<std::uint32_t> indices(data.indexCountOutput);
@@ -150,13 +152,14 @@ std::vector<SourceChunk> AndroidSource::query(const QueryContext& context, std::
       semantics.resize(std::min<std::size_t>(semantics.size(), vertices.size()));
       indices.resize(std::min<std::size_t>(indices.size(), data.indexCountOutput));
     }
-    std::optional<SourceChunk> chunk =
-        submesh_chunk(state.submeshId, state.lastUpdatedTime, to_rigid(state.submeshPoseInBaseSpace), vertices.data(),
-                      vertices.size(), labelled && !semantics.empty() ? semantics.data() : nullptr, indices.data(), indices.size());
-    if (!chunk) throw std::runtime_error("the runtime served a submesh with an index out of range");
-    out.push_back(std::move(*chunk));
+    out.push_back(submesh_chunk(state.submeshId, state.lastUpdatedTime, to_rigid(state.submeshPoseInBaseSpace), vertices.data(),
+                                vertices.size(), labelled && !semantics.empty() ? semantics.data() : nullptr, indices.data(),
+                                indices.size()));
   }
   if (unposed > 0) log_warn(std::to_string(unposed) + " runtime submesh(es) had no valid pose and were left out");
+  if (out.empty() && !tracking)  // initializing or waiting: say so rather than "served nothing"
+    throw std::runtime_error("the runtime's scene meshing is not tracking yet (state " + std::to_string(created.trackingState) +
+                             ") and has no submeshes");
   return out;
 }
 
@@ -256,11 +259,11 @@ void keep_submesh(const SnapshotRecord& record, const SnapshotRecord::Submesh& s
     return;
   }
   const std::uint8_t* semantics = record.labelled ? data.vertexSemantics : nullptr;
-  std::optional<SourceChunk> chunk = submesh_chunk(data.submeshId, state.updated, *base_in_capture * to_rigid(state.pose),
-                                                   data.vertexPositions, data.vertexCountOutput, semantics, data.indices,
-                                                   data.indexCountOutput);
-  if (!chunk) return;  // the runtime's business; nothing we can analyse
-  keep_capture(session, android_scene_meshing_source(), std::move(*chunk), record.tracker_serial, record.serial);
+  // Never past the application's arrays, whatever counts the runtime wrote.
+  SourceChunk chunk = submesh_chunk(data.submeshId, state.updated, *base_in_capture * to_rigid(state.pose), data.vertexPositions,
+                                    std::min(data.vertexCountOutput, data.vertexCapacityInput), semantics, data.indices,
+                                    std::min(data.indexCountOutput, data.indexCapacityInput));
+  keep_capture(session, android_scene_meshing_source(), std::move(chunk), record.tracker_serial, record.serial);
 }
 
 XrResult XRAPI_CALL hook_xrCreateSceneMeshingTrackerANDROID(XrSession session, const XrSceneMeshingTrackerCreateInfoANDROID* createInfo,

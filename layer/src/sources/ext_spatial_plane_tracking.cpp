@@ -71,7 +71,7 @@ class ExtPlaneSource final : public MeshSource {
   EXT_SPATIAL_FUNCTIONS(EXT_MEMBER)
 #undef EXT_MEMBER
 
-  std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop) override;
+  std::vector<SourceChunk> run_query(const QueryContext& context, std::stop_token stop) override;
   void forget_session(XrSession session) override;
 
   // Waits for a future to be ready; false when stopped (the future is cancelled then, and on a timeout).
@@ -143,10 +143,7 @@ MeshPiece place(const XrPosef& origin, const std::vector<XrVector2f>& points, st
   for (const XrVector2f& p : points) flat.push_back({p.x, p.y, 0.0f});
   MeshPiece piece;
   piece.vertices = transformed(flat.data(), flat.size(), to_rigid(origin));
-  indices.resize(indices.size() / 3 * 3);
-  if (std::any_of(indices.begin(), indices.end(), [&](std::uint32_t v) { return v >= points.size(); }))
-    throw std::runtime_error("the runtime served a plane mesh with an index out of range");
-  piece.indices = std::move(indices);
+  piece.indices = std::move(indices);  // broken triangles: checked_chunks (active), keep_capture (passive)
   return piece;
 }
 
@@ -176,7 +173,7 @@ SourceChunk plane_chunk(XrSpatialEntityIdEXT id, MeshPiece mesh, XrSpatialPlaneS
   return chunk;
 }
 
-std::vector<SourceChunk> ExtPlaneSource::query(const QueryContext& context, std::stop_token stop) {
+std::vector<SourceChunk> ExtPlaneSource::run_query(const QueryContext& context, std::stop_token stop) {
   // 1. The capability and its components.
   const auto capabilities = xr::read_two_call<XrSpatialCapabilityEXT>(
       "xrEnumerateSpatialCapabilitiesEXT",
@@ -323,8 +320,7 @@ std::vector<SourceChunk> ExtPlaneSource::query(const QueryContext& context, std:
     } else if (has(XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT)) {
       mesh = bounds_plane(bounds[i]);
     }
-    if (mesh.indices.empty()) continue;
-    out.push_back(plane_chunk(ids[i], std::move(mesh), labels[i]));
+    out.push_back(plane_chunk(ids[i], std::move(mesh), labels[i]));  // an empty one is dropped by checked_chunks
   }
   return out;
 }

@@ -39,11 +39,21 @@ struct QueryContext {
 class MeshSource {
  public:
   virtual ~MeshSource() = default;
-  // Active capture. Throws std::runtime_error with one readable line when the runtime does not deliver
-  // (an error, a future or compute that never completes); returns what it has when `stop` is requested.
-  virtual std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop) = 0;
+  // Active capture (source_support.cpp): the source's run_query, then what every source shares. Throws
+  // std::runtime_error with one readable line when the runtime does not deliver (an error, a future or compute
+  // that never completes, nothing usable); returns what it has when `stop` is requested. The runtime's broken
+  // triangles (non-finite vertices, indices out of range, a ragged index count) and empty chunks are dropped
+  // with one log line. Once a call of the session came back XR_ERROR_SESSION_LOST, it returns nothing without
+  // calling the runtime (the loss was logged once already).
+  std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop);
   // The session is going away: forget the records of its handles (passive capture). Called without locks.
   virtual void forget_session(XrSession session) { (void)session; }
+
+  const char* name = "a mesh source";  // its SourceInfo's, set when it is created
+
+ protected:
+  // The source's own query, as query() describes it, before the shared checks.
+  virtual std::vector<SourceChunk> run_query(const QueryContext& context, std::stop_token stop) = 0;
 };
 
 struct HookEntry {

@@ -52,7 +52,7 @@ class MetaSource final : public MeshSource {
   META_FUNCTIONS(META_MEMBER)
 #undef META_MEMBER
 
-  std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop) override;
+  std::vector<SourceChunk> run_query(const QueryContext& context, std::stop_token stop) override;
   void forget_session(XrSession session) override;
 
  private:
@@ -61,13 +61,14 @@ class MetaSource final : public MeshSource {
   MeshPiece read_mesh(XrSpace space) const;
 };
 
-// Calls `step` until it returns true, every kRuntimePollInterval, for at most kRuntimeTimeout; false when stopped.
+// Calls `step` until it returns true, every kRuntimePollInterval, for at most runtime_timeout(); false when stopped.
 template <typename Step>
 bool poll(const char* what, std::stop_token stop, Step&& step) {
-  const auto deadline = std::chrono::steady_clock::now() + kRuntimeTimeout;
+  const auto deadline = std::chrono::steady_clock::now() + runtime_timeout();
   while (!step()) {
     if (stop.stop_requested()) return false;
-    if (std::chrono::steady_clock::now() > deadline) throw std::runtime_error(std::string(what) + " timed out");
+    if (std::chrono::steady_clock::now() > deadline)
+      throw std::runtime_error(std::string(what) + " did not complete within " + std::to_string(runtime_timeout().count()) + " ms");
     std::this_thread::sleep_for(kRuntimePollInterval);
   }
   return true;
@@ -137,7 +138,8 @@ MeshPiece MetaSource::read_mesh(XrSpace space) const {
   auto mesh = xr_struct<XrSpaceTriangleMeshMETA>(XR_TYPE_SPACE_TRIANGLE_MESH_META);
   check(xrGetSpaceTriangleMeshMETA(space, &get, &mesh), "xrGetSpaceTriangleMeshMETA");
   if (mesh.vertexCountOutput > kMaxRuntimeBufferElements || mesh.indexCountOutput > kMaxRuntimeBufferElements)
-    throw std::runtime_error("xrGetSpaceTriangleMeshMETA reported an absurd mesh size");
+    throw std::runtime_error("xrGetSpaceTriangleMeshMETA reported " + std::to_string(mesh.vertexCountOutput) + " vertices and " +
+                             std::to_string(mesh.indexCountOutput) + " indices, over the limit");
   std::vector<XrVector3f> vertices(mesh.vertexCountOutput);
   std::vector<std::uint32_t> indices(mesh.indexCountOutput);
   mesh.vertexCapacityInput = mesh.vertexCountOutput;
@@ -146,17 +148,15 @@ MeshPiece MetaSource::read_mesh(XrSpace space) const {
   mesh.indices = indices.data();
   if (!vertices.empty() || !indices.empty()) check(xrGetSpaceTriangleMeshMETA(space, &get, &mesh), "xrGetSpaceTriangleMeshMETA");
   vertices.resize(std::min<std::size_t>(vertices.size(), mesh.vertexCountOutput));
-  indices.resize(std::min<std::size_t>(indices.size(), mesh.indexCountOutput) / 3 * 3);
-  if (std::any_of(indices.begin(), indices.end(), [&](std::uint32_t v) { return v >= vertices.size(); }))
-    throw std::runtime_error("the runtime served a mesh with an index out of range");
-  MeshPiece piece;
+  indices.resize(std::min<std::size_t>(indices.size(), mesh.indexCountOutput));
+  MeshPiece piece;  // broken triangles are dropped by checked_chunks
   piece.vertices.reserve(vertices.size());
   for (const XrVector3f& v : vertices) piece.vertices.emplace_back(v.x, v.y, v.z);
   piece.indices = std::move(indices);
   return piece;
 }
 
-std::vector<SourceChunk> MetaSource::query(const QueryContext& context, std::stop_token stop) {
+std::vector<SourceChunk> MetaSource::run_query(const QueryContext& context, std::stop_token stop) {
   const std::vector<XrSpaceQueryResultFB> spaces = find_mesh_spaces(context.session, stop);
   std::vector<SourceChunk> out;
   std::size_t unlocated = 0;

@@ -44,18 +44,27 @@ std::string chunk_id(const XrUuidEXT& id) { return uuid_chunk_id("ml", id.data);
 
 std::string key(const XrUuidEXT& u) { return std::string(reinterpret_cast<const char*>(u.data), sizeof u.data); }
 
-// One block as the runtime served it (vertices in the block's space, uint16 indices), moved by `pose`. Empty
-// when an index is out of range. Shared by the active query and the passive capture.
+constexpr std::uint32_t kMaxBlockVertices = 1u << 16;  // what uint16 indices address
+
+// One block as the runtime served it (vertices in the block's space, uint16 indices), moved by `pose`; every index
+// kept as served (checked_chunks and keep_capture drop broken triangles). Empty when the block claims more vertices
+// than uint16 indices address, or absurdly many indices: counts nobody may read that far. Shared by the active
+// query and the passive capture.
 std::optional<SourceChunk> block_chunk(const XrWorldMeshBlockML& m, XrTime updated, const Rigid& pose) {
-  const std::size_t index_count = std::size_t(m.indexCount / 3) * 3;
-  if (std::any_of(m.indexBuffer, m.indexBuffer + index_count, [&](std::uint16_t v) { return v >= m.vertexCount; }))
-    return std::nullopt;
+  if (m.vertexCount > kMaxBlockVertices || m.indexCount > kMaxRuntimeBufferElements) return std::nullopt;
   SourceChunk chunk;
   chunk.id = chunk_id(m.uuid);
   chunk.change = static_cast<std::uint64_t>(updated);
   chunk.mesh.vertices = transformed(m.vertexBuffer, m.vertexCount, pose);
-  chunk.mesh.indices.assign(m.indexBuffer, m.indexBuffer + index_count);
+  chunk.mesh.indices.assign(m.indexBuffer, m.indexBuffer + m.indexCount);
   return chunk;
+}
+
+// Whether `count` elements of `size` bytes at `p` lie inside the runtime-allocated buffer.
+bool inside(const XrWorldMeshBufferML& buffer, const void* p, std::size_t count, std::size_t size) {
+  if (count == 0) return true;
+  const auto base = reinterpret_cast<std::uintptr_t>(buffer.buffer), at = reinterpret_cast<std::uintptr_t>(p);
+  return p != nullptr && at >= base && count <= buffer.bufferSize / size && at - base <= buffer.bufferSize - count * size;
 }
 
 class MlSource final : public MeshSource {
@@ -65,7 +74,7 @@ class MlSource final : public MeshSource {
   ML_FUNCTIONS(ML_MEMBER)
 #undef ML_MEMBER
 
-  std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop) override;
+  std::vector<SourceChunk> run_query(const QueryContext& context, std::stop_token stop) override;
   void forget_session(XrSession session) override;
 
  private:
@@ -87,7 +96,7 @@ struct QueryHandles {
   }
 };
 
-std::vector<SourceChunk> MlSource::query(const QueryContext& context, std::stop_token stop) {
+std::vector<SourceChunk> MlSource::run_query(const QueryContext& context, std::stop_token stop) {
   QueryHandles handles{*this};
   auto create = xr_struct<XrWorldMeshDetectorCreateInfoML>(XR_TYPE_WORLD_MESH_DETECTOR_CREATE_INFO_ML);
   check(xrCreateWorldMeshDetectorML(context.session, &create, &handles.detector), "xrCreateWorldMeshDetectorML");
@@ -156,21 +165,32 @@ std::vector<SourceChunk> MlSource::query(const QueryContext& context, std::stop_
   // 3. Into the base space.
   std::vector<SourceChunk> out;
   out.reserve(meshes.size());
+  std::size_t undelivered = 0;
   for (const XrWorldMeshBlockML& m : meshes) {
     if (stop.stop_requested()) return {};
-    if (m.blockResult != XR_WORLD_MESH_BLOCK_RESULT_SUCCESS_ML)
-      throw std::runtime_error("the runtime did not deliver a world mesh block (result " + std::to_string(m.blockResult) + ")");
+    if (m.blockResult != XR_WORLD_MESH_BLOCK_RESULT_SUCCESS_ML) {
+      ++undelivered;  // FAILED or PENDING: the others are still the room's
+      continue;
+    }
     const auto state = by_uuid.find(key(m.uuid));
     if (state == by_uuid.end()) throw std::runtime_error("the runtime delivered a world mesh block it did not report");
     if (!is_valid_pose(state->second->meshBoundingBoxCenter)) {
       log_warn("a world mesh block had no valid pose and was left out");
       continue;
     }
-    if ((m.vertexCount > 0 && m.vertexBuffer == nullptr) || (m.indexCount > 0 && m.indexBuffer == nullptr))
-      throw std::runtime_error("the runtime delivered a world mesh block without its arrays");
+    if (!inside(handles.buffer, m.vertexBuffer, m.vertexCount, sizeof(XrVector3f)) ||
+        !inside(handles.buffer, m.indexBuffer, m.indexCount, sizeof(std::uint16_t)))
+      throw std::runtime_error("the runtime delivered a world mesh block whose " + std::to_string(m.vertexCount) + " vertices or " +
+                               std::to_string(m.indexCount) + " indices are not inside its " +
+                               std::to_string(handles.buffer.bufferSize) + "-byte buffer");
     std::optional<SourceChunk> chunk = block_chunk(m, state->second->lastUpdateTime, to_rigid(state->second->meshBoundingBoxCenter));
-    if (!chunk) throw std::runtime_error("the runtime served a world mesh block with an index out of range");
+    if (!chunk) throw std::runtime_error("the runtime delivered a world mesh block of " + std::to_string(m.vertexCount) + " vertices");
     out.push_back(std::move(*chunk));
+  }
+  if (undelivered > 0) {
+    const std::string what = std::to_string(undelivered) + " of " + std::to_string(meshes.size()) + " world mesh blocks not delivered";
+    if (out.empty()) throw std::runtime_error("the runtime delivered none of its world mesh blocks (" + what + ")");
+    log_warn(what + " by the runtime; the others are used");
   }
   return out;
 }

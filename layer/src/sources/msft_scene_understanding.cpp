@@ -26,7 +26,6 @@ using xr::check;
 
 constexpr float kQueryRadius = 100.0f;  // metres around the base space's origin: any room
 constexpr auto kPollInterval = std::chrono::milliseconds(5);
-constexpr auto kComputeTimeout = std::chrono::seconds(60);
 constexpr std::size_t kMaxComponents = 1u << 20;
 
 std::string chunk_id(const XrUuidMSFT& id) { return uuid_chunk_id("msft", id.bytes); }
@@ -41,7 +40,7 @@ class MsftSource final : public MeshSource {
   MSFT_FUNCTIONS(MSFT_MEMBER)
 #undef MSFT_MEMBER
 
-  std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop) override;
+  std::vector<SourceChunk> run_query(const QueryContext& context, std::stop_token stop) override;
   void forget_session(XrSession session) override;
 };
 
@@ -88,17 +87,14 @@ MeshPiece read_mesh_buffer(const MsftSource& next, XrSceneMSFT scene, std::uint6
         return r;
       },
       kMaxRuntimeBufferElements);
-  indices.resize(indices.size() / 3 * 3);
-  if (std::any_of(indices.begin(), indices.end(), [&](std::uint32_t v) { return v >= vertices.size(); }))
-    throw std::runtime_error("the runtime served a mesh with an index out of range");
-  MeshPiece piece;
+  MeshPiece piece;  // broken triangles are dropped by checked_chunks
   piece.vertices.reserve(vertices.size());
   for (const XrVector3f& v : vertices) piece.vertices.emplace_back(v.x, v.y, v.z);
   piece.indices = std::move(indices);
   return piece;
 }
 
-std::vector<SourceChunk> MsftSource::query(const QueryContext& context, std::stop_token stop) {
+std::vector<SourceChunk> MsftSource::run_query(const QueryContext& context, std::stop_token stop) {
   // Which meshes the runtime can compute.
   const auto features = xr::read_two_call<XrSceneComputeFeatureMSFT>(
       "xrEnumerateSceneComputeFeaturesMSFT",
@@ -130,17 +126,17 @@ std::vector<SourceChunk> MsftSource::query(const QueryContext& context, std::sto
   compute.bounds.spheres = &sphere;
   check(xrComputeNewSceneMSFT(handles.observer, &compute), "xrComputeNewSceneMSFT");
 
-  const auto deadline = std::chrono::steady_clock::now() + kComputeTimeout;
+  const auto deadline = std::chrono::steady_clock::now() + runtime_timeout();
   XrSceneComputeStateMSFT state = XR_SCENE_COMPUTE_STATE_UPDATING_MSFT;
   for (;;) {
     check(xrGetSceneComputeStateMSFT(handles.observer, &state), "xrGetSceneComputeStateMSFT");
     if (state != XR_SCENE_COMPUTE_STATE_UPDATING_MSFT) break;
     if (stop.stop_requested()) return {};
-    if (std::chrono::steady_clock::now() > deadline) throw std::runtime_error("the runtime's scene compute timed out");
+    if (std::chrono::steady_clock::now() > deadline) throw std::runtime_error("the runtime's scene compute did not complete within " + std::to_string(runtime_timeout().count()) + " ms");
     std::this_thread::sleep_for(kPollInterval);
   }
   if (state != XR_SCENE_COMPUTE_STATE_COMPLETED_MSFT)
-    throw std::runtime_error("the runtime's scene compute ended in state " + std::to_string(state));
+    throw std::runtime_error("the runtime's scene compute ended in state " + std::to_string(state) + " (failed)");
   if (stop.stop_requested()) return {};
 
   auto scene_info = xr_struct<XrSceneCreateInfoMSFT>(XR_TYPE_SCENE_CREATE_INFO_MSFT);

@@ -9,6 +9,7 @@
 
 #include "stable_uuid.h"
 
+#include "../faults.h"
 #include "../functions.h"
 #include "../log.h"
 #include "../runtime.h"
@@ -290,6 +291,8 @@ XrResult XRAPI_CALL xrCreateSceneMeshSnapshotANDROID(XrSceneMeshingTrackerANDROI
       if (p.x <= half.x + s.world_radius && p.y <= half.y + s.world_radius && p.z <= half.z + s.world_radius)
         snapshot.submeshes.push_back(i);
     }
+    if (faults::pending(XR_ANDROID_SCENE_MESHING_EXTENSION_NAME))  // still initializing: no submeshes, ever
+      result->trackingState = XR_SCENE_MESH_TRACKING_STATE_INITIALIZING_ANDROID, snapshot.submeshes.clear();
     const std::uint64_t id = runtime().new_id();
     state().snapshots[id] = std::move(snapshot);
     result->snapshot = handle_of<XrSceneMeshSnapshotANDROID>(id);
@@ -345,10 +348,12 @@ XrResult XRAPI_CALL xrGetSubmeshDataANDROID(XrSceneMeshSnapshotANDROID snapshot,
       if (d.vertexCapacityInput > 0 && d.vertexPositions == nullptr) return XR_ERROR_VALIDATION_FAILURE;
       if (d.indexCapacityInput > 0 && d.indices == nullptr) return XR_ERROR_VALIDATION_FAILURE;
     }
+    std::vector<Submesh> scratch(count);
+    for (uint32_t i = 0; i < count; ++i) found[i] = &faults::faulty_mesh(XR_ANDROID_SCENE_MESHING_EXTENSION_NAME, *found[i], scratch[i]);
     bool short_capacity = false;
     for (uint32_t i = 0; i < count; ++i) {
       XrSceneSubmeshDataANDROID& d = data[i];
-      d.vertexCountOutput = static_cast<uint32_t>(found[i]->vertices.size());
+      d.vertexCountOutput = faults::vertex_count(XR_ANDROID_SCENE_MESHING_EXTENSION_NAME, found[i]->vertices.size(), d.vertexCapacityInput);
       d.indexCountOutput = static_cast<uint32_t>(found[i]->indices.size());
       short_capacity = short_capacity || (d.vertexCapacityInput > 0 && d.vertexCapacityInput < d.vertexCountOutput) ||
                        (d.indexCapacityInput > 0 && d.indexCapacityInput < d.indexCountOutput);

@@ -84,7 +84,9 @@ XrFutureEXT make_future(std::uint64_t instance, std::uint64_t session, std::stri
   Futures& f = futures();
   std::lock_guard lock(f.mutex);
   const std::uint64_t id = f.next++;
-  f.live[id] = Future{instance, session, std::string(kind), std::chrono::steady_clock::now() + delay, std::move(result)};
+  const auto ready_at = delay == std::chrono::milliseconds::max() ? std::chrono::steady_clock::time_point::max()  // never
+                                                                  : std::chrono::steady_clock::now() + delay;
+  f.live[id] = Future{instance, session, std::string(kind), ready_at, std::move(result)};
   return handle_of<XrFutureEXT>(id);
 }
 

@@ -15,7 +15,7 @@ namespace roomsense::sim {
 const ServedExtension& ext_future_extension();
 
 // A new future of `session`, of one kind (the async function that made it), ready `delay` from now with
-// `result` for its Complete function.
+// `result` for its Complete function; never ready with a delay of milliseconds::max() (faults::future_delay).
 XrFutureEXT make_future(std::uint64_t instance, std::uint64_t session, std::string_view kind,
                         std::chrono::milliseconds delay, std::shared_ptr<const void> result);
 

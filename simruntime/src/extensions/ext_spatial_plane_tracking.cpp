@@ -6,6 +6,7 @@
 // runtime().mutex.
 #include "ext_spatial_plane_tracking.h"
 
+#include "../faults.h"
 #include "../functions.h"
 #include "../log.h"
 #include "../runtime.h"
@@ -172,6 +173,13 @@ XrResult get_buffer(const char* function, XrSpatialSnapshotEXT snapshot, const X
     BufferKind kind{};
     if (!find_buffer(it->second, info->bufferId, plane, kind)) return XR_ERROR_SPATIAL_BUFFER_ID_INVALID_EXT;
     const XrSpatialBufferTypeEXT type = buffer_type(*plane, kind);
+    ServedPlane scratch;
+    plane = &faults::faulty_mesh(XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME, *plane, scratch);
+    if (kind == kMeshVertices && count != nullptr &&
+        faults::vertex_count(XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME, plane->vertices.size(), capacity) == faults::kHugeCount) {
+      *count = faults::kHugeCount;  // 2^31 vertices, and never a capacity that holds them
+      return capacity == 0 ? XR_SUCCESS : XR_ERROR_SIZE_INSUFFICIENT;
+    }
     if constexpr (std::is_same_v<T, XrVector2f>) {
       if (type != XR_SPATIAL_BUFFER_TYPE_VECTOR2F_EXT) return XR_ERROR_VALIDATION_FAILURE;
       return two_call(capacity, count, out, kind == kPolygon ? plane->polygon : plane->vertices);
@@ -264,7 +272,9 @@ XrResult XRAPI_CALL xrCreateSpatialContextAsyncEXT(XrSession session, const XrSp
       }
     }
     *future = make_future(runtime().session(session)->instance, id_of(session), kContextFuture,
-                          std::chrono::milliseconds(instance->config.compute_delay_ms), request);
+                          faults::future_delay(XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME,
+                                               std::chrono::milliseconds(instance->config.compute_delay_ms)),
+                          request);
     return XR_SUCCESS;
   });
 }
@@ -330,7 +340,8 @@ XrResult XRAPI_CALL xrCreateSpatialDiscoverySnapshotAsyncEXT(XrSpatialContextEXT
       request->filter = filter->trackingState;
     const InstanceState* instance = Runtime::find(runtime().instances, context.instance);
     const int delay = instance ? instance->config.compute_delay_ms : 0;
-    *future = make_future(context.instance, context.session, kSnapshotFuture, std::chrono::milliseconds(delay), request);
+    *future = make_future(context.instance, context.session, kSnapshotFuture,
+                          faults::future_delay(XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME, std::chrono::milliseconds(delay)), request);
     return XR_SUCCESS;
   });
 }

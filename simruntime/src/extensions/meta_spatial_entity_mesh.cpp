@@ -7,6 +7,7 @@
 
 #include "stable_uuid.h"
 
+#include "../faults.h"
 #include "../functions.h"
 #include "../log.h"
 #include "../runtime.h"
@@ -452,6 +453,8 @@ XrResult XRAPI_CALL xrQuerySpacesFB(XrSession session, const XrSpaceQueryInfoBas
     }
     const std::uint64_t id = runtime().new_id();
     sa.requests.insert(id);
+    *requestId = static_cast<XrAsyncRequestIdFB>(id);
+    if (faults::pending(XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME)) return XR_SUCCESS;  // no events, no results: ever
     if (!found.results.empty()) {
       XrEventDataSpaceQueryResultsAvailableFB available{};
       available.type = XR_TYPE_EVENT_DATA_SPACE_QUERY_RESULTS_AVAILABLE_FB;
@@ -464,7 +467,6 @@ XrResult XRAPI_CALL xrQuerySpacesFB(XrSession session, const XrSpaceQueryInfoBas
     complete.result = XR_SUCCESS;
     push_event(owner->instance, complete);
     state().queries[id] = std::move(found);
-    *requestId = static_cast<XrAsyncRequestIdFB>(id);
     return XR_SUCCESS;
   });
 }
@@ -576,11 +578,12 @@ XrResult XRAPI_CALL xrGetSpaceTriangleMeshMETA(XrSpace space, const XrSpaceTrian
     XrSpaceTriangleMeshMETA& out = *triangleMeshOutput;
     if ((out.vertexCapacityInput > 0 && out.vertices == nullptr) || (out.indexCapacityInput > 0 && out.indices == nullptr))
       return XR_ERROR_VALIDATION_FAILURE;
-    const Anchor& a = *f.anchor->model;
-    out.vertexCountOutput = static_cast<uint32_t>(a.vertices.size());
+    Anchor scratch;
+    const Anchor& a = faults::faulty_mesh(XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME, *f.anchor->model, scratch);
+    out.vertexCountOutput = faults::vertex_count(XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME, a.vertices.size(), out.vertexCapacityInput);
     out.indexCountOutput = static_cast<uint32_t>(a.indices.size());
     // Nothing is written unless every non-zero capacity is large enough.
-    if ((out.vertexCapacityInput > 0 && out.vertexCapacityInput < a.vertices.size()) ||
+    if ((out.vertexCapacityInput > 0 && out.vertexCapacityInput < out.vertexCountOutput) ||
         (out.indexCapacityInput > 0 && out.indexCapacityInput < a.indices.size()))
       return XR_ERROR_SIZE_INSUFFICIENT;
     if (out.vertexCapacityInput > 0) std::copy(a.vertices.begin(), a.vertices.end(), out.vertices);

@@ -7,6 +7,7 @@
 
 #include "stable_uuid.h"
 
+#include "../faults.h"
 #include "../functions.h"
 #include "../log.h"
 #include "../runtime.h"
@@ -238,7 +239,8 @@ XrResult XRAPI_CALL xrRequestWorldMeshStateAsyncML(XrWorldMeshDetectorML detecto
         result->states.push_back(s);
       }
     }
-    *future = make_future(d->instance, d->session, kStateFuture, std::chrono::milliseconds(instance->config.compute_delay_ms),
+    *future = make_future(d->instance, d->session, kStateFuture,
+                          faults::future_delay(XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME, std::chrono::milliseconds(instance->config.compute_delay_ms)),
                           std::shared_ptr<const void>(result, result.get()));
     return XR_SUCCESS;
   });
@@ -291,7 +293,9 @@ XrResult XRAPI_CALL xrGetWorldMeshBufferRecommendSizeML(XrWorldMeshDetectorML de
     InstanceState* instance = instance_of(*d);
     if (instance == nullptr) return XR_ERROR_HANDLE_INVALID;
     const std::shared_ptr<const BlockScene> scene = scene_of(*instance);
-    const std::uint64_t bytes = scene ? std::min<std::uint64_t>(std::uint64_t(sizeInfo->maxBlockCount) * scene->largest, scene->total) : 0;
+    std::uint64_t bytes = scene ? std::min<std::uint64_t>(std::uint64_t(sizeInfo->maxBlockCount) * scene->largest, scene->total) : 0;
+    // A ragged block (ROOMSENSE_SIM_FAULTS) has one index more: room for it in every block.
+    if (faults::mesh_fault(XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME) != faults::MeshFault::None) bytes += std::uint64_t(sizeInfo->maxBlockCount) * kAlign;
     size->size = static_cast<std::uint32_t>(std::clamp<std::uint64_t>(bytes, kAlign, kMaxBufferSize));
     return XR_SUCCESS;
   });
@@ -355,7 +359,8 @@ XrResult XRAPI_CALL xrRequestWorldMeshAsyncML(XrWorldMeshDetectorML detector, co
       request->blocks.push_back({found == index.end() ? std::numeric_limits<std::size_t>::max() : found->second, b.lod});
       request->uuids.push_back(b.uuid);
     }
-    *future = make_future(d->instance, d->session, kMeshFuture, std::chrono::milliseconds(instance->config.compute_delay_ms),
+    *future = make_future(d->instance, d->session, kMeshFuture,
+                          faults::future_delay(XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME, std::chrono::milliseconds(instance->config.compute_delay_ms)),
                           std::shared_ptr<const void>(request, request.get()));
     return XR_SUCCESS;
   });
@@ -397,11 +402,15 @@ XrResult XRAPI_CALL xrRequestWorldMeshCompleteML(XrWorldMeshDetectorML detector,
       out.uuid = request->uuids[i];
       out.lod = request->blocks[i].second;
       const std::size_t at = request->blocks[i].first;
-      if (!request->scene || at >= request->scene->blocks.size() || used + request->scene->blocks[at].bytes() > sized->second) {
+      Block scratch;
+      const Block* faulty = !request->scene || at >= request->scene->blocks.size()
+                                ? nullptr
+                                : &faults::faulty_mesh(XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME, request->scene->blocks[at], scratch);
+      if (faulty == nullptr || used + faulty->bytes() > sized->second) {
         out.blockResult = XR_WORLD_MESH_BLOCK_RESULT_FAILED_ML;  // an unknown block, or no room left in the buffer
         continue;
       }
-      const Block& b = request->scene->blocks[at];
+      const Block& b = *faulty;
       auto* vertices = reinterpret_cast<XrVector3f*>(memory + used);
       std::copy(b.vertices.begin(), b.vertices.end(), vertices);
       used += (b.vertices.size() * sizeof(XrVector3f) + kAlign - 1) / kAlign * kAlign;
@@ -409,7 +418,7 @@ XrResult XRAPI_CALL xrRequestWorldMeshCompleteML(XrWorldMeshDetectorML detector,
       std::copy(b.indices.begin(), b.indices.end(), indices);
       used += (b.indices.size() * sizeof(std::uint16_t) + kAlign - 1) / kAlign * kAlign;
       out.blockResult = XR_WORLD_MESH_BLOCK_RESULT_SUCCESS_ML;
-      out.vertexCount = static_cast<std::uint32_t>(b.vertices.size());
+      out.vertexCount = faults::vertex_count(XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME, b.vertices.size(), 0);
       out.vertexBuffer = b.vertices.empty() ? nullptr : vertices;
       out.indexCount = static_cast<std::uint32_t>(b.indices.size());
       out.indexBuffer = b.indices.empty() ? nullptr : indices;

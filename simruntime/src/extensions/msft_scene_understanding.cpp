@@ -2,6 +2,7 @@
 // COMPLETED after ROOMSENSE_SIM_COMPUTE_DELAY_MS), scenes expose components, locations and mesh buffers.
 #include "msft_scene_understanding.h"
 
+#include "../faults.h"
 #include "../functions.h"
 #include "../log.h"
 #include "../runtime.h"
@@ -57,7 +58,8 @@ XrResult resolve_bounds(const XrSceneBoundsMSFT& in, std::uint64_t session, Worl
 void run_compute(std::stop_token stop, std::shared_ptr<ComputeJob> job, ComputeRequest request, int delay_ms) {
   {
     std::unique_lock lock(job->mutex);
-    job->wake.wait_for(lock, stop, std::chrono::milliseconds(delay_ms), [] { return false; });
+    if (faults::pending(XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME)) job->wake.wait(lock, stop, [] { return false; });  // UPDATING until the observer goes
+    else job->wake.wait_for(lock, stop, std::chrono::milliseconds(delay_ms), [] { return false; });
     if (stop.stop_requested()) return;
   }
   std::shared_ptr<const SceneData> data;
@@ -321,7 +323,8 @@ XrResult XRAPI_CALL xrGetSceneMeshBuffersMSFT(XrSceneMSFT scene, const XrSceneMe
       return XR_ERROR_VALIDATION_FAILURE;
     const auto found = state->data->meshes.find(getInfo->meshBufferId);
     if (found == state->data->meshes.end()) return XR_ERROR_SCENE_MESH_BUFFER_ID_INVALID_MSFT;
-    const MeshBuffer& mesh = *found->second;
+    MeshBuffer scratch;
+    const MeshBuffer& mesh = faults::faulty_mesh(XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME, *found->second, scratch);
 
     auto* vertices = find_next<XrSceneMeshVertexBufferMSFT>(buffers->next, XR_TYPE_SCENE_MESH_VERTEX_BUFFER_MSFT);
     auto* indices32 = find_next<XrSceneMeshIndicesUint32MSFT>(buffers->next, XR_TYPE_SCENE_MESH_INDICES_UINT32_MSFT);
@@ -330,7 +333,8 @@ XrResult XRAPI_CALL xrGetSceneMeshBuffersMSFT(XrSceneMSFT scene, const XrSceneMe
     if (indices32 != nullptr && indices16 != nullptr) return XR_ERROR_VALIDATION_FAILURE;
     if (indices16 != nullptr && !mesh.fits_uint16()) return XR_ERROR_VALIDATION_FAILURE;  // supportsIndicesUint16 was false
 
-    const auto vertex_count = static_cast<uint32_t>(mesh.vertices.size());
+    const uint32_t vertex_count = faults::vertex_count(XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME, mesh.vertices.size(),
+                                                       vertices ? vertices->vertexCapacityInput : 0);
     const auto index_count = static_cast<uint32_t>(mesh.indices.size());
     uint32_t index_capacity = 0;
     bool index_array_missing = false;

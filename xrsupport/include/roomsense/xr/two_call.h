@@ -2,6 +2,7 @@
 // reading one (the layer's queries).
 #pragma once
 #include <openxr/openxr.h>
+#include <openxr/openxr_reflection.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -37,9 +38,27 @@ XrResult two_call_typed(std::uint32_t capacity, std::uint32_t* count_out, T* out
   return XR_SUCCESS;
 }
 
-// Throws std::runtime_error naming the call when an OpenXR call failed.
+// An XrResult's name (XR_ERROR_SESSION_LOST), or its number for one this header does not know.
+inline std::string result_name(XrResult result) {
+  switch (result) {
+#define ROOMSENSE_XR_RESULT_CASE(name, value) \
+  case name:                                 \
+    return #name;
+    XR_LIST_ENUM_XrResult(ROOMSENSE_XR_RESULT_CASE)
+#undef ROOMSENSE_XR_RESULT_CASE
+    default: return "XrResult " + std::to_string(result);
+  }
+}
+
+// A failed OpenXR call: its message names the call and the result; `result` tells callers which.
+struct CallFailed : std::runtime_error {
+  CallFailed(const char* what, XrResult r) : std::runtime_error(std::string(what) + " failed (" + result_name(r) + ")"), result(r) {}
+  XrResult result;
+};
+
+// Throws CallFailed (a std::runtime_error naming the call and its result) when an OpenXR call failed.
 inline void check(XrResult result, const char* what) {
-  if (XR_FAILED(result)) throw std::runtime_error(std::string(what) + " failed (XrResult " + std::to_string(result) + ")");
+  if (XR_FAILED(result)) throw CallFailed(what, result);
 }
 
 // Reading: `call(capacity, &count, data)` twice, with at most `limit` elements (a runtime that reports absurd

@@ -1,0 +1,28 @@
+// What every scan reader shares: the one shape of their error line, opening a path only when it is a
+// regular file, and dropping the vertices no face uses. A FIFO would block the open, /dev/zero would never end and a directory "opens" on some
+// systems, so the kind of file is checked first and named in the message.
+#pragma once
+#include "roomsense/scan.h"
+
+#include <fstream>
+#include <string>
+
+namespace roomsense::scanio {
+
+// Throws Error(ErrorCode::Io, "cannot read '<name>': <what>").
+[[noreturn]] void throw_read_error(const std::string& name, const std::string& what);
+
+// Opens `path` for binary reading; throws the read error above when it does not exist, is a directory, a
+// FIFO, a device or anything else that is not a regular file, or cannot be opened.
+std::ifstream open_scan_file(const std::string& path);
+
+// The first bytes of a regular file (fewer when it is shorter), for telling formats apart by content.
+std::string file_head(const std::string& path, std::size_t bytes);
+
+// For a mesh with triangles, keeps only the vertices some triangle uses, in file order, and renumbers the
+// indices; a point cloud (no indices) is left alone. Stray points in a mesh file are no surface, and assimp,
+// which read these files before, dropped them too: real scans carry some (the HoloLens apartment has 1777),
+// and they move levels and storeys in the analysis.
+void drop_unreferenced_vertices(Scan& scan);
+
+}  // namespace roomsense::scanio

@@ -1,0 +1,165 @@
+// The layer under concurrent use, for ThreadSanitizer (scripts/tsan.sh; ctest label `concurrency`): the getters
+// on 8 threads while computes run (and a ninth thread trying to compute meanwhile), 8 analyzers of one session
+// computing on 8 threads and destroyed while they compute, and the session destroyed under running analyses.
+// A small executable of its own (not part of layer_tests), so that the ThreadSanitizer job builds only this.
+// test_lifecycle.cpp has the single-threaded lifetime cases (instances, sessions, export directory).
+#include "layer_harness.h"
+#include "roomsense/synthetic.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using namespace layertest;
+
+constexpr int kThreads = 8;
+
+struct Room {
+  std::vector<XrVector3f> vertices;
+  std::vector<uint32_t> indices;
+  explicit Room(const char* source) {
+    const roomsense::Scan s = roomsense::synth::generate_builtin_source(source);
+    for (const glm::vec3& v : s.vertices) vertices.push_back({v.x, v.y, v.z});
+    indices = s.indices;
+  }
+};
+
+const Room& default_room() {
+  static const Room room("synthetic:default");
+  return room;
+}
+
+// One full read through every getter (two-call idiom); XR_ERROR_CALL_ORDER_INVALID before the first result.
+// Returns the area count, or -1 before the first result; counts failures.
+int read_all(const App& app, XrRoomAnalyzerEXTX a, std::atomic<int>& failures) {
+  XrRoomComputeStateEXTX state;
+  if (app.extx.state(a, &state) != XR_SUCCESS) ++failures;
+  XrRoomLayoutEXTX layout{XR_TYPE_ROOM_LAYOUT_EXTX, nullptr};
+  const XrResult r = app.extx.layout(a, &layout);
+  if (r == XR_ERROR_CALL_ORDER_INVALID) return -1;
+  if (r != XR_SUCCESS) {
+    ++failures;
+    return -1;
+  }
+  uint32_t count = 0;
+  if (app.extx.areas(a, 0, &count, nullptr) != XR_SUCCESS) ++failures;
+  std::vector<XrRoomAreaEXTX> areas(count, {XR_TYPE_ROOM_AREA_EXTX, nullptr});
+  uint32_t again = 0;
+  // Every compute here analyses the same meshes, so the count cannot change between the two calls.
+  if (app.extx.areas(a, count, &again, areas.data()) != XR_SUCCESS || again != count) ++failures;
+  XrRoomBoundsMeshEXTX bounds{XR_TYPE_ROOM_BOUNDS_MESH_EXTX, nullptr};
+  if (app.extx.bounds(a, &bounds) != XR_SUCCESS) ++failures;
+  std::vector<XrVector3f> v(bounds.vertexCountOutput);
+  std::vector<uint32_t> i(bounds.indexCountOutput);
+  bounds.vertexCapacityInput = static_cast<uint32_t>(v.size());
+  bounds.vertices = v.data();
+  bounds.indexCapacityInput = static_cast<uint32_t>(i.size());
+  bounds.indices = i.data();
+  if (app.extx.bounds(a, &bounds) != XR_SUCCESS) ++failures;
+  return static_cast<int>(count);
+}
+
+TEST(LayerConcurrency, GettersOnEightThreadsDuringComputes) {
+  App app;
+  const XrRoomAnalyzerEXTX a = app.analyzer();
+  app.submit(a, default_room().vertices, default_room().indices);
+  std::atomic<bool> done{false};
+  std::atomic<int> failures{0}, reads{0}, refused{0}, areas{-1};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&] {
+      while (!done.load()) {
+        const int n = read_all(app, a, failures);
+        if (n < 0) continue;
+        ++reads;
+        int expected = -1;
+        if (!areas.compare_exchange_strong(expected, n) && expected != n) ++failures;
+      }
+    });
+  // A ninth thread tries to compute while computes run: XR_ERROR_CALL_ORDER_INVALID then, never a race.
+  threads.emplace_back([&] {
+    XrRoomComputeInfoEXTX info{XR_TYPE_ROOM_COMPUTE_INFO_EXTX, nullptr};
+    info.includeRuntimeMeshes = XR_FALSE;
+    while (!done.load()) {
+      info.time = now();
+      const XrResult r = app.extx.compute(a, &info);
+      if (r == XR_ERROR_CALL_ORDER_INVALID) ++refused;
+      else if (r != XR_SUCCESS) ++failures;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  });
+  for (int round = 0; round < 3; ++round) {
+    XrRoomComputeInfoEXTX info{XR_TYPE_ROOM_COMPUTE_INFO_EXTX, nullptr};
+    info.time = now();
+    const XrResult r = app.extx.compute(a, &info);
+    EXPECT_TRUE(r == XR_SUCCESS || r == XR_ERROR_CALL_ORDER_INVALID) << r;
+    EXPECT_EQ(app.wait(a), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  }
+  done = true;
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(app.wait(a), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  EXPECT_EQ(failures.load(), 0);
+  EXPECT_GT(reads.load(), 0);
+  EXPECT_GT(areas.load(), 0);
+  std::printf("[ figures  ] %d full reads, %d computes refused while running\n", reads.load(), refused.load());
+}
+
+TEST(LayerConcurrency, EightAnalyzersComputeAndAreDestroyedOnEightThreads) {
+  App app;
+  std::atomic<int> failures{0}, completed{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      for (int round = 0; round < 2; ++round) {
+        XrRoomAnalyzerCreateInfoEXTX info{XR_TYPE_ROOM_ANALYZER_CREATE_INFO_EXTX, nullptr};
+        info.baseSpace = app.local;
+        info.backend = XR_ROOM_COMPUTE_BACKEND_CPU_EXTX;
+        XrRoomAnalyzerEXTX a = XR_NULL_HANDLE;
+        if (app.extx.create(app.session, &info, &a) != XR_SUCCESS) {
+          ++failures;
+          continue;
+        }
+        XrRoomMeshEXTX mesh{XR_TYPE_ROOM_MESH_EXTX, nullptr};
+        mesh.pose = {{0, 0, 0, 1}, {0, 0, 0}};
+        mesh.vertexCount = static_cast<uint32_t>(default_room().vertices.size());
+        mesh.vertices = default_room().vertices.data();
+        mesh.indexCount = static_cast<uint32_t>(default_room().indices.size());
+        mesh.indices = default_room().indices.data();
+        XrRoomComputeInfoEXTX compute{XR_TYPE_ROOM_COMPUTE_INFO_EXTX, nullptr};
+        compute.time = now();
+        if (app.extx.submit(a, &mesh) != XR_SUCCESS || app.extx.compute(a, &compute) != XR_SUCCESS) ++failures;
+        if ((t + round) % 2 == 0) {  // half wait for the result, half are destroyed while they compute
+          if (app.wait(a) == XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX && read_all(app, a, failures) > 0) ++completed;
+          else ++failures;
+        }
+        if (app.extx.destroy(a) != XR_SUCCESS) ++failures;
+      }
+    });
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(failures.load(), 0);
+  EXPECT_EQ(completed.load(), kThreads);
+}
+
+TEST(LayerConcurrency, SessionDestroyedUnderEightRunningAnalyses) {
+  App app;
+  for (int round = 0; round < 2; ++round) {
+    std::vector<XrRoomAnalyzerEXTX> analyzers;
+    for (int t = 0; t < kThreads; ++t) {
+      const XrRoomAnalyzerEXTX a = app.analyzer();
+      app.submit(a, default_room().vertices, default_room().indices);
+      app.start(a, false);
+      analyzers.push_back(a);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(3 * round));
+    app.close_session();  // stops and waits for every analysis
+    XrRoomComputeStateEXTX state;
+    for (const XrRoomAnalyzerEXTX a : analyzers) EXPECT_EQ(app.extx.state(a, &state), XR_ERROR_HANDLE_INVALID);
+    app.open_session();
+  }
+}
+
+}  // namespace

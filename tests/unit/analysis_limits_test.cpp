@@ -1,0 +1,185 @@
+// What bounds an analysis: the triangle-voxel work budget, cancellation, and the 1.5 m a room needs
+// between floor and ceiling (DESIGN.md; thesis Eq. 3.9/3.10). Hostile input must end in a clear error or
+// status, never in minutes of work.
+#include "roomsense/analysis.h"
+#include "roomsense/error.h"
+#include "roomsense/synthetic.h"
+#include "roomsense/voxelize.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <random>
+#include <thread>
+
+namespace roomsense {
+namespace {
+
+// The reference for triangle mode: every voxel of each triangle's box, tested (what the Vulkan shader does).
+VoxelGrid voxelize_whole_boxes(const GridSpec& s, const std::vector<glm::vec3>& g, const std::vector<std::uint32_t>& idx) {
+  VoxelGrid grid(s);
+  for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
+    const glm::vec3 &a = g[idx[t]], &b = g[idx[t + 1]], &c = g[idx[t + 2]];
+    const glm::vec3 lo = glm::min(glm::min(a, b), c), hi = glm::max(glm::max(a, b), c);
+    const int x0 = box_index(lo.x, s.nx), x1 = box_index(hi.x, s.nx), y0 = box_index(lo.y, s.ny),
+              y1 = box_index(hi.y, s.ny), z0 = box_index(lo.z, s.nz), z1 = box_index(hi.z, s.nz);
+    if (x0 == x1 && y0 == y1 && z0 == z1) grid.set(x0, y0, z0);
+    for (int z = z0; z <= z1; ++z)
+      for (int x = x0; x <= x1; ++x)
+        for (int y = y0; y <= y1; ++y)
+          if (triangle_overlaps_voxel(a, b, c, x, y, z)) grid.set(x, y, z);
+  }
+  return grid;
+}
+
+VoxelizeRequest request(const GridSpec& spec, const std::vector<glm::vec3>& g, const std::vector<std::uint32_t>& idx) {
+  return {spec, g, idx, VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}};
+}
+
+// Eight corners of a 5 x 3 x 4 m box and `count` triangles among them, each as large as the room.
+Scan room_sized_triangles(std::size_t count) {
+  Scan scan;
+  for (float x : {0.0f, 5.0f})
+    for (float y : {0.0f, 3.0f})
+      for (float z : {0.0f, 4.0f}) scan.vertices.emplace_back(x, y, z);
+  std::mt19937 rng(3);
+  for (std::size_t t = 0; t < count; ++t) {
+    std::uint32_t a = rng() % 8, b = rng() % 8, c = rng() % 8;
+    while (b == a) b = rng() % 8;
+    while (c == a || c == b) c = rng() % 8;
+    scan.indices.insert(scan.indices.end(), {a, b, c});
+  }
+  return scan;
+}
+
+TEST(VoxelizeScan, MarksExactlyWhatTestingTheWholeBoxMarks) {
+  // Random triangles of every shape: large and small, steep and flat, slivers and degenerate ones, some
+  // reaching outside the grid (clamped), in grid units.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> pos(-2.0f, 42.0f), small(-1.5f, 1.5f), tiny(-1e-3f, 1e-3f);
+  const GridSpec spec = make_grid_spec({0, 0, 0}, {3.9f, 2.9f, 3.4f}, 0.1f);
+  std::vector<glm::vec3> g;
+  std::vector<std::uint32_t> idx;
+  for (int t = 0; t < 3000; ++t) {
+    const glm::vec3 a(pos(rng), pos(rng), pos(rng));
+    glm::vec3 b, c;
+    switch (t % 5) {
+      case 0: b = {pos(rng), pos(rng), pos(rng)}, c = {pos(rng), pos(rng), pos(rng)}; break;  // large
+      case 1: b = a + glm::vec3(small(rng), small(rng), small(rng)), c = a + glm::vec3(small(rng), small(rng), small(rng)); break;
+      case 2: b = glm::vec3(pos(rng), pos(rng), pos(rng)), c = a + (b - a) * 0.37f; break;  // collinear
+      case 3: b = glm::vec3(pos(rng), pos(rng), pos(rng)), c = b + glm::vec3(tiny(rng), tiny(rng), tiny(rng)); break;  // sliver
+      default: b = {pos(rng), a.y + tiny(rng), pos(rng)}, c = {pos(rng), a.y + tiny(rng), pos(rng)}; break;  // nearly flat
+    }
+    const auto base = std::uint32_t(g.size());
+    g.insert(g.end(), {a, b, c});
+    idx.insert(idx.end(), {base, base + 1, base + 2});
+  }
+  const VoxelGrid expected = voxelize_whole_boxes(spec, g, idx);
+  for (const unsigned threads : {1u, 2u}) {
+    const VoxelGrid got = voxelize_cpu(request(spec, g, idx), threads);
+    ASSERT_EQ(got.cells, expected.cells) << threads << " threads";
+  }
+}
+
+TEST(VoxelizeScan, TheSyntheticRoomsMatchTheWholeBoxReference) {
+  for (const std::string& name : synth::builtin_names()) {
+    const synth::RoomSpec room = *synth::builtin(name);
+    const Scan scan = synth::generate(room);
+    const PreparedInput in = prepare_input(scan);
+    const GridSpec spec = make_grid_spec(in.lo, in.hi, 0.05f);
+    const std::vector<glm::vec3> g = to_grid_units(in.vertices, spec);
+    EXPECT_EQ(voxelize_cpu(request(spec, g, in.indices)).cells, voxelize_whole_boxes(spec, g, in.indices).cells)
+        << name;
+  }
+}
+
+TEST(WorkBudget, RoomSizedTrianglesAtAFineVoxelAreAClearError) {
+  AnalysisOptions o;
+  o.voxel_size = 0.02f;
+  try {
+    analyze(room_sized_triangles(2012), o);
+    FAIL() << "2,012 room-sized triangles at 2 cm voxels need about 2e8 tests, past the budget";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::TooMuchWork);
+    EXPECT_NE(std::string(e.what()).find("use a larger voxel size"), std::string::npos) << e.what();
+  }
+}
+
+TEST(WorkBudget, TheSameTrianglesAtTheDefaultVoxelFitAndFindTheBox) {
+  const AnalysisResult r = analyze(room_sized_triangles(2012));
+  ASSERT_TRUE(r.ok()) << r.status_message;
+  EXPECT_NEAR(r.ceiling_y - r.floor_y, 3.0f, 0.11f);
+}
+
+TEST(WorkBudget, CountsTestsNotTriangles) {
+  // A tight budget refuses 100 large triangles but takes 76,000 small ones (two tests each on average).
+  AnalysisOptions tight;
+  tight.voxel_test_budget = 200'000;
+  EXPECT_THROW(analyze(room_sized_triangles(100), tight), Error);
+  const Scan room = synth::generate(synth::default_room());  // 5 cm triangles
+  ASSERT_GT(room.indices.size() / 3, 10'000u);
+  EXPECT_NO_THROW(analyze(room, tight));
+}
+
+TEST(Cancellation, AStopBeforeTheStartCancels) {
+  std::stop_source stop;
+  stop.request_stop();
+  AnalysisOptions o;
+  o.stop = stop.get_token();
+  try {
+    analyze(synth::generate(synth::default_room()), o);
+    FAIL() << "not cancelled";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Cancelled);
+  }
+}
+
+TEST(Cancellation, AStopDuringALongVoxelizationReturnsPromptly) {
+  // About 1e8 tests, seconds of work with the budget lifted: the stop comes 50 ms in.
+  const Scan scan = room_sized_triangles(1000);
+  AnalysisOptions o;
+  o.voxel_size = 0.02f;
+  o.voxel_test_budget = std::uint64_t{1} << 40;
+  std::stop_source stop;
+  o.stop = stop.get_token();
+  std::chrono::steady_clock::time_point stopped;
+  std::jthread stopper([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    stopped = std::chrono::steady_clock::now();
+    stop.request_stop();
+  });
+  try {
+    analyze(scan, o);
+    FAIL() << "finished before the stop";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Cancelled);
+  }
+  stopper.join();
+  // A hang detector, not a timing: the bound the API promises is 100 ms on an idle machine.
+  EXPECT_LT(std::chrono::steady_clock::now() - stopped, std::chrono::seconds(3));
+}
+
+TEST(MinimumHeight, ALoneWallIsNoRoom) {
+  // One wall 1.5 m high: its ends are the fullest levels, 15 levels apart at 0.1 m, yet the surfaces found
+  // in them, 0.10 m and 1.50 m, are less than 1.5 m apart (issue 18's reproducer). No room.
+  Scan wall;
+  wall.vertices = {{0, 0, 0}, {4, 0, 0}, {4, 1.5f, 0}, {0, 1.5f, 0}};
+  wall.indices = {0, 1, 2, 0, 2, 3};
+  const AnalysisResult r = analyze(wall);
+  EXPECT_EQ(r.status, AnalysisStatus::NoFloorCeiling);
+  EXPECT_NE(r.status_message.find("less than 1.50 m apart"), std::string::npos) << r.status_message;
+  EXPECT_TRUE(r.storeys.empty());
+  EXPECT_TRUE(r.areas.empty());
+}
+
+TEST(MinimumHeight, ARoomOfOnePointSixMetresIsARoom) {
+  synth::RoomSpec low = synth::default_room();
+  low.ceiling_y = low.floor_y + 1.6f;
+  low.windows.clear();
+  const AnalysisResult r = analyze(synth::generate(low));
+  ASSERT_TRUE(r.ok()) << r.status_message;
+  EXPECT_NEAR(r.ceiling_y - r.floor_y, 1.6f, 0.11f);
+}
+
+}  // namespace
+}  // namespace roomsense

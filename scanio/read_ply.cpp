@@ -442,16 +442,9 @@ class PlyReader {
     return 0;
   }
 
+  // Every 32-bit integer is exact in a double; lists of floats are refused in the header.
   std::int64_t integer(Type t, const char* p) const {
-    switch (t) {
-      case Type::Int8: return load<std::int8_t>(p);
-      case Type::UInt8: return load<std::uint8_t>(p);
-      case Type::Int16: return load<std::int16_t>(p);
-      case Type::UInt16: return load<std::uint16_t>(p);
-      case Type::Int32: return load<std::int32_t>(p);
-      case Type::UInt32: return load<std::uint32_t>(p);
-      default: return 0;  // lists of floats are refused in the header
-    }
+    return t == Type::Float32 || t == Type::Float64 ? 0 : std::int64_t(number(t, p));
   }
 
   const char* take(std::size_t bytes, const Element& element) {

@@ -20,22 +20,10 @@ harnesses=(${ROOMSENSE_FUZZERS:-analyze quest_capture capi_thesis capi_handle ob
 jobs=${ROOMSENSE_FUZZ_JOBS:-2}
 timeout=${ROOMSENSE_FUZZ_TIMEOUT:-20}
 
-# clang and its fuzzer runtime (libclang_rt.fuzzer lives in libclang-rt-14-dev on Debian 12); setup.sh installs
-# the rest and configures.
-missing=()
-for p in clang libclang-rt-14-dev; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "fuzz: installing ${missing[*]}"
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo=sudo
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
-
 # Only the harnesses and the seed generator are built, with coverage feedback from all the code they link.
-CC=clang CXX=clang++ ROOMSENSE_BUILD_TYPE=RelWithDebInfo ROOMSENSE_TARGET=roomsense_fuzzers \
+# clang and its fuzzer runtime (libclang_rt.fuzzer lives in libclang-rt-14-dev on Debian 12) come with the rest.
+ROOMSENSE_EXTRA_PACKAGES="clang libclang-rt-14-dev" \
+  CC=clang CXX=clang++ ROOMSENSE_BUILD_TYPE=RelWithDebInfo ROOMSENSE_TARGET=roomsense_fuzzers \
   scripts/setup.sh "$build_dir" -DROOMSENSE_BUILD_FUZZERS=ON -DROOMSENSE_SANITIZE=address,undefined \
   -DROOMSENSE_BUILD_TESTS=OFF -DROOMSENSE_BUILD_BENCH=OFF -DROOMSENSE_WITH_VULKAN=OFF "$@"
 

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages roomsense needs (only those missing), then configures and builds.
-# Usage: scripts/setup.sh [BUILD_DIR] [extra cmake arguments...]; ROOMSENSE_TARGET=NAME builds one target.
+# Usage: scripts/setup.sh [BUILD_DIR] [extra cmake arguments...]; ROOMSENSE_TARGET=NAME builds one target;
+# ROOMSENSE_EXTRA_PACKAGES="a b" installs more (the fuzzing and TSan scripts' compilers).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${1:-build}
@@ -10,7 +11,8 @@ packages=(cmake g++ ninja-build pkg-config
           libopenxr-dev libopenxr-loader1 openxr-layer-corevalidation libopenxr-utils
           libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools glslang-dev
           libglm-dev nlohmann-json3-dev libassimp-dev libtinyobjloader-dev libgtest-dev libbenchmark-dev
-          libxml2-dev)  # libxml2: tests only (plan.svg is checked with a real XML parser)
+          libxml2-dev  # libxml2: tests only (plan.svg is checked with a real XML parser)
+          ${ROOMSENSE_EXTRA_PACKAGES:-})
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

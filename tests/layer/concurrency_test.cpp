@@ -4,6 +4,7 @@
 // A small executable of its own (not part of layer_tests), so that the ThreadSanitizer job builds only this.
 // test_lifecycle.cpp has the single-threaded lifetime cases (instances, sessions, export directory).
 #include "layer_harness.h"
+#include "synthetic_room.h"
 #include "roomsense/synthetic.h"
 
 #include <gtest/gtest.h>
@@ -17,16 +18,6 @@ namespace {
 using namespace layertest;
 
 constexpr int kThreads = 8;
-
-struct Room {
-  std::vector<XrVector3f> vertices;
-  std::vector<uint32_t> indices;
-  explicit Room(const char* source) {
-    const roomsense::Scan s = roomsense::synth::generate_builtin_source(source);
-    for (const glm::vec3& v : s.vertices) vertices.push_back({v.x, v.y, v.z});
-    indices = s.indices;
-  }
-};
 
 const Room& default_room() {
   static const Room room("synthetic:default");

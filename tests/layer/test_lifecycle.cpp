@@ -4,6 +4,7 @@
 #include "compare.h"
 #include "passive_capture.h"
 #include "layer_harness.h"
+#include "synthetic_room.h"
 #include "roomsense/synthetic.h"
 
 #include <gtest/gtest.h>
@@ -16,16 +17,6 @@
 namespace {
 
 using namespace layertest;
-
-struct Room {
-  std::vector<XrVector3f> vertices;
-  std::vector<uint32_t> indices;
-  explicit Room(const char* source) {
-    const roomsense::Scan s = roomsense::synth::generate_builtin_source(source);
-    for (const glm::vec3& v : s.vertices) vertices.push_back({v.x, v.y, v.z});
-    indices = s.indices;
-  }
-};
 
 TEST(LayerLifecycle, GettersOnSeveralThreadsWhileAComputeRuns) {
   App app;

@@ -203,6 +203,7 @@ void Analyzer::run(std::stop_token stop, Job job) {
              std::to_string(analysis.timings.total) + " ms, compute " + std::to_string(double(result->duration) / 1e6) + " ms");
     if (!instance.config.export_dir.empty()) export_files(instance.config.export_dir, *result, analysis.bounds);
   } catch (const std::exception& e) {
+    if (stop.stop_requested()) return;  // the analyzer is being destroyed: nothing failed
     problem = e.what();
   }
   if (!result) log_warn("room analysis failed: " + problem);

@@ -6,8 +6,6 @@
 #include "results.h"
 #include "sources/source_support.h"
 
-#include "roomsense/error.h"
-
 #include <algorithm>
 #include <chrono>
 #include <cstring>
@@ -119,10 +117,8 @@ void export_captured(SessionState& session, std::stop_token stop) {
       const RoomResult result = make_room_result(analysis, sources, elapsed.count());
       export_files(session.instance->config.export_dir, result, analysis.bounds);
     }
-  } catch (const Error& e) {
-    if (e.code() == ErrorCode::Cancelled) return;  // not exported: the session's end exports it
-    log_warn(std::string("export: analysis of the captured scene meshes failed: ") + e.what());
   } catch (const std::exception& e) {
+    if (stop.stop_requested()) return;  // cancelled, not exported: the session's end exports it
     log_warn(std::string("export: analysis of the captured scene meshes failed: ") + e.what());
   }
   std::lock_guard lock(session.mutex);

@@ -1,6 +1,6 @@
 #include "summary.h"
 
-#include "number_format.h"
+#include "roomsense/number_text.h"
 
 #include <algorithm>
 #include <array>

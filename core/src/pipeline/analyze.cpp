@@ -2,11 +2,10 @@
 #include "roomsense/analysis.h"
 #include "roomsense/cancel.h"
 #include "roomsense/error.h"
+#include "roomsense/number_text.h"
 #include "surface_heights.h"
 
 #include <chrono>
-#include <cmath>
-#include <cstdio>
 
 namespace roomsense {
 namespace {
@@ -24,12 +23,7 @@ class Stopwatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-// "1.50 m", "-0.12 m", "3e+12 m": two decimals for room sizes, never forty digits for absurd ones.
-std::string metres(float value) {
-  char text[32];
-  std::snprintf(text, sizeof text, std::fabs(value) < 1e6f ? "%.2f m" : "%.3g m", double(value));
-  return text;
-}
+std::string metres(float value) { return fixed_or_g(value, 2) + " m"; }
 
 }  // namespace
 
@@ -66,11 +60,12 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
   stop_point(options.stop);
 
   const float min_height = options.features.min_floor_ceiling;
+  // Moves the result out (a copy would copy the voxel grid).
   const auto no_room = [&](std::string message) {
     r.status = AnalysisStatus::NoFloorCeiling;
     r.status_message = std::move(message);
     r.timings.total = r.timings.prepare + r.timings.voxelize;
-    return r;
+    return std::move(r);
   };
   if (!r.voxels.levels)
     return no_room("no floor and ceiling found: no two horizontal levels are at least " + metres(min_height) +

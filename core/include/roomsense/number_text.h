@@ -1,11 +1,12 @@
-// Numbers in the CLI's messages and summary: fixed decimals for everyday magnitudes, %g beyond them, so a
-// scan at 1e30 m or an infinite value prints as "1e+30" or "inf", not as forty digits.
+// Numbers in messages for people (the CLI's summary, the pipeline's status lines): fixed decimals for
+// everyday magnitudes, %g beyond them, so a scan at 1e30 m or an infinite value prints as "1e+30" or
+// "inf", not as forty digits.
 #pragma once
 #include <cmath>
 #include <cstdio>
 #include <string>
 
-namespace roomsense::cli {
+namespace roomsense {
 
 // `decimals` fixed decimals when |v| < 1e7, else 4 significant digits in %g form (also for inf and nan).
 inline std::string fixed_or_g(double v, int decimals) {
@@ -15,4 +16,4 @@ inline std::string fixed_or_g(double v, int decimals) {
   return text;
 }
 
-}  // namespace roomsense::cli
+}  // namespace roomsense

@@ -91,7 +91,17 @@ XrResult Analyzer::submit(MeshPiece mesh) {
   return XR_SUCCESS;
 }
 
-XrResult Analyzer::compute(const XrRoomComputeInfoEXTX& info) {
+XrResult Analyzer::compute(const XrRoomComputeInfoEXTX& info) { return start(info, false); }
+
+XrResult Analyzer::compute_if_changed(const XrRoomComputeInfoEXTX& info) { return start(info, true); }
+
+XrRoomComputeStateEXTX Analyzer::wait(std::stop_token stop) {
+  std::unique_lock lock(mutex_);
+  done_.wait(lock, stop, [&] { return state_ != XR_ROOM_COMPUTE_STATE_RUNNING_EXTX; });
+  return state_;
+}
+
+XrResult Analyzer::start(const XrRoomComputeInfoEXTX& info, bool if_changed) {
   Job job;
   job.include_runtime = info.includeRuntimeMeshes != XR_FALSE;
   job.time = info.time;
@@ -105,6 +115,7 @@ XrResult Analyzer::compute(const XrRoomComputeInfoEXTX& info) {
   if (shut_) return XR_ERROR_HANDLE_INVALID;
   if (state_ == XR_ROOM_COMPUTE_STATE_RUNNING_EXTX) return XR_ERROR_CALL_ORDER_INVALID;
   job.submitted = submitted_;
+  if (if_changed && latest_) job.skip_hash = latest_->input_hash;
   // The previous worker published its result (the state is not RUNNING) and touches nothing of ours any
   // more, so joining it here, under the lock, cannot wait on us.
   if (worker_.joinable()) worker_.join();
@@ -191,12 +202,22 @@ void Analyzer::run(std::stop_token stop, Job job) {
     if (pieces.empty())
       throw std::runtime_error(job.include_runtime ? "no meshes to analyse: the runtime served none and none were submitted"
                                                    : "no meshes to analyse: none were submitted");
+    std::uint64_t input_hash = 0xcbf29ce484222325ull;
+    for (const MeshPiece* piece : pieces) input_hash = (input_hash ^ content_hash(*piece)) * 0x100000001b3ull;
+    if (job.skip_hash == input_hash) {
+      log_debug([] { return std::string("the runtime's meshes are unchanged: no new analysis"); });
+      std::lock_guard lock(mutex_);
+      state_ = XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX;
+      done_.notify_all();
+      return;
+    }
     const AnalysisResult analysis = analyze_pieces(pieces, settings_.voxel_size, settings_.backend, stop);
     if (!analysis.ok()) throw std::runtime_error(analysis.status_message);
     if (stop.stop_requested()) return;
     const auto elapsed = std::chrono::steady_clock::now() - job.started;
     result = std::make_shared<RoomResult>(
-        make_room_result(analysis, sources, std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count()));
+        make_room_result(analysis, sources, std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count(), stop));
+    result->input_hash = input_hash;
     log_info("analysis completed: " + std::to_string(sources.runtime_meshes) + " runtime, " +
              std::to_string(sources.app_read_meshes) + " app-read and " + std::to_string(sources.submitted_meshes) +
              " submitted meshes; " + std::to_string(analysis.areas.size()) + " areas; pipeline " +
@@ -210,6 +231,7 @@ void Analyzer::run(std::stop_token stop, Job job) {
   std::lock_guard lock(mutex_);
   if (result) latest_ = std::move(result);
   state_ = latest_ && problem.empty() ? XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX : XR_ROOM_COMPUTE_STATE_FAILED_EXTX;
+  done_.notify_all();
 }
 
 }  // namespace roomsense::layer

@@ -10,7 +10,9 @@
 
 #include <chrono>
 #include <memory>
+#include <condition_variable>
 #include <mutex>
+#include <optional>
 #include <stop_token>
 #include <thread>
 #include <vector>
@@ -36,6 +38,12 @@ class Analyzer {
   // Both return XR_ERROR_HANDLE_INVALID once the analyzer is shut down. Arguments are already validated.
   XrResult submit(MeshPiece mesh);
   XrResult compute(const XrRoomComputeInfoEXTX& info);
+  // The same, but when the meshes are those of the latest result (RoomResult::input_hash), the compute ends
+  // COMPLETED at once and keeps that result: the layer's own periodic analyses (spatial/) cost a query then.
+  XrResult compute_if_changed(const XrRoomComputeInfoEXTX& info);
+
+  // Waits until no compute runs (or `stop` is requested); the state it ends in.
+  XrRoomComputeStateEXTX wait(std::stop_token stop);
 
   XrRoomComputeStateEXTX state();
   std::shared_ptr<const RoomResult> latest();  // null before the first completed compute
@@ -52,13 +60,16 @@ class Analyzer {
     std::vector<std::shared_ptr<const CapturedMesh>> captured;
     XrSpace capture_space = XR_NULL_HANDLE;
     std::chrono::steady_clock::time_point started;
+    std::optional<std::uint64_t> skip_hash;  // compute_if_changed: the latest result's input_hash
   };
+  XrResult start(const XrRoomComputeInfoEXTX& info, bool if_changed);
   void run(std::stop_token stop, Job job);
 
   std::shared_ptr<SessionState> session_;
   Settings settings_;
 
   std::mutex mutex_;  // guards everything below
+  std::condition_variable_any done_;  // notified when a compute ends
   bool shut_ = false;
   XrRoomComputeStateEXTX state_ = XR_ROOM_COMPUTE_STATE_NONE_EXTX;
   std::vector<std::shared_ptr<const MeshPiece>> submitted_;

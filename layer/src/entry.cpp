@@ -7,6 +7,9 @@
 #include "roomsense/xr/loader_interface.h"
 #include "log.h"
 #include "state.h"
+#include "spatial/spatial_api.h"
+#include "spatial/spatial_instance.h"
+#include "spatial/spatial_service.h"
 
 #include <algorithm>
 #include <cstring>
@@ -20,7 +23,9 @@ namespace {
 
 constexpr std::size_t kMaxTrackedSpaces = 4096;  // reference spaces remembered for baseSpace checks
 
-enum class HookGroup { Always, Session, Spaces, Events, Extx };
+enum class HookGroup { Always, Session, Spaces, Events, Frame, Extx };
+
+constexpr const char* kTimespecExtension = "XR_KHR_convert_timespec_time";
 
 struct Hook {
   PFN_xrVoidFunction function;
@@ -35,17 +40,20 @@ const std::unordered_map<std::string_view, Hook>& hooks() {
 #define ROOMSENSE_SESSION(name) ROOMSENSE_ENTRY(name, HookGroup::Session)
 #define ROOMSENSE_SPACES(name) ROOMSENSE_ENTRY(name, HookGroup::Spaces)
 #define ROOMSENSE_EVENTS(name) ROOMSENSE_ENTRY(name, HookGroup::Events)
+#define ROOMSENSE_FRAME(name) ROOMSENSE_ENTRY(name, HookGroup::Frame)
 #define ROOMSENSE_EXTX(name) ROOMSENSE_ENTRY(name, HookGroup::Extx)
     ROOMSENSE_HOOKS_ALWAYS(ROOMSENSE_ALWAYS)
     ROOMSENSE_HOOKS_SESSION(ROOMSENSE_SESSION)
     ROOMSENSE_HOOKS_SPACES(ROOMSENSE_SPACES)
     ROOMSENSE_HOOKS_EVENTS(ROOMSENSE_EVENTS)
+    ROOMSENSE_HOOKS_FRAME(ROOMSENSE_FRAME)
     ROOMSENSE_EXTX_FUNCTIONS(ROOMSENSE_EXTX)
 #undef ROOMSENSE_ENTRY
 #undef ROOMSENSE_ALWAYS
 #undef ROOMSENSE_SESSION
 #undef ROOMSENSE_SPACES
 #undef ROOMSENSE_EVENTS
+#undef ROOMSENSE_FRAME
 #undef ROOMSENSE_EXTX
     return t;
   }();
@@ -93,9 +101,25 @@ void load(PFN_xrGetInstanceProcAddr gipa, XrInstance instance, const char* name,
   if (XR_SUCCEEDED(gipa(instance, name, &f))) out = reinterpret_cast<PFN>(f);
 }
 
+// What of the standard spatial-entity API the application asked for and the runtime has.
+struct SpatialRequest {
+  bool wanted = false;           // the application enabled XR_EXT_spatial_entity
+  bool planes = false;           // the layer serves plane tracking: the application asked, the runtime has none
+  bool runtime_entities = false;  // the runtime has XR_EXT_spatial_entity
+};
+
 void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa, const XrInstanceCreateInfo& info,
                        bool extx, bool capture, const std::vector<const SourceInfo*>& sources,
-                       const std::vector<std::string>& added, const Config& config);
+                       const std::vector<std::string>& added, const Config& config, const SpatialRequest& spatial);
+
+bool layer_enabled(const InstanceState& state, const char* extension) {
+  const auto& added = state.layer_enabled_extensions;
+  return std::find(added.begin(), added.end(), extension) != added.end();
+}
+
+bool offers(const std::optional<std::vector<std::string>>& offered, const char* extension) {
+  return !offered || std::find(offered->begin(), offered->end(), extension) != offered->end();
+}
 
 // The runtime's instance extensions, through the chain below us (a null instance reaches the runtime's
 // xrEnumerateInstanceExtensionProperties); nothing when a layer below does not pass the call on.
@@ -155,15 +179,35 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
 
     // Our extension is ours alone: the loader passes it down unfiltered, so take it out. An analysis needs the
     // runtime's scene meshes, so enable every mesh source's extensions the runtime has (sources/).
+    // The spatial-entity extensions are the layer's to serve where the runtime lacks them (spatial/): then they
+    // are taken out too.
     const bool extx = enabled(*info, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME);
-    const bool capture = extx || !config.export_dir.empty();
-    std::vector<const char*> extensions;
-    for (uint32_t i = 0; i < info->enabledExtensionCount; ++i)
-      if (const char* name = info->enabledExtensionNames[i];
-          name == nullptr || std::strcmp(name, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME) != 0)
-        extensions.push_back(name);  // a null name is the layers' and runtime's to reject below
+    SpatialRequest spatial;
+    spatial.wanted = enabled(*info, XR_EXT_SPATIAL_ENTITY_EXTENSION_NAME);
+    const bool capture = extx || spatial.wanted || !config.export_dir.empty();
     // Only an instance the layer captures for asks the runtime: a pass-through one costs nothing.
     const std::optional<std::vector<std::string>> offered = capture ? runtime_extensions(next_gipa) : std::nullopt;
+    spatial.runtime_entities = spatial.wanted && offers(offered, XR_EXT_SPATIAL_ENTITY_EXTENSION_NAME);
+    spatial.planes = enabled(*info, XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME) &&
+                     !offers(offered, XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME);
+    const auto ours_alone = [&](const char* name) {
+      if (std::strcmp(name, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME) == 0) return true;
+      if (!spatial.wanted) return false;
+      for (const char* served : {XR_EXT_FUTURE_EXTENSION_NAME, XR_EXT_SPATIAL_ENTITY_EXTENSION_NAME,
+                                 XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME})
+        if (std::strcmp(name, served) == 0 && !offers(offered, served)) return true;
+      return false;
+    };
+    std::vector<const char*> extensions;
+    for (uint32_t i = 0; i < info->enabledExtensionCount; ++i)
+      if (const char* name = info->enabledExtensionNames[i]; name == nullptr || !ours_alone(name))
+        extensions.push_back(name);  // a null name is the layers' and runtime's to reject below
+    // The layer's own analyses need the runtime's clock where it has one.
+    std::vector<std::string> clock;
+    if (spatial.wanted && offered && offers(offered, kTimespecExtension) && !enabled(*info, kTimespecExtension)) {
+      clock.emplace_back(kTimespecExtension);
+      extensions.push_back(kTimespecExtension);
+    }
     std::vector<const SourceInfo*> candidates;
     if (capture)
       for (const SourceInfo* source : mesh_sources())
@@ -196,7 +240,8 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
     }
     if (XR_FAILED(result)) return result;
     try {
-      register_instance(*instance, next_gipa, *info, extx, capture, candidates, added, config);
+      added.insert(added.end(), clock.begin(), clock.end());
+      register_instance(*instance, next_gipa, *info, extx, capture, candidates, added, config, spatial);
     } catch (...) {  // the application gets an error, so the instance must not outlive this call
       {
         Registry& r = registry();
@@ -213,9 +258,34 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
   });
 }
 
+// Where the spatial-entity calls the layer does not answer go: a mesh source's hook when it watches the
+// application's calls, else the next layer (nothing where the runtime lacks the extension).
+std::shared_ptr<const SpatialInstance> make_spatial_instance(const InstanceState& state, const SpatialRequest& request) {
+  auto spatial = std::make_shared<SpatialInstance>();
+  spatial->planes = request.planes;
+  spatial->runtime_entities = request.runtime_entities;
+  const auto below = [&](const char* name) -> PFN_xrVoidFunction {
+    for (const EnabledSource& s : state.sources)
+      if (s.app_enabled)
+        for (const HookEntry& hook : s.info->hooks)
+          if (std::strcmp(hook.name, name) == 0) return hook.function;
+    PFN_xrVoidFunction f = nullptr;
+    return XR_SUCCEEDED(state.next.xrGetInstanceProcAddr(state.handle, name, &f)) ? f : nullptr;
+  };
+  if (request.runtime_entities) {
+#define ROOMSENSE_FORWARD(name) spatial->forward.name = reinterpret_cast<PFN_##name>(below(#name));
+    ROOMSENSE_SPATIAL_FUNCTIONS(ROOMSENSE_FORWARD)
+#undef ROOMSENSE_FORWARD
+  }
+  PFN_xrVoidFunction convert = nullptr;  // there when the runtime has the extension (the layer enabled it)
+  if (XR_SUCCEEDED(state.next.xrGetInstanceProcAddr(state.handle, "xrConvertTimespecTimeToTimeKHR", &convert)))
+    spatial->convert_time = reinterpret_cast<ConvertTimespecTime>(convert);
+  return spatial;
+}
+
 void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa, const XrInstanceCreateInfo& info,
                        bool extx, bool capture, const std::vector<const SourceInfo*>& sources,
-                       const std::vector<std::string>& added, const Config& config) {
+                       const std::vector<std::string>& added, const Config& config, const SpatialRequest& spatial) {
   auto state = std::make_shared<InstanceState>();
   state->handle = instance;
   state->extx = extx;
@@ -245,6 +315,7 @@ void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa,
       log_warn(std::string(source->name) + " left out: " + e.what());
     }
   }
+  if (spatial.wanted) state->spatial = make_spatial_instance(*state, spatial);
   log_info(std::string("instance created: ") + (extx ? "XR_EXTX_room_understanding enabled" : "extension not enabled") +
            (capture ? ", capturing scene meshes; mesh sources: " + (used.empty() ? std::string("none") : used)
                     : std::string(", pass-through")));
@@ -267,15 +338,24 @@ XrResult XRAPI_CALL xrGetInstanceProcAddr(XrInstance instance, const char* name,
     const auto it = hooks().find(wanted);
     if (it != hooks().end()) {
       const HookGroup g = it->second.group;
+      const bool spatial = state->spatial != nullptr;
       const bool ours = g == HookGroup::Always || (g == HookGroup::Extx && state->extx) ||
                         (g == HookGroup::Session && state->capture) || (g == HookGroup::Spaces && state->extx) ||
-                        (g == HookGroup::Events && !state->hidden_events.empty());
+                        (g == HookGroup::Events && (!state->hidden_events.empty() || spatial)) ||
+                        (g == HookGroup::Frame && spatial && state->spatial->convert_time == nullptr);
       if (g == HookGroup::Extx && !state->extx) return XR_ERROR_FUNCTION_UNSUPPORTED;
       if (ours) {
         *function = it->second.function;
         return XR_SUCCESS;
       }
     }
+    if (state->spatial)
+      if (const PFN_xrVoidFunction f = spatial_hook(wanted); f != nullptr) {
+        *function = f;
+        return XR_SUCCESS;
+      }
+    if (wanted.starts_with("xrConvert") && wanted.ends_with("TimespecTimeKHR") && layer_enabled(*state, kTimespecExtension))
+      return XR_ERROR_FUNCTION_UNSUPPORTED;  // the layer's clock, not enabled by the application
     if (const auto* hook = source_hook(wanted); hook != nullptr && state->capture)
       for (const EnabledSource& s : state->sources)
         if (s.info == hook->first && s.app_enabled) {
@@ -283,21 +363,21 @@ XrResult XRAPI_CALL xrGetInstanceProcAddr(XrInstance instance, const char* name,
           return XR_SUCCESS;
         }
     // Enabled below us by the layer, not by the application: not the application's to call.
-    if (const auto it = source_function_extensions().find(wanted); it != source_function_extensions().end()) {
-      const auto& added = state->layer_enabled_extensions;
-      if (std::find(added.begin(), added.end(), it->second) != added.end()) return XR_ERROR_FUNCTION_UNSUPPORTED;
-    }
+    if (const auto it = source_function_extensions().find(wanted); it != source_function_extensions().end())
+      if (layer_enabled(*state, it->second)) return XR_ERROR_FUNCTION_UNSUPPORTED;
     return state->next.xrGetInstanceProcAddr(instance, name, function);
   });
 }
 
-// ---- xrPollEvent (only when the layer enabled an extension with events of its own)
+// ---- xrPollEvent (when the layer enabled an extension with events of its own, or serves spatial entities)
 
 XrResult XRAPI_CALL xrPollEvent(XrInstance instance, XrEventDataBuffer* eventData) {
   return guarded("xrPollEvent", [&]() -> XrResult {
     const std::shared_ptr<InstanceState> state = registry().instance(instance);
     if (!state) return XR_ERROR_HANDLE_INVALID;
     if (eventData == nullptr) return state->next.xrPollEvent(instance, eventData);  // the runtime's to reject
+    if (state->spatial && has_type(eventData, XR_TYPE_EVENT_DATA_BUFFER) && next_spatial_event(instance, *eventData))
+      return XR_SUCCESS;
     const XrEventDataBuffer asked = *eventData;
     // Bounded: a queue of nothing but the layer's events cannot keep the application in here.
     for (int skipped = 0; skipped < 1024; ++skipped) {
@@ -331,6 +411,18 @@ XrResult XRAPI_CALL xrDestroyInstance(XrInstance instance) {
     for (auto& [session, analyzers] : sessions) shut_down_session(*session, analyzers);
     log_info("instance destroyed");
     return state->next.xrDestroyInstance(instance);
+  });
+}
+
+// ---- xrWaitFrame (only when the layer serves spatial entities and the runtime has no clock to ask)
+
+XrResult XRAPI_CALL xrWaitFrame(XrSession session, const XrFrameWaitInfo* frameWaitInfo, XrFrameState* frameState) {
+  return guarded("xrWaitFrame", [&]() -> XrResult {
+    const std::shared_ptr<SessionState> s = registry().session(session);
+    if (!s) return XR_ERROR_HANDLE_INVALID;
+    const XrResult result = s->instance->next.xrWaitFrame(session, frameWaitInfo, frameState);
+    if (XR_SUCCEEDED(result) && frameState != nullptr) s->frame_time.store(frameState->predictedDisplayTime);
+    return result;
   });
 }
 

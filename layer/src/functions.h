@@ -13,7 +13,7 @@
 // Core functions the layer calls on the next layer (or the runtime).
 #define ROOMSENSE_NEXT_CORE_FUNCTIONS(_)                                                                    \
   _(xrDestroyInstance) _(xrCreateSession) _(xrDestroySession) _(xrCreateReferenceSpace) _(xrDestroySpace) _(xrLocateSpace) \
-  _(xrPollEvent)
+  _(xrPollEvent) _(xrWaitFrame)
 
 // Hooked on every instance.
 #define ROOMSENSE_HOOKS_ALWAYS(_) _(xrGetInstanceProcAddr) _(xrDestroyInstance)
@@ -27,7 +27,12 @@
 
 // Hooked when the layer enabled an extension with events the application did not ask for (the mesh sources'
 // ExtensionFunctions::events): those events are the layer's, and are taken out of the application's queue.
+// Also when it serves the spatial-entity API: its discovery-recommended events join the queue.
 #define ROOMSENSE_HOOKS_EVENTS(_) _(xrPollEvent)
+
+// Hooked when the layer serves the spatial-entity API on a runtime without XR_KHR_convert_timespec_time: the
+// frame time is then the only clock the layer's own analyses can locate the runtime's meshes with.
+#define ROOMSENSE_HOOKS_FRAME(_) _(xrWaitFrame)
 
 // XR_EXTX_room_understanding: all of them the layer's own.
 #define ROOMSENSE_EXTX_FUNCTIONS(_)                                                                     \
@@ -42,6 +47,7 @@ ROOMSENSE_HOOKS_ALWAYS(ROOMSENSE_DECLARE)
 ROOMSENSE_HOOKS_SESSION(ROOMSENSE_DECLARE)
 ROOMSENSE_HOOKS_SPACES(ROOMSENSE_DECLARE)
 ROOMSENSE_HOOKS_EVENTS(ROOMSENSE_DECLARE)
+ROOMSENSE_HOOKS_FRAME(ROOMSENSE_DECLARE)
 ROOMSENSE_EXTX_FUNCTIONS(ROOMSENSE_DECLARE)
 #undef ROOMSENSE_DECLARE
 

@@ -45,7 +45,8 @@ const char* space_name(XrReferenceSpaceType type) {
   }
 }
 
-RoomResult make_room_result(const AnalysisResult& r, const MeshSources& sources, XrDuration duration) {
+RoomResult make_room_result(const AnalysisResult& r, const MeshSources& sources, XrDuration duration,
+                            const std::stop_token& stop) {
   RoomResult out;
   out.floor_y = r.floor_y;
   out.ceiling_y = r.ceiling_y;
@@ -67,6 +68,7 @@ RoomResult make_room_result(const AnalysisResult& r, const MeshSources& sources,
   out.input_vertices = clamp32(r.input.vertices);
   out.input_triangles = clamp32(r.input.triangles);
   out.duration = duration;
+  out.surfaces = extract_surfaces(r, {}, stop);
 
   nlohmann::json doc = nlohmann::json::parse(analysis_json(r, {kJsonSourceName, 0.0}));
   doc["openxr"] = {{"base_space", sources.base_space},

@@ -2,12 +2,14 @@
 // ROOMSENSE_EXPORT_DIR asks for.
 #pragma once
 #include "roomsense/analysis.h"
+#include "roomsense/surfaces.h"
 
 #include <openxr/openxr.h>
 
 #include <openxr/XR_EXTX_room_understanding.h>
 
 #include <cstdint>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,8 @@ struct RoomResult {
   XrVector3f bounds_min{0, 0, 0}, bounds_max{0, 0, 0};
   std::uint32_t input_vertices = 0, input_triangles = 0;
   XrDuration duration = 0;
+  std::vector<Surface> surfaces;  // the planes the standard spatial-entity API serves (spatial/)
+  std::uint64_t input_hash = 0;   // of the meshes analysed (Analyzer::compute_if_changed)
   std::string json;  // roomsense.analysis/1, with an "openxr" member saying where the meshes came from
 };
 
@@ -39,7 +43,9 @@ struct MeshSources {
   std::string base_space;           // "LOCAL", "STAGE", ...
 };
 
-RoomResult make_room_result(const AnalysisResult& analysis, const MeshSources& sources, XrDuration duration);
+// A stop request throws Error(Cancelled) (the surfaces are extracted here).
+RoomResult make_room_result(const AnalysisResult& analysis, const MeshSources& sources, XrDuration duration,
+                            const std::stop_token& stop = {});
 
 // Writes analysis.json and bounds.obj into `dir` (created when missing). Failures are logged, never thrown.
 void export_files(const std::string& dir, const RoomResult& result, const BoundsMesh& bounds);

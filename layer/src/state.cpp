@@ -2,6 +2,8 @@
 
 #include "analyzer.h"
 #include "capture.h"
+#include "spatial/spatial_api.h"
+#include "spatial/spatial_service.h"
 
 namespace roomsense::layer {
 
@@ -39,6 +41,14 @@ std::vector<std::shared_ptr<Analyzer>> forget_session_locked(Registry& r, XrSess
 }
 
 void shut_down_session(SessionState& session, const std::vector<std::shared_ptr<Analyzer>>& analyzers) {
+  // The spatial-entity API's handles of the session, then the analysis behind them.
+  forget_spatial_session(session.handle);
+  std::shared_ptr<SpatialService> spatial;
+  {
+    std::lock_guard lock(session.mutex);
+    spatial = std::move(session.spatial);
+  }
+  if (spatial) spatial->shut_down();
   for (const auto& a : analyzers) a->shut_down();
   for (const EnabledSource& s : session.instance->sources) s.source->forget_session(session.handle);
   std::jthread exporter;

@@ -25,6 +25,8 @@
 namespace roomsense::layer {
 
 class Analyzer;
+class SpatialService;
+struct SpatialInstance;
 
 inline constexpr const char* kLayerName = "XR_APILAYER_ROOMSENSE_room_understanding";
 
@@ -44,6 +46,8 @@ struct InstanceState {
   std::vector<std::string> layer_enabled_extensions;  // enabled below us by the layer, not the application
   std::vector<XrStructureType> hidden_events;          // their events, kept from the application
   Config config;
+  // The standard spatial-entity API the layer serves (spatial/); null when the application enabled none of it.
+  std::shared_ptr<const SpatialInstance> spatial;
 
   // The instance's source of this kind, or null when it is not enabled.
   template <typename T>
@@ -69,6 +73,9 @@ struct SessionState {
   XrSystemId system = XR_NULL_SYSTEM_ID;
   // A call of the layer's in it came back XR_ERROR_SESSION_LOST: queries and computes stop calling the runtime.
   std::atomic<bool> lost{false};
+  // The latest predictedDisplayTime of xrWaitFrame: the clock of the layer's own analyses (spatial/) where the
+  // runtime has no XR_KHR_convert_timespec_time.
+  std::atomic<XrTime> frame_time{0};
 
   std::mutex mutex;  // guards everything below
   XrSpace capture_space = XR_NULL_HANDLE;  // a LOCAL space of the layer's, created at the first capture
@@ -80,6 +87,7 @@ struct SessionState {
   std::condition_variable_any export_wake;
   bool export_pending = false;
   std::jthread export_worker;
+  std::shared_ptr<SpatialService> spatial;  // created with the layer's first spatial context
 };
 
 struct ReferenceSpaceInfo {

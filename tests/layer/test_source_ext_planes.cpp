@@ -88,7 +88,11 @@ TEST(LayerSourceExtPlanes, AnApplicationKeepsItsOwnContexts) {
   const auto poll = proc<PFN_xrPollFutureEXT>(app.instance, "xrPollFutureEXT");
   uint32_t count = 0;
   LT_CHECK(capabilities(app.instance, app.system, 0, &count, nullptr));
-  EXPECT_EQ(count, 1u);
+  std::vector<XrSpatialCapabilityEXT> listed(count);
+  LT_CHECK(capabilities(app.instance, app.system, count, &count, listed.data()));
+  // The runtime's plane tracking, and the layer's placement areas beside it.
+  EXPECT_EQ(listed, (std::vector<XrSpatialCapabilityEXT>{XR_SPATIAL_CAPABILITY_PLANE_TRACKING_EXT,
+                                                         XR_SPATIAL_CAPABILITY_PLACEMENT_AREAS_EXTX}));
   const XrSpatialComponentTypeEXT bounded = XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT;
   XrSpatialCapabilityConfigurationPlaneTrackingEXT config{XR_TYPE_SPATIAL_CAPABILITY_CONFIGURATION_PLANE_TRACKING_EXT, nullptr,
                                                           XR_SPATIAL_CAPABILITY_PLANE_TRACKING_EXT, 1, &bounded};

@@ -1,11 +1,16 @@
-// roomsense-demo [--output DIR] [--runtime MANIFEST] [--runtime-extensions LIST] [ROOMFILE]
+// roomsense-demo [--spatial-entities] [--output DIR] [--runtime MANIFEST] [--runtime-extensions LIST] [ROOMFILE]
 //
 // A real OpenXR application: through the Khronos loader, the simulated runtime (serving ROOMFILE, or the
 // built-in default room) and the implicit roomsense layer, it enables XR_EXTX_room_understanding, computes
 // the room from the runtime's scene meshes, prints the classified placement areas and the room bounds, and
 // writes analysis.json, bounds.obj, bounds.glb, plan.svg and scene.glb into the output folder.
+// With --spatial-entities it is instead an app that knows only the standard spatial-entity API (XR_EXT_future,
+// XR_EXT_spatial_entity, XR_EXT_spatial_plane_tracking; spatial_entities.h): it prints the planes of a
+// plane-tracking context and, where listed, the placement areas and room mesh of the layer's
+// XR_SPATIAL_CAPABILITY_PLACEMENT_AREAS_EXTX, with two timings, and writes spatial_entities.json.
 #include "environment.h"
 #include "room_app.h"
+#include "spatial_entities.h"
 
 #include "roomsense/areas.h"
 #include "roomsense/bounds.h"
@@ -29,10 +34,15 @@ namespace fs = std::filesystem;
 using namespace roomsense;
 
 constexpr const char* kUsage =
-    "usage: roomsense-demo [--output DIR] [--runtime MANIFEST] [--runtime-extensions LIST] [ROOMFILE]\n"
+    "usage: roomsense-demo [--spatial-entities] [--output DIR] [--runtime MANIFEST] [--runtime-extensions LIST] [ROOMFILE]\n"
     "  ROOMFILE   a room for the simulated runtime: OBJ, PLY, glTF/GLB, a Quest capture .json, or\n"
     "             synthetic:NAME (default: synthetic:default, the built-in 5 x 4 m room)\n"
-    "  --output   where to write analysis.json, bounds.obj, bounds.glb, plan.svg, scene.glb (default: demo-output)\n"
+    "  --spatial-entities\n"
+    "             be an app that knows only the standard API (XR_EXT_spatial_entity, XR_EXT_spatial_plane_tracking):\n"
+    "             print the planes (and the placement areas and room mesh of XR_SPATIAL_CAPABILITY_PLACEMENT_AREAS_EXTX\n"
+    "             where listed) and write spatial_entities.json, instead of the XR_EXTX_room_understanding analysis\n"
+    "  --output   where to write analysis.json, bounds.obj, bounds.glb, plan.svg, scene.glb, or with --spatial-entities\n"
+    "             spatial_entities.json (default: demo-output)\n"
     "  --runtime  another OpenXR runtime's manifest (default: the simulated runtime beside this program)\n"
     "  --runtime-extensions LIST\n"
     "             the scene extensions the simulated runtime offers, comma-separated, to play a given headset\n"
@@ -43,6 +53,7 @@ struct Options {
   std::string output = "demo-output";
   std::string runtime;
   std::string runtime_extensions;
+  bool spatial_entities = false;
 };
 
 Options parse(int argc, char** argv) {
@@ -53,6 +64,8 @@ Options parse(int argc, char** argv) {
     if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
       std::exit(0);
+    } else if (a == "--spatial-entities") {
+      o.spatial_entities = true;
     } else if ((a == "--output" || a == "--runtime") && i + 1 < argc) {
       (a == "--output" ? o.output : o.runtime) = argv[++i];
     } else if (a == "--runtime-extensions" && i + 1 < argc) {
@@ -167,6 +180,11 @@ int main(int argc, char** argv) {
     std::printf("roomsense-demo: an OpenXR app through the Khronos loader, the %s runtime and the roomsense layer\n",
                 options.runtime.empty() ? "simulated" : "given");
     for (const std::string& note : setup.notes) std::printf("note        %s\n", note.c_str());
+    if (options.spatial_entities) {
+      std::printf("mode        --spatial-entities: the standard spatial-entity API only\n");
+      demo::run_spatial_entities(options.room, options.output);
+      return 0;
+    }
     const demo::RoomReport report = demo::analyse_room_through_openxr();
     print_report(setup, report, options.room);
     write_files(report, options.room, options.output);

@@ -1,5 +1,6 @@
 #include "room_app.h"
 
+#include "checked_calls.h"
 #include "environment.h"
 
 #include <cstring>
@@ -8,25 +9,6 @@
 namespace roomsense::demo {
 namespace {
 
-std::string result_name(XrInstance instance, XrResult result) {
-  char text[XR_MAX_RESULT_STRING_SIZE] = {};
-  if (instance != XR_NULL_HANDLE && XR_SUCCEEDED(xrResultToString(instance, result, text))) return text;
-  return "XrResult " + std::to_string(result);
-}
-
-struct Checker {
-  XrInstance instance = XR_NULL_HANDLE;
-  void operator()(XrResult result, const char* what) const {
-    if (XR_FAILED(result)) throw std::runtime_error(std::string(what) + " failed: " + result_name(instance, result));
-  }
-};
-
-template <typename PFN>
-PFN proc(const Checker& check, XrInstance instance, const char* name) {
-  PFN_xrVoidFunction f = nullptr;
-  check(xrGetInstanceProcAddr(instance, name, &f), name);
-  return reinterpret_cast<PFN>(f);
-}
 
 struct Extx {
   PFN_xrCreateRoomAnalyzerEXTX create = nullptr;

@@ -67,6 +67,10 @@ struct AreaParams {
 // Corners go counter-clockwise seen from the front (from free space, looking against the normal):
 // corners[0] -> corners[1] is the width (+X of the area's pose), corners[1] -> corners[2] the height (+Y).
 // For walls +Y is world up; the normal is +Z = X × Y and points into the room.
+// The rotation taking (X, Y, Z) onto three orthonormal axes: an OpenXR pose's orientation. The one conversion of
+// a frame into a quaternion (areas and surfaces).
+glm::quat orientation_of(const glm::vec3& x_axis, const glm::vec3& y_axis, const glm::vec3& z_axis);
+
 struct Area {
   AreaType type = AreaType::Wall;
   AreaSize size = AreaSize::Large;

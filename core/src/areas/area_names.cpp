@@ -31,9 +31,11 @@ std::string_view to_string(Reach reach) {
 glm::vec3 Area::x_axis() const { return glm::normalize(corners[1] - corners[0]); }
 glm::vec3 Area::y_axis() const { return glm::normalize(corners[2] - corners[1]); }
 
-glm::quat Area::orientation() const {
+glm::quat orientation_of(const glm::vec3& x_axis, const glm::vec3& y_axis, const glm::vec3& z_axis) {
   // The columns of a rotation matrix are the images of the unit axes.
-  return glm::normalize(glm::quat_cast(glm::mat3(x_axis(), y_axis(), normal)));
+  return glm::normalize(glm::quat_cast(glm::mat3(x_axis, y_axis, z_axis)));
 }
+
+glm::quat Area::orientation() const { return orientation_of(x_axis(), y_axis(), normal); }
 
 }  // namespace roomsense

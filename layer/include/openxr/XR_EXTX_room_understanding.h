@@ -179,6 +179,26 @@ typedef struct XrRoomAnalysisJsonEXTX {
     char* json;
 } XrRoomAnalysisJsonEXTX;
 
+/* ---- Through the standard spatial-entity API (XR_EXT_spatial_entity) ----
+** Applications that speak XR_EXT_spatial_entity need none of the functions above: the layer serves
+** XR_EXT_spatial_plane_tracking itself over its analysis where the runtime has none (floor, ceiling, each
+** wall segment and table tops, with BOUNDED_2D, PLANE_ALIGNMENT, POLYGON_2D, MESH_2D and PLANE_SEMANTIC_LABEL),
+** and adds one capability of its own, whatever the runtime has:
+**   XR_SPATIAL_CAPABILITY_PLACEMENT_AREAS_EXTX, configured with
+**   XrSpatialCapabilityConfigurationPlacementAreasEXTX. Its entities are
+**   - one per placement area: BOUNDED_2D (pose as XrRoomAreaEXTX::pose, extents) and
+**     XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX (read with XrSpatialComponentPlacementAreaListEXTX);
+**   - one room entity: MESH_3D, the closed room-bounds mesh (VECTOR3F vertices, UINT32 indices, CCW triangles
+**     facing free space).
+** A context of this capability cannot also hold the runtime's own capabilities: create two contexts.
+** The structures below need the XR_EXT_spatial_entity types: they are declared once a header that has them
+** (<openxr/openxr.h> of OpenXR 1.1.49 or later) came first, or when this header is included again after it. */
+#define XR_SPATIAL_CAPABILITY_PLACEMENT_AREAS_EXTX ((XrSpatialCapabilityEXT)1099999000)
+#define XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX ((XrSpatialComponentTypeEXT)1099999000)
+#define XR_TYPE_SPATIAL_CAPABILITY_CONFIGURATION_PLACEMENT_AREAS_EXTX ((XrStructureType)1099999007)
+#define XR_TYPE_SPATIAL_COMPONENT_PLACEMENT_AREA_LIST_EXTX ((XrStructureType)1099999008)
+
+
 typedef XrResult(XRAPI_PTR* PFN_xrCreateRoomAnalyzerEXTX)(XrSession session, const XrRoomAnalyzerCreateInfoEXTX* createInfo,
                                                           XrRoomAnalyzerEXTX* analyzer);
 typedef XrResult(XRAPI_PTR* PFN_xrDestroyRoomAnalyzerEXTX)(XrRoomAnalyzerEXTX analyzer);
@@ -211,3 +231,41 @@ XRAPI_ATTR XrResult XRAPI_CALL xrGetRoomBoundsMeshEXTX(XrRoomAnalyzerEXTX analyz
 #endif
 
 #endif /* XR_EXTX_ROOM_UNDERSTANDING_H_ */
+
+/* Outside the include guard: a second inclusion, after the XR_EXT_spatial_entity declarations, adds these. */
+#if defined(XR_EXT_spatial_entity) && !defined(XR_EXTX_ROOM_UNDERSTANDING_SPATIAL_H_)
+#define XR_EXTX_ROOM_UNDERSTANDING_SPATIAL_H_ 1
+#ifdef __cplusplus
+extern "C" {
+#endif
+/* Same layout as XrSpatialCapabilityConfigurationBaseHeaderEXT; capability is
+** XR_SPATIAL_CAPABILITY_PLACEMENT_AREAS_EXTX; components: BOUNDED_2D, PLACEMENT_AREA_EXTX, MESH_3D. */
+typedef struct XrSpatialCapabilityConfigurationPlacementAreasEXTX {
+    XrStructureType type;
+    const void* XR_MAY_ALIAS next;
+    XrSpatialCapabilityEXT capability;
+    uint32_t enabledComponentCount;
+    const XrSpatialComponentTypeEXT* enabledComponents;
+} XrSpatialCapabilityConfigurationPlacementAreasEXTX;
+
+/* One placement area: what XrRoomAreaEXTX says besides its pose. */
+typedef struct XrSpatialPlacementAreaDataEXTX {
+    XrRoomAreaTypeEXTX areaType;
+    XrRoomAreaSizeEXTX size;
+    XrRoomInteractionEXTX interaction;
+    XrExtent2Df extents;    /* full width (X) and height (Y), metres */
+    float volumeHeight;     /* clear space checked in front of the surface, along +Z */
+    uint32_t categoryFlags; /* thesis Eq. 3.58 bits: XR_ROOM_AREA_CATEGORY_*_BIT_EXTX */
+} XrSpatialPlacementAreaDataEXTX;
+
+/* Chained to XrSpatialComponentDataQueryResultEXT::next, one element per entity id of the query. */
+typedef struct XrSpatialComponentPlacementAreaListEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    uint32_t placementAreaCount;
+    XrSpatialPlacementAreaDataEXTX* placementAreas;
+} XrSpatialComponentPlacementAreaListEXTX;
+#ifdef __cplusplus
+}
+#endif
+#endif /* XR_EXT_spatial_entity && !XR_EXTX_ROOM_UNDERSTANDING_SPATIAL_H_ */

@@ -1,0 +1,295 @@
+// The planar surfaces of an analysis (surfaces.h): per storey its room region, outlined and fitted to its
+// walls, gives the floor, the ceiling and the wall segments; the runs of C give the furniture tops.
+#include "roomsense/surfaces.h"
+
+#include "roomsense/cancel.h"
+#include "bounds/polygon_triangulation.h"
+#include "outline.h"
+#include "polygon.h"
+#include "regions.h"
+#include "wall_segments.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <tuple>
+#include <utility>
+
+namespace roomsense {
+namespace {
+
+using detail::ColumnMask;
+using detail::Polygon2;
+
+// What one storey's surfaces are read from, all on the grid's column raster.
+struct StoreyRaster {
+  int floor_level = 0, ceiling_level = 0;  // I_Floor, I_Ceiling of the storey
+  float floor_y = 0.0f, ceiling_y = 0.0f;
+  ColumnMask floor_region;                 // the room region: B (Eq. 3.12) for the main storey
+  std::optional<ColumnMask> ceiling_region;  // none: the ceiling has the floor's outline
+  ColumnMask walls;                        // A (Eq. 3.11)
+};
+
+ColumnMask mask_of(const GridSpec& s, const std::vector<std::uint8_t>& cells) {
+  ColumnMask m(s.nx, s.nz);
+  m.cells = cells;
+  return m;
+}
+
+int level_of(const GridSpec& s, float y) {
+  return std::clamp(int(std::floor((y - s.origin.y) / s.voxel_size)), 0, s.ny - 1);
+}
+
+// Columns with a voxel in the levels [lo, hi].
+ColumnMask occupied(const VoxelGrid& grid, int lo, int hi) {
+  const GridSpec& s = grid.spec;
+  ColumnMask m(s.nx, s.nz);
+  lo = std::max(lo, 0);
+  hi = std::min(hi, s.ny - 1);
+  for (std::size_t c = 0; c < m.cells.size(); ++c) {
+    const std::uint8_t* v = grid.cells.data() + c * std::size_t(s.ny);
+    m.cells[c] = std::any_of(v + lo, v + hi + 1, [](std::uint8_t a) { return a != 0; }) ? 1 : 0;
+  }
+  return m;
+}
+
+// The main storey has its features; another one (storeys[1..]) only its heights, so its room region is
+// what the grid holds at its floor level, its ceiling what it holds at its ceiling level (a voxel either
+// side, for a floor straddling a level boundary), and its walls Eq. 3.11 over its own levels.
+StoreyRaster main_storey(const AnalysisResult& analysis) {
+  const GridSpec& s = analysis.voxels.grid.spec;
+  const RoomFeatures& f = *analysis.features;
+  return {f.levels.floor, f.levels.ceiling, analysis.floor_y, analysis.ceiling_y, mask_of(s, f.room), std::nullopt,
+          mask_of(s, f.walls)};
+}
+
+StoreyRaster other_storey(const AnalysisResult& analysis, const Storey& storey) {
+  const VoxelGrid& grid = analysis.voxels.grid;
+  const GridSpec& s = grid.spec;
+  StoreyRaster r;
+  r.floor_level = level_of(s, storey.floor_y);
+  r.ceiling_level = level_of(s, storey.ceiling_y);
+  r.floor_y = storey.floor_y;
+  r.ceiling_y = storey.ceiling_y;
+  r.floor_region = occupied(grid, r.floor_level - 1, r.floor_level + 1);
+  r.ceiling_region = occupied(grid, r.ceiling_level - 1, r.ceiling_level + 1);
+  std::vector<std::uint32_t> counts(s.column_count(), 0);
+  for (std::size_t c = 0; c < counts.size(); ++c) {
+    const std::uint8_t* v = grid.cells.data() + c * std::size_t(s.ny);
+    counts[c] = std::uint32_t(std::count(v + r.floor_level, v + r.ceiling_level + 1, std::uint8_t{1}));
+  }
+  FloorCeiling levels{r.floor_level, r.ceiling_level, r.floor_level, r.ceiling_level};
+  r.walls = mask_of(s, detect_walls(s, counts, levels, FeatureParams{}.wall_fill));
+  return r;
+}
+
+// A column holding wall both in the lower and in the upper half of the storey: under a window, a sill, over
+// it a lintel. Not so a door (nothing below the lintel but floor) or an open side, which end a wall segment.
+bool bridges(const VoxelGrid& grid, int x, int z, const StoreyRaster& r) {
+  const GridSpec& s = grid.spec;
+  const int lo = std::max(r.floor_level + 1, 0), hi = std::min(r.ceiling_level - 1, s.ny - 1);
+  const int mid = (lo + hi) / 2;
+  if (lo >= hi) return false;
+  const std::uint8_t* v = grid.column_data(x, z);
+  const auto any = [](const std::uint8_t* b, const std::uint8_t* e) { return std::find(b, e, std::uint8_t{1}) != e; };
+  return any(v + lo, v + mid + 1) && any(v + mid + 1, v + hi + 1);
+}
+
+// The filled largest region of a mask (B's other components lie outside the walls: seen through a window or
+// a door, not floor of this room), or an empty mask.
+ColumnMask main_region(const ColumnMask& mask) {
+  const detail::Components parts = detail::label_components(
+      mask.nx, mask.nz, [&](std::size_t c) { return mask.cells[c] != 0; }, [](std::size_t, std::size_t) { return true; });
+  const int largest = detail::largest_component(parts);
+  if (largest < 0) return {};
+  return detail::fill_holes(detail::component_mask(parts, mask.nx, largest));
+}
+
+glm::dvec2 to_world(const GridSpec& s, const glm::dvec2& lattice) {
+  return glm::dvec2(s.origin.x, s.origin.z) + lattice * double(s.voxel_size);
+}
+
+// A horizontal surface at height y over a lattice polygon. Its x_axis runs along a side of the least-area
+// rectangle around the polygon, the side nearest +X: extents are tight for a room or a table turned off the
+// axes, and x_axis = +X for one on them.
+Surface horizontal(SurfaceKind kind, std::uint32_t storey, const GridSpec& s, const Polygon2& lattice, float y,
+                   bool up) {
+  Polygon2 world;
+  for (const glm::dvec2& p : lattice) world.push_back(to_world(s, p));
+  const glm::dvec2 dir = detail::least_area_rectangle_direction(world);
+  const glm::dvec3 normal(0.0, up ? 1.0 : -1.0, 0.0), x_axis(dir.x, 0.0, dir.y);
+  const glm::dvec3 y_axis = glm::cross(normal, x_axis);
+  glm::dvec2 lo(INFINITY), hi(-INFINITY);
+  Polygon2 plane;
+  for (const glm::dvec2& p : world) {
+    const glm::dvec3 q(p.x, 0.0, p.y);
+    plane.emplace_back(glm::dot(q, x_axis), glm::dot(q, y_axis));
+    lo = glm::min(lo, plane.back());
+    hi = glm::max(hi, plane.back());
+  }
+  const glm::dvec2 mid = 0.5 * (lo + hi);
+  // Counter-clockwise seen from +Z: the outline as seen from above flips for a ceiling, seen from below.
+  if (detail::signed_area(plane) < 0.0) std::reverse(plane.begin(), plane.end());
+  Surface out;
+  out.kind = kind;
+  out.storey = storey;
+  glm::dvec3 centre = x_axis * mid.x + y_axis * mid.y;
+  centre.y = y;
+  out.center = glm::vec3(centre);
+  out.normal = glm::vec3(normal);
+  out.x_axis = glm::vec3(x_axis);
+  out.extents = glm::vec2(hi - lo);
+  for (const glm::dvec2& p : plane) out.polygon.emplace_back(p - mid);
+  return out;
+}
+
+// A wall plane: the rectangle over a segment from the storey's floor to its ceiling.
+Surface wall(std::uint32_t storey, const GridSpec& s, const detail::WallSegment& segment, const StoreyRaster& r) {
+  const glm::dvec2 a = to_world(s, segment.a), b = to_world(s, segment.b);
+  const glm::dvec2 n = detail::inward_normal(glm::normalize(b - a)), mid = 0.5 * (a + b);
+  const float width = float(glm::distance(a, b)), height = r.ceiling_y - r.floor_y;
+  Surface out;
+  out.kind = SurfaceKind::Wall;
+  out.storey = storey;
+  out.center = glm::vec3(float(mid.x), 0.5f * (r.floor_y + r.ceiling_y), float(mid.y));
+  out.normal = glm::vec3(float(n.x), 0.0f, float(n.y));
+  out.x_axis = glm::vec3(float(n.y), 0.0f, float(-n.x));  // up × normal, so that normal × x_axis is up
+  out.extents = {width, height};
+  const float w = 0.5f * width, h = 0.5f * height;
+  out.polygon = {{-w, -h}, {w, -h}, {w, h}, {-w, h}};
+  return out;
+}
+
+// Floor, ceiling and walls of one storey, appended to the three lists.
+void storey_surfaces(const AnalysisResult& analysis, std::uint32_t index, const StoreyRaster& r,
+                     const SurfaceParams& params, const std::stop_token& stop, std::vector<Surface>& floors,
+                     std::vector<Surface>& ceilings, std::vector<Surface>& walls) {
+  const VoxelGrid& grid = analysis.voxels.grid;
+  const GridSpec& s = grid.spec;
+  const double voxel = s.voxel_size, min_cells = params.min_area / (voxel * voxel);
+  const ColumnMask region = main_region(r.floor_region);
+  if (region.count() == 0 || double(region.count()) < min_cells) return;
+  stop_point(stop);
+  const Polygon2 outline = detail::simplify_outline(detail::trace_outline(region), params.outline_tolerance);
+  stop_point(stop);
+  detail::WallSearch search;
+  search.walls = &r.walls;
+  search.bridges = [&](int x, int z) { return bridges(grid, x, z, r); };
+  search.opening = params.opening_width / voxel;
+  search.min_width = params.min_wall_width / voxel;
+  const detail::StoreyOutline room = detail::fit_walls(outline, search);
+  floors.push_back(horizontal(SurfaceKind::Floor, index, s, room.polygon, r.floor_y, true));
+  for (const detail::WallSegment& segment : room.walls) walls.push_back(wall(index, s, segment, r));
+  if (!r.ceiling_region) {
+    ceilings.push_back(horizontal(SurfaceKind::Ceiling, index, s, room.polygon, r.ceiling_y, false));
+    return;
+  }
+  stop_point(stop);
+  const ColumnMask top = main_region(*r.ceiling_region);
+  if (top.count() == 0 || double(top.count()) < min_cells) return;
+  const Polygon2 ceiling = detail::inset_polygon(
+      detail::simplify_outline(detail::trace_outline(top), params.outline_tolerance), 0.5);
+  ceilings.push_back(horizontal(SurfaceKind::Ceiling, index, s, ceiling, r.ceiling_y, false));
+}
+
+// Furniture tops of the main storey: 4-connected runs of C (Eq. 3.13) whose levels differ by at most one
+// (a top straddling a level boundary), each at the level most of it has. C holds the level above the top
+// voxel, and the top surface is that level's lower face, where find_areas places furniture areas.
+std::vector<Surface> furniture_tops(const AnalysisResult& analysis, const SurfaceParams& params,
+                                    const std::stop_token& stop) {
+  const GridSpec& s = analysis.voxels.grid.spec;
+  const std::vector<int>& c = analysis.features->furniture;
+  const double voxel = s.voxel_size, min_cells = params.min_area / (voxel * voxel);
+  const detail::Components parts = detail::label_components(
+      s.nx, s.nz, [&](std::size_t col) { return c[col] != kNoFurniture; },
+      [&](std::size_t a, std::size_t b) { return std::abs(c[a] - c[b]) <= 1; });
+  std::vector<std::map<int, std::size_t>> levels(parts.sizes.size());
+  for (std::size_t col = 0; col < c.size(); ++col)
+    if (parts.label[col] >= 0) ++levels[std::size_t(parts.label[col])][c[col]];
+  std::vector<Surface> out;
+  for (std::size_t id = 0; id < parts.sizes.size(); ++id) {
+    if (double(parts.sizes[id]) < min_cells) continue;
+    stop_point(stop);
+    int level = 0;
+    std::size_t most = 0;
+    for (const auto& [l, count] : levels[id])  // ascending: ties go to the higher level
+      if (count >= most) {
+        most = count;
+        level = l;
+      }
+    const ColumnMask region = detail::fill_holes(detail::component_mask(parts, s.nx, int(id)));
+    // Half a voxel in: the top's edge lies somewhere inside its boundary columns, on average at their centres.
+    const Polygon2 outline = detail::inset_polygon(
+        detail::simplify_outline(detail::trace_outline(region), params.outline_tolerance), 0.5);
+    const float y = s.origin.y + float(level) * s.voxel_size, above = y - analysis.floor_y;
+    const bool table = above >= params.table_min && above <= params.table_max;
+    Surface top = horizontal(table ? SurfaceKind::Table : SurfaceKind::Furniture, 0, s, outline, y, true);
+    // A window's sill is C too (wall below, 1 m clear above), but a strip a wall thick is no place to put
+    // things; the least-area rectangle measures the narrow side whatever the strip's direction.
+    if (std::min(top.extents.x, top.extents.y) >= params.min_top_width) out.push_back(std::move(top));
+  }
+  std::sort(out.begin(), out.end(), [](const Surface& a, const Surface& b) {
+    return std::tie(a.kind, a.center.z, a.center.x, a.center.y) < std::tie(b.kind, b.center.z, b.center.x, b.center.y);
+  });
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+// The polygon as triangles of its own vertices (MESH_2D), by the bounds' ear clipper on a 0.1 mm lattice.
+std::vector<std::uint32_t> triangulate(const std::vector<glm::vec2>& polygon, const std::stop_token& stop) {
+  constexpr float kLattice = 1e4f;  // lattice points per metre
+  detail::Loop loop;
+  loop.reserve(polygon.size());
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    loop.push_back({static_cast<std::int32_t>(std::lround(polygon[i].x * kLattice)),
+                    static_cast<std::int32_t>(std::lround(polygon[i].y * kLattice)), static_cast<std::uint32_t>(i)});
+  detail::Triangles triangles;
+  detail::triangulate_polygon(loop, {}, triangles, stop);
+  std::vector<std::uint32_t> out;
+  out.reserve(3 * triangles.size());
+  for (const auto& t : triangles) out.insert(out.end(), t.begin(), t.end());
+  return out;
+}
+
+}  // namespace
+
+std::string_view surface_kind_name(SurfaceKind kind) {
+  switch (kind) {
+    case SurfaceKind::Floor: return "floor";
+    case SurfaceKind::Ceiling: return "ceiling";
+    case SurfaceKind::Wall: return "wall";
+    case SurfaceKind::Table: return "table";
+    case SurfaceKind::Furniture: return "furniture";
+  }
+  return "unknown";
+}
+
+glm::quat Surface::orientation() const { return orientation_of(x_axis, y_axis(), normal); }
+
+std::vector<Surface> extract_surfaces(const AnalysisResult& analysis, const SurfaceParams& params,
+                                      const std::stop_token& stop) {
+  stop_point(stop);
+  if (!analysis.ok() || !analysis.features || analysis.storeys.empty()) return {};
+  std::vector<Surface> floors, ceilings, walls;
+  for (std::size_t i = 0; i < analysis.storeys.size(); ++i) {
+    stop_point(stop);
+    const StoreyRaster r = i == 0 ? main_storey(analysis) : other_storey(analysis, analysis.storeys[i]);
+    storey_surfaces(analysis, std::uint32_t(i), r, params, stop, floors, ceilings, walls);
+  }
+  stop_point(stop);
+  std::vector<Surface> tops = furniture_tops(analysis, params, stop);
+  std::vector<Surface> out;
+  out.reserve(floors.size() + ceilings.size() + walls.size() + tops.size());
+  for (std::vector<Surface>* part : {&floors, &ceilings, &walls, &tops})
+    out.insert(out.end(), std::make_move_iterator(part->begin()), std::make_move_iterator(part->end()));
+  for (Surface& surface : out) surface.triangles = triangulate(surface.polygon, stop);
+  return out;
+}
+
+}  // namespace roomsense

@@ -76,9 +76,11 @@ struct DiscoveryFuture {
   std::optional<XrSpatialEntityTrackingStateEXT> filter;
 };
 
+// One of the two (held by pointer: cheap to move in and out of the table).
 struct FutureObject {
   XrInstance instance = XR_NULL_HANDLE;
-  std::variant<ContextFuture, DiscoveryFuture> work;
+  std::shared_ptr<const ContextFuture> context;
+  std::shared_ptr<const DiscoveryFuture> discovery;
 };
 
 using Object = std::variant<ContextObject, SnapshotObject, EntityObject, FutureObject>;
@@ -93,10 +95,11 @@ struct Objects {
     const auto it = live.find(handle);
     return it == live.end() ? nullptr : std::get_if<T>(&it->second);
   }
-  std::uint64_t add(Object object) {
+  template <typename T>
+  std::uint64_t add(T&& object) {
     if (live.size() >= kMaxObjects) return 0;
     const std::uint64_t handle = next++;
-    live.emplace(handle, std::move(object));
+    live.emplace(handle, std::forward<T>(object));
     return handle;
   }
 };
@@ -312,7 +315,7 @@ XrResult XRAPI_CALL xrCreateSpatialContextAsyncEXT(XrSession session, const XrSp
     request.service->context_created();
     Objects& o = objects();
     std::lock_guard lock(o.mutex);
-    const std::uint64_t handle = o.add(FutureObject{s->instance->handle, std::move(request)});
+    const std::uint64_t handle = o.add(FutureObject{s->instance->handle, std::make_shared<const ContextFuture>(std::move(request)), nullptr});
     if (handle == 0) return XR_ERROR_LIMIT_REACHED;
     *future = handle_of<XrFutureEXT>(handle);
     return XR_SUCCESS;
@@ -331,7 +334,7 @@ XrResult XRAPI_CALL xrCreateSpatialContextCompleteEXT(XrSession session, XrFutur
     Objects& o = objects();
     std::lock_guard lock(o.mutex);
     FutureObject* f = o.find<FutureObject>(raw(future));
-    ContextFuture* request = f == nullptr ? nullptr : std::get_if<ContextFuture>(&f->work);
+    const ContextFuture* request = f == nullptr ? nullptr : f->context.get();
     if (request == nullptr || request->session != s) return XR_ERROR_FUTURE_INVALID_EXT;
     ContextObject context{request->session, request->service, request->capabilities, request->components, 0};
     o.live.erase(raw(future));
@@ -354,7 +357,7 @@ void destroy_context_locked(Objects& o, std::uint64_t handle) {
     if (const auto* s = std::get_if<SnapshotObject>(&e.second)) return s->context == handle;
     if (const auto* n = std::get_if<EntityObject>(&e.second)) return n->context == handle;
     if (const auto* f = std::get_if<FutureObject>(&e.second))
-      if (const auto* d = std::get_if<DiscoveryFuture>(&f->work)) return d->context == handle;
+      return f->discovery && f->discovery->context == handle;
     return false;
   });
   o.live.erase(handle);
@@ -399,7 +402,7 @@ XrResult XRAPI_CALL xrCreateSpatialDiscoverySnapshotAsyncEXT(XrSpatialContextEXT
     if (request.components.empty()) request.components = c->components;
     if (const auto* filter = find_next<const XrSpatialFilterTrackingStateEXT>(createInfo->next, XR_TYPE_SPATIAL_FILTER_TRACKING_STATE_EXT))
       request.filter = filter->trackingState;
-    const std::uint64_t handle = o.add(FutureObject{c->session->instance->handle, std::move(request)});
+    const std::uint64_t handle = o.add(FutureObject{c->session->instance->handle, nullptr, std::make_shared<const DiscoveryFuture>(std::move(request))});
     if (handle == 0) return XR_ERROR_LIMIT_REACHED;
     *future = handle_of<XrFutureEXT>(handle);
     return XR_SUCCESS;
@@ -425,7 +428,7 @@ XrResult XRAPI_CALL xrCreateSpatialDiscoverySnapshotCompleteEXT(XrSpatialContext
           !has_type(completion, XR_TYPE_CREATE_SPATIAL_DISCOVERY_SNAPSHOT_COMPLETION_EXT))
         return XR_ERROR_VALIDATION_FAILURE;
       const FutureObject* f = o.find<FutureObject>(raw(info->future));
-      const DiscoveryFuture* d = f == nullptr ? nullptr : std::get_if<DiscoveryFuture>(&f->work);
+      const DiscoveryFuture* d = f == nullptr ? nullptr : f->discovery.get();
       if (d == nullptr || d->context != raw(spatialContext)) return XR_ERROR_FUTURE_INVALID_EXT;
       if (c->service->finished() == 0) return XR_ERROR_FUTURE_PENDING_EXT;
       session = c->session;
@@ -735,7 +738,7 @@ XrResult XRAPI_CALL xrPollFutureEXT(XrInstance instance, const XrFuturePollInfoE
     const FutureObject* f = o.find<FutureObject>(raw(pollInfo->future));
     if (f == nullptr || f->instance != instance) return XR_ERROR_FUTURE_INVALID_EXT;
     bool ready = true;  // a context is ready at once
-    if (const auto* d = std::get_if<DiscoveryFuture>(&f->work)) {
+    if (const DiscoveryFuture* d = f->discovery.get()) {
       const ContextObject* c = o.find<ContextObject>(d->context);
       ready = c == nullptr || c->service->finished() > 0;  // a destroyed context's future completes with an error
     }
@@ -755,7 +758,7 @@ XrResult XRAPI_CALL xrCancelFutureEXT(XrInstance instance, const XrFutureCancelI
     std::lock_guard lock(o.mutex);
     const FutureObject* f = o.find<FutureObject>(raw(cancelInfo->future));
     if (f == nullptr || f->instance != instance) return XR_ERROR_FUTURE_INVALID_EXT;
-    if (const auto* c = std::get_if<ContextFuture>(&f->work)) c->service->context_destroyed();  // never to be a context
+    if (f->context) f->context->service->context_destroyed();  // never to be a context
     o.live.erase(raw(cancelInfo->future));
     return XR_SUCCESS;
   });
@@ -793,7 +796,7 @@ void forget_spatial_session(XrSession session) {
   for (std::uint64_t handle : contexts) destroy_context_locked(o, handle);
   std::erase_if(o.live, [&](const auto& e) {
     const auto* f = std::get_if<FutureObject>(&e.second);
-    const auto* c = f == nullptr ? nullptr : std::get_if<ContextFuture>(&f->work);
+    const ContextFuture* c = f == nullptr ? nullptr : f->context.get();
     return c != nullptr && c->session->handle == session;
   });
 }

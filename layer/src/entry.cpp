@@ -263,7 +263,6 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
 std::shared_ptr<const SpatialInstance> make_spatial_instance(const InstanceState& state, const SpatialRequest& request) {
   auto spatial = std::make_shared<SpatialInstance>();
   spatial->planes = request.planes;
-  spatial->runtime_entities = request.runtime_entities;
   const auto below = [&](const char* name) -> PFN_xrVoidFunction {
     for (const EnabledSource& s : state.sources)
       if (s.app_enabled)

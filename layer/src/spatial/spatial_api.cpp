@@ -12,6 +12,8 @@
 #include "spatial_instance.h"
 #include "spatial_service.h"
 
+#include "roomsense/xr/spatial_query.h"
+
 #include <algorithm>
 #include <cstring>
 #include <mutex>
@@ -483,23 +485,36 @@ XrResult XRAPI_CALL xrQuerySpatialComponentDataEXT(XrSpatialSnapshotEXT snapshot
       if (!contains(context->components, c)) return XR_ERROR_SPATIAL_COMPONENT_NOT_ENABLED_EXT;
 
     // The component lists chained on the result: each must be one the condition names.
-    auto* bounds = find_next<XrSpatialComponentBounded2DListEXT>(result->next, XR_TYPE_SPATIAL_COMPONENT_BOUNDED_2D_LIST_EXT);
-    auto* alignments = find_next<XrSpatialComponentPlaneAlignmentListEXT>(result->next, XR_TYPE_SPATIAL_COMPONENT_PLANE_ALIGNMENT_LIST_EXT);
-    auto* polygons = find_next<XrSpatialComponentPolygon2DListEXT>(result->next, XR_TYPE_SPATIAL_COMPONENT_POLYGON_2D_LIST_EXT);
-    auto* meshes = find_next<XrSpatialComponentMesh2DListEXT>(result->next, XR_TYPE_SPATIAL_COMPONENT_MESH_2D_LIST_EXT);
-    auto* labels = find_next<XrSpatialComponentPlaneSemanticLabelListEXT>(result->next, XR_TYPE_SPATIAL_COMPONENT_PLANE_SEMANTIC_LABEL_LIST_EXT);
-    auto* areas = find_next<XrSpatialComponentPlacementAreaListEXTX>(result->next, XR_TYPE_SPATIAL_COMPONENT_PLACEMENT_AREA_LIST_EXTX);
-    auto* rooms = find_next<XrSpatialComponentMesh3DListEXT>(result->next, XR_TYPE_SPATIAL_COMPONENT_MESH_3D_LIST_EXT);
-    if ((bounds && !contains(wanted, XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT)) ||
-        (alignments && !contains(wanted, XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT)) ||
-        (polygons && !contains(wanted, XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT)) ||
-        (meshes && !contains(wanted, XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT)) ||
-        (labels && !contains(wanted, XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT)) ||
-        (areas && !contains(wanted, XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX)) ||
-        (rooms && !contains(wanted, XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT)) ||
-        find_next<void>(result->next, XR_TYPE_SPATIAL_COMPONENT_BOUNDED_3D_LIST_EXT) != nullptr ||
-        find_next<void>(result->next, XR_TYPE_SPATIAL_COMPONENT_PARENT_LIST_EXT) != nullptr)
-      return XR_ERROR_VALIDATION_FAILURE;
+    XrSpatialComponentBounded2DListEXT* bounds = nullptr;
+    XrSpatialComponentPlaneAlignmentListEXT* alignments = nullptr;
+    XrSpatialComponentPolygon2DListEXT* polygons = nullptr;
+    XrSpatialComponentMesh2DListEXT* meshes = nullptr;
+    XrSpatialComponentPlaneSemanticLabelListEXT* labels = nullptr;
+    XrSpatialComponentPlacementAreaListEXTX* areas = nullptr;
+    XrSpatialComponentMesh3DListEXT* rooms = nullptr;
+    const xr::ChainedList lists[] = {
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_BOUNDED_2D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT,
+                         bounds, &XrSpatialComponentBounded2DListEXT::boundCount, &XrSpatialComponentBounded2DListEXT::bounds),
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_PLANE_ALIGNMENT_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT,
+                         alignments, &XrSpatialComponentPlaneAlignmentListEXT::planeAlignmentCount,
+                         &XrSpatialComponentPlaneAlignmentListEXT::planeAlignments),
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_POLYGON_2D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT,
+                         polygons, &XrSpatialComponentPolygon2DListEXT::polygonCount, &XrSpatialComponentPolygon2DListEXT::polygons),
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_MESH_2D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT, meshes,
+                         &XrSpatialComponentMesh2DListEXT::meshCount, &XrSpatialComponentMesh2DListEXT::meshes),
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_PLANE_SEMANTIC_LABEL_LIST_EXT,
+                         XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT, labels,
+                         &XrSpatialComponentPlaneSemanticLabelListEXT::semanticLabelCount,
+                         &XrSpatialComponentPlaneSemanticLabelListEXT::semanticLabels),
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_PLACEMENT_AREA_LIST_EXTX, XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX,
+                         areas, &XrSpatialComponentPlacementAreaListEXTX::placementAreaCount,
+                         &XrSpatialComponentPlacementAreaListEXTX::placementAreas),
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_MESH_3D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT, rooms,
+                         &XrSpatialComponentMesh3DListEXT::meshCount, &XrSpatialComponentMesh3DListEXT::meshes)};
+    if (const XrResult r = xr::lists_named(lists, wanted, result->next,
+                                           {XR_TYPE_SPATIAL_COMPONENT_BOUNDED_3D_LIST_EXT, XR_TYPE_SPATIAL_COMPONENT_PARENT_LIST_EXT});
+        r != XR_SUCCESS)
+      return r;
 
     // Entities of the snapshot with every component the condition names (in the tracking state it filters
     // for); one that is no longer served is listed STOPPED, with its component data zeroed.
@@ -521,18 +536,7 @@ XrResult XRAPI_CALL xrQuerySpatialComponentDataEXT(XrSpatialSnapshotEXT snapshot
     if (result->entityIdCapacityInput == 0) return XR_SUCCESS;
     if (result->entityIdCapacityInput < n || (result->entityStateCapacityInput > 0 && result->entityStateCapacityInput < n))
       return XR_ERROR_SIZE_INSUFFICIENT;
-    if ((bounds && bounds->boundCount > 0 && bounds->bounds == nullptr) ||
-        (alignments && alignments->planeAlignmentCount > 0 && alignments->planeAlignments == nullptr) ||
-        (polygons && polygons->polygonCount > 0 && polygons->polygons == nullptr) ||
-        (meshes && meshes->meshCount > 0 && meshes->meshes == nullptr) ||
-        (labels && labels->semanticLabelCount > 0 && labels->semanticLabels == nullptr) ||
-        (areas && areas->placementAreaCount > 0 && areas->placementAreas == nullptr) ||
-        (rooms && rooms->meshCount > 0 && rooms->meshes == nullptr))
-      return XR_ERROR_VALIDATION_FAILURE;
-    if ((bounds && bounds->boundCount < n) || (alignments && alignments->planeAlignmentCount < n) ||
-        (polygons && polygons->polygonCount < n) || (meshes && meshes->meshCount < n) ||
-        (labels && labels->semanticLabelCount < n) || (areas && areas->placementAreaCount < n) || (rooms && rooms->meshCount < n))
-      return XR_ERROR_SIZE_INSUFFICIENT;
+    if (const XrResult r = xr::lists_fit(lists, n); r != XR_SUCCESS) return r;
     for (uint32_t i = 0; i < n; ++i) {
       const auto [id, e] = matches[i];
       result->entityIds[i] = id;

@@ -24,13 +24,12 @@ using ConvertTimespecTime = XrResult(XRAPI_PTR*)(XrInstance, const struct timesp
 
 struct SpatialInstance {
   bool planes = false;            // the layer serves XR_SPATIAL_CAPABILITY_PLANE_TRACKING_EXT: the runtime has none
-  bool runtime_entities = false;  // the runtime has XR_EXT_spatial_entity: what is not the layer's goes to it
   ConvertTimespecTime convert_time = nullptr;  // the runtime's clock, when it has XR_KHR_convert_timespec_time
   struct Forward {
 #define ROOMSENSE_FORWARD_MEMBER(name) PFN_##name name = nullptr;
     ROOMSENSE_SPATIAL_FUNCTIONS(ROOMSENSE_FORWARD_MEMBER)
 #undef ROOMSENSE_FORWARD_MEMBER
-  } forward;  // null where nothing below has the function
+  } forward;  // null where nothing below has the function: what is not the layer's goes there
 };
 
 }  // namespace roomsense::layer

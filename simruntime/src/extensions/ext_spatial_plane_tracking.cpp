@@ -16,6 +16,7 @@
 #include "plane_extraction.h"
 #include "roomsense/xr/ext/XR_EXT_spatial_entity.h"
 #include "roomsense/xr/ext/XR_EXT_spatial_plane_tracking.h"
+#include "roomsense/xr/spatial_query.h"
 
 #include <algorithm>
 #include <chrono>
@@ -398,20 +399,30 @@ XrResult XRAPI_CALL xrQuerySpatialComponentDataEXT(XrSpatialSnapshotEXT snapshot
       if (!contains(context->second.components, c)) return XR_ERROR_SPATIAL_COMPONENT_NOT_ENABLED_EXT;
 
     // The component lists chained on the result; each must be one the condition names.
-    auto* bounds = find_next<XrSpatialComponentBounded2DListEXT>(result->next, XR_TYPE_SPATIAL_COMPONENT_BOUNDED_2D_LIST_EXT);
-    auto* alignments = find_next<XrSpatialComponentPlaneAlignmentListEXT>(result->next, XR_TYPE_SPATIAL_COMPONENT_PLANE_ALIGNMENT_LIST_EXT);
-    auto* polygons = find_next<XrSpatialComponentPolygon2DListEXT>(result->next, XR_TYPE_SPATIAL_COMPONENT_POLYGON_2D_LIST_EXT);
-    auto* meshes = find_next<XrSpatialComponentMesh2DListEXT>(result->next, XR_TYPE_SPATIAL_COMPONENT_MESH_2D_LIST_EXT);
-    auto* labels = find_next<XrSpatialComponentPlaneSemanticLabelListEXT>(result->next, XR_TYPE_SPATIAL_COMPONENT_PLANE_SEMANTIC_LABEL_LIST_EXT);
-    if ((bounds && !contains(wanted, XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT)) ||
-        (alignments && !contains(wanted, XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT)) ||
-        (polygons && !contains(wanted, XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT)) ||
-        (meshes && !contains(wanted, XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT)) ||
-        (labels && !contains(wanted, XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT)) ||
-        find_next<void>(result->next, XR_TYPE_SPATIAL_COMPONENT_BOUNDED_3D_LIST_EXT) != nullptr ||
-        find_next<void>(result->next, XR_TYPE_SPATIAL_COMPONENT_PARENT_LIST_EXT) != nullptr ||
-        find_next<void>(result->next, XR_TYPE_SPATIAL_COMPONENT_MESH_3D_LIST_EXT) != nullptr)
-      return XR_ERROR_VALIDATION_FAILURE;
+    XrSpatialComponentBounded2DListEXT* bounds = nullptr;
+    XrSpatialComponentPlaneAlignmentListEXT* alignments = nullptr;
+    XrSpatialComponentPolygon2DListEXT* polygons = nullptr;
+    XrSpatialComponentMesh2DListEXT* meshes = nullptr;
+    XrSpatialComponentPlaneSemanticLabelListEXT* labels = nullptr;
+    const xr::ChainedList lists[] = {
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_BOUNDED_2D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT,
+                         bounds, &XrSpatialComponentBounded2DListEXT::boundCount, &XrSpatialComponentBounded2DListEXT::bounds),
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_PLANE_ALIGNMENT_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT,
+                         alignments, &XrSpatialComponentPlaneAlignmentListEXT::planeAlignmentCount,
+                         &XrSpatialComponentPlaneAlignmentListEXT::planeAlignments),
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_POLYGON_2D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT,
+                         polygons, &XrSpatialComponentPolygon2DListEXT::polygonCount, &XrSpatialComponentPolygon2DListEXT::polygons),
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_MESH_2D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT, meshes,
+                         &XrSpatialComponentMesh2DListEXT::meshCount, &XrSpatialComponentMesh2DListEXT::meshes),
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_PLANE_SEMANTIC_LABEL_LIST_EXT,
+                         XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT, labels,
+                         &XrSpatialComponentPlaneSemanticLabelListEXT::semanticLabelCount,
+                         &XrSpatialComponentPlaneSemanticLabelListEXT::semanticLabels)};
+    if (const XrResult r = xr::lists_named(lists, wanted, result->next,
+                                           {XR_TYPE_SPATIAL_COMPONENT_BOUNDED_3D_LIST_EXT, XR_TYPE_SPATIAL_COMPONENT_PARENT_LIST_EXT,
+                                            XR_TYPE_SPATIAL_COMPONENT_MESH_3D_LIST_EXT});
+        r != XR_SUCCESS)
+      return r;
 
     // Every plane has every plane component: an entity matches when the snapshot holds all the condition names.
     std::vector<std::size_t> matches;
@@ -428,16 +439,7 @@ XrResult XRAPI_CALL xrQuerySpatialComponentDataEXT(XrSpatialSnapshotEXT snapshot
     if (result->entityIdCapacityInput == 0) return XR_SUCCESS;
     if (result->entityIdCapacityInput < n || (result->entityStateCapacityInput > 0 && result->entityStateCapacityInput < n))
       return XR_ERROR_SIZE_INSUFFICIENT;
-    if ((bounds && bounds->boundCount > 0 && bounds->bounds == nullptr) ||
-        (alignments && alignments->planeAlignmentCount > 0 && alignments->planeAlignments == nullptr) ||
-        (polygons && polygons->polygonCount > 0 && polygons->polygons == nullptr) ||
-        (meshes && meshes->meshCount > 0 && meshes->meshes == nullptr) ||
-        (labels && labels->semanticLabelCount > 0 && labels->semanticLabels == nullptr))
-      return XR_ERROR_VALIDATION_FAILURE;
-    if ((bounds && bounds->boundCount < n) || (alignments && alignments->planeAlignmentCount < n) ||
-        (polygons && polygons->polygonCount < n) || (meshes && meshes->meshCount < n) ||
-        (labels && labels->semanticLabelCount < n))
-      return XR_ERROR_SIZE_INSUFFICIENT;
+    if (const XrResult r = xr::lists_fit(lists, n); r != XR_SUCCESS) return r;
     for (uint32_t i = 0; i < n; ++i) {
       const std::size_t index = matches[i];
       const ServedPlane& plane = s.planes->planes[index];

@@ -1,0 +1,54 @@
+// The checks xrQuerySpatialComponentDataEXT puts on the component lists an application chains to its result,
+// shared by the servers of XR_EXT_spatial_entity (the layer's and the simulated runtime's): a list must be one
+// the condition names, a list with a count needs its array, and each must hold one element per entity.
+#pragma once
+#include "roomsense/xr/ext/XR_EXT_spatial_entity.h"
+#include "roomsense/xr/guard.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <vector>
+
+namespace roomsense::xr {
+
+// One list the result may chain: its component, and, when chained, its element count and whether its array is set.
+struct ChainedList {
+  XrSpatialComponentTypeEXT component;
+  bool chained = false;
+  std::uint32_t count = 0;
+  bool has_array = false;
+};
+
+// The list of `type` in the chain at `next` (into `out`, null when not chained), described.
+template <typename List, typename Element>
+ChainedList chained_list(void* next, XrStructureType type, XrSpatialComponentTypeEXT component, List*& out,
+                         std::uint32_t List::*count, Element* List::*array) {
+  out = find_next<List>(next, type);
+  if (out == nullptr) return {component};
+  return {component, true, out->*count, out->*array != nullptr};
+}
+
+// XR_ERROR_VALIDATION_FAILURE when a chained list carries a component the condition does not name (`wanted`), or
+// is one of `refused` (lists the server never fills); XR_SUCCESS otherwise.
+inline XrResult lists_named(std::span<const ChainedList> lists, const std::vector<XrSpatialComponentTypeEXT>& wanted,
+                            const void* next, std::initializer_list<XrStructureType> refused) {
+  for (const ChainedList& l : lists)
+    if (l.chained && std::find(wanted.begin(), wanted.end(), l.component) == wanted.end()) return XR_ERROR_VALIDATION_FAILURE;
+  for (XrStructureType type : refused)
+    if (find_next<void>(next, type) != nullptr) return XR_ERROR_VALIDATION_FAILURE;
+  return XR_SUCCESS;
+}
+
+// With `n` entities to write: XR_ERROR_VALIDATION_FAILURE for a list with a count but no array, then
+// XR_ERROR_SIZE_INSUFFICIENT for one shorter than n; XR_SUCCESS otherwise.
+inline XrResult lists_fit(std::span<const ChainedList> lists, std::uint32_t n) {
+  for (const ChainedList& l : lists)
+    if (l.chained && l.count > 0 && !l.has_array) return XR_ERROR_VALIDATION_FAILURE;
+  for (const ChainedList& l : lists)
+    if (l.chained && l.count < n) return XR_ERROR_SIZE_INSUFFICIENT;
+  return XR_SUCCESS;
+}
+
+}  // namespace roomsense::xr

@@ -105,7 +105,6 @@ void load(PFN_xrGetInstanceProcAddr gipa, XrInstance instance, const char* name,
 struct SpatialRequest {
   bool wanted = false;           // the application enabled XR_EXT_spatial_entity
   bool planes = false;           // the layer serves plane tracking: the application asked, the runtime has none
-  bool runtime_entities = false;  // the runtime has XR_EXT_spatial_entity
 };
 
 void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa, const XrInstanceCreateInfo& info,
@@ -187,7 +186,6 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
     const bool capture = extx || spatial.wanted || !config.export_dir.empty();
     // Only an instance the layer captures for asks the runtime: a pass-through one costs nothing.
     const std::optional<std::vector<std::string>> offered = capture ? runtime_extensions(next_gipa) : std::nullopt;
-    spatial.runtime_entities = spatial.wanted && offers(offered, XR_EXT_SPATIAL_ENTITY_EXTENSION_NAME);
     spatial.planes = enabled(*info, XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME) &&
                      !offers(offered, XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME);
     const auto ours_alone = [&](const char* name) {
@@ -259,7 +257,7 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
 }
 
 // Where the spatial-entity calls the layer does not answer go: a mesh source's hook when it watches the
-// application's calls, else the next layer (nothing where the runtime lacks the extension).
+// application's calls, else the next layer (nothing where the runtime lacks the function's extension).
 std::shared_ptr<const SpatialInstance> make_spatial_instance(const InstanceState& state, const SpatialRequest& request) {
   auto spatial = std::make_shared<SpatialInstance>();
   spatial->planes = request.planes;
@@ -271,11 +269,11 @@ std::shared_ptr<const SpatialInstance> make_spatial_instance(const InstanceState
     PFN_xrVoidFunction f = nullptr;
     return XR_SUCCEEDED(state.next.xrGetInstanceProcAddr(state.handle, name, &f)) ? f : nullptr;
   };
-  if (request.runtime_entities) {
+  // Each function on its own: a runtime may have XR_EXT_future (for its mesh extension) without
+  // XR_EXT_spatial_entity, and the application's futures of that extension go down through the layer's hook.
 #define ROOMSENSE_FORWARD(name) spatial->forward.name = reinterpret_cast<PFN_##name>(below(#name));
-    ROOMSENSE_SPATIAL_FUNCTIONS(ROOMSENSE_FORWARD)
+  ROOMSENSE_SPATIAL_FUNCTIONS(ROOMSENSE_FORWARD)
 #undef ROOMSENSE_FORWARD
-  }
   PFN_xrVoidFunction convert = nullptr;  // there when the runtime has the extension (the layer enabled it)
   if (XR_SUCCEEDED(state.next.xrGetInstanceProcAddr(state.handle, "xrConvertTimespecTimeToTimeKHR", &convert)))
     spatial->convert_time = reinterpret_cast<ConvertTimespecTime>(convert);

@@ -6,6 +6,7 @@
 #include "passive_capture.h"
 
 #include "roomsense/xr/ext/XR_ANDROID_scene_meshing.h"
+#include "roomsense/xr/ext/XR_EXT_spatial_entity.h"
 #include "roomsense/xr/ext/XR_ML_world_mesh_detection.h"
 
 #include <gtest/gtest.h>
@@ -256,6 +257,20 @@ TEST(LayerPassiveAndroidMl, AnAndroidApplicationsOwnBaseSpaceIsLocated) {
 
 TEST(LayerPassiveAndroidMl, AMagicLeapApplicationsOwnBaseSpaceIsLocated) {
   expect_export_of_what_the_app_read(kMagicLeap, "layer_passive_ml_moved", &kMovedBase);
+}
+
+// A Magic Leap application that also enables XR_EXT_spatial_entity, which this runtime lacks (the layer serves it):
+// the layer answers xrPollFutureEXT for its own futures and passes the runtime's on, so the application still
+// receives exactly what the runtime sends.
+TEST(LayerPassiveAndroidMl, AMagicLeapApplicationsFuturesPassTheLayersSpatialEntities) {
+  ScopedEnv only("ROOMSENSE_SIM_EXTENSIONS", std::string(XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME));
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  const Received want = read_without_layer(kMagicLeap, nullptr);
+  std::vector<const char*> extensions = kMagicLeap.app_extensions;
+  extensions.push_back(XR_EXT_SPATIAL_ENTITY_EXTENSION_NAME);
+  App app(extensions);
+  ASSERT_TRUE(layer_library_loaded());
+  EXPECT_EQ(read_ml(app, app.local), want);
 }
 
 }  // namespace

@@ -105,6 +105,7 @@ void load(PFN_xrGetInstanceProcAddr gipa, XrInstance instance, const char* name,
 struct SpatialRequest {
   bool wanted = false;           // the application enabled XR_EXT_spatial_entity
   bool planes = false;           // the layer serves plane tracking: the application asked, the runtime has none
+  bool clock = false;            // XR_KHR_convert_timespec_time is enabled below (by the application or the layer)
 };
 
 void register_instance(XrInstance instance, PFN_xrGetInstanceProcAddr next_gipa, const XrInstanceCreateInfo& info,
@@ -188,13 +189,15 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
     const std::optional<std::vector<std::string>> offered = capture ? runtime_extensions(next_gipa) : std::nullopt;
     spatial.planes = enabled(*info, XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME) &&
                      !offers(offered, XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME);
-    const auto ours_alone = [&](const char* name) {
-      if (std::strcmp(name, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME) == 0) return true;
+    const auto served_by_layer = [&](const char* name, bool chain_has_them) {
       if (!spatial.wanted) return false;
       for (const char* served : {XR_EXT_FUTURE_EXTENSION_NAME, XR_EXT_SPATIAL_ENTITY_EXTENSION_NAME,
                                  XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME})
-        if (std::strcmp(name, served) == 0 && !offers(offered, served)) return true;
+        if (std::strcmp(name, served) == 0 && !(chain_has_them && offers(offered, served))) return true;
       return false;
+    };
+    const auto ours_alone = [&](const char* name) {
+      return std::strcmp(name, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME) == 0 || served_by_layer(name, true);
     };
     std::vector<const char*> extensions;
     for (uint32_t i = 0; i < info->enabledExtensionCount; ++i)
@@ -231,14 +234,28 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
     // Where the runtime's extension list could not be read, ask for every source and drop the least preferred
     // until the chain accepts (a layer below may answer an extension it does not know with another error than
     // XR_ERROR_EXTENSION_NOT_PRESENT). The application's own request is tried last, unchanged.
-    XrResult result = create_with(candidates);
-    while (XR_FAILED(result) && !added.empty()) {
-      candidates.pop_back();
-      result = create_with(candidates);
+    const std::vector<const SourceInfo*> all_candidates = candidates;
+    const auto create_dropping_sources = [&] {
+      XrResult r = create_with(candidates);
+      while (XR_FAILED(r) && !added.empty()) {
+        candidates.pop_back();
+        r = create_with(candidates);
+      }
+      return r;
+    };
+    XrResult result = create_dropping_sources();
+    // An unreadable list sent the spatial-entity extensions down as asked; where the chain refuses them, the
+    // layer serves them itself.
+    if (XR_FAILED(result) && !offered && spatial.wanted) {
+      std::erase_if(extensions, [&](const char* name) { return name != nullptr && served_by_layer(name, false); });
+      spatial.planes = enabled(*info, XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME);
+      candidates = all_candidates;
+      result = create_dropping_sources();
     }
     if (XR_FAILED(result)) return result;
     try {
       added.insert(added.end(), clock.begin(), clock.end());
+      spatial.clock = !clock.empty() || enabled(*info, kTimespecExtension);
       register_instance(*instance, next_gipa, *info, extx, capture, candidates, added, config, spatial);
     } catch (...) {  // the application gets an error, so the instance must not outlive this call
       {
@@ -274,8 +291,10 @@ std::shared_ptr<const SpatialInstance> make_spatial_instance(const InstanceState
 #define ROOMSENSE_FORWARD(name) spatial->forward.name = reinterpret_cast<PFN_##name>(below(#name));
   ROOMSENSE_SPATIAL_FUNCTIONS(ROOMSENSE_FORWARD)
 #undef ROOMSENSE_FORWARD
-  PFN_xrVoidFunction convert = nullptr;  // there when the runtime has the extension (the layer enabled it)
-  if (XR_SUCCEEDED(state.next.xrGetInstanceProcAddr(state.handle, "xrConvertTimespecTimeToTimeKHR", &convert)))
+  // Only where the extension is enabled: a layer below may hand out a function that has nothing behind it
+  // (Debian's core validation does, and calling it crashes).
+  PFN_xrVoidFunction convert = nullptr;
+  if (request.clock && XR_SUCCEEDED(state.next.xrGetInstanceProcAddr(state.handle, "xrConvertTimespecTimeToTimeKHR", &convert)))
     spatial->convert_time = reinterpret_cast<ConvertTimespecTime>(convert);
   return spatial;
 }

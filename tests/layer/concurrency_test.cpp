@@ -1,8 +1,11 @@
 // The layer under concurrent use, for ThreadSanitizer (scripts/tsan.sh; ctest label `concurrency`): the getters
 // on 8 threads while computes run (and a ninth thread trying to compute meanwhile), 8 analyzers of one session
-// computing on 8 threads and destroyed while they compute, and the session destroyed under running analyses.
+// computing on 8 threads and destroyed while they compute, the session destroyed under running analyses, and
+// the standard spatial-entity API the layer serves used from 8 threads while its analysis thread re-queries.
 // A small executable of its own (not part of layer_tests), so that the ThreadSanitizer job builds only this.
 // test_lifecycle.cpp has the single-threaded lifetime cases (instances, sessions, export directory).
+#include "spatial_client.h"  // first: the registry's declarations before the layer's header
+
 #include "layer_harness.h"
 #include "synthetic_room.h"
 #include "roomsense/synthetic.h"
@@ -10,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <memory>
 #include <thread>
 #include <vector>
 
@@ -151,6 +156,62 @@ TEST(LayerConcurrency, SessionDestroyedUnderEightRunningAnalyses) {
     for (const XrRoomAnalyzerEXTX a : analyzers) EXPECT_EQ(app.extx.state(a, &state), XR_ERROR_HANDLE_INVALID);
     app.open_session();
   }
+}
+
+// Contexts, discoveries, queries, entities and update snapshots on 8 threads, events polled meanwhile, while the
+// layer's analysis thread looks at the runtime's meshes every 100 ms; then the session goes away with discoveries
+// pending on every thread's context.
+TEST(LayerConcurrency, SpatialEntitiesOnEightThreads) {
+  ScopedEnv only("ROOMSENSE_SIM_EXTENSIONS", std::string("XR_META_spatial_entity_mesh"));
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  ScopedEnv interval("ROOMSENSE_SPATIAL_INTERVAL_MS", std::string("100"));
+  auto app = std::make_unique<SpatialClient>();
+  std::atomic<int> failures{0}, planes_seen{0};
+  std::atomic<bool> done{false};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&] {
+      for (int round = 0; round < 3; ++round) {
+        const ContextSteps c = app->create_context(XR_SPATIAL_CAPABILITY_PLANE_TRACKING_EXT, kPlaneComponents);
+        if (!c.ok()) {
+          ++failures;
+          return;
+        }
+        const SnapshotSteps d = app->discover(c.context);
+        if (!d.ok()) ++failures;
+        const SpatialQuery q = app->query(d.snapshot, {XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT});
+        if (q.result != XR_SUCCESS) ++failures;
+        planes_seen += static_cast<int>(q.ids.size());
+        std::vector<XrSpatialEntityEXT> entities;
+        for (XrSpatialEntityIdEXT id : q.ids) {
+          XrSpatialEntityEXT e = XR_NULL_HANDLE;
+          if (app->entity(c.context, id, e) == XR_SUCCESS) entities.push_back(e);
+        }
+        XrSpatialSnapshotEXT update = XR_NULL_HANDLE;
+        if (!entities.empty() && app->update(c.context, entities, {}, update) == XR_SUCCESS) app->fn.destroySnapshot(update);
+        if (app->fn.destroySnapshot(d.snapshot) != XR_SUCCESS) ++failures;
+        if (round < 2) {
+          if (app->fn.destroyContext(c.context) != XR_SUCCESS) ++failures;
+        } else {
+          // Left for the session to take down, with a discovery pending.
+          if (app->start_discovery(c.context, {}).start != XR_SUCCESS) ++failures;
+        }
+      }
+    });
+  std::thread events([&] {
+    while (!done) {
+      XrEventDataBuffer event{XR_TYPE_EVENT_DATA_BUFFER, nullptr};
+      const XrResult r = xrPollEvent(app->instance, &event);
+      if (r != XR_SUCCESS && r != XR_EVENT_UNAVAILABLE) ++failures;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  });
+  for (std::thread& t : threads) t.join();
+  done = true;
+  events.join();
+  app.reset();  // session and instance destroyed with a discovery pending on every context
+  EXPECT_EQ(failures.load(), 0);
+  EXPECT_GT(planes_seen.load(), 0);
 }
 
 }  // namespace

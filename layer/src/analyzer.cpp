@@ -49,9 +49,10 @@ std::vector<SourceChunk> query_best_source(const InstanceState& instance, const 
 
 }  // namespace
 
-AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, float voxel_size, BackendChoice backend,
-                              std::stop_token stop) {
-  const Scan scan = merge(pieces);
+AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const LabelledTriangles& labels,
+                              float voxel_size, BackendChoice backend, std::stop_token stop) {
+  Scan scan = merge(pieces);
+  scan.labels = labels;
   AnalysisOptions options;
   options.voxel_size = voxel_size;
   options.stop = std::move(stop);
@@ -211,7 +212,9 @@ void Analyzer::run(std::stop_token stop, Job job) {
       done_.notify_all();
       return;
     }
-    const AnalysisResult analysis = analyze_pieces(pieces, settings_.voxel_size, settings_.backend, stop);
+    LabelledTriangles labels;  // the runtime's semantics, where its source gives any
+    for (const SourceChunk& m : runtime) add_labelled(labels, m.mesh, m.labels);
+    const AnalysisResult analysis = analyze_pieces(pieces, labels, settings_.voxel_size, settings_.backend, stop);
     if (!analysis.ok()) throw std::runtime_error(analysis.status_message);
     if (stop.stop_requested()) return;
     const auto elapsed = std::chrono::steady_clock::now() - job.started;

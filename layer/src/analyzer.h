@@ -77,9 +77,9 @@ class Analyzer {
   std::jthread worker_;
 };
 
-// Runs the core pipeline on `pieces` with the given settings; the stage note (which backend) goes to the log.
-// A stop request ends it with Error(Cancelled) within about 100 ms.
-AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, float voxel_size, BackendChoice backend,
-                              std::stop_token stop = {});
+// Runs the core pipeline on `pieces`, with the runtime's `labels`, with the given settings; the stage note
+// (which backend) goes to the log. A stop request ends it with Error(Cancelled) within about 100 ms.
+AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const LabelledTriangles& labels,
+                              float voxel_size, BackendChoice backend, std::stop_token stop = {});
 
 }  // namespace roomsense::layer

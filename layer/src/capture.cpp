@@ -105,8 +105,13 @@ void export_captured(SessionState& session, std::stop_token stop) {
   try {
     const auto start = std::chrono::steady_clock::now();
     std::vector<const MeshPiece*> pieces;
-    for (const auto& c : captures_of_best_source(captured)) pieces.push_back(&c->chunk.mesh);
-    const AnalysisResult analysis = analyze_pieces(pieces, kDefaultVoxelSize, session.instance->config.env_backend, stop);
+    LabelledTriangles labels;
+    for (const auto& c : captures_of_best_source(captured)) {
+      pieces.push_back(&c->chunk.mesh);
+      add_labelled(labels, c->chunk.mesh, c->chunk.labels);
+    }
+    const AnalysisResult analysis =
+        analyze_pieces(pieces, labels, kDefaultVoxelSize, session.instance->config.env_backend, stop);
     if (!analysis.ok()) {
       log_warn("export: the scene meshes the application read hold no room yet: " + analysis.status_message);
     } else {

@@ -40,4 +40,8 @@ std::uint64_t content_hash(const MeshPiece& mesh);
 // that their vertices still count; a scan of point clouds only stays a point cloud (vertex mode).
 Scan merge(const std::vector<const MeshPiece*>& pieces);
 
+// Appends a chunk's triangles with the runtime's label of each (one per triangle) to `out`, the labels a scan
+// carries (Scan::labels). A count that does not match adds nothing.
+void add_labelled(LabelledTriangles& out, const MeshPiece& piece, const std::vector<SurfaceLabel>& labels);
+
 }  // namespace roomsense::layer

@@ -56,11 +56,12 @@ inline void expect_identical(const Result& got, const roomsense::AnalysisResult&
   EXPECT_EQ(got.indices, want.bounds.indices);
 }
 
-// Runs `roomsense analyze SOURCE --json` and returns the document.
+// Runs `roomsense analyze SOURCE --no-labels --json` and returns the document. Without labels: the layer sees
+// a capture through a runtime's mesh extensions, which carry none of the capture's anchors.
 inline nlohmann::json run_cli(const std::string& source) {
   const std::filesystem::path out =
       std::filesystem::path(::testing::TempDir()) / ("layer_cli_" + std::to_string(::getpid()) + ".json");
-  const std::string command = std::string("'") + ROOMSENSE_CLI + "' analyze '" + source + "' --backend cpu --json '" +
+  const std::string command = std::string("'") + ROOMSENSE_CLI + "' analyze '" + source + "' --no-labels --backend cpu --json '" +
                               out.string() + "'";
   const int status = std::system(command.c_str());
   if (status != 0) throw std::runtime_error("the CLI failed: " + command);
@@ -130,6 +131,7 @@ struct Headset {
   const char* name;
   std::optional<std::string> extensions;  // nullopt: everything the runtime serves
   const char* mesh_source;
+  bool labels = false;  // the source carries the runtime's labels: its areas differ from the CLI's
 };
 
 // The layer's analysis of the runtime's meshes of `source` against `roomsense analyze` of the same file: the
@@ -156,6 +158,7 @@ inline std::size_t expect_runtime_matches_cli(const std::string& source, const s
   const nlohmann::json cli = run_cli(source);
   JsonDiff d;
   for (const char* member : kRoomMembers) {
+    if (headset.labels && std::string(member) == "areas") continue;  // the runtime's labels change areas only
     nlohmann::json g = room_member(layer, member), w = room_member(cli, member);
     diff_json(g, w, member, d);
   }

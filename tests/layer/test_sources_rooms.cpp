@@ -1,6 +1,8 @@
 // Each mesh source alone, on every room: the simulated runtime plays one headset at a time
 // (ROOMSENSE_SIM_EXTENSIONS), and the layer's room through that headset's scene extension equals
-// `roomsense analyze` of the same file (within 1e-4 m, test_results.cpp says why). Prints each capture's time.
+// `roomsense analyze` of the same file (within 1e-4 m, test_results.cpp says why). Android XR's per-vertex labels
+// (the simulated runtime derives them from a capture's objects or the triangles' normals) change its areas, so
+// there only the rest must match. Prints each capture's time.
 #include "compare.h"
 #include "rooms.h"
 
@@ -16,7 +18,7 @@ using namespace layertest;
 const Headset kHeadsets[] = {
     {"HoloLens 2", std::string("XR_MSFT_scene_understanding"), "XR_MSFT_scene_understanding"},
     {"Quest 3", std::string("XR_META_spatial_entity_mesh"), "XR_META_spatial_entity_mesh"},
-    {"Android XR", std::string("XR_ANDROID_scene_meshing"), "XR_ANDROID_scene_meshing"},
+    {"Android XR", std::string("XR_ANDROID_scene_meshing"), "XR_ANDROID_scene_meshing", true},
     {"Magic Leap 2", std::string("XR_ML_world_mesh_detection"), "XR_ML_world_mesh_detection"},
 };
 

@@ -1,9 +1,10 @@
-// Placement areas on the labelled Quest captures: each area checked against the labelled walls, floor and
-// furniture volumes of its room (validity), and how much of the labelled free floor the floor areas cover.
-// The figures are printed per room; the assertions hold what every room reaches with a margin.
+// Placement areas on the labelled Quest captures, scored by issue 14's rules (label_scorer.h): the share a
+// person accepts and the share of the free floor and wall they cover, with the capture's labels and from the
+// bare mesh. Then every other scan: areas of each kind, classified by the rules of §3.5.
 #include "roomsense/analysis.h"
 #include "roomsense/quest_capture.h"
 #include "roomsense/scanio.h"
+#include "label_scorer.h"
 #include "rooms.h"
 
 #include <glm/geometric.hpp>
@@ -18,148 +19,58 @@
 namespace roomsense {
 namespace {
 
-using scanio::OrientedRect;
-
-// p in the rectangle's frame: x, y within the extents (grown by `margin`), z the height above its plane.
-glm::vec3 local(const OrientedRect& r, const glm::vec3& p) {
-  return glm::inverse(r.pose.orientation) * (p - r.pose.position);
-}
-bool over(const OrientedRect& r, const glm::vec3& p, float margin) {
-  const glm::vec3 l = local(r, p);
-  return std::abs(l.x) <= 0.5f * r.width + margin && std::abs(l.y) <= 0.5f * r.height + margin;
-}
-glm::vec3 normal_of(const OrientedRect& r) { return r.pose.orientation * glm::vec3(0, 0, 1); }
-
-bool is_wall_label(const std::string& l) {
-  return l == "WALL_FACE" || l == "INNER_WALL_FACE" || l == "INVISIBLE_WALL_FACE";
-}
-
-struct Labels {
-  std::vector<OrientedRect> walls, floors, tops, footprints;
+// What every room holds now, asserted so that it cannot regress. Issue 14's targets, which the hidden captures
+// of other homes are held to as well, are higher: valid >= 95 % in every room; free floor >= 70 % and free wall
+// >= 55 % on average, no room under 40 %. The printed table shows the gap.
+struct Held {
+  double valid, floor_cover, wall_cover;  // in every room
+  double mean_floor_cover, mean_wall_cover;
 };
+constexpr Held kWithLabels{0.80, 0.40, 0.30, 0.53, 0.42};
+constexpr Held kBareMesh{0.55, 0.40, 0.40, 0.53, 0.52};
 
-bool is_furniture_label(const std::string& l) {
-  return l == "TABLE" || l == "COUCH" || l == "BED" || l == "STORAGE" || l == "CHAIR" || l == "OTHER";
+constexpr const char* kQuestRooms[] = {"living_room", "meeting_room", "music_room", "office_large", "office_small"};
+
+// One row of the issue's table, printed and recorded for the CI log.
+void print_row(const char* room, const char* input, const test::SceneScore& s) {
+  std::printf("[ figures  ] | %-13s | %-9s | %3d | %5.1f %% | %-62s | %5.1f %% | %5.1f %% |\n", room, input, s.areas,
+              100 * s.valid_share(), s.main_faults().c_str(), 100 * s.free_floor_covered, 100 * s.free_wall_covered);
 }
 
-Labels labels_of(const scanio::QuestCapture& c) {
-  Labels out;
-  for (const scanio::QuestPlane& p : c.planes) {
-    if (is_wall_label(p.label)) out.walls.push_back(scanio::plane_rect(p));
-    if (p.label == "FLOOR") out.floors.push_back(scanio::plane_rect(p));
-    // A furniture plane is its seat or top (a couch's seat lies below its volume's top, the backrest).
-    if (is_furniture_label(p.label)) out.tops.push_back(scanio::plane_rect(p));
+// Scores every capture, once with its labels and once from the bare mesh, against the capture's labels.
+class QuestScores : public testing::TestWithParam<bool> {};
+
+TEST_P(QuestScores, AreasAPersonAcceptsCoveringTheFreeFloorAndWall) {
+  const bool use_labels = GetParam();
+  const Held& held = use_labels ? kWithLabels : kBareMesh;
+  double floor_sum = 0, wall_sum = 0;
+  for (const char* room : kQuestRooms) {
+    SCOPED_TRACE(room);
+    ROOMSENSE_REQUIRE_ROOM(path, std::string("quest-iwer/") + room + ".json");
+    scanio::QuestCapture capture = scanio::load_quest_capture(path.string());
+    const test::LabelledScene scene = test::labelled_scene(capture);
+    ASSERT_GE(scene.outline.size(), 3u);
+    Scan scan = capture.mesh;
+    if (use_labels) scan.labels = scanio::scene_labels(capture);
+    const AnalysisResult r = analyze(scan);
+    ASSERT_TRUE(r.ok()) << r.status_message;
+    const test::SceneScore s = test::score_areas(scene, r.areas);
+    print_row(room, use_labels ? "labels" : "bare mesh", s);
+    EXPECT_GE(s.valid_share(), held.valid) << s.main_faults();
+    EXPECT_GE(s.free_floor_covered, held.floor_cover);
+    EXPECT_GE(s.free_wall_covered, held.wall_cover);
+    floor_sum += s.free_floor_covered;
+    wall_sum += s.free_wall_covered;
   }
-  for (const scanio::QuestVolume& v : c.volumes) {
-    const OrientedRect top = scanio::volume_top_rect(v);
-    out.tops.push_back(top);
-    OrientedRect footprint = top;
-    footprint.pose.position.y = 0.0f;
-    out.footprints.push_back(footprint);
-  }
-  return out;
+  const double n = double(std::size(kQuestRooms));
+  std::printf("[ figures  ] mean free floor covered %5.1f %%, free wall covered %5.1f %%\n", 100 * floor_sum / n,
+              100 * wall_sum / n);
+  EXPECT_GE(floor_sum / n, held.mean_floor_cover);
+  EXPECT_GE(wall_sum / n, held.mean_wall_cover);
 }
 
-bool under_furniture(const Labels& l, glm::vec2 p, float margin) {
-  return std::any_of(l.footprints.begin(), l.footprints.end(), [&](const OrientedRect& f) {
-    return over(f, glm::vec3(p.x, f.pose.position.y, p.y), margin);
-  });
-}
-
-// Areas per type as valid (on a labelled surface of their type), wrong (where the labels say something else:
-// in front of a labelled wall but not on it, on the floor under labelled furniture, on labelled furniture at
-// another height) or unlabelled (no label covers them: the far side of a wall, a window sill, an unlabelled
-// shelf). The scans hold more than their labels, so only "wrong" is an error.
-struct Tally {
-  int valid = 0, wrong = 0, unlabelled = 0;
-  int all() const { return valid + wrong + unlabelled; }
-};
-
-struct Figures {
-  Tally walls, floors, furniture;
-  double floor_coverage = 0;
-};
-
-Figures measure(const AnalysisResult& r, const Labels& l) {
-  Figures f;
-  for (const Area& a : r.areas) {
-    if (a.type == AreaType::Wall) {
-      // On a labelled wall: within 0.25 m of its plane (a voxel and the scan's offset from the label), over it,
-      // facing the same way. Sides of labelled furniture tall enough to read as walls count too.
-      bool on_wall = false, before_wall = false;
-      for (const OrientedRect& w : l.walls) {
-        if (!over(w, a.center, 0.1f)) continue;
-        const float z = local(w, a.center).z;
-        on_wall = on_wall || (std::abs(z) < 0.25f && glm::dot(normal_of(w), a.normal) > 0.7f);
-        before_wall = before_wall || (z > 0.0f && z < 0.5f);
-      }
-      const bool by_furniture = under_furniture(l, {a.center.x, a.center.z}, 0.3f);
-      (on_wall || by_furniture ? f.walls.valid : before_wall ? f.walls.wrong : f.walls.unlabelled) += 1;
-    } else if (a.type == AreaType::Floor) {
-      // On the labelled floor, at its height, and not over a labelled furniture footprint (a voxel's margin).
-      const bool on_floor = std::any_of(l.floors.begin(), l.floors.end(), [&](const OrientedRect& fl) {
-        return std::abs(local(fl, a.center).z) < 0.1f && over(fl, a.center, 0.1f);
-      });
-      bool free = !under_furniture(l, {a.center.x, a.center.z}, -0.1f);
-      for (const glm::vec3& c : a.corners) free = free && !under_furniture(l, {c.x, c.z}, -0.1f);
-      (on_floor && free ? f.floors.valid : f.floors.wrong) += 1;
-    } else if (a.type == AreaType::Furniture) {
-      // On the top or seat of labelled furniture, within a voxel and a half of its height.
-      bool over_any = false, at_height = false;
-      for (const OrientedRect& t : l.tops) {
-        if (!over(t, glm::vec3(a.center.x, t.pose.position.y, a.center.z), 0.1f)) continue;
-        over_any = true;
-        at_height = at_height || std::abs(a.center.y - t.pose.position.y) < 0.15f;
-      }
-      (at_height ? f.furniture.valid : over_any ? f.furniture.wrong : f.furniture.unlabelled) += 1;
-    }
-  }
-  // Coverage: 5 cm raster over the labelled floor, away from its edge and from furniture footprints.
-  int free_points = 0, covered = 0;
-  for (const OrientedRect& fl : l.floors)
-    for (float u = -0.5f * fl.width + 0.15f; u < 0.5f * fl.width - 0.15f; u += 0.05f)
-      for (float v = -0.5f * fl.height + 0.15f; v < 0.5f * fl.height - 0.15f; v += 0.05f) {
-        const glm::vec3 p = fl.pose.apply(glm::vec3(u, v, 0.0f));
-        if (under_furniture(l, {p.x, p.z}, 0.15f)) continue;
-        ++free_points;
-        covered += std::any_of(r.areas.begin(), r.areas.end(), [&](const Area& a) {
-          if (a.type != AreaType::Floor) return false;
-          const glm::vec3 d = p - a.center;
-          return std::abs(glm::dot(d, a.x_axis())) <= a.half_width && std::abs(glm::dot(d, a.y_axis())) <= a.half_height;
-        }) ? 1 : 0;
-      }
-  f.floor_coverage = free_points ? double(covered) / free_points : 0.0;
-  return f;
-}
-
-class QuestAreas : public testing::TestWithParam<const char*> {};
-
-TEST_P(QuestAreas, AreasLieOnTheirLabelledSurfaces) {
-  ROOMSENSE_REQUIRE_ROOM(path, std::string("quest-iwer/") + GetParam() + ".json");
-  const scanio::QuestCapture capture = scanio::load_quest_capture(path.string());
-  const AnalysisResult r = analyze(capture.mesh);
-  ASSERT_TRUE(r.ok()) << r.status_message;
-  const Labels labels = labels_of(capture);
-  ASSERT_FALSE(labels.walls.empty());
-  ASSERT_FALSE(labels.floors.empty());
-  const Figures f = measure(r, labels);
-  const auto row = [](const Tally& t) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%3d valid %2d wrong %2d unlabelled", t.valid, t.wrong, t.unlabelled);
-    return std::string(buf);
-  };
-  std::printf("[ figures  ] %-13s walls %s | floors %s | furniture %s | free floor covered %5.1f %%\n", GetParam(),
-              row(f.walls).c_str(), row(f.floors).c_str(), row(f.furniture).c_str(), 100 * f.floor_coverage);
-  RecordProperty("floor_coverage_percent", int(std::lround(100 * f.floor_coverage)));
-  EXPECT_GT(f.walls.valid, 0);
-  EXPECT_GT(f.floors.valid, 0);
-  // At most 5 % of the areas the labels can judge contradict them (none in most rooms).
-  for (const Tally* t : {&f.walls, &f.floors, &f.furniture}) EXPECT_LE(t->wrong, 0.05 * (t->valid + t->wrong) + 0.5);
-  EXPECT_GE(f.floor_coverage, 0.15);
-}
-
-INSTANTIATE_TEST_SUITE_P(Rooms, QuestAreas,
-                         testing::Values("living_room", "meeting_room", "music_room", "office_large", "office_small"));
+INSTANTIATE_TEST_SUITE_P(Captures, QuestScores, testing::Values(true, false),
+                         [](const auto& info) { return std::string(info.param ? "WithLabels" : "BareMesh"); });
 
 // Every scan, labelled or not: areas of each kind a room has, classified by the rules of §3.5.
 class ScanAreas : public testing::TestWithParam<const char*> {};

@@ -1,8 +1,12 @@
 // `roomsense analyze` as a user runs it: exit codes, one clear stderr line on bad input, the JSON.
+#include "roomsense/mruk_room.h"
+
+#include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -174,3 +178,39 @@ TEST(Cli, OutOfMemoryIsOneLineAndStatus1) {
 }
 
 }  // namespace
+
+namespace {
+
+// Wall areas of an analysis JSON whose centre lies over the rectangle, within 0.3 m of its plane.
+int wall_areas_over(const nlohmann::json& doc, const roomsense::scanio::OrientedRect& r) {
+  int n = 0;
+  for (const auto& a : doc["areas"]) {
+    if (a["type"] != "wall") continue;
+    const glm::vec3 c(a["center"][0].get<float>(), a["center"][1].get<float>(), a["center"][2].get<float>());
+    const glm::vec3 l = glm::inverse(r.pose.orientation) * (c - r.pose.position);
+    n += std::abs(l.x) < 0.5f * r.width && std::abs(l.y) < 0.5f * r.height && std::abs(l.z) < 0.3f ? 1 : 0;
+  }
+  return n;
+}
+
+}  // namespace
+
+TEST(Cli, AnMrukRoomIsReadWithItsLabelsUnlessToldNot) {
+  const std::string room = std::string(ROOMSENSE_MRUK_TEST_DATA) + "/room_4x3.json";
+  const std::string labelled = temp_path("mruk_labels.json"), bare = temp_path("mruk_bare.json");
+  ASSERT_EQ(run_cli("analyze " + room + " --json " + labelled).status, 0);
+  ASSERT_EQ(run_cli("analyze " + room + " --no-labels --json " + bare).status, 0);
+  const auto with = nlohmann::json::parse(std::ifstream(labelled)), without = nlohmann::json::parse(std::ifstream(bare));
+  ASSERT_EQ(with["status"], "ok");
+  ASSERT_EQ(without["status"], "ok");
+  // The room's window frame is flush with its wall: only its label tells it apart.
+  const roomsense::scanio::QuestCapture capture = roomsense::scanio::load_mruk_room(room);
+  int windows = 0;
+  for (const auto& plane : capture.planes)
+    if (plane.label == "WINDOW_FRAME") {
+      ++windows;
+      EXPECT_EQ(wall_areas_over(with, roomsense::scanio::plane_rect(plane)), 0);
+      EXPECT_GT(wall_areas_over(without, roomsense::scanio::plane_rect(plane)), 0);
+    }
+  EXPECT_EQ(windows, 1);
+}

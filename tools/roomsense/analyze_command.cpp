@@ -6,6 +6,7 @@
 #include "roomsense/export.h"
 #include "roomsense/report.h"
 #include "roomsense/scanio.h"
+#include "roomsense/mruk_room.h"
 #include "roomsense/quest_capture.h"
 #include "roomsense/synthetic.h"
 #include "summary.h"
@@ -26,9 +27,15 @@
 namespace roomsense::cli {
 namespace {
 
-Scan load_scan(const std::string& source) {
+// A scene capture (.json: a Quest capture or an MRUK room) comes with its labels unless `use_labels` is off.
+Scan load_scan(const std::string& source, bool use_labels) {
   if (synth::is_builtin_source(source)) return synth::generate_builtin_source(source);
-  if (scanio::is_quest_capture_path(source)) return scanio::load_quest_capture(source).mesh;
+  if (scanio::is_quest_capture_path(source)) {
+    const scanio::QuestCapture capture = scanio::load_scene_capture(source);
+    Scan scan = capture.mesh;
+    if (use_labels) scan.labels = scanio::scene_labels(capture);
+    return scan;
+  }
   return scanio::load_mesh_file(source);
 }
 
@@ -70,7 +77,7 @@ int analyze_command(const std::vector<std::string>& args) {
   const char* step = "reading";  // for the out-of-memory line
   try {
     const auto start = std::chrono::steady_clock::now();
-    Scan scan = load_scan(options.scan);
+    Scan scan = load_scan(options.scan, options.use_labels);
     step = "analysing";
     convert_to_roomsense_frame(scan, options.frame);
     const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -15,8 +15,8 @@ const char* const kUsage = R"(usage: roomsense analyze SCAN [options]
 Finds the floor, ceiling, walls, furniture tops and free tiles of a room scan and builds a closed,
 simplified room-bounds mesh (the voxel pipeline of the thesis, chapter 3).
 
-SCAN                  an OBJ, PLY, glTF or GLB file, a Quest scene capture (.json), or
-                      synthetic:NAME for a built-in room
+SCAN                  an OBJ, PLY, glTF or GLB file, a Quest scene capture or a Meta MRUK
+                      room (.json), or synthetic:NAME for a built-in room
                       (NAME: default, large-triangles, rotated, pentagon, hall, thesis-room1)
 options:
   --json OUT.json     write the analysis (schema roomsense.analysis/1); without it, print a summary
@@ -28,6 +28,10 @@ options:
   --units m|cm|mm     the scan's length unit (default m)
   --left-handed       the scan is left-handed (Unity with --up y, Unreal with --up z)
   --voxel SIZE        voxel edge in metres (default 0.1, range 0.01 to 1)
+  --no-labels         ignore a capture's or room's semantic labels (walls, windows, doors,
+                      furniture) and analyse the bare mesh; by default they are used: no wall
+                      areas over windows, doors or screens, furniture areas only on
+                      furniture tops
   --min-plateau AREA  in the bounds, flatten furniture-top and ceiling plateaus smaller than
                       AREA m² to their neighbours' height: scan jitter and specks (default
                       0.04; 0 keeps the thesis's volume as it is)
@@ -81,6 +85,7 @@ AnalyzeOptions parse_analyze_options(const std::vector<std::string>& args) {
       else if (v == "mm") o.frame.units = Units::Millimetres;
       else throw std::invalid_argument("--units takes m, cm or mm, not '" + v + "'");
     } else if (a == "--left-handed") o.frame.left_handed = true;
+    else if (a == "--no-labels") o.use_labels = false;
     else if (a == "--voxel") {
       // Checked here, with core's range (make_grid_spec would refuse it too, but only after the scan is read).
       const std::string& v = value();

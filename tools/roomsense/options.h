@@ -20,6 +20,7 @@ struct AnalyzeOptions {
   std::string backend;  // empty: ROOMSENSE_BACKEND, else auto
   std::optional<std::string> mode;  // "vertices" | "triangles"
   unsigned threads = 0;
+  bool use_labels = true;  // a capture's or MRUK room's semantic labels (Scan::labels)
 };
 
 // Throws std::invalid_argument with a one-line message for the user.

@@ -57,7 +57,7 @@ struct AreaParams {
   float width_tolerance = 0.1f;   // w ± 0.1 m
   float wall_fill = 0.8f;         // Eq. 3.25
   float horizontal_fill = 0.95f;  // Eq. 3.38
-  int reduction_offset = 2;       // voxels, Eq. 3.46/3.47 and 3.49
+  int reduction_offset = 2;       // levels: furniture tops this far apart are separate (Eq. 3.49)
   float close_distance = 0.2f;    // §3.5.1/3.5.2: a floor area this near makes an area "close"
   float close_height = 1.5f;      // §3.5.1: wall areas centred higher above the floor are never "close"
   float wall_view_cone_deg = 60.0f;  // §3.5.1: a floor area at most this far off a wall area's normal
@@ -93,7 +93,7 @@ struct Area {
 struct AreaCounts {
   std::array<std::size_t, 4> found{};         // valid rectangles of all three sizes, before any reduction
   std::array<std::size_t, 4> deduplicated{};  // after centre deduplication (Eq. 3.42-3.44)
-  std::array<std::size_t, 4> reduced{};       // after overlap reduction (Eq. 3.45-3.53)
+  std::array<std::size_t, 4> reduced{};       // after packing (in place of Eq. 3.45-3.53)
 };
 
 struct AreaTimings {  // milliseconds

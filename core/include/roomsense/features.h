@@ -2,6 +2,7 @@
 // free floor and ceiling tiles D and E (Eq. 3.14/3.15), wall normals F (Alg. 1).
 #pragma once
 #include "roomsense/grid.h"
+#include "roomsense/labels.h"
 #include "roomsense/voxelize.h"
 
 #include <cstdint>
@@ -18,6 +19,20 @@ struct FeatureParams {
   float furniture_clear = 1.0f;    // Eq. 3.13: clear space above a furniture top
   float ceiling_clear = 1.0f;      // Eq. 3.15: clear space below a free ceiling tile
   float wall_normal_reach = 1.0f;  // Eq. 3.19: I_Bounds
+  // Beyond the thesis (issue 14), what a person accepts in a real room:
+  // A wall column reaches the ceiling: its scan ends within this of the ceiling (or of where most walls' scans
+  // end, for scans that barely reach the ceiling). A column that ends lower is the side of a free-standing
+  // object (a cabinet, a screen, a shelf), not a wall: it is furniture to the later steps.
+  float wall_top_gap = 0.25f;
+  // Wall openings up to this wide (doors) are closed when telling the room's inside from what the scan saw
+  // through them; areas stay inside.
+  float max_opening = 1.0f;
+  // How far behind the face of a wall its surface may lie (a recess, a voxel's noise) before the wall counts
+  // as open there (a window, a hole).
+  float wall_recess = 0.12f;
+  // Bumps on the floor up to this high are floor (a rug, a floor that crosses a voxel boundary): free floor
+  // tiles ignore them and furniture tops lie above them.
+  float floor_roughness = 0.1f;
 };
 
 // ⌊metres / S_Voxel⌋, robust to the float error of e.g. 1.5 / 0.1.
@@ -42,16 +57,38 @@ struct RoomFeatures {
   std::vector<std::uint8_t> free_floor;  // D, per column
   std::vector<std::uint8_t> free_ceiling;  // E, per column
   std::vector<std::uint8_t> normals;     // F, per voxel (GridSpec::index), WallNormalBits
+  // Beyond the thesis:
+  std::vector<std::uint8_t> enclosed;    // per column: inside the walls (all 1 where the walls do not close)
+  // Per voxel, or empty when there is none: before an opening in the wall behind (a window, a hole, a door
+  // gap) or a surface the runtime labels a window, door or screen; no wall area may cover it.
+  std::vector<std::uint8_t> wall_blocked;
 };
 
 std::vector<std::uint8_t> detect_walls(const GridSpec& spec, const std::vector<std::uint32_t>& column_counts,
                                        const FloorCeiling& levels, float wall_fill);
 std::vector<std::uint8_t> detect_room(const GridSpec& spec, const std::vector<std::uint8_t>& column_any);
+// Clears the wall columns whose scan ends more than `gap_levels` below the ceiling (or below where most wall
+// columns end): sides of free-standing furniture.
+void drop_free_standing(const VoxelGrid& grid, const FloorCeiling& levels, int gap_levels,
+                        std::vector<std::uint8_t>& walls);
+// Columns the walls enclose: not reachable from the grid's edge once openings up to `max_opening_voxels` wide
+// are closed. All 1 when that leaves less than half of the room inside (walls that do not close).
+std::vector<std::uint8_t> detect_enclosed(const GridSpec& spec, const std::vector<std::uint8_t>& walls,
+                                          const std::vector<std::uint8_t>& room, int max_opening_voxels);
+// The voxels no wall area may cover (RoomFeatures::wall_blocked); empty when there are none.
+std::vector<std::uint8_t> detect_wall_openings(const VoxelGrid& grid, const FloorCeiling& levels,
+                                               const std::vector<std::uint8_t>& walls,
+                                               const std::vector<std::uint8_t>& room, int recess_voxels,
+                                               int max_opening_voxels, const LabelGrid& labels);
+// Where the runtime labels furniture: no free floor below it, and furniture tops only on labelled tops.
+void apply_furniture_labels(const GridSpec& spec, const FloorCeiling& levels, const LabelGrid& labels,
+                            std::vector<std::uint8_t>& free_floor, std::vector<int>& furniture);
+// `rough_levels`: levels above I_Floor that still count as floor (FeatureParams::floor_roughness).
 std::vector<int> detect_furniture(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
-                                  const std::vector<std::uint8_t>& walls, int clear_levels);
+                                  const std::vector<std::uint8_t>& walls, int clear_levels, int rough_levels);
 std::vector<std::uint8_t> detect_free_floor(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
                                             const std::vector<std::uint8_t>& walls,
-                                            const std::vector<std::uint8_t>& room);
+                                            const std::vector<std::uint8_t>& room, int rough_levels);
 std::vector<std::uint8_t> detect_free_ceiling(const VoxelGrid& grid, const FloorCeiling& levels, int clear_levels,
                                               const std::vector<std::uint8_t>& walls,
                                               const std::vector<std::uint8_t>& room);
@@ -63,7 +100,8 @@ std::vector<std::uint8_t> detect_wall_normals(const VoxelGrid& grid, const Floor
 // All of §3.2 on a voxel stage's result that found a floor and a ceiling. C, D and E run in parallel
 // when threads allows; the result does not depend on the thread count.
 // A stop request throws Error(Cancelled) between the steps.
+// `labels`, when not empty, are the runtime's semantics on the same grid.
 RoomFeatures detect_features(const VoxelStageResult& voxels, const FeatureParams& params, unsigned threads = 0,
-                             const std::stop_token& stop = {});
+                             const std::stop_token& stop = {}, const LabelGrid& labels = {});
 
 }  // namespace roomsense

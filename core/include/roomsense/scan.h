@@ -1,5 +1,8 @@
-// A room scan as the pipeline takes it: world-space vertices and, optionally, triangle indices.
+// A room scan as the pipeline takes it: world-space vertices and, optionally, triangle indices, and what the
+// runtime says its surfaces are.
 #pragma once
+#include "roomsense/surface_label.h"
+
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 
@@ -8,9 +11,25 @@
 
 namespace roomsense {
 
+// Labelled triangles in the scan's frame: the runtime's semantics. They label the voxels they pass through and
+// add no geometry, so they may repeat the scan's own triangles (Android XR's per-vertex labels, labelled
+// XR_EXT_spatial_plane_tracking planes) or be surfaces the scan does not hold (Quest scene anchors' plane
+// rectangles and boxes, an MRUK room's anchors). Labels that cannot be used (a count that does not match,
+// an index out of range, non-finite vertices) are dropped with a warning; they never fail an analysis.
+struct LabelledTriangles {
+  std::vector<glm::vec3> vertices;
+  std::vector<std::uint32_t> indices;  // 3 per triangle
+  std::vector<SurfaceLabel> labels;    // one per triangle
+  bool empty() const { return labels.empty(); }
+  // Appends the triangles of `mesh` (indices into `vertices`), all labelled `label`.
+  void add(const std::vector<glm::vec3>& mesh_vertices, const std::vector<std::uint32_t>& mesh_indices,
+           SurfaceLabel label);
+};
+
 struct Scan {
   std::vector<glm::vec3> vertices;
   std::vector<std::uint32_t> indices;  // triangles, 3 per face; empty for a point cloud (thesis input)
+  LabelledTriangles labels{};          // empty: the runtime gave no semantics (the thesis's input)
 };
 
 // Thesis Eq. 3.1: a flattened array x1,y1,z1,x2,... of `size` floats. Throws Error with the thesis's codes:

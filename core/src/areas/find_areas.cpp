@@ -42,7 +42,8 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
       count_if(features.furniture, [](int c) { return c != kNoFurniture; })};
   std::array<std::array<Candidates, 3>, 4> found;
   std::array<bool, 12> skipped{};
-  parallel_tasks(12, threads, [&](std::size_t t) {
+  double dominant_deg = 0.0;  // the room's main direction, from the walls (reduce.h)
+  const auto search = [&](std::size_t t) {
     const std::size_t type = t / 3, size = t % 3;
     const SizeRange range =
         type == 0 ? size_range(params.wall_width[size], params.wall_height[size], params.width_tolerance, voxel)
@@ -58,8 +59,14 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
       return;
     }
     const Surface surface = type == 1 ? Surface::Floor : type == 2 ? Surface::Ceiling : Surface::Furniture;
-    found[type][size] = search_squares(spec, features, surface, range, params.horizontal_fill, stop);
-  });
+    found[type][size] = search_squares(spec, features, surface, range, params.horizontal_fill, dominant_deg, stop);
+  };
+  // The three wall searches first: their rectangles give the room's main direction, which the square
+  // searches try first.
+  parallel_tasks(3, threads, search);
+  std::vector<Sized> deduplicated_walls = deduplicate_centres(found[0]);
+  dominant_deg = dominant_direction_deg(deduplicated_walls);
+  parallel_tasks(9, threads, [&](std::size_t t) { search(t + 3); });
   for (std::size_t t = 0; t < skipped.size(); ++t)
     if (skipped[t])
       result.warnings.push_back(std::string(to_string(kAreaSizes[t % 3])) + " " + std::string(to_string(kAreaTypes[t / 3])) +
@@ -69,13 +76,26 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   result.timings.search = elapsed_ms(clock);
   clock = std::chrono::steady_clock::now();
 
-  // §3.4, independent per type: V_Wall, V_Floor, ... (Eq. 3.44), then the overlap reduction.
-  std::array<std::vector<Sized>, 4> deduplicated;
+  // §3.4, independent per type: V_Wall, V_Floor, ... (Eq. 3.44), for reach; packing (reduce.h) picks from all
+  // the rectangles found: Eq. 3.44 would drop a medium square whose centre a large one has, though packing
+  // may then refuse that large one.
+  std::array<std::vector<Sized>, 4> deduplicated, all;
   std::array<std::vector<std::size_t>, 4> kept;
+  deduplicated[0] = std::move(deduplicated_walls);
   parallel_tasks(4, threads, [&](std::size_t type) {
-    deduplicated[type] = deduplicate_centres(found[type]);
-    kept[type] = type == 0 ? reduce_wall_overlaps(deduplicated[type], params.reduction_offset)
-                           : reduce_square_overlaps(deduplicated[type], params.reduction_offset, type == 3);
+    if (type != 0) deduplicated[type] = deduplicate_centres(found[type]);
+    for (std::size_t size = 0; size < 3; ++size)
+      for (const Candidate& c : found[type][size]) all[type].push_back({c, kAreaSizes[size]});
+    // Eq. 3.49: furniture squares less than reduction_offset levels apart are on one top.
+    const auto is_tile = [&](int x, int z, int level) {
+      if (x < 0 || z < 0 || x >= spec.nx || z >= spec.nz) return false;
+      const std::size_t col = spec.column(x, z);
+      if (type == 1) return features.free_floor[col] != 0;
+      if (type == 2) return features.free_ceiling[col] != 0;
+      return features.furniture[col] == level || features.furniture[col] == level + 1;  // C, y_Actual (Eq. 3.41)
+    };
+    kept[type] = type == 0 ? pack_walls(all[type])
+                           : pack_squares(all[type], type == 3 ? params.reduction_offset - 1 : 0, dominant_deg, is_tile);
   });
   for (std::size_t type = 0; type < 4; ++type) {
     for (const Candidates& c : found[type]) result.counts.found[type] += c.size();
@@ -86,7 +106,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   result.timings.reduce = elapsed_ms(clock);
   clock = std::chrono::steady_clock::now();
 
-  // §3.5: geometry of every reduced area, then reach against V_Floor and V_Wall (before the overlap reduction).
+  // §3.5: geometry of every kept area, then reach against V_Floor and V_Wall (before packing).
   const PlacementContext context{spec, features, surfaces, feature_params};
   const auto convert_all = [&](std::size_t type) {
     std::vector<Area> out;
@@ -96,10 +116,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   };
   const std::vector<Area> wall_areas = convert_all(0), floor_areas = convert_all(1);
   for (std::size_t type = 0; type < 4; ++type)
-    for (std::size_t i : kept[type])
-      result.areas.push_back(type == 0   ? wall_areas[i]
-                             : type == 1 ? floor_areas[i]
-                                         : to_area(deduplicated[type][i], kAreaTypes[type], context));
+    for (std::size_t i : kept[type]) result.areas.push_back(to_area(all[type][i], kAreaTypes[type], context));
   assign_reach(result.areas, floor_areas, wall_areas, surfaces.floor_y, params, threads);
   result.timings.classify = elapsed_ms(clock);
   return result;

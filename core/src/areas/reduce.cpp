@@ -1,75 +1,74 @@
-// §3.4: centre deduplication and overlap reduction. The overlap tests use a bucket grid over X-Z so each
-// rectangle meets only the kept ones near it; the result is that of the thesis's all-pairs loop.
+// §3.4: centre deduplication (Eq. 3.42-3.44), then packing (reduce.h says why it replaces Eq. 3.45-3.53): each
+// kept rectangle marks its half-voxel surface samples in a hash set, so a candidate meets only what lies
+// under it.
 #include "reduce.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <numbers>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
 namespace roomsense::detail {
 namespace {
 
-// The thesis tests corners (Eq. 3.45, 3.52) and, for squares, edge midpoints. We test the centre too, and
-// the edge midpoints for walls as well: that also catches a rectangle crossing a kept one with all its
-// corners outside it.
-std::array<glm::dvec3, 9> test_points(const Candidate& c) {
-  std::array<glm::dvec3, 9> p;
-  glm::dvec3 sum(0.0);
-  for (int i = 0; i < 4; ++i) {
-    const glm::dvec3 a(c.corners[std::size_t(i)]), b(c.corners[std::size_t((i + 1) % 4)]);
-    p[std::size_t(i)] = a;
-    p[std::size_t(4 + i)] = 0.5 * (a + b);
-    sum += a;
-  }
-  p[8] = 0.25 * sum;
-  return p;
+// Half-voxel sample points of a rectangle's surface, strictly inside it: two rectangles that only share an
+// edge share none, two that overlap by a strip of half a voxel or more share some.
+constexpr double kSample = 0.5;  // voxels
+
+std::uint64_t sample_key(long x, long y, long z) {
+  return (std::uint64_t(std::uint32_t(x) & 0x1FFFFF) << 42) | (std::uint64_t(std::uint32_t(y) & 0x1FFFFF) << 21) |
+         std::uint64_t(std::uint32_t(z) & 0x1FFFFF);
 }
 
-// Kept rectangles, bucketed by the X-Z cells (of kBucket voxels) their widened footprint covers.
-class KeptIndex {
- public:
-  static constexpr int kBucket = 8;
-  void insert(std::size_t id, glm::dvec2 lo, glm::dvec2 hi) {
-    for (int bz = bucket(lo.y); bz <= bucket(hi.y); ++bz)
-      for (int bx = bucket(lo.x); bx <= bucket(hi.x); ++bx) buckets_[key(bx, bz)].push_back(id);
+// Calls f(sx, sy, sz) for each sample cell (half-voxel index) of a wall rectangle, at `layer` voxels off its
+// plane along its horizontal normal. The rectangle runs between voxel centres (Eq. 3.54).
+template <class F>
+void wall_samples(const Candidate& c, int layer, F f) {
+  const glm::dvec2 p1(c.corners[0].x + 0.5, c.corners[0].z + 0.5), p2(c.corners[1].x + 0.5, c.corners[1].z + 0.5);
+  const double length = glm::distance(p1, p2);
+  if (length <= 0.0) return;
+  const glm::dvec2 dir = (p2 - p1) / length, normal(-dir.y, dir.x);
+  const double y_lo = c.corners[2].y + 0.5, y_hi = c.corners[0].y + 0.5;
+  for (double t = 0.5 * kSample; t < length; t += kSample) {
+    const glm::dvec2 p = p1 + t * dir + double(layer) * normal;
+    for (double y = y_lo + 0.5 * kSample; y < y_hi; y += kSample)
+      f(long(std::floor(p.x / kSample)), long(std::floor(y / kSample)), long(std::floor(p.y / kSample)));
   }
-  const std::vector<std::size_t>* near(const glm::dvec3& p) const {
-    const auto it = buckets_.find(key(bucket(p.x), bucket(p.z)));
-    return it == buckets_.end() ? nullptr : &it->second;
-  }
+}
 
- private:
-  static int bucket(double v) { return int(std::floor(v / kBucket)); }
-  static std::uint64_t key(int bx, int bz) { return (std::uint64_t(std::uint32_t(bx)) << 32) | std::uint32_t(bz); }
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> buckets_;
-};
-
-// Keeps in[i] in order unless inside(m, q, p) holds for one of its test points m and a kept q.
-template <class Inside>
-std::vector<std::size_t> reduce_overlaps(const std::vector<Sized>& in, double widen, Inside inside) {
-  std::vector<std::size_t> kept;  // positions in `in`
-  KeptIndex index;                // holds positions in `kept`
-  for (std::size_t i = 0; i < in.size(); ++i) {
-    const Candidate& p = in[i].c;
-    bool overlaps = false;
-    for (const glm::dvec3& m : test_points(p)) {
-      if (const auto* near = index.near(m))
-        overlaps = std::any_of(near->begin(), near->end(), [&](std::size_t k) { return inside(m, in[kept[k]].c, p); });
-      if (overlaps) break;
-    }
-    if (overlaps) continue;
-    glm::dvec2 lo(1e300), hi(-1e300);
-    for (const glm::ivec3& q : p.corners) {
-      lo = glm::min(lo, glm::dvec2(q.x, q.z));
-      hi = glm::max(hi, glm::dvec2(q.x, q.z));
-    }
-    index.insert(kept.size(), lo - widen, hi + widen);
-    kept.push_back(i);
+// Calls f(sx, sz) for each half-voxel sample cell whose centre lies strictly inside the square.
+template <class F>
+void square_samples(const Candidate& c, F f) {
+  std::array<glm::dvec2, 4> v;
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (std::size_t i = 0; i < 4; ++i) {
+    v[i] = glm::dvec2(c.corners[i].x + 0.5, c.corners[i].z + 0.5);
+    lo = glm::min(lo, v[i]);
+    hi = glm::max(hi, v[i]);
   }
-  return kept;
+  // The corners go round the square one way or the other: inside is on one side of every edge.
+  const auto side = [&](std::size_t i, const glm::dvec2& p) {
+    const glm::dvec2 e = v[(i + 1) % 4] - v[i], q = p - v[i];
+    return e.x * q.y - e.y * q.x;
+  };
+  const double sign = side(0, 0.25 * (v[0] + v[1] + v[2] + v[3])) > 0.0 ? 1.0 : -1.0;
+  for (long sz = long(std::floor(lo.y / kSample)); sz <= long(std::floor(hi.y / kSample)); ++sz)
+    for (long sx = long(std::floor(lo.x / kSample)); sx <= long(std::floor(hi.x / kSample)); ++sx) {
+      const glm::dvec2 p((double(sx) + 0.5) * kSample, (double(sz) + 0.5) * kSample);
+      bool inside = true;
+      for (std::size_t i = 0; i < 4 && inside; ++i) inside = sign * side(i, p) > 1e-9;
+      if (inside) f(sx, sz);
+    }
+}
+
+double angle_mod_90(int dx, int dz) {
+  const double a = std::atan2(double(dz), double(dx)) * 180.0 / std::numbers::pi;
+  return std::fmod(std::fmod(a, 90.0) + 90.0, 90.0);
 }
 
 }  // namespace
@@ -94,27 +93,91 @@ std::vector<Sized> deduplicate_centres(const std::array<Candidates, 3>& by_size)
   return out;
 }
 
-std::vector<std::size_t> reduce_wall_overlaps(const std::vector<Sized>& walls, int offset) {
-  const double off = offset;
-  return reduce_overlaps(walls, off, [&](const glm::dvec3& m, const Candidate& q, const Candidate&) {
-    const glm::ivec3 &q1 = q.corners[0], &q2 = q.corners[1], &q3 = q.corners[2];
-    return q3.y <= m.y && m.y < q1.y &&                                            // Eq. 3.45
-           q1.x - off < m.x && m.x < q2.x + off &&                                 // Eq. 3.46
-           std::min(q1.z, q2.z) - off < m.z && m.z < std::max(q1.z, q2.z) + off;  // Eq. 3.47
-  });
+double dominant_direction_deg(const std::vector<Sized>& walls) {
+  std::array<double, 90> weight{};
+  for (const Sized& w : walls) {
+    const glm::ivec3 e = w.c.corners[1] - w.c.corners[0];
+    weight[std::size_t(std::lround(angle_mod_90(e.x, e.z))) % 90] += std::hypot(double(e.x), double(e.z));
+  }
+  std::size_t best = 0;
+  double best_weight = 0.0;
+  for (std::size_t a = 0; a < 90; ++a) {  // smoothed over ±1°
+    const double w = weight[(a + 89) % 90] + weight[a] + weight[(a + 1) % 90];
+    if (w > best_weight) best_weight = w, best = a;
+  }
+  return double(best);
 }
 
-std::vector<std::size_t> reduce_square_overlaps(const std::vector<Sized>& squares, int offset, bool furniture) {
-  return reduce_overlaps(squares, 0.0, [&](const glm::dvec3& m, const Candidate& q, const Candidate& p) {
-    if (furniture && !(q.corners[0].y - offset < p.corners[0].y && p.corners[0].y < q.corners[0].y + offset))
-      return false;  // Eq. 3.49: another furniture level
-    // Eq. 3.50 with A = q1, B = q2, D = q4 (Eq. 3.52), in the X-Z plane where the squares lie.
-    const glm::dvec2 a(q.corners[0].x, q.corners[0].z), b(q.corners[1].x, q.corners[1].z),
-        d(q.corners[3].x, q.corners[3].z), am(m.x - a.x, m.z - a.y);
-    const glm::dvec2 ab = b - a, ad = d - a;
-    const double u = glm::dot(am, ab), v = glm::dot(am, ad);
-    return 0.0 < u && u < glm::dot(ab, ab) && 0.0 < v && v < glm::dot(ad, ad);
-  });
+double misalignment_deg(const Candidate& square, double dominant_deg) {
+  const glm::ivec3 e = square.corners[1] - square.corners[0];
+  const double d = std::fabs(angle_mod_90(e.x, e.z) - dominant_deg);
+  return std::min(d, 90.0 - d);
+}
+
+std::vector<std::size_t> pack_walls(const std::vector<Sized>& walls) {
+  std::unordered_set<std::uint64_t> taken;
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    bool free = true;
+    wall_samples(walls[i].c, 0, [&](long x, long y, long z) { free = free && !taken.contains(sample_key(x, y, z)); });
+    if (!free) continue;
+    // Marked a voxel thick either side: a rectangle one voxel in front of another on a wall off the axes
+    // (the staircase of its voxels) covers the same wall.
+    for (int layer = -1; layer <= 1; ++layer)
+      wall_samples(walls[i].c, layer, [&](long x, long y, long z) { taken.insert(sample_key(x, y, z)); });
+    kept.push_back(i);
+  }
+  return kept;
+}
+
+std::vector<std::size_t> pack_squares(const std::vector<Sized>& squares, int level_tolerance, double dominant_deg,
+                                      const std::function<bool(int x, int z, int level)>& is_tile) {
+  // Contact: unusable cells just outside the square's edges, sampled every half voxel.
+  const auto contact = [&](const Candidate& c) {
+    int n = 0;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const glm::dvec2 a(c.corners[i].x + 0.5, c.corners[i].z + 0.5);
+      const glm::dvec2 b(c.corners[(i + 1) % 4].x + 0.5, c.corners[(i + 1) % 4].z + 0.5);
+      const double length = glm::distance(a, b);
+      if (length <= 0.0) continue;
+      const glm::dvec2 dir = (b - a) / length;
+      glm::dvec2 out(-dir.y, dir.x);
+      glm::dvec2 mid(0.0);
+      for (const glm::ivec3& k : c.corners) mid += glm::dvec2(k.x + 0.5, k.z + 0.5) * 0.25;
+      if (glm::dot(out, 0.5 * (a + b) - mid) < 0.0) out = -out;
+      for (double t = 0.0; t <= length; t += kSample) {
+        const glm::dvec2 p = a + t * dir + 0.75 * out;
+        n += is_tile(int(std::floor(p.x)), int(std::floor(p.y)), c.corners[0].y) ? 0 : 1;
+      }
+    }
+    return n;
+  };
+  // Within a size, aligned with the room first (in steps of 5°), then by contact, then in search order.
+  std::vector<std::size_t> order(squares.size());
+  std::vector<int> contacts(squares.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i, contacts[i] = contact(squares[i].c);
+  const auto rank = [&](std::size_t i) {
+    return std::tuple(int(squares[i].size), int(std::lround(misalignment_deg(squares[i].c, dominant_deg) / 5.0)),
+                      -contacts[i]);
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
+  std::unordered_map<int, std::unordered_set<std::uint64_t>> taken;  // per level
+  std::vector<std::size_t> kept;
+  for (const std::size_t i : order) {
+    const int level = squares[i].c.corners[0].y;
+    bool free = true;
+    for (int y = level - level_tolerance; y <= level + level_tolerance && free; ++y) {
+      const auto it = taken.find(y);
+      if (it != taken.end())
+        square_samples(squares[i].c, [&](long x, long z) { free = free && !it->second.contains(sample_key(x, 0, z)); });
+    }
+    if (!free) continue;
+    auto& here = taken[level];
+    square_samples(squares[i].c, [&](long x, long z) { here.insert(sample_key(x, 0, z)); });
+    kept.push_back(i);
+  }
+  std::sort(kept.begin(), kept.end());  // the output keeps the search's order
+  return kept;
 }
 
 }  // namespace roomsense::detail

@@ -1,7 +1,9 @@
-// Result reduction of §3.4: centre deduplication (Eq. 3.42-3.44), then overlap reduction for walls
-// (Eq. 3.45-3.48) and for horizontal surfaces (Eq. 3.49-3.53).
+// Result reduction of §3.4: centre deduplication (Eq. 3.42-3.44), then, beyond the thesis, packing in place
+// of its overlap reduction (Eq. 3.45-3.53).
 #pragma once
 #include "candidate.h"
+
+#include <functional>
 
 namespace roomsense::detail {
 
@@ -14,12 +16,24 @@ struct Sized {
 // already marked by a kept one.
 std::vector<Sized> deduplicate_centres(const std::array<Candidates, 3>& by_size);
 
-// Eq. 3.45-3.47 on V_Wall in order: kept unless a test point lies in the box of a kept rectangle, widened by
-// `offset` voxels in X and Z. Returns the indices kept.
-std::vector<std::size_t> reduce_wall_overlaps(const std::vector<Sized>& walls, int offset);
+// The room's main direction, in degrees in [0, 90): the length-weighted mode of the wall rectangles' top edges
+// modulo 90°. 0 without walls.
+double dominant_direction_deg(const std::vector<Sized>& walls);
 
-// Eq. 3.50-3.52 on V_Floor, V_Ceiling or V_Furniture in order: kept unless a test point lies strictly inside a
-// kept square; for furniture only squares within `offset` levels count (Eq. 3.49). Returns the indices kept.
-std::vector<std::size_t> reduce_square_overlaps(const std::vector<Sized>& squares, int offset, bool furniture);
+// The angle between a square's first edge and the main direction, modulo 90°: in [0, 45].
+double misalignment_deg(const Candidate& square, double dominant_deg);
+
+// Packing, beyond the thesis (issue 14). Eq. 3.45-3.53 keep a rectangle unless one of its corners or edge
+// midpoints lies in a kept one (walls widened by 2 voxels), which both leaves gaps (the widening, strips no
+// test point reaches) and lets rotated squares overlap. Here a rectangle is kept unless it shares any of its
+// surface (sampled on a half-voxel raster) with a kept one, in order: large, medium, small, and within a size
+// squares aligned with the room's main direction first, so that large areas tile the free surface and
+// smaller ones fill what they leave. Returns the indices kept.
+std::vector<std::size_t> pack_walls(const std::vector<Sized>& walls);
+// Within a size and alignment, squares pressed against more unusable cells (`is_tile` false: walls,
+// clutter, the edge of a top) go first, leaving the free surface in one piece for the next ones. For
+// furniture, squares more than `level_tolerance` levels apart never conflict (Eq. 3.49).
+std::vector<std::size_t> pack_squares(const std::vector<Sized>& squares, int level_tolerance, double dominant_deg,
+                                      const std::function<bool(int x, int z, int level)>& is_tile);
 
 }  // namespace roomsense::detail

@@ -12,7 +12,9 @@ namespace roomsense::detail {
 struct NormalCounts {
   int y0 = 0, levels = 0;             // covers y in [y0, y0 + levels)
   std::vector<std::uint16_t> prefix;  // column * (levels + 1) + (y - y0 + 1)
+  std::vector<std::uint16_t> blocked_prefix;  // the same for RoomFeatures::wall_blocked; empty when none is
   int count(std::size_t column, int y_from, int y_to) const;  // voxels with a normal in [y_from, y_to]
+  bool blocked(std::size_t column, int y_from, int y_to) const;  // any blocked voxel in [y_from, y_to]
 };
 NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features);
 
@@ -24,8 +26,10 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
 enum class Surface { Floor, Ceiling, Furniture };
 
 // Alg. 3 (Eq. 3.28-3.39) on free floor D (Surface::Floor) or free ceiling E (Surface::Ceiling), and its
-// furniture variant (§3.3.4, Eq. 3.40/3.41) on every level of C. Same first-per-centre rule as above.
+// furniture variant (§3.3.4, Eq. 3.40/3.41) on every level of C. Same first-per-centre rule as above, trying
+// the orientations nearest the room's main direction (`dominant_deg`, see reduce.h) first.
 Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Surface surface,
-                          const SizeRange& size, float fill, const std::stop_token& stop = {});
+                          const SizeRange& size, float fill, double dominant_deg = 0.0,
+                          const std::stop_token& stop = {});
 
 }  // namespace roomsense::detail

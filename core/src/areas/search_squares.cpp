@@ -50,12 +50,17 @@ class CentreSet {
 }  // namespace
 
 Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Surface surface,
-                          const SizeRange& size, float fill, const std::stop_token& stop) {
-  // The orientations, split by the parity of dx - dz (= that of dx + dz), most nearly axis-aligned first.
+                          const SizeRange& size, float fill, double dominant_deg, const std::stop_token& stop) {
+  // The orientations, split by the parity of dx - dz (= that of dx + dz), most nearly aligned with the room
+  // first (with the grid's axes in a room without walls).
   std::vector<RingOffset> ring = ring_offsets(size, Shape::Square);
-  std::stable_sort(ring.begin(), ring.end(), [](const RingOffset& a, const RingOffset& b) {
-    return std::abs(std::atan2(double(a.dz), double(a.dx))) < std::abs(std::atan2(double(b.dz), double(b.dx)));
-  });
+  const auto misalignment = [&](const RingOffset& o) {
+    const double a = std::fmod(std::atan2(double(o.dz), double(o.dx)) * 180.0 / std::numbers::pi + 360.0, 90.0);
+    const double d = std::fabs(a - dominant_deg);
+    return std::min(d, 90.0 - d);
+  };
+  std::stable_sort(ring.begin(), ring.end(),
+                   [&](const RingOffset& a, const RingOffset& b) { return misalignment(a) < misalignment(b); });
   std::array<std::vector<RingOffset>, 2> by_parity;
   for (RingOffset& o : ring) by_parity[std::size_t((o.dx - o.dz) & 1)].push_back(std::move(o));
   const FloorCeiling& levels = features.levels;

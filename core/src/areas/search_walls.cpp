@@ -26,6 +26,12 @@ int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
   return int(prefix[base + std::size_t(y_to - y0 + 1)]) - int(prefix[base + std::size_t(y_from - y0)]);
 }
 
+bool NormalCounts::blocked(std::size_t column, int y_from, int y_to) const {
+  if (blocked_prefix.empty()) return false;
+  const std::size_t base = column * std::size_t(levels + 1);
+  return blocked_prefix[base + std::size_t(y_to - y0 + 1)] != blocked_prefix[base + std::size_t(y_from - y0)];
+}
+
 NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   NormalCounts n;
   n.y0 = features.levels.floor;
@@ -33,12 +39,16 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   n.levels = std::min({features.levels.ceiling - n.y0 + 1, spec.ny - n.y0,
                        int(std::numeric_limits<std::uint16_t>::max())});
   const std::size_t stride = std::size_t(n.levels + 1);
-  n.prefix.assign(spec.column_count() * stride, 0);
-  for (std::size_t col = 0; col < spec.column_count(); ++col) {
-    const std::uint8_t* f = features.normals.data() + col * std::size_t(spec.ny) + n.y0;
-    std::uint16_t* p = n.prefix.data() + col * stride;
-    for (int i = 0; i < n.levels; ++i) p[i + 1] = std::uint16_t(p[i] + (f[i] != 0 ? 1 : 0));
-  }
+  const auto prefix_of = [&](const std::vector<std::uint8_t>& per_voxel, std::vector<std::uint16_t>& prefix) {
+    prefix.assign(spec.column_count() * stride, 0);
+    for (std::size_t col = 0; col < spec.column_count(); ++col) {
+      const std::uint8_t* f = per_voxel.data() + col * std::size_t(spec.ny) + n.y0;
+      std::uint16_t* p = prefix.data() + col * stride;
+      for (int i = 0; i < n.levels; ++i) p[i + 1] = std::uint16_t(p[i] + (f[i] != 0 ? 1 : 0));
+    }
+  };
+  prefix_of(features.normals, n.prefix);
+  if (!features.wall_blocked.empty()) prefix_of(features.wall_blocked, n.blocked_prefix);
   return n;
 }
 
@@ -52,7 +62,8 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
   const auto& walls = features.walls;
 
   // Eq. 3.25's test for one rectangle: no wall column among the cells the top segment touches, and enough
-  // voxels with a normal in the rows [y1 - h, y1]. Gives up once too many voxels lack one.
+  // voxels with a normal in the rows [y1 - h, y1]. Gives up once too many voxels lack one. Beyond the thesis:
+  // no voxel before an opening (RoomFeatures::wall_blocked).
   const auto valid = [&](int x1, int z1, const RingOffset& o, int y_top, int h) {
     const int y_bottom = std::max(y_top - h, floor);
     const long rows = y_top - y_bottom + 1;
@@ -67,7 +78,7 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
           continue;
         }
         const std::size_t col = spec.column(x, z);
-        if (walls[col]) return false;
+        if (walls[col] || normals.blocked(col, y_bottom, y_top)) return false;
         missing += rows - normals.count(col, y_bottom, y_top);
       }
       if (double(missing) > may_miss) return false;

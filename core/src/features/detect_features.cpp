@@ -2,41 +2,87 @@
 #include "roomsense/features.h"
 #include "roomsense/cancel.h"
 
+#include <algorithm>
 #include <future>
 
 namespace roomsense {
+namespace {
+
+// Columns outside B with B columns on all four sides along the axes: a patch the scan missed inside the room,
+// not the space between the room and the grid's edge.
+std::vector<std::uint8_t> enclosed_holes(const GridSpec& s, const std::vector<std::uint8_t>& room) {
+  std::vector<std::uint8_t> sides(room.size(), 0);  // bit per side with a B column on it
+  for (int z = 0; z < s.nz; ++z) {
+    bool seen = false;
+    for (int x = 0; x < s.nx; ++x) sides[s.column(x, z)] |= seen ? 1 : 0, seen = seen || room[s.column(x, z)];
+    seen = false;
+    for (int x = s.nx - 1; x >= 0; --x) sides[s.column(x, z)] |= seen ? 2 : 0, seen = seen || room[s.column(x, z)];
+  }
+  for (int x = 0; x < s.nx; ++x) {
+    bool seen = false;
+    for (int z = 0; z < s.nz; ++z) sides[s.column(x, z)] |= seen ? 4 : 0, seen = seen || room[s.column(x, z)];
+    seen = false;
+    for (int z = s.nz - 1; z >= 0; --z) sides[s.column(x, z)] |= seen ? 8 : 0, seen = seen || room[s.column(x, z)];
+  }
+  for (std::size_t c = 0; c < sides.size(); ++c) sides[c] = !room[c] && sides[c] == 15;
+  return sides;
+}
+
+}  // namespace
 
 RoomFeatures detect_features(const VoxelStageResult& voxels, const FeatureParams& params, unsigned threads,
-                             const std::stop_token& stop) {
+                             const std::stop_token& stop, const LabelGrid& labels) {
   const VoxelGrid& grid = voxels.grid;
   const float s = grid.spec.voxel_size;
   RoomFeatures f;
   f.levels = voxels.levels.value();
   f.y_end = f.levels.floor + voxels_for(params.furniture_top, s);
   f.walls = detect_walls(grid.spec, voxels.column_counts, f.levels, params.wall_fill);
+  drop_free_standing(grid, f.levels, voxels_for(params.wall_top_gap, s), f.walls);
   f.room = detect_room(grid.spec, voxels.column_any);
+  // B counts voxels from I_Floor up; a floor that spans two levels (select_floor_ceiling) has part of its scan
+  // in the level below, and those columns are room too.
+  for (std::size_t c = 0; c < f.room.size(); ++c) {
+    const std::uint8_t* v = grid.cells.data() + c * std::size_t(grid.spec.ny);
+    if (!f.room[c]) f.room[c] = std::any_of(v + f.levels.floor_peak, v + f.levels.floor, [](std::uint8_t x) { return x != 0; });
+  }
+  const int max_opening = voxels_for(params.max_opening, s);
+  f.enclosed = detect_enclosed(grid.spec, f.walls, f.room, max_opening);
+  // Areas stay inside: the later steps see the room mask B cut to the inside (bounds keep B itself). Where
+  // the walls close, B also gains what they enclose and the scan missed (a floor and ceiling not seen).
+  std::vector<std::uint8_t> inside = f.room;
+  if (std::find(f.enclosed.begin(), f.enclosed.end(), 0) != f.enclosed.end()) {
+    const std::vector<std::uint8_t> holes = enclosed_holes(grid.spec, f.room);
+    for (std::size_t c = 0; c < inside.size(); ++c) inside[c] = (f.room[c] || holes[c]) && f.enclosed[c];
+  }
   stop_point(stop);
 
   const int furniture_clear = voxels_for(params.furniture_clear, s);
   const int ceiling_clear = voxels_for(params.ceiling_clear, s);
+  const int rough = voxels_for(params.floor_roughness, s);
   if (threads == 1) {
-    f.furniture = detect_furniture(grid, f.levels, f.y_end, f.walls, furniture_clear);
-    f.free_floor = detect_free_floor(grid, f.levels, f.y_end, f.walls, f.room);
-    f.free_ceiling = detect_free_ceiling(grid, f.levels, ceiling_clear, f.walls, f.room);
+    f.furniture = detect_furniture(grid, f.levels, f.y_end, f.walls, furniture_clear, rough);
+    f.free_floor = detect_free_floor(grid, f.levels, f.y_end, f.walls, inside, rough);
+    f.free_ceiling = detect_free_ceiling(grid, f.levels, ceiling_clear, f.walls, inside);
   } else {
     auto furniture = std::async(std::launch::async, [&] {
-      return detect_furniture(grid, f.levels, f.y_end, f.walls, furniture_clear);
+      return detect_furniture(grid, f.levels, f.y_end, f.walls, furniture_clear, rough);
     });
     auto ceiling = std::async(std::launch::async, [&] {
-      return detect_free_ceiling(grid, f.levels, ceiling_clear, f.walls, f.room);
+      return detect_free_ceiling(grid, f.levels, ceiling_clear, f.walls, inside);
     });
-    f.free_floor = detect_free_floor(grid, f.levels, f.y_end, f.walls, f.room);
+    f.free_floor = detect_free_floor(grid, f.levels, f.y_end, f.walls, inside, rough);
     f.furniture = furniture.get();
     f.free_ceiling = ceiling.get();
   }
+  for (std::size_t c = 0; c < inside.size(); ++c)
+    if (!inside[c]) f.furniture[c] = kNoFurniture;
+  apply_furniture_labels(grid.spec, f.levels, labels, f.free_floor, f.furniture);
   stop_point(stop);
-  f.normals = detect_wall_normals(grid, f.levels, voxels_for(params.wall_normal_reach, s), f.walls, f.room,
+  f.normals = detect_wall_normals(grid, f.levels, voxels_for(params.wall_normal_reach, s), f.walls, inside,
                                   f.furniture);
+  f.wall_blocked = detect_wall_openings(grid, f.levels, f.walls, inside, voxels_for(params.wall_recess, s),
+                                        max_opening, labels);
   return f;
 }
 

@@ -25,8 +25,9 @@ std::vector<std::uint8_t> clear_columns(const VoxelGrid& grid, int from, int to,
 
 std::vector<std::uint8_t> detect_free_floor(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
                                             const std::vector<std::uint8_t>& walls,
-                                            const std::vector<std::uint8_t>& room) {
-  return clear_columns(grid, levels.floor + 1, y_end, walls, room);
+                                            const std::vector<std::uint8_t>& room, int rough_levels) {
+  // Beyond the thesis: voxels within the floor's roughness above I_Floor are floor (a rug, a sloping scan).
+  return clear_columns(grid, levels.floor + 1 + rough_levels, y_end, walls, room);
 }
 
 std::vector<std::uint8_t> detect_free_ceiling(const VoxelGrid& grid, const FloorCeiling& levels, int clear_levels,

@@ -1,6 +1,7 @@
 // Wall columns A (Eq. 3.11) and the room mask B (Eq. 3.12).
 #include "roomsense/features.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace roomsense {
@@ -29,6 +30,33 @@ std::vector<std::uint8_t> detect_room(const GridSpec& spec, const std::vector<st
       if (!column_any[spec.column(x, z)] && any(x + 1, z) + any(x - 1, z) + any(x, z + 1) + any(x, z - 1) >= 3)
         room[spec.column(x, z)] = 1;
   return room;
+}
+
+void drop_free_standing(const VoxelGrid& grid, const FloorCeiling& levels, int gap_levels,
+                        std::vector<std::uint8_t>& walls) {
+  // Beyond the thesis (issue 14): Eq. 3.11 makes any column fuller than half the room a wall, so a cabinet, a
+  // screen or a shelf taller than that reads as wall and gets wall areas on its side. Walls reach the ceiling;
+  // where a scan barely reaches it, most walls end at the same lower height, which then serves instead.
+  const GridSpec& s = grid.spec;
+  std::vector<int> top(walls.size(), -1);
+  std::vector<int> tops;
+  for (std::size_t col = 0; col < walls.size(); ++col) {
+    if (!walls[col]) continue;
+    const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
+    for (int y = std::min(levels.ceiling - 1, s.ny - 1); y >= levels.floor; --y)
+      if (v[y]) {
+        top[col] = y;
+        break;
+      }
+    tops.push_back(top[col]);
+  }
+  if (tops.empty()) return;
+  // The height most walls reach: the upper quartile of the wall columns' tops.
+  const auto quartile = tops.begin() + std::ptrdiff_t(3 * (tops.size() - 1) / 4);
+  std::nth_element(tops.begin(), quartile, tops.end());
+  const int reference = std::min(*quartile, levels.ceiling - 1);
+  for (std::size_t col = 0; col < walls.size(); ++col)
+    if (walls[col] && top[col] < reference - gap_levels) walls[col] = 0;
 }
 
 }  // namespace roomsense

@@ -24,7 +24,7 @@ void convert_to_roomsense_frame(Scan& scan, const SourceFrame& frame) {
   // Each mapping sends the source's up axis to +Y. A left-handed source is mirrored (determinant -1) and
   // keeps its triangle order: a mirror turns the clockwise front faces of Unity and Unreal into the
   // counter-clockwise front faces of OpenXR, so indices stay as they are.
-  for (glm::vec3& v : scan.vertices) {
+  const auto convert = [&](glm::vec3& v) {
     const glm::vec3 p = v * scale;
     if (frame.up == UpAxis::Y)
       v = frame.left_handed ? glm::vec3(p.x, p.y, -p.z)   // Unity: forward +Z becomes OpenXR's -Z
@@ -32,7 +32,17 @@ void convert_to_roomsense_frame(Scan& scan, const SourceFrame& frame) {
     else
       v = frame.left_handed ? glm::vec3(p.y, p.z, -p.x)   // Unreal, Eq. 3.2 then Unity -> OpenXR
                             : glm::vec3(p.x, p.z, -p.y);  // right-handed Z-up (Blender, most scanners)
-  }
+  };
+  for (glm::vec3& v : scan.vertices) convert(v);
+  for (glm::vec3& v : scan.labels.vertices) convert(v);
+}
+
+void LabelledTriangles::add(const std::vector<glm::vec3>& mesh_vertices, const std::vector<std::uint32_t>& mesh_indices,
+                            SurfaceLabel label) {
+  const auto base = static_cast<std::uint32_t>(vertices.size());
+  vertices.insert(vertices.end(), mesh_vertices.begin(), mesh_vertices.end());
+  for (const std::uint32_t i : mesh_indices) indices.push_back(base + i);
+  labels.insert(labels.end(), mesh_indices.size() / 3, label);
 }
 
 }  // namespace roomsense

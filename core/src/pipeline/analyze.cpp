@@ -84,7 +84,8 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
     const Storey storey{height(other.floor_peak, other.floor), height(other.ceiling, other.ceiling_peak)};
     if (storey.ceiling_y - storey.floor_y >= min_height) r.storeys.push_back(storey);
   }
-  r.features = detect_features(r.voxels, options.features, options.threads, options.stop);
+  const LabelGrid labels = voxelize_labels(spec, scan.labels, options.voxel_test_budget, r.warnings);
+  r.features = detect_features(r.voxels, options.features, options.threads, options.stop, labels);
   r.status_message = "ok";
   r.timings.features = clock.lap();
   stop_point(options.stop);

@@ -65,6 +65,12 @@ OrientedRect plane_rect(const QuestPlane& plane);
 // The face of the box whose outward normal points most nearly up: the surface one could put things on.
 OrientedRect volume_top_rect(const QuestVolume& volume);
 
+// A Meta semantic label (FLOOR, WALL_FACE, TABLE, WINDOW_FRAME, ...) in our enum; Unknown for labels that say
+// nothing about a surface (GLOBAL_MESH, INVISIBLE_WALL_FACE) and for names of later revisions.
+SurfaceLabel surface_label_of_meta(std::string_view label);
+// The capture's planes (their rectangles) and volumes (their boxes) as labelled triangles, for Scan::labels.
+LabelledTriangles scene_labels(const QuestCapture& capture);
+
 // Throws Error(ErrorCode::Io) with one clear line on anything malformed: bad JSON, wrong types, truncated or
 // invalid base64, sizes that are not whole vertices/triangles, indices out of range, no mesh at all.
 QuestCapture parse_quest_capture(std::string_view json_text, const std::string& source_name);

@@ -1,0 +1,86 @@
+// The room's inside (RoomFeatures::enclosed): beyond the thesis, a real scan holds what the headset saw through
+// doors and windows (a corridor, the next room), and areas there are not in the room the user stands in.
+#include "roomsense/features.h"
+
+#include <algorithm>
+#include <deque>
+
+namespace roomsense {
+namespace {
+
+// Columns within `r` (Chebyshev distance) of a marked column: a separable running maximum.
+std::vector<std::uint8_t> dilate(const GridSpec& s, const std::vector<std::uint8_t>& mask, int r) {
+  std::vector<std::uint8_t> along_x(mask.size(), 0), out(mask.size(), 0);
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x)
+      if (mask[s.column(x, z)])
+        for (int i = std::max(0, x - r); i <= std::min(s.nx - 1, x + r); ++i) along_x[s.column(i, z)] = 1;
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x)
+      if (along_x[s.column(x, z)])
+        for (int j = std::max(0, z - r); j <= std::min(s.nz - 1, z + r); ++j) out[s.column(x, j)] = 1;
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> detect_enclosed(const GridSpec& s, const std::vector<std::uint8_t>& walls,
+                                          const std::vector<std::uint8_t>& room, int max_opening_voxels) {
+  const std::vector<std::uint8_t> all(s.column_count(), 1);
+  const int r = (max_opening_voxels + 1) / 2;  // walls grown by r on both sides close a gap of 2r
+  if (r <= 0) return all;
+  const std::vector<std::uint8_t> closed = dilate(s, walls, r);
+  // Outside: reachable from the grid's edge, 4-connected (a diagonal step between two wall columns is no way
+  // through), first around the closed walls, then up to r further around the walls themselves: back out to the
+  // openings, and r into them.
+  std::vector<int> steps(s.column_count(), -1);
+  std::deque<std::pair<int, int>> queue;
+  const auto reach = [&](int x, int z, bool seed) {
+    const std::size_t c = s.column(x, z);
+    if (steps[c] >= 0 || walls[c] || (!seed && closed[c])) return;
+    steps[c] = 0;
+    queue.emplace_back(x, z);
+  };
+  // Every column on the grid's edge but walls is outside, closed or not: a pocket between a slanted wall and
+  // the edge is outside too.
+  for (int x = 0; x < s.nx; ++x) reach(x, 0, true), reach(x, s.nz - 1, true);
+  for (int z = 0; z < s.nz; ++z) reach(0, z, true), reach(s.nx - 1, z, true);
+  for (int pass = 0; pass < 2; ++pass) {
+    // Pass 0 floods the outside of the closed walls; pass 1 grows it by r steps past them.
+    if (pass == 1)
+      for (int z = 0; z < s.nz; ++z)
+        for (int x = 0; x < s.nx; ++x)
+          if (steps[s.column(x, z)] == 0) queue.emplace_back(x, z);
+    while (!queue.empty()) {
+      const auto [x, z] = queue.front();
+      queue.pop_front();
+      const int step = steps[s.column(x, z)];
+      if (pass == 1 && step >= r) continue;
+      const int next = step + 1;
+      if (pass == 0) {
+        for (const auto& [dx, dz] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}})
+          if (x + dx >= 0 && z + dz >= 0 && x + dx < s.nx && z + dz < s.nz) reach(x + dx, z + dz, false);
+      } else {
+        for (const auto& [dx, dz] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+          const int nx = x + dx, nz = z + dz;
+          if (nx < 0 || nz < 0 || nx >= s.nx || nz >= s.nz) continue;
+          const std::size_t c = s.column(nx, nz);
+          if (steps[c] >= 0 || walls[c]) continue;
+          steps[c] = next;
+          queue.emplace_back(nx, nz);
+        }
+      }
+    }
+  }
+  std::vector<std::uint8_t> enclosed(s.column_count(), 0);
+  std::size_t room_columns = 0, inside = 0;
+  for (std::size_t c = 0; c < enclosed.size(); ++c) {
+    enclosed[c] = steps[c] < 0 ? 1 : 0;
+    room_columns += room[c] && !walls[c];
+    inside += room[c] && !walls[c] && enclosed[c];
+  }
+  // Walls that do not close (a scan with a wall missing) leave little inside: then nothing is outside.
+  return 2 * inside < room_columns ? all : enclosed;
+}
+
+}  // namespace roomsense

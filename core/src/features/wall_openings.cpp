@@ -1,0 +1,91 @@
+// Where a wall is open (RoomFeatures::wall_blocked): beyond the thesis, whose Eq. 3.25 lets a fifth of a wall
+// rectangle lack wall voxels, so a rectangle may hang half over a window or a door. A person accepts no wall
+// area over an opening, so the voxels before one block wall areas outright:
+// - before a wall column whose surface is missing at that height, or lies deeper than a recess (a window, a
+//   hole in the wall);
+// - before a gap in a line of wall columns that is open down to the floor (a door), up to max_opening wide;
+// - with the runtime's labels: before a surface labelled a window or door frame or a screen (wall art), and,
+//   when the runtime labels walls, before any surface not labelled a wall.
+#include "roomsense/features.h"
+
+#include <algorithm>
+
+namespace roomsense {
+namespace {
+
+struct Step {
+  int dx, dz;
+};
+constexpr Step kSteps[] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+
+}  // namespace
+
+std::vector<std::uint8_t> detect_wall_openings(const VoxelGrid& grid, const FloorCeiling& levels,
+                                               const std::vector<std::uint8_t>& walls,
+                                               const std::vector<std::uint8_t>& room, int recess_voxels,
+                                               int max_opening_voxels, const LabelGrid& labels) {
+  const GridSpec& s = grid.spec;
+  // The wall's face may lie one voxel further back than its column (a wall a little off vertical or off the
+  // axes crosses voxel boundaries), plus the recess.
+  const int depth = 1 + std::max(0, recess_voxels);
+  const bool labelled_walls = labels.has_any(label_bit(SurfaceLabel::Wall));
+  const bool labelled_openings = labels.has_any(kWallOpeningLabels);
+  const int y_from = std::max(levels.floor + 1, 0), y_to = std::min(levels.ceiling - 1, s.ny - 1);
+  const auto inside = [&](int x, int z) { return x >= 0 && z >= 0 && x < s.nx && z < s.nz; };
+  const auto is_wall = [&](int x, int z) { return inside(x, z) && walls[s.column(x, z)] != 0; };
+  // Labels within a voxel of (x, y, z) across the wall's face (the labels' planes are off the scan by a few cm).
+  const auto labels_near = [&](int x, int y, int z, Step along) {
+    LabelMask m = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int i = -1; i <= 1; ++i) m = LabelMask(m | labels.at(s, x + i * along.dx, y + dy, z + i * along.dz));
+    return m;
+  };
+  // A door: column (x, z) lies in a gap of at most max_opening between wall columns along `along`, and is
+  // open down to the floor (no voxel in the lower half of the room).
+  const int low_top = std::min(y_to, levels.floor + std::max(1, (levels.ceiling - levels.floor) / 2));
+  const auto door_gap = [&](int x, int z, Step along) {
+    if (!inside(x, z) || walls[s.column(x, z)]) return false;
+    const std::uint8_t* v = grid.column_data(x, z);
+    if (std::any_of(v + y_from, v + low_top + 1, [](std::uint8_t c) { return c != 0; })) return false;
+    int a = 1, b = 1;
+    while (a <= max_opening_voxels && inside(x - a * along.dx, z - a * along.dz) && !is_wall(x - a * along.dx, z - a * along.dz)) ++a;
+    while (b <= max_opening_voxels && inside(x + b * along.dx, z + b * along.dz) && !is_wall(x + b * along.dx, z + b * along.dz)) ++b;
+    return is_wall(x - a * along.dx, z - a * along.dz) && is_wall(x + b * along.dx, z + b * along.dz) &&
+           a + b - 1 <= max_opening_voxels;
+  };
+
+  std::vector<std::uint8_t> blocked(s.voxel_count(), 0);
+  bool any = false;
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) {
+      const std::size_t c = s.column(x, z);
+      if (walls[c] || !room[c]) continue;
+      for (const Step& d : kSteps) {
+        // The wall, if any, lies behind (x, z) at (x, z) - d; its face runs along `along`.
+        const int bx = x - d.dx, bz = z - d.dz;
+        if (!inside(bx, bz)) continue;
+        const Step along{d.dz, d.dx};
+        if (is_wall(bx, bz)) {
+          for (int y = y_from; y <= y_to; ++y) {
+            bool open = true;
+            for (int k = 1; k <= depth && open; ++k)
+              open = !(inside(x - k * d.dx, z - k * d.dz) && grid.at(x - k * d.dx, y, z - k * d.dz));
+            if (!open && !labels.empty()) {
+              LabelMask m = labels_near(x, y, z, along);
+              for (int k = 1; k <= depth + 1; ++k) m = LabelMask(m | labels_near(x - k * d.dx, y, z - k * d.dz, along));
+              open = (labelled_openings && (m & kWallOpeningLabels)) ||
+                     (labelled_walls && !(m & label_bit(SurfaceLabel::Wall)));
+            }
+            if (open) blocked[s.index(x, y, z)] = 1, any = true;
+          }
+        } else if (door_gap(bx, bz, along)) {
+          for (int y = y_from; y <= y_to; ++y) blocked[s.index(x, y, z)] = 1;
+          any = true;
+        }
+      }
+    }
+  if (!any) blocked.clear();
+  return blocked;
+}
+
+}  // namespace roomsense

@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 #include <random>
 #include <thread>
 
@@ -179,6 +181,52 @@ TEST(MinimumHeight, ARoomOfOnePointSixMetresIsARoom) {
   const AnalysisResult r = analyze(synth::generate(low));
   ASSERT_TRUE(r.ok()) << r.status_message;
   EXPECT_NEAR(r.ceiling_y - r.floor_y, 1.6f, 0.11f);
+}
+
+}  // namespace
+}  // namespace roomsense
+
+namespace roomsense {
+namespace {
+
+// The runtime's labels are hints: labels that cannot be used are dropped with a warning, and the room is the one
+// the bare scan gives. None may fail or crash an analysis.
+TEST(BadLabels, AreDroppedWithAWarningAndChangeNothing) {
+  const Scan bare = synth::generate(synth::default_room());
+  const AnalysisResult want = analyze(bare);
+  ASSERT_TRUE(want.ok());
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  const std::vector<std::pair<const char*, LabelledTriangles>> cases = {
+      {"a count that does not match", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}, {}}},
+      {"too many labels", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}, {SurfaceLabel::Wall, SurfaceLabel::Wall}}},
+      {"an index out of range", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 7}, {SurfaceLabel::WindowFrame}}},
+      {"NaN and Inf corners", {{{nan, 0, 0}, {inf, 0, 0}, {0, -inf, 0}}, {0, 1, 2}, {SurfaceLabel::WindowFrame}}},
+      {"a label beyond the enum", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2}, {SurfaceLabel(200)}}},
+      {"far outside the grid", {{{1e6f, 0, 0}, {1e6f + 1, 0, 0}, {1e6f, 1, 0}}, {0, 1, 2}, {SurfaceLabel::Table}}},
+  };
+  for (const auto& [what, labels] : cases) {
+    SCOPED_TRACE(what);
+    Scan scan = bare;
+    scan.labels = labels;
+    const AnalysisResult got = analyze(scan);
+    ASSERT_TRUE(got.ok());
+    EXPECT_EQ(got.areas.size(), want.areas.size());
+    for (std::size_t i = 0; i < std::min(got.areas.size(), want.areas.size()); ++i)
+      EXPECT_EQ(got.areas[i].corners, want.areas[i].corners);
+  }
+}
+
+TEST(BadLabels, MoreWorkThanTheBudgetDropsThemWithAWarning) {
+  Scan scan = synth::generate(synth::default_room());
+  // Room-sized labelled triangles, many of them: far past a small test budget.
+  for (int i = 0; i < 1000; ++i)
+    scan.labels.add({{-3, 0, -3}, {3, 0, -3}, {0, 3, 3}}, {0, 1, 2}, SurfaceLabel::Wall);
+  AnalysisOptions options;
+  options.voxel_test_budget = 1u << 20;
+  const AnalysisResult r = analyze(scan, options);
+  ASSERT_TRUE(r.ok());
+  EXPECT_TRUE(std::any_of(r.warnings.begin(), r.warnings.end(),
+                          [](const std::string& w) { return w.find("runtime labels ignored") != std::string::npos; }));
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "roomsense/xr/ext/XR_EXT_spatial_plane_tracking.h"
 
 #include <openxr/XR_EXTX_room_understanding.h>
+#include "roomsense/xr/spatial_component_lists.h"
 
 #include "layer_harness.h"
 
@@ -133,17 +134,8 @@ struct SnapshotSteps : AsyncSteps {
 };
 
 // One query's results: ids and states, and one list per component the query named (empty otherwise).
-struct SpatialQuery {
+struct SpatialQuery : roomsense::xr::SpatialComponentData {
   XrResult result = XR_RESULT_MAX_ENUM;
-  std::vector<XrSpatialEntityIdEXT> ids;
-  std::vector<XrSpatialEntityTrackingStateEXT> states;
-  std::vector<XrSpatialBounded2DDataEXT> bounds;
-  std::vector<XrSpatialPlaneAlignmentEXT> alignments;
-  std::vector<XrSpatialPlaneSemanticLabelEXT> labels;
-  std::vector<XrSpatialPolygon2DDataEXT> polygons;
-  std::vector<XrSpatialMeshDataEXT> meshes2d;
-  std::vector<XrSpatialMeshDataEXT> meshes3d;
-  std::vector<XrSpatialPlacementAreaDataEXTX> areas;
 };
 
 // A plane as an engine keeps it.
@@ -311,43 +303,7 @@ struct SpatialClient : App {
     q.result = fn.query(snapshot, &condition, &result);
     if (q.result != XR_SUCCESS) return q;
     const uint32_t n = result.entityIdCountOutput;
-    q.ids.resize(n);
-    q.states.resize(n);
-    const auto want = [&](SpatialComponent c) { return has_component(components, c); };
-    if (want(XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT)) q.bounds.resize(n);
-    if (want(XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT)) q.alignments.resize(n);
-    if (want(XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT)) q.labels.resize(n);
-    if (want(XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT)) q.polygons.resize(n);
-    if (want(XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT)) q.meshes2d.resize(n);
-    if (want(XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT)) q.meshes3d.resize(n);
-    if (want(XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX)) q.areas.resize(n);
-    XrSpatialComponentBounded2DListEXT bounds{XR_TYPE_SPATIAL_COMPONENT_BOUNDED_2D_LIST_EXT, nullptr, n, q.bounds.data()};
-    XrSpatialComponentPlaneAlignmentListEXT alignments{XR_TYPE_SPATIAL_COMPONENT_PLANE_ALIGNMENT_LIST_EXT, nullptr, n,
-                                                       q.alignments.data()};
-    XrSpatialComponentPlaneSemanticLabelListEXT labels{XR_TYPE_SPATIAL_COMPONENT_PLANE_SEMANTIC_LABEL_LIST_EXT, nullptr, n,
-                                                       q.labels.data()};
-    XrSpatialComponentPolygon2DListEXT polygons{XR_TYPE_SPATIAL_COMPONENT_POLYGON_2D_LIST_EXT, nullptr, n, q.polygons.data()};
-    XrSpatialComponentMesh2DListEXT meshes2d{XR_TYPE_SPATIAL_COMPONENT_MESH_2D_LIST_EXT, nullptr, n, q.meshes2d.data()};
-    XrSpatialComponentMesh3DListEXT meshes3d{XR_TYPE_SPATIAL_COMPONENT_MESH_3D_LIST_EXT, nullptr, n, q.meshes3d.data()};
-    XrSpatialComponentPlacementAreaListEXTX areas{XR_TYPE_SPATIAL_COMPONENT_PLACEMENT_AREA_LIST_EXTX, nullptr, n, q.areas.data()};
-    void* chain = nullptr;
-    const auto link = [&](SpatialComponent c, auto& list) {
-      if (!want(c)) return;
-      list.next = chain;
-      chain = &list;
-    };
-    link(XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT, bounds);
-    link(XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT, alignments);
-    link(XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT, labels);
-    link(XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT, polygons);
-    link(XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT, meshes2d);
-    link(XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT, meshes3d);
-    link(XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX, areas);
-    result.next = chain;
-    result.entityIdCapacityInput = n;
-    result.entityIds = q.ids.data();
-    result.entityStateCapacityInput = n;
-    result.entityStates = q.states.data();
+    const roomsense::xr::SpatialComponentLists lists(q, n, components, result);
     if (n > 0) q.result = fn.query(snapshot, &condition, &result);
     return q;
   }

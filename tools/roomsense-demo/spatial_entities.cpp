@@ -14,6 +14,7 @@
 #include "roomsense/xr/ext/XR_EXT_spatial_plane_tracking.h"
 
 #include <openxr/XR_EXTX_room_understanding.h>
+#include "roomsense/xr/spatial_component_lists.h"
 
 #include "roomsense/areas.h"
 
@@ -338,15 +339,7 @@ class SpatialApp {
 
   // The entities of a snapshot that have every component of `components` (two-call idiom on the ids), with one
   // list chained per component.
-  struct Query {
-    std::vector<XrSpatialEntityIdEXT> ids;
-    std::vector<XrSpatialEntityTrackingStateEXT> states;
-    std::vector<XrSpatialBounded2DDataEXT> bounds;
-    std::vector<XrSpatialPlaneAlignmentEXT> alignments;
-    std::vector<XrSpatialPlaneSemanticLabelEXT> labels;
-    std::vector<XrSpatialPolygon2DDataEXT> polygons;
-    std::vector<XrSpatialMeshDataEXT> meshes2d, meshes3d;
-    std::vector<XrSpatialPlacementAreaDataEXTX> areas;
+  struct Query : roomsense::xr::SpatialComponentData {
     bool tracking(std::size_t i) const { return states[i] == XR_SPATIAL_ENTITY_TRACKING_STATE_TRACKING_EXT; }
   };
 
@@ -357,43 +350,7 @@ class SpatialApp {
     check_(fn_.xrQuerySpatialComponentDataEXT(snapshot, &condition, &result), "xrQuerySpatialComponentDataEXT");
     const uint32_t n = result.entityIdCountOutput;
     Query q;
-    q.ids.resize(n);
-    q.states.resize(n);
-    const auto want = [&](Component c) { return contains(components, c); };
-    if (want(XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT)) q.bounds.resize(n);
-    if (want(XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT)) q.alignments.resize(n);
-    if (want(XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT)) q.labels.resize(n);
-    if (want(XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT)) q.polygons.resize(n);
-    if (want(XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT)) q.meshes2d.resize(n);
-    if (want(XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT)) q.meshes3d.resize(n);
-    if (want(XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX)) q.areas.resize(n);
-    XrSpatialComponentBounded2DListEXT bounds{XR_TYPE_SPATIAL_COMPONENT_BOUNDED_2D_LIST_EXT, nullptr, n, q.bounds.data()};
-    XrSpatialComponentPlaneAlignmentListEXT alignments{XR_TYPE_SPATIAL_COMPONENT_PLANE_ALIGNMENT_LIST_EXT, nullptr, n,
-                                                       q.alignments.data()};
-    XrSpatialComponentPlaneSemanticLabelListEXT labels{XR_TYPE_SPATIAL_COMPONENT_PLANE_SEMANTIC_LABEL_LIST_EXT, nullptr, n,
-                                                       q.labels.data()};
-    XrSpatialComponentPolygon2DListEXT polygons{XR_TYPE_SPATIAL_COMPONENT_POLYGON_2D_LIST_EXT, nullptr, n, q.polygons.data()};
-    XrSpatialComponentMesh2DListEXT meshes2d{XR_TYPE_SPATIAL_COMPONENT_MESH_2D_LIST_EXT, nullptr, n, q.meshes2d.data()};
-    XrSpatialComponentMesh3DListEXT meshes3d{XR_TYPE_SPATIAL_COMPONENT_MESH_3D_LIST_EXT, nullptr, n, q.meshes3d.data()};
-    XrSpatialComponentPlacementAreaListEXTX areas{XR_TYPE_SPATIAL_COMPONENT_PLACEMENT_AREA_LIST_EXTX, nullptr, n, q.areas.data()};
-    void* chain = nullptr;
-    const auto link = [&](Component c, auto& list) {
-      if (!want(c)) return;
-      list.next = chain;
-      chain = &list;
-    };
-    link(XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT, bounds);
-    link(XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT, alignments);
-    link(XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT, labels);
-    link(XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT, polygons);
-    link(XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT, meshes2d);
-    link(XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT, meshes3d);
-    link(XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX, areas);
-    result.next = chain;
-    result.entityIdCapacityInput = n;
-    result.entityIds = q.ids.data();
-    result.entityStateCapacityInput = n;
-    result.entityStates = q.states.data();
+    const roomsense::xr::SpatialComponentLists lists(q, n, components, result);
     if (n > 0) check_(fn_.xrQuerySpatialComponentDataEXT(snapshot, &condition, &result), "xrQuerySpatialComponentDataEXT");
     if (result.entityIdCountOutput != n)
       throw std::runtime_error("xrQuerySpatialComponentDataEXT returned " + std::to_string(result.entityIdCountOutput) +

@@ -75,6 +75,10 @@ void drop_free_standing(const VoxelGrid& grid, const FloorCeiling& levels, int g
 // are closed. All 1 when that leaves less than half of the room inside (walls that do not close).
 std::vector<std::uint8_t> detect_enclosed(const GridSpec& spec, const std::vector<std::uint8_t>& walls,
                                           const std::vector<std::uint8_t>& room, int max_opening_voxels);
+// B cut to what the walls enclose, with the patches the scan missed inside them (a floor and a ceiling not
+// seen); B itself where the walls do not close (`enclosed` all 1).
+std::vector<std::uint8_t> room_inside(const GridSpec& spec, const std::vector<std::uint8_t>& room,
+                                      const std::vector<std::uint8_t>& enclosed);
 // The voxels no wall area may cover (RoomFeatures::wall_blocked); empty when there are none.
 std::vector<std::uint8_t> detect_wall_openings(const VoxelGrid& grid, const FloorCeiling& levels,
                                                const std::vector<std::uint8_t>& walls,

@@ -26,24 +26,28 @@ std::uint64_t sample_key(long x, long y, long z) {
 }
 
 // Calls f(sx, sy, sz) for each sample cell (half-voxel index) of a wall rectangle, at `layer` voxels off its
-// plane along its horizontal normal. The rectangle runs between voxel centres (Eq. 3.54).
+// plane along its horizontal normal, until f returns false. The rectangle runs between voxel centres
+// (Eq. 3.54). Returns whether every sample was visited.
 template <class F>
-void wall_samples(const Candidate& c, int layer, F f) {
+bool wall_samples(const Candidate& c, int layer, F f) {
   const glm::dvec2 p1(c.corners[0].x + 0.5, c.corners[0].z + 0.5), p2(c.corners[1].x + 0.5, c.corners[1].z + 0.5);
   const double length = glm::distance(p1, p2);
-  if (length <= 0.0) return;
+  if (length <= 0.0) return true;
   const glm::dvec2 dir = (p2 - p1) / length, normal(-dir.y, dir.x);
   const double y_lo = c.corners[2].y + 0.5, y_hi = c.corners[0].y + 0.5;
   for (double t = 0.5 * kSample; t < length; t += kSample) {
     const glm::dvec2 p = p1 + t * dir + double(layer) * normal;
     for (double y = y_lo + 0.5 * kSample; y < y_hi; y += kSample)
-      f(long(std::floor(p.x / kSample)), long(std::floor(y / kSample)), long(std::floor(p.y / kSample)));
+      if (!f(long(std::floor(p.x / kSample)), long(std::floor(y / kSample)), long(std::floor(p.y / kSample))))
+        return false;
   }
+  return true;
 }
 
-// Calls f(sx, sz) for each half-voxel sample cell whose centre lies strictly inside the square.
+// Calls f(sx, sz) for each half-voxel sample cell whose centre lies strictly inside the square, until f returns
+// false. Returns whether every sample was visited.
 template <class F>
-void square_samples(const Candidate& c, F f) {
+bool square_samples(const Candidate& c, F f) {
   std::array<glm::dvec2, 4> v;
   glm::dvec2 lo(1e300), hi(-1e300);
   for (std::size_t i = 0; i < 4; ++i) {
@@ -62,8 +66,9 @@ void square_samples(const Candidate& c, F f) {
       const glm::dvec2 p((double(sx) + 0.5) * kSample, (double(sz) + 0.5) * kSample);
       bool inside = true;
       for (std::size_t i = 0; i < 4 && inside; ++i) inside = sign * side(i, p) > 1e-9;
-      if (inside) f(sx, sz);
+      if (inside && !f(sx, sz)) return false;
     }
+  return true;
 }
 
 double angle_mod_90(int dx, int dz) {
@@ -118,13 +123,13 @@ std::vector<std::size_t> pack_walls(const std::vector<Sized>& walls) {
   std::unordered_set<std::uint64_t> taken;
   std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < walls.size(); ++i) {
-    bool free = true;
-    wall_samples(walls[i].c, 0, [&](long x, long y, long z) { free = free && !taken.contains(sample_key(x, y, z)); });
+    const bool free =
+        wall_samples(walls[i].c, 0, [&](long x, long y, long z) { return !taken.contains(sample_key(x, y, z)); });
     if (!free) continue;
     // Marked a voxel thick either side: a rectangle one voxel in front of another on a wall off the axes
     // (the staircase of its voxels) covers the same wall.
     for (int layer = -1; layer <= 1; ++layer)
-      wall_samples(walls[i].c, layer, [&](long x, long y, long z) { taken.insert(sample_key(x, y, z)); });
+      wall_samples(walls[i].c, layer, [&](long x, long y, long z) { return taken.insert(sample_key(x, y, z)), true; });
     kept.push_back(i);
   }
   return kept;
@@ -169,11 +174,11 @@ std::vector<std::size_t> pack_squares(const std::vector<Sized>& squares, int lev
     for (int y = level - level_tolerance; y <= level + level_tolerance && free; ++y) {
       const auto it = taken.find(y);
       if (it != taken.end())
-        square_samples(squares[i].c, [&](long x, long z) { free = free && !it->second.contains(sample_key(x, 0, z)); });
+        free = square_samples(squares[i].c, [&](long x, long z) { return !it->second.contains(sample_key(x, 0, z)); });
     }
     if (!free) continue;
     auto& here = taken[level];
-    square_samples(squares[i].c, [&](long x, long z) { here.insert(sample_key(x, 0, z)); });
+    square_samples(squares[i].c, [&](long x, long z) { return here.insert(sample_key(x, 0, z)), true; });
     kept.push_back(i);
   }
   std::sort(kept.begin(), kept.end());  // the output keeps the search's order

@@ -1,4 +1,6 @@
-// The order and parallelism of §3.2: levels, then A and B, then C/D/E in parallel, then F (needs C).
+// The order and parallelism of §3.2: levels, then A and B, then C/D/E in parallel, then F (needs C). Beyond the
+// thesis: A without free-standing furniture before B, the room's inside after it, the runtime's labels on C and D,
+// and the wall openings after F.
 #include "roomsense/features.h"
 #include "roomsense/cancel.h"
 
@@ -6,29 +8,6 @@
 #include <future>
 
 namespace roomsense {
-namespace {
-
-// Columns outside B with B columns on all four sides along the axes: a patch the scan missed inside the room,
-// not the space between the room and the grid's edge.
-std::vector<std::uint8_t> enclosed_holes(const GridSpec& s, const std::vector<std::uint8_t>& room) {
-  std::vector<std::uint8_t> sides(room.size(), 0);  // bit per side with a B column on it
-  for (int z = 0; z < s.nz; ++z) {
-    bool seen = false;
-    for (int x = 0; x < s.nx; ++x) sides[s.column(x, z)] |= seen ? 1 : 0, seen = seen || room[s.column(x, z)];
-    seen = false;
-    for (int x = s.nx - 1; x >= 0; --x) sides[s.column(x, z)] |= seen ? 2 : 0, seen = seen || room[s.column(x, z)];
-  }
-  for (int x = 0; x < s.nx; ++x) {
-    bool seen = false;
-    for (int z = 0; z < s.nz; ++z) sides[s.column(x, z)] |= seen ? 4 : 0, seen = seen || room[s.column(x, z)];
-    seen = false;
-    for (int z = s.nz - 1; z >= 0; --z) sides[s.column(x, z)] |= seen ? 8 : 0, seen = seen || room[s.column(x, z)];
-  }
-  for (std::size_t c = 0; c < sides.size(); ++c) sides[c] = !room[c] && sides[c] == 15;
-  return sides;
-}
-
-}  // namespace
 
 RoomFeatures detect_features(const VoxelStageResult& voxels, const FeatureParams& params, unsigned threads,
                              const std::stop_token& stop, const LabelGrid& labels) {
@@ -48,13 +27,8 @@ RoomFeatures detect_features(const VoxelStageResult& voxels, const FeatureParams
   }
   const int max_opening = voxels_for(params.max_opening, s);
   f.enclosed = detect_enclosed(grid.spec, f.walls, f.room, max_opening);
-  // Areas stay inside: the later steps see the room mask B cut to the inside (bounds keep B itself). Where
-  // the walls close, B also gains what they enclose and the scan missed (a floor and ceiling not seen).
-  std::vector<std::uint8_t> inside = f.room;
-  if (std::find(f.enclosed.begin(), f.enclosed.end(), 0) != f.enclosed.end()) {
-    const std::vector<std::uint8_t> holes = enclosed_holes(grid.spec, f.room);
-    for (std::size_t c = 0; c < inside.size(); ++c) inside[c] = (f.room[c] || holes[c]) && f.enclosed[c];
-  }
+  // Areas stay inside: the later steps see B cut to the inside (bounds keep B itself).
+  const std::vector<std::uint8_t> inside = room_inside(grid.spec, f.room, f.enclosed);
   stop_point(stop);
 
   const int furniture_clear = voxels_for(params.furniture_clear, s);

@@ -22,6 +22,25 @@ std::vector<std::uint8_t> dilate(const GridSpec& s, const std::vector<std::uint8
   return out;
 }
 
+// Columns outside B with B columns on all four sides along the axes: a patch the scan missed inside the room,
+// not the space between the room and the grid's edge.
+std::vector<std::uint8_t> enclosed_holes(const GridSpec& s, const std::vector<std::uint8_t>& room) {
+  std::vector<std::uint8_t> sides(room.size(), 0);  // bit per side with a B column on it
+  for (int z = 0; z < s.nz; ++z) {
+    bool seen = false;
+    for (int x = 0; x < s.nx; ++x) sides[s.column(x, z)] |= seen ? 1 : 0, seen = seen || room[s.column(x, z)];
+    seen = false;
+    for (int x = s.nx - 1; x >= 0; --x) sides[s.column(x, z)] |= seen ? 2 : 0, seen = seen || room[s.column(x, z)];
+  }
+  for (int x = 0; x < s.nx; ++x) {
+    bool seen = false;
+    for (int z = 0; z < s.nz; ++z) sides[s.column(x, z)] |= seen ? 4 : 0, seen = seen || room[s.column(x, z)];
+    seen = false;
+    for (int z = s.nz - 1; z >= 0; --z) sides[s.column(x, z)] |= seen ? 8 : 0, seen = seen || room[s.column(x, z)];
+  }
+  for (std::size_t c = 0; c < sides.size(); ++c) sides[c] = !room[c] && sides[c] == 15;
+  return sides;
+}
 }  // namespace
 
 std::vector<std::uint8_t> detect_enclosed(const GridSpec& s, const std::vector<std::uint8_t>& walls,
@@ -81,6 +100,15 @@ std::vector<std::uint8_t> detect_enclosed(const GridSpec& s, const std::vector<s
   }
   // Walls that do not close (a scan with a wall missing) leave little inside: then nothing is outside.
   return 2 * inside < room_columns ? all : enclosed;
+}
+
+std::vector<std::uint8_t> room_inside(const GridSpec& s, const std::vector<std::uint8_t>& room,
+                                      const std::vector<std::uint8_t>& enclosed) {
+  if (std::find(enclosed.begin(), enclosed.end(), 0) == enclosed.end()) return room;  // the walls do not close
+  const std::vector<std::uint8_t> holes = enclosed_holes(s, room);
+  std::vector<std::uint8_t> inside(room.size(), 0);
+  for (std::size_t c = 0; c < inside.size(); ++c) inside[c] = (room[c] || holes[c]) && enclosed[c];
+  return inside;
 }
 
 }  // namespace roomsense

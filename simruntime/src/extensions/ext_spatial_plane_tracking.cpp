@@ -399,25 +399,7 @@ XrResult XRAPI_CALL xrQuerySpatialComponentDataEXT(XrSpatialSnapshotEXT snapshot
       if (!contains(context->second.components, c)) return XR_ERROR_SPATIAL_COMPONENT_NOT_ENABLED_EXT;
 
     // The component lists chained on the result; each must be one the condition names.
-    XrSpatialComponentBounded2DListEXT* bounds = nullptr;
-    XrSpatialComponentPlaneAlignmentListEXT* alignments = nullptr;
-    XrSpatialComponentPolygon2DListEXT* polygons = nullptr;
-    XrSpatialComponentMesh2DListEXT* meshes = nullptr;
-    XrSpatialComponentPlaneSemanticLabelListEXT* labels = nullptr;
-    const xr::ChainedList lists[] = {
-        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_BOUNDED_2D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT,
-                         bounds, &XrSpatialComponentBounded2DListEXT::boundCount, &XrSpatialComponentBounded2DListEXT::bounds),
-        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_PLANE_ALIGNMENT_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT,
-                         alignments, &XrSpatialComponentPlaneAlignmentListEXT::planeAlignmentCount,
-                         &XrSpatialComponentPlaneAlignmentListEXT::planeAlignments),
-        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_POLYGON_2D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT,
-                         polygons, &XrSpatialComponentPolygon2DListEXT::polygonCount, &XrSpatialComponentPolygon2DListEXT::polygons),
-        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_MESH_2D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT, meshes,
-                         &XrSpatialComponentMesh2DListEXT::meshCount, &XrSpatialComponentMesh2DListEXT::meshes),
-        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_PLANE_SEMANTIC_LABEL_LIST_EXT,
-                         XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT, labels,
-                         &XrSpatialComponentPlaneSemanticLabelListEXT::semanticLabelCount,
-                         &XrSpatialComponentPlaneSemanticLabelListEXT::semanticLabels)};
+    const auto [bounds, alignments, polygons, meshes, labels, lists] = xr::plane_component_lists(result->next);
     if (const XrResult r = xr::lists_named(lists, wanted, result->next,
                                            {XR_TYPE_SPATIAL_COMPONENT_BOUNDED_3D_LIST_EXT, XR_TYPE_SPATIAL_COMPONENT_PARENT_LIST_EXT,
                                             XR_TYPE_SPATIAL_COMPONENT_MESH_3D_LIST_EXT});

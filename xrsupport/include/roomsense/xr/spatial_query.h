@@ -3,9 +3,11 @@
 // the condition names, a list with a count needs its array, and each must hold one element per entity.
 #pragma once
 #include "roomsense/xr/ext/XR_EXT_spatial_entity.h"
+#include "roomsense/xr/ext/XR_EXT_spatial_plane_tracking.h"
 #include "roomsense/xr/guard.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <initializer_list>
 #include <span>
@@ -28,6 +30,35 @@ ChainedList chained_list(void* next, XrStructureType type, XrSpatialComponentTyp
   out = find_next<List>(next, type);
   if (out == nullptr) return {component};
   return {component, true, out->*count, out->*array != nullptr};
+}
+
+// The lists of the components XR_EXT_spatial_plane_tracking serves, as chained at `next` (null when not), and
+// described for lists_named and lists_fit.
+struct PlaneComponentLists {
+  XrSpatialComponentBounded2DListEXT* bounds = nullptr;
+  XrSpatialComponentPlaneAlignmentListEXT* alignments = nullptr;
+  XrSpatialComponentPolygon2DListEXT* polygons = nullptr;
+  XrSpatialComponentMesh2DListEXT* meshes = nullptr;
+  XrSpatialComponentPlaneSemanticLabelListEXT* labels = nullptr;
+  std::array<ChainedList, 5> described{};
+};
+inline PlaneComponentLists plane_component_lists(void* next) {
+  PlaneComponentLists l;
+  l.described = {
+      chained_list(next, XR_TYPE_SPATIAL_COMPONENT_BOUNDED_2D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT, l.bounds,
+                   &XrSpatialComponentBounded2DListEXT::boundCount, &XrSpatialComponentBounded2DListEXT::bounds),
+      chained_list(next, XR_TYPE_SPATIAL_COMPONENT_PLANE_ALIGNMENT_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT,
+                   l.alignments, &XrSpatialComponentPlaneAlignmentListEXT::planeAlignmentCount,
+                   &XrSpatialComponentPlaneAlignmentListEXT::planeAlignments),
+      chained_list(next, XR_TYPE_SPATIAL_COMPONENT_POLYGON_2D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT, l.polygons,
+                   &XrSpatialComponentPolygon2DListEXT::polygonCount, &XrSpatialComponentPolygon2DListEXT::polygons),
+      chained_list(next, XR_TYPE_SPATIAL_COMPONENT_MESH_2D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT, l.meshes,
+                   &XrSpatialComponentMesh2DListEXT::meshCount, &XrSpatialComponentMesh2DListEXT::meshes),
+      chained_list(next, XR_TYPE_SPATIAL_COMPONENT_PLANE_SEMANTIC_LABEL_LIST_EXT,
+                   XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT, l.labels,
+                   &XrSpatialComponentPlaneSemanticLabelListEXT::semanticLabelCount,
+                   &XrSpatialComponentPlaneSemanticLabelListEXT::semanticLabels)};
+  return l;
 }
 
 // XR_ERROR_VALIDATION_FAILURE when a chained list carries a component the condition does not name (`wanted`), or

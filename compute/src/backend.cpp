@@ -66,6 +66,13 @@ std::unique_ptr<VoxelStage> make_voxel_stage(Backend backend, std::size_t proble
                     std::to_string(kVulkanCrossoverVoxels));
       return std::make_unique<CpuVoxelStage>();
     }
+    // A grid past the default budget is refused before any voxel stage runs (make_grid_spec): starting a GPU
+    // driver in the app's process for it would be work, and driver state, for nothing.
+    if (problem_size_hint > kDefaultVoxelBudget) {
+      set(note, "cpu: auto, " + std::to_string(problem_size_hint) + " voxels is past the grid budget of " +
+                    std::to_string(kDefaultVoxelBudget) + ": no device probed");
+      return std::make_unique<CpuVoxelStage>();
+    }
     std::string why;
     const std::optional<VulkanDeviceInfo> device = probe_vulkan_device(&why);
     if (!device) {

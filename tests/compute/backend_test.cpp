@@ -37,6 +37,12 @@ TEST(Backend, CpuAndSmallAutoNeverTouchVulkan) {
   EXPECT_NE(note.find("below the Vulkan crossover"), std::string::npos) << note;
 }
 
+TEST(Backend, AutoProbesNoDeviceForAGridTheAnalysisRefuses) {
+  std::string note;
+  EXPECT_EQ(make_voxel_stage(Backend::Auto, kDefaultVoxelBudget + 1, &note)->name(), "cpu");
+  EXPECT_NE(note.find("no device probed"), std::string::npos) << note;
+}
+
 TEST(Backend, AutoAvoidsLavapipe) {
   ROOMSENSE_REQUIRE_VULKAN(stage);
   std::string note;

@@ -21,7 +21,8 @@ const char* to_string(Backend backend);
 Backend backend_from_environment(Backend fallback = Backend::Auto, std::string* note = nullptr);
 
 // Auto picks Vulkan only on a discrete or integrated GPU and for grids of at least this many voxels; below
-// it, or on lavapipe, the CPU path is faster (measured: compute/README.md).
+// it, or on lavapipe, the CPU path is faster (measured: compute/README.md). Past the default grid budget
+// (kDefaultVoxelBudget), which the analysis refuses, it probes no device.
 inline constexpr std::size_t kVulkanCrossoverVoxels = std::size_t{1} << 21;
 
 // The stage for `backend`. `problem_size_hint` is the grid's voxel count (GridSpec::voxel_count), used by

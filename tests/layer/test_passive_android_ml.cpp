@@ -176,11 +176,12 @@ struct Headset {
   const char* extension;
   std::vector<const char*> app_extensions;
   Received (*read)(App&, XrSpace);
+  bool labels = false;  // the runtime labels its meshes: the layer's areas differ from the CLI's (compare.h)
 };
 
 const Headset kAndroid{XR_ANDROID_SCENE_MESHING_EXTENSION_NAME,
                        {XR_MND_HEADLESS_EXTENSION_NAME, XR_ANDROID_SCENE_MESHING_EXTENSION_NAME},
-                       &read_android};
+                       &read_android, true};
 const Headset kMagicLeap{XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME,
                          {XR_MND_HEADLESS_EXTENSION_NAME, XR_EXT_FUTURE_EXTENSION_NAME, XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME},
                          &read_ml};
@@ -225,12 +226,15 @@ void expect_export_of_what_the_app_read(const Headset& headset, const std::strin
               headset.extension, got.meshes, got.vertices, got.indices, captured);
   EXPECT_EQ(doc.at("openxr").at("runtime_meshes").get<int>(), 0);
   const nlohmann::json cli = run_cli("synthetic:default");
-  EXPECT_EQ(doc.at("areas").size(), cli.at("areas").size());
+  if (!headset.labels) {
+    EXPECT_EQ(doc.at("areas").size(), cli.at("areas").size());
+  }
   EXPECT_NEAR(doc.at("floor_y").get<double>(), cli.at("floor_y").get<double>(), 1e-4);
   EXPECT_NEAR(doc.at("ceiling_y").get<double>(), cli.at("ceiling_y").get<double>(), 1e-4);
   // The whole room, within the submeshes' (blocks') rounding.
   JsonDiff d;
   for (const char* member : kRoomMembers) {
+    if (headset.labels && std::string(member) == "areas") continue;
     nlohmann::json g = room_member(doc, member), w = room_member(cli, member);
     diff_json(g, w, member, d);
   }

@@ -19,15 +19,16 @@
 namespace roomsense {
 namespace {
 
-// What every room holds now, asserted so that it cannot regress. Issue 14's targets, which the hidden captures
-// of other homes are held to as well, are higher: valid >= 95 % in every room; free floor >= 70 % and free wall
-// >= 55 % on average, no room under 40 %. The printed table shows the gap.
+// Issue 14's targets, which the hidden captures of other homes are held to as well: valid >= 95 % in every
+// room; free floor >= 70 % and free wall >= 55 % on average, no room under 40 %. With the capture's labels they
+// hold. From the bare mesh the coverage targets hold, but Quest scans windows as flat surfaces, so wall areas
+// over them are not told apart: validity is asserted at what every room holds now, so that it cannot regress.
 struct Held {
   double valid, floor_cover, wall_cover;  // in every room
   double mean_floor_cover, mean_wall_cover;
 };
-constexpr Held kWithLabels{0.80, 0.40, 0.30, 0.53, 0.42};
-constexpr Held kBareMesh{0.55, 0.40, 0.40, 0.53, 0.52};
+constexpr Held kWithLabels{0.95, 0.40, 0.40, 0.70, 0.55};
+constexpr Held kBareMesh{0.55, 0.40, 0.40, 0.70, 0.55};
 
 constexpr const char* kQuestRooms[] = {"living_room", "meeting_room", "music_room", "office_large", "office_small"};
 

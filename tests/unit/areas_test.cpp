@@ -275,6 +275,16 @@ TEST_P(RoomAreas, AreasCoverMostFreeFloorAndWallWithMinorOverlaps) {
   EXPECT_LE(wall.overlap, 0.15);
 }
 
+// Does the area hold a rectangle of the size class: its width less the search's 0.1 m tolerance (and height,
+// for walls)?
+bool holds_class(const Area& a, AreaSize size) {
+  const std::size_t s = std::size_t(size) - 1;
+  const AreaParams p;
+  const float w = 2 * a.half_width, h = 2 * a.half_height, tolerance = p.width_tolerance + 1e-4f;
+  if (a.type == AreaType::Wall) return w >= p.wall_width[s] - tolerance && h >= p.wall_height[s] - tolerance;
+  return std::min(w, h) >= p.square_width[s] - tolerance;
+}
+
 TEST_P(RoomAreas, ClassificationFollowsTheThesisRules) {
   const synth::RoomSpec& spec = GetParam();
   const AnalysisResult& r = analysed(spec).result;
@@ -291,18 +301,16 @@ TEST_P(RoomAreas, ClassificationFollowsTheThesisRules) {
     EXPECT_NEAR(glm::distance(a.center, 0.25f * (a.corners[0] + a.corners[1] + a.corners[2] + a.corners[3])), 0.0f, 1e-4f);
     const glm::quat q = a.orientation();
     EXPECT_NEAR(glm::distance(q * glm::vec3(0, 0, 1), a.normal), 0.0f, 1e-4f);
-    // Sizes: the class width ± 0.1 m (plus the voxel), walls 2:1 (small 5:3).
-    const std::size_t s = std::size_t(a.size) - 1;
-    const AreaParams p;
-    const float width = a.type == AreaType::Wall ? p.wall_width[s] : p.square_width[s];
-    EXPECT_NEAR(2 * a.half_width, width, 0.11f);
+    // Sizes: grown areas hold their class (its width - 0.1 m, and height for walls), and not the next larger.
+    EXPECT_TRUE(holds_class(a, a.size));
+    if (a.size != AreaSize::Large) {
+      EXPECT_FALSE(holds_class(a, AreaSize(int(a.size) - 1)));
+    }
     if (a.type == AreaType::Wall) {
-      EXPECT_NEAR(2 * a.half_height, p.wall_height[s], 0.11f);
       EXPECT_EQ(a.rotation_deg, 0.0f);
       EXPECT_EQ(a.x_axis().y, 0.0f);  // +Y is up on walls
       EXPECT_NEAR(a.y_axis().y, 1.0f, 1e-6f);
     } else {
-      EXPECT_NEAR(a.half_height, a.half_width, 1e-4f);
       EXPECT_GE(a.rotation_deg, 0.0f);
       EXPECT_LT(a.rotation_deg, 90.0f);
     }
@@ -333,6 +341,43 @@ TEST_P(RoomAreas, IdenticalForAnyThreadCountAndRun) {
       EXPECT_EQ(x.rotation_deg, y.rotation_deg);
     }
   }
+}
+
+// AreaParams::grow = false gives the thesis's fixed sizes; growth keeps the same areas, each holding its exact
+// rectangle, and only adds surface.
+TEST_P(RoomAreas, GrowthOnlyStretchesTheThesissExactSizes) {
+  const test::AnalysedRoom& room = analysed(GetParam());
+  AnalysisOptions o;
+  o.areas.grow = false;
+  o.build_bounds = false;
+  const AnalysisResult exact = analyze(room.scan, o);
+  ASSERT_EQ(exact.areas.size(), room.result.areas.size());
+  int grown = 0;
+  for (std::size_t i = 0; i < exact.areas.size(); ++i) {
+    const Area &e = exact.areas[i], &g = room.result.areas[i];
+    SCOPED_TRACE(testing::Message() << to_string(e.type) << " " << to_string(e.size) << " at " << e.center.x << ", "
+                                    << e.center.y << ", " << e.center.z);
+    const std::size_t s = std::size_t(e.size) - 1;
+    const AreaParams p;
+    EXPECT_NEAR(2 * e.half_width, e.type == AreaType::Wall ? p.wall_width[s] : p.square_width[s], 0.11f);
+    if (e.type == AreaType::Wall) {
+      EXPECT_NEAR(2 * e.half_height, p.wall_height[s], 0.11f);
+    } else {
+      EXPECT_NEAR(e.half_height, e.half_width, 1e-4f);
+    }
+    ASSERT_EQ(g.type, e.type);
+    EXPECT_LE(int(g.size), int(e.size));  // the same class or a larger one
+    EXPECT_EQ(g.normal, e.normal);
+    EXPECT_NEAR(g.rotation_deg, e.rotation_deg, 1e-3f);
+    for (const glm::vec3& c : e.corners) EXPECT_TRUE(on_area(g, c + 1e-3f * glm::normalize(e.center - c), 1e-3f));
+    grown += g.half_width * g.half_height > e.half_width * e.half_height + 1e-4f ? 1 : 0;
+  }
+  EXPECT_GT(grown, 0);
+  const synth::RoomSpec& spec = GetParam();
+  EXPECT_GE(floor_coverage(spec, of_type(room.result, AreaType::Floor)).covered,
+            floor_coverage(spec, of_type(exact, AreaType::Floor)).covered);
+  EXPECT_GE(wall_coverage(spec, of_type(room.result, AreaType::Wall)).covered,
+            wall_coverage(spec, of_type(exact, AreaType::Wall)).covered);
 }
 
 INSTANTIATE_TEST_SUITE_P(Synthetic, RoomAreas,

@@ -241,5 +241,55 @@ TEST(Levels, PointCloudFloorAndCeilingAtTheirSurfaces) {
   EXPECT_NEAR(r.ceiling_y, spec.ceiling_y, 0.02f);
 }
 
+// A 10 x 6 room (columns) whose right end (x >= 7) is an alcove beyond a wall the runtime labels at x = 6, from
+// the floor to the ceiling; the scan's walls run round the whole grid's edge.
+struct LabelledAlcove {
+  GridSpec spec{glm::vec3(0.0f), 0.1f, 10, 30, 6};
+  FloorCeiling levels{};
+  std::vector<std::uint8_t> room = std::vector<std::uint8_t>(spec.column_count(), 1);
+  std::vector<std::uint8_t> enclosed = std::vector<std::uint8_t>(spec.column_count(), 1);
+  LabelGrid labels;
+  LabelledAlcove() {
+    levels.floor = 1;
+    levels.ceiling = 28;
+    labels.masks.assign(spec.voxel_count(), 0);
+  }
+  void label_column(int x, int z, int y_from, int y_to) {
+    for (int y = y_from; y <= y_to; ++y) labels.masks[spec.index(x, y, z)] = label_bit(SurfaceLabel::Wall);
+    labels.present = label_bit(SurfaceLabel::Wall);
+  }
+};
+
+TEST(LabelledWalls, CloseOffAnAlcoveBeyondThem) {
+  LabelledAlcove a;
+  for (int z = 0; z < a.spec.nz; ++z) a.label_column(6, z, 2, 27);
+  // The grid's edge columns are the scan's walls: not enclosed.
+  for (int z = 0; z < a.spec.nz; ++z)
+    for (int x = 0; x < a.spec.nx; ++x)
+      if (x == 0 || z == 0 || x == a.spec.nx - 1 || z == a.spec.nz - 1) a.enclosed[a.spec.column(x, z)] = 0;
+  const int y_end = a.levels.floor + 15;
+  cut_at_labelled_walls(a.spec, a.levels, y_end, a.labels, a.room, a.enclosed);
+  EXPECT_EQ(a.enclosed[a.spec.column(3, 3)], 1);  // the room
+  EXPECT_EQ(a.enclosed[a.spec.column(6, 3)], 1);  // the labelled wall itself
+  EXPECT_EQ(a.enclosed[a.spec.column(8, 3)], 0);  // the alcove beyond it
+}
+
+TEST(LabelledWalls, FurnitureSidesAndOpenLabelsCloseNothing) {
+  for (const bool low_only : {true, false}) {
+    LabelledAlcove a;
+    // low_only: a couch's sides labelled wall, up to 0.5 m, round columns 2..4; else a wall label that leaves
+    // the grid's edge open, so that no closed part holds half the room.
+    if (low_only) {
+      for (int x = 2; x <= 4; ++x) a.label_column(x, 2, 2, 6), a.label_column(x, 4, 2, 6);
+      a.label_column(2, 3, 2, 6), a.label_column(4, 3, 2, 6);
+    } else {
+      for (int z = 0; z < a.spec.nz; ++z) a.label_column(8, z, 2, 27);
+    }
+    const std::vector<std::uint8_t> before = a.enclosed;
+    cut_at_labelled_walls(a.spec, a.levels, a.levels.floor + 15, a.labels, a.room, a.enclosed);
+    EXPECT_EQ(a.enclosed, before) << (low_only ? "couch" : "open");
+  }
+}
+
 }  // namespace
 }  // namespace roomsense

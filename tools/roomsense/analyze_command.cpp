@@ -86,6 +86,7 @@ int analyze_command(const std::vector<std::string>& args) {
     analysis.voxel_size = options.voxel_size;
     analysis.bounds.min_plateau_area = options.min_plateau;
     analysis.threads = options.threads;
+    analysis.areas.grow = options.grow_areas;
     if (options.mode) analysis.mode = *options.mode == "vertices" ? VoxelMode::Vertices : VoxelMode::Triangles;
     std::unique_ptr<VoxelStage> stage;
 #if ROOMSENSE_HAVE_COMPUTE

@@ -32,6 +32,8 @@ options:
                       furniture) and analyse the bare mesh; by default they are used: no wall
                       areas over windows, doors or screens, furniture areas only on
                       furniture tops
+  --exact-sizes       areas of exactly the thesis's class sizes (2, 1, 0.5 m); by default
+                      they grow into the free surface around them and are at least that
   --min-plateau AREA  in the bounds, flatten furniture-top and ceiling plateaus smaller than
                       AREA m² to their neighbours' height: scan jitter and specks (default
                       0.04; 0 keeps the thesis's volume as it is)
@@ -86,6 +88,7 @@ AnalyzeOptions parse_analyze_options(const std::vector<std::string>& args) {
       else throw std::invalid_argument("--units takes m, cm or mm, not '" + v + "'");
     } else if (a == "--left-handed") o.frame.left_handed = true;
     else if (a == "--no-labels") o.use_labels = false;
+    else if (a == "--exact-sizes") o.grow_areas = false;
     else if (a == "--voxel") {
       // Checked here, with core's range (make_grid_spec would refuse it too, but only after the scan is read).
       const std::string& v = value();

@@ -21,6 +21,7 @@ struct AnalyzeOptions {
   std::optional<std::string> mode;  // "vertices" | "triangles"
   unsigned threads = 0;
   bool use_labels = true;  // a capture's or MRUK room's semantic labels (Scan::labels)
+  bool grow_areas = true;  // AreaParams::grow
 };
 
 // Throws std::invalid_argument with a one-line message for the user.

@@ -61,6 +61,9 @@ struct AreaParams {
   float close_distance = 0.2f;    // §3.5.1/3.5.2: a floor area this near makes an area "close"
   float close_height = 1.5f;      // §3.5.1: wall areas centred higher above the floor are never "close"
   float wall_view_cone_deg = 60.0f;  // §3.5.1: a floor area at most this far off a wall area's normal
+  // Beyond the thesis: packed areas grow along their axes into the free surface around them, so an area is at
+  // least its class's size rather than exactly it (issue 14). False keeps the thesis's fixed sizes.
+  bool grow = true;
 };
 
 // One classified area (§3.5), in metres, in the scan's frame (right-handed, +Y up).

@@ -75,6 +75,12 @@ void drop_free_standing(const VoxelGrid& grid, const FloorCeiling& levels, int g
 // are closed. All 1 when that leaves less than half of the room inside (walls that do not close).
 std::vector<std::uint8_t> detect_enclosed(const GridSpec& spec, const std::vector<std::uint8_t>& walls,
                                           const std::vector<std::uint8_t>& room, int max_opening_voxels);
+// With the runtime's labels: the walls, door and window frames it labels, from low in the room to above
+// furniture height, close the room too. Enclosed parts
+// they cut off (an alcove beyond them, what the scan saw through a door) are outside: only the largest part
+// the labels close, and parts at least half its size, stay.
+void cut_at_labelled_walls(const GridSpec& spec, const FloorCeiling& levels, int y_end, const LabelGrid& labels,
+                           const std::vector<std::uint8_t>& room, std::vector<std::uint8_t>& enclosed);
 // B cut to what the walls enclose, with the patches the scan missed inside them (a floor and a ceiling not
 // seen); B itself where the walls do not close (`enclosed` all 1).
 std::vector<std::uint8_t> room_inside(const GridSpec& spec, const std::vector<std::uint8_t>& room,

@@ -14,15 +14,6 @@ glm::vec3 voxel_centre(const GridSpec& spec, const glm::ivec3& v) {  // Eq. 3.54
   return spec.lattice_to_world(float(v.x) + 0.5f, float(v.y) + 0.5f, float(v.z) + 0.5f);
 }
 
-glm::vec3 normal_bits_direction(std::uint8_t bits) {
-  glm::vec3 d(0.0f);
-  if (bits & kNormalLeft) d.x -= 1.0f;
-  if (bits & kNormalRight) d.x += 1.0f;
-  if (bits & kNormalForward) d.z += 1.0f;
-  if (bits & kNormalBackward) d.z -= 1.0f;
-  return d;
-}
-
 // Eq. 3.55 for walls, derived for our frame: the normal is horizontal and at a right angle to the top edge,
 // on the side the wall normals F of the two corner voxels point to (away from the wall, Alg. 1). Where they
 // do not decide, the side without a wall column next to the edge's middle is the room side, as the thesis's
@@ -45,6 +36,15 @@ glm::vec3 wall_normal(const Candidate& c, const PlacementContext& ctx) {
 }
 
 }  // namespace
+
+glm::vec3 normal_bits_direction(std::uint8_t bits) {
+  glm::vec3 d(0.0f);
+  if (bits & kNormalLeft) d.x -= 1.0f;
+  if (bits & kNormalRight) d.x += 1.0f;
+  if (bits & kNormalForward) d.z += 1.0f;
+  if (bits & kNormalBackward) d.z -= 1.0f;
+  return d;
+}
 
 Area to_area(const Sized& found, AreaType type, const PlacementContext& ctx) {
   const GridSpec& s = ctx.spec;

@@ -12,6 +12,9 @@ struct PlacementContext {
   const FeatureParams& feature_params;
 };
 
+// The horizontal direction (not normalized) the wall-normal bits of F point to (Alg. 1).
+glm::vec3 normal_bits_direction(std::uint8_t bits);
+
 // Everything of an Area but its reach (left None) and the reach bits of its flags.
 Area to_area(const Sized& found, AreaType type, const PlacementContext& context);
 

@@ -2,11 +2,13 @@
 #include "../parallel.h"
 #include "roomsense/cancel.h"
 #include "classify.h"
+#include "grow.h"
 #include "reduce.h"
 #include "search.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <numbers>
 #include <string>
 
@@ -15,6 +17,54 @@ namespace {
 
 double elapsed_ms(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
+}
+
+// What each type may grow over (grow.h): the cells its search accepts (Alg. 2, Alg. 3, §3.3.4).
+detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& features, const AreaParams& params,
+                       std::size_t type) {
+  using detail::SurfaceCell;
+  const float voxel = spec.voxel_size;
+  detail::GrowthRule rule;
+  rule.step = 0.5f * voxel;
+  rule.max_length = voxel * std::sqrt(float(spec.nx) * float(spec.nx) + float(spec.ny) * float(spec.ny) +
+                                      float(spec.nz) * float(spec.nz));
+  rule.fill = type == 0 ? params.wall_fill : params.horizontal_fill;
+  // A strip may hold a speck the scan missed (one sample in five) as long as the whole area keeps its fill.
+  rule.strip_fill = std::min(rule.fill, 0.8f);
+  const auto voxel_of = [&spec, voxel](const glm::vec3& p) { return glm::ivec3(glm::floor((p - spec.origin) / voxel)); };
+  if (type == 0) {
+    // Walls lie on the wall-side face of the voxels F marks (to_area): the voxel is half a voxel in front.
+    const int floor = features.levels.floor, ceiling = std::min(features.levels.ceiling, spec.ny - 1);
+    rule.conflict_depths = {-voxel, 0.0f, voxel};
+    rule.cell_at = [&spec, &features, voxel_of, voxel, floor, ceiling](const glm::vec3& p, const Area& a) {
+      const glm::ivec3 v = voxel_of(p + 0.5f * voxel * a.normal);
+      if (!spec.contains(v.x, v.y, v.z) || v.y < floor || v.y > ceiling) return SurfaceCell::Forbidden;
+      const std::size_t col = spec.column(v.x, v.z), i = spec.index(v.x, v.y, v.z);
+      if (features.walls[col] || (!features.wall_blocked.empty() && features.wall_blocked[i]))
+        return SurfaceCell::Forbidden;
+      return glm::dot(detail::normal_bits_direction(features.normals[i]), a.normal) > 0.0f ? SurfaceCell::Usable
+                                                                                             : SurfaceCell::Unusable;
+    };
+    return rule;
+  }
+  if (type == 3) rule.lookahead = 0.5f * voxel;
+  if (type == 3)  // Eq. 3.49: tops fewer than reduction_offset levels apart are one top
+    for (int l = 1; l < params.reduction_offset; ++l) rule.conflict_depths.insert(rule.conflict_depths.end(), {-float(l) * voxel, float(l) * voxel});
+  rule.cell_at = [&spec, &features, voxel_of, voxel, type](const glm::vec3& p, const Area& a) {
+    const glm::ivec3 v = voxel_of(p);
+    if (v.x < 0 || v.z < 0 || v.x >= spec.nx || v.z >= spec.nz) return SurfaceCell::Forbidden;
+    const std::size_t col = spec.column(v.x, v.z);
+    if (features.walls[col]) return SurfaceCell::Forbidden;
+    bool usable = false;
+    if (type == 1) usable = features.free_floor[col] != 0;
+    if (type == 2) usable = features.free_ceiling[col] != 0;
+    if (type == 3) {  // C holds the level above a top (Eq. 3.13); y_Actual may be one higher (Eq. 3.41)
+      const int level = int(std::lround((a.center.y - spec.origin.y) / voxel));
+      usable = features.furniture[col] == level || features.furniture[col] == level + 1;
+    }
+    return usable ? SurfaceCell::Usable : SurfaceCell::Unusable;
+  };
+  return rule;
 }
 
 }  // namespace
@@ -102,12 +152,19 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
     result.counts.deduplicated[type] = deduplicated[type].size();
     result.counts.reduced[type] = kept[type].size();
   }
+
+  // Eq. 3.54-3.57 for the kept rectangles, which then grow into the surface packing left free (grow.h).
+  const PlacementContext context{spec, features, surfaces, feature_params};
+  std::array<std::vector<Area>, 4> kept_areas;
+  parallel_tasks(4, threads, [&](std::size_t type) {
+    for (std::size_t i : kept[type]) kept_areas[type].push_back(to_area(all[type][i], kAreaTypes[type], context));
+    if (params.grow) grow_areas(kept_areas[type], growth_rule(spec, features, params, type), params, stop);
+  });
   stop_point(stop);
   result.timings.reduce = elapsed_ms(clock);
   clock = std::chrono::steady_clock::now();
 
-  // §3.5: geometry of every kept area, then reach against V_Floor and V_Wall (before packing).
-  const PlacementContext context{spec, features, surfaces, feature_params};
+  // §3.5: reach against V_Floor and V_Wall (before packing).
   const auto convert_all = [&](std::size_t type) {
     std::vector<Area> out;
     out.reserve(deduplicated[type].size());
@@ -115,8 +172,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
     return out;
   };
   const std::vector<Area> wall_areas = convert_all(0), floor_areas = convert_all(1);
-  for (std::size_t type = 0; type < 4; ++type)
-    for (std::size_t i : kept[type]) result.areas.push_back(to_area(all[type][i], kAreaTypes[type], context));
+  for (std::vector<Area>& areas : kept_areas) result.areas.insert(result.areas.end(), areas.begin(), areas.end());
   assign_reach(result.areas, floor_areas, wall_areas, surfaces.floor_y, params, threads);
   result.timings.classify = elapsed_ms(clock);
   return result;

@@ -27,6 +27,7 @@ RoomFeatures detect_features(const VoxelStageResult& voxels, const FeatureParams
   }
   const int max_opening = voxels_for(params.max_opening, s);
   f.enclosed = detect_enclosed(grid.spec, f.walls, f.room, max_opening);
+  cut_at_labelled_walls(grid.spec, f.levels, f.y_end, labels, f.room, f.enclosed);
   // Areas stay inside: the later steps see B cut to the inside (bounds keep B itself).
   const std::vector<std::uint8_t> inside = room_inside(grid.spec, f.room, f.enclosed);
   stop_point(stop);

@@ -102,6 +102,69 @@ std::vector<std::uint8_t> detect_enclosed(const GridSpec& s, const std::vector<s
   return 2 * inside < room_columns ? all : enclosed;
 }
 
+void cut_at_labelled_walls(const GridSpec& s, const FloorCeiling& levels, int y_end, const LabelGrid& labels,
+                           const std::vector<std::uint8_t>& room, std::vector<std::uint8_t>& enclosed) {
+  constexpr LabelMask kBoundary = label_bits({SurfaceLabel::Wall, SurfaceLabel::DoorFrame, SurfaceLabel::WindowFrame});
+  if (!labels.has_any(kBoundary)) return;
+  // A boundary column holds the labels both low in the room and above furniture height (I_yEnd): the side of a
+  // cabinet or couch labelled wall closes nothing.
+  const int y_from = std::max(levels.floor + 1, 0), y_to = std::min(levels.ceiling - 1, s.ny - 1);
+  const int low_top = (levels.floor + levels.ceiling) / 2, high_from = std::min(y_end, y_to);
+  std::vector<std::uint8_t> boundary(s.column_count(), 0);
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) {
+      bool low = false, high = false;
+      for (int y = y_from; y <= y_to; ++y)
+        if (labels.at(s, x, y, z) & kBoundary) (y <= low_top ? low : high) = true, high = high || y >= high_from;
+      boundary[s.column(x, z)] = low && high;
+    }
+  // 4-connected components of the enclosed columns off the labelled boundary, with their room columns and
+  // whether they reach the grid's edge.
+  std::vector<int> component(s.column_count(), -1);
+  struct Part {
+    std::size_t room = 0;
+    bool edge = false;
+  };
+  std::vector<Part> parts;
+  for (int z0 = 0; z0 < s.nz; ++z0)
+    for (int x0 = 0; x0 < s.nx; ++x0) {
+      const std::size_t c0 = s.column(x0, z0);
+      if (component[c0] >= 0 || !enclosed[c0] || boundary[c0]) continue;
+      const int id = int(parts.size());
+      parts.push_back({});
+      std::deque<std::pair<int, int>> queue{{x0, z0}};
+      component[c0] = id;
+      while (!queue.empty()) {
+        const auto [x, z] = queue.front();
+        queue.pop_front();
+        parts[std::size_t(id)].room += room[s.column(x, z)];
+        parts[std::size_t(id)].edge = parts[std::size_t(id)].edge || x == 0 || z == 0 || x == s.nx - 1 || z == s.nz - 1;
+        for (const auto& [dx, dz] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+          const int nx = x + dx, nz = z + dz;
+          if (nx < 0 || nz < 0 || nx >= s.nx || nz >= s.nz) continue;
+          const std::size_t c = s.column(nx, nz);
+          if (component[c] >= 0 || !enclosed[c] || boundary[c]) continue;
+          component[c] = id;
+          queue.emplace_back(nx, nz);
+        }
+      }
+    }
+  // The room is the largest part the labelled walls close off from the grid's edge; parts as large as half of
+  // it are rooms too (the runtime labels each).
+  std::size_t largest = 0, room_inside = 0;
+  for (const Part& p : parts) {
+    if (!p.edge) largest = std::max(largest, p.room);
+    room_inside += p.room;
+  }
+  // Labels that leave less than half the room in one closed part (walls the runtime did not label, the sides
+  // of furniture labelled wall) close nothing.
+  if (2 * largest < room_inside) return;
+  for (std::size_t c = 0; c < enclosed.size(); ++c) {
+    const int id = component[c];
+    if (id >= 0 && (parts[std::size_t(id)].edge || 2 * parts[std::size_t(id)].room < largest)) enclosed[c] = 0;
+  }
+}
+
 std::vector<std::uint8_t> room_inside(const GridSpec& s, const std::vector<std::uint8_t>& room,
                                       const std::vector<std::uint8_t>& enclosed) {
   if (std::find(enclosed.begin(), enclosed.end(), 0) == enclosed.end()) return room;  // the walls do not close

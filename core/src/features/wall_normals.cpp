@@ -17,9 +17,17 @@ std::vector<std::uint8_t> detect_wall_normals(const VoxelGrid& grid, const Floor
     const std::size_t col = s.column(x, z);
     return !walls[col] && !grid.at(x, y, z) && room[col] && furniture[col] < y;
   };
+  // Beyond the thesis: a run of half the reach that ends at a wall, or where the room ends, is clear too: an
+  // alcove or a corridor narrower than the reach still has walls to hang things on. A run that ends at a voxel
+  // (furniture, clutter) is not.
+  const auto ends_room = [&](int x, int z) {
+    if (x < 0 || z < 0 || x >= s.nx || z >= s.nz) return true;
+    const std::size_t col = s.column(x, z);
+    return walls[col] || !room[col];
+  };
   const auto clear_run = [&](int x, int y, int z, int dx, int dz) {
     for (int i = 1; i <= reach; ++i)
-      if (!free_at(x + i * dx, y, z + i * dz)) return false;
+      if (!free_at(x + i * dx, y, z + i * dz)) return 2 * (i - 1) >= reach && ends_room(x + i * dx, z + i * dz);
     return true;
   };
   struct Direction {

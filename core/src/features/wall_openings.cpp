@@ -33,11 +33,11 @@ std::vector<std::uint8_t> detect_wall_openings(const VoxelGrid& grid, const Floo
   const int y_from = std::max(levels.floor + 1, 0), y_to = std::min(levels.ceiling - 1, s.ny - 1);
   const auto inside = [&](int x, int z) { return x >= 0 && z >= 0 && x < s.nx && z < s.nz; };
   const auto is_wall = [&](int x, int z) { return inside(x, z) && walls[s.column(x, z)] != 0; };
-  // Labels within a voxel of (x, y, z) across the wall's face (the labels' planes are off the scan by a few cm).
-  const auto labels_near = [&](int x, int y, int z, Step along) {
+  // Labels of (x, y, z) and, with `reach` 1, of the voxels next to it on the wall's face.
+  const auto labels_near = [&](int x, int y, int z, Step along, int reach) {
     LabelMask m = 0;
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int i = -1; i <= 1; ++i) m = LabelMask(m | labels.at(s, x + i * along.dx, y + dy, z + i * along.dz));
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int i = -reach; i <= reach; ++i) m = LabelMask(m | labels.at(s, x + i * along.dx, y + dy, z + i * along.dz));
     return m;
   };
   // A door: column (x, z) lies in a gap of at most max_opening between wall columns along `along`, and is
@@ -71,10 +71,17 @@ std::vector<std::uint8_t> detect_wall_openings(const VoxelGrid& grid, const Floo
             for (int k = 1; k <= depth && open; ++k)
               open = !(inside(x - k * d.dx, z - k * d.dz) && grid.at(x - k * d.dx, y, z - k * d.dz));
             if (!open && !labels.empty()) {
-              LabelMask m = labels_near(x, y, z, along);
-              for (int k = 1; k <= depth + 1; ++k) m = LabelMask(m | labels_near(x - k * d.dx, y, z - k * d.dz, along));
-              open = (labelled_openings && (m & kWallOpeningLabels)) ||
-                     (labelled_walls && !(m & label_bit(SurfaceLabel::Wall)));
+              // Across the face, the labels' planes lie off the scan by a few centimetres: look from the
+              // voxel back to the recess. Openings need no margin on the face: voxelized, they already
+              // overstate themselves by up to a voxel. Wall labels get one, so that a wall is not refused at
+              // its labelled rectangle's edge.
+              LabelMask near = 0, on = 0;
+              for (int k = 0; k <= depth + 1; ++k) {
+                near = LabelMask(near | labels_near(x - k * d.dx, y, z - k * d.dz, along, 1));
+                on = LabelMask(on | labels_near(x - k * d.dx, y, z - k * d.dz, along, 0));
+              }
+              open = (labelled_openings && (on & kWallOpeningLabels)) ||
+                     (labelled_walls && !(near & label_bit(SurfaceLabel::Wall)));
             }
             if (open) blocked[s.index(x, y, z)] = 1, any = true;
           }

@@ -66,6 +66,9 @@ typedef enum XrRoomAreaTypeEXTX {
     XR_ROOM_AREA_TYPE_MAX_ENUM_EXTX = 0x7FFFFFFF
 } XrRoomAreaTypeEXTX;
 
+/* The largest class an area holds: at least 2 x 2 m (walls 2 x 1 m), 1 x 1 m (1 x 0.5 m), 0.5 x 0.5 m
+   (0.5 x 0.3 m), less 0.1 m. Areas grow past their class into the free surface around them: extents give
+   their actual size. */
 typedef enum XrRoomAreaSizeEXTX {
     XR_ROOM_AREA_SIZE_LARGE_EXTX = 1,
     XR_ROOM_AREA_SIZE_MEDIUM_EXTX = 2,

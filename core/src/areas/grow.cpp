@@ -1,0 +1,141 @@
+// Growth of packed areas into the free surface around them (grow.h).
+#include "grow.h"
+
+#include "roomsense/cancel.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace roomsense::detail {
+namespace {
+
+std::uint64_t sample_key(const glm::vec3& p, float step) {
+  // The bias keeps points that lie exactly on a cell border (walls' voxel centres, furniture levels) in one
+  // cell whatever the rounding of the sum that gave them.
+  const glm::vec3 q = glm::floor(p / step + 1e-4f);
+  const auto bits = [](float v) { return std::uint64_t(std::uint32_t(std::int32_t(v)) & 0x1FFFFF); };
+  return (bits(q.x) << 42) | (bits(q.y) << 21) | bits(q.z);
+}
+
+// An area as a rectangle [u0, u1] x [v0, v1] on the axes of its first corner; samples lie at half a step
+// from its first corner's lattice, so a strip added later lines up with the samples already there.
+struct Extent {
+  glm::vec3 origin, x, y;
+  float u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+  glm::vec3 at(float u, float v) const { return origin + u * x + v * y; }
+};
+
+// How many samples fit in [0, length): those at (i + 1/2) step. Counted, not accumulated, so that far from
+// the origin (where adding a step to a float may change nothing) the loops still end.
+int sample_count(float length, float step) {
+  return length > 0.0f ? int(std::ceil(double(length) / double(step) - 0.5 - 1e-6)) : 0;
+}
+
+// The sample positions (u, v) of the strip one step beyond `edge` (0 bottom, 1 right, 2 top, 3 left).
+template <class F>
+void strip_samples(const Extent& e, int edge, float step, F f) {
+  if (edge == 0 || edge == 2) {
+    const float v = edge == 0 ? e.v0 - 0.5f * step : e.v1 + 0.5f * step;
+    for (int i = 0, n = sample_count(e.u1 - e.u0, step); i < n; ++i) f(e.u0 + (float(i) + 0.5f) * step, v);
+  } else {
+    const float u = edge == 3 ? e.u0 - 0.5f * step : e.u1 + 0.5f * step;
+    for (int j = 0, n = sample_count(e.v1 - e.v0, step); j < n; ++j) f(u, e.v0 + (float(j) + 0.5f) * step);
+  }
+}
+
+void set_size(Area& a, const AreaParams& params) {
+  const float width = 2.0f * a.half_width, height = 2.0f * a.half_height;
+  for (std::size_t s = 0; s < kAreaSizes.size() && kAreaSizes[s] < a.size; ++s) {
+    const bool holds =
+        a.type == AreaType::Wall
+            ? width >= params.wall_width[s] - params.width_tolerance &&
+                  height >= params.wall_height[s] - params.width_tolerance
+            : std::min(width, height) >= params.square_width[s] - params.width_tolerance;
+    if (holds) {
+      a.size = kAreaSizes[s];
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams& params, const std::stop_token& stop) {
+  const float h = rule.step;
+  std::vector<Extent> extents;
+  extents.reserve(areas.size());
+  std::vector<bool> grows;  // rectangles of no width (a small wall at very coarse voxels) stay as they are
+  for (const Area& a : areas) {
+    const glm::vec3 edge = a.corners[1] - a.corners[0];
+    grows.push_back(glm::length(edge) > 1e-3f * h);
+    const glm::vec3 x = grows.back() ? glm::normalize(edge) : glm::vec3(1, 0, 0);
+    extents.push_back({a.corners[0], x, glm::cross(a.normal, x), 0.0f, 2.0f * a.half_width, 0.0f, 2.0f * a.half_height});
+  }
+
+  // Which area holds each sample cell. Opposite faces of a thin wall lie a voxel apart and never conflict.
+  std::unordered_map<std::uint64_t, std::uint32_t> owner;
+  const auto mark = [&](std::uint32_t k, const glm::vec3& p) { owner.emplace(sample_key(p, h), k); };
+  for (std::uint32_t k = 0; k < extents.size(); ++k) {
+    const Extent& e = extents[k];
+    for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
+      for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j)
+        mark(k, e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h));
+  }
+  const auto conflicts = [&](std::uint32_t k, const glm::vec3& p) {
+    for (const float depth : rule.conflict_depths) {
+      const auto it = owner.find(sample_key(p + depth * areas[k].normal, h));
+      if (it != owner.end() && it->second != k && glm::dot(areas[it->second].normal, areas[k].normal) > 0.0f)
+        return true;
+    }
+    return false;
+  };
+
+  for (std::uint32_t k = 0; k < extents.size(); ++k) {
+    if (!grows[k]) continue;
+    Extent& e = extents[k];
+    // The whole area keeps the search's fill; a strip may hold less, so that a speck the scan missed does not
+    // stop an edge.
+    int area_usable = 0, area_total = 0;
+    for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
+      for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j, ++area_total)
+        area_usable += rule.cell_at(e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h), areas[k]) ==
+                       SurfaceCell::Usable;
+    for (bool moved = true; moved; stop_point(stop)) {
+      moved = false;
+      for (int edge = 0; edge < 4; ++edge) {
+        if ((edge % 2 == 0 ? e.v1 - e.v0 : e.u1 - e.u0) + h > rule.max_length) continue;
+        int usable = 0, total = 0;
+        bool refused = false;
+        const glm::vec3 outward = edge == 0 ? -e.y : edge == 1 ? e.x : edge == 2 ? e.y : -e.x;
+        strip_samples(e, edge, h, [&](float u, float v) {
+          if (refused) return;
+          const glm::vec3 p = e.at(u, v);
+          const SurfaceCell cell = rule.cell_at(p + rule.lookahead * outward, areas[k]);
+          refused = cell == SurfaceCell::Forbidden || conflicts(k, p);
+          usable += cell == SurfaceCell::Usable ? 1 : 0;
+          ++total;
+        });
+        if (refused || total == 0 || double(usable) < double(rule.strip_fill) * double(total) ||
+            double(area_usable + usable) < double(rule.fill) * double(area_total + total))
+          continue;
+        area_usable += usable;
+        area_total += total;
+        strip_samples(e, edge, h, [&](float u, float v) { mark(k, e.at(u, v)); });
+        (edge == 0 ? e.v0 : edge == 1 ? e.u1 : edge == 2 ? e.v1 : e.u0) += (edge == 0 || edge == 3 ? -h : h);
+        moved = true;
+      }
+    }
+    Area& a = areas[k];
+    a.corners = {e.at(e.u0, e.v0), e.at(e.u1, e.v0), e.at(e.u1, e.v1), e.at(e.u0, e.v1)};
+    a.center = e.at(0.5f * (e.u0 + e.u1), 0.5f * (e.v0 + e.v1));
+    a.half_width = 0.5f * (e.u1 - e.u0);
+    a.half_height = 0.5f * (e.v1 - e.v0);
+    set_size(a, params);
+    a.flags = category_flags(a.type, a.size, a.reach);
+  }
+}
+
+}  // namespace roomsense::detail

@@ -1,0 +1,43 @@
+// Growth, beyond the thesis (issue 14): packed areas stretch into the free surface around them.
+#pragma once
+#include "roomsense/areas.h"
+#include "roomsense/features.h"
+
+#include <functional>
+#include <span>
+#include <stop_token>
+
+namespace roomsense::detail {
+
+// What a point of the surface is for an area growing over it.
+enum class SurfaceCell : std::uint8_t {
+  Usable,     // a tile, or a voxel with a wall normal
+  Unusable,   // a gap the search's fill tolerates (Eq. 3.25, 3.38)
+  Forbidden,  // a wall column, or before an opening: never under an area
+};
+
+struct GrowthRule {
+  float step = 0.05f;  // metres an edge moves at a time: half a voxel
+  float max_length = 1e3f;  // metres: no side grows past this (the grid's diagonal), whatever cell_at says
+  float fill = 0.95f;        // the share of the grown area's samples that must be Usable (the search's fill)
+  float strip_fill = 0.95f;  // the share of each new strip's samples
+  // How far beyond each new sample the surface must go on. A voxelized top overstates its surface by up to a
+  // voxel at its edge, so tops keep their areas' edges on the centres of their outermost cells, as the search
+  // does (Eq. 3.54): half a voxel. Free floor and ceiling end at what stands on them, and walls at the next
+  // wall or opening (Forbidden), which overstate themselves instead: 0.
+  float lookahead = 0.0f;
+  // Distances along an area's normal at which its samples also conflict with other areas' samples: walls a
+  // voxel either side of their plane (as packing, reduce.h), furniture tops the levels Eq. 3.49 treats as one.
+  std::vector<float> conflict_depths{0.0f};
+  std::function<SurfaceCell(const glm::vec3& world, const Area& area)> cell_at;  // a point of the area's plane
+};
+
+// Packing places whole squares of three fixed sizes, so strips narrower than the smallest size, and the
+// margins between sizes, stay empty. Each area, in order (largest first), moves its four edges outward one
+// step at a time, in turn, while the new strip is surface the search would accept (`strip_fill` of it Usable,
+// `fill` of the whole area, nothing Forbidden) and no other area's. The area stays a rectangle on its own axes; its size class becomes the
+// largest whose width (and height, for walls) it now holds, so an app asking for a class gets at least that.
+void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams& params,
+                const std::stop_token& stop = {});
+
+}  // namespace roomsense::detail

@@ -21,7 +21,7 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
 
 // What each type may grow over (grow.h): the cells its search accepts (Alg. 2, Alg. 3, §3.3.4).
 detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& features, const AreaParams& params,
-                       std::size_t type) {
+                               std::size_t type) {
   using detail::SurfaceCell;
   const float voxel = spec.voxel_size;
   detail::GrowthRule rule;
@@ -31,7 +31,9 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
   rule.fill = type == 0 ? params.wall_fill : params.horizontal_fill;
   // A strip may hold a speck the scan missed (one sample in five) as long as the whole area keeps its fill.
   rule.strip_fill = std::min(rule.fill, 0.8f);
-  const auto voxel_of = [&spec, voxel](const glm::vec3& p) { return glm::ivec3(glm::floor((p - spec.origin) / voxel)); };
+  const auto voxel_of = [&spec, voxel](const glm::vec3& p) {
+    return glm::ivec3(glm::floor((p - spec.origin) / voxel));
+  };
   if (type == 0) {
     // Walls lie on the wall-side face of the voxels F marks (to_area): the voxel is half a voxel in front.
     const int floor = features.levels.floor, ceiling = std::min(features.levels.ceiling, spec.ny - 1);
@@ -47,9 +49,13 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
     };
     return rule;
   }
-  if (type == 3) rule.lookahead = 0.5f * voxel;
-  if (type == 3)  // Eq. 3.49: tops fewer than reduction_offset levels apart are one top
-    for (int l = 1; l < params.reduction_offset; ++l) rule.conflict_depths.insert(rule.conflict_depths.end(), {-float(l) * voxel, float(l) * voxel});
+  if (type == 3) {
+    rule.lookahead = 0.5f * voxel;
+    for (int l = 1; l < params.reduction_offset; ++l) {  // Eq. 3.49: tops fewer levels apart are one top
+      rule.conflict_depths.push_back(-float(l) * voxel);
+      rule.conflict_depths.push_back(float(l) * voxel);
+    }
+  }
   rule.cell_at = [&spec, &features, voxel_of, voxel, type](const glm::vec3& p, const Area& a) {
     const glm::ivec3 v = voxel_of(p);
     if (v.x < 0 || v.z < 0 || v.x >= spec.nx || v.z >= spec.nz) return SurfaceCell::Forbidden;

@@ -115,7 +115,10 @@ void cut_at_labelled_walls(const GridSpec& s, const FloorCeiling& levels, int y_
     for (int x = 0; x < s.nx; ++x) {
       bool low = false, high = false;
       for (int y = y_from; y <= y_to; ++y)
-        if (labels.at(s, x, y, z) & kBoundary) (y <= low_top ? low : high) = true, high = high || y >= high_from;
+        if (labels.at(s, x, y, z) & kBoundary) {
+          low = low || y <= low_top;
+          high = high || y >= high_from;
+        }
       boundary[s.column(x, z)] = low && high;
     }
   // 4-connected components of the enclosed columns off the labelled boundary, with their room columns and
@@ -137,8 +140,9 @@ void cut_at_labelled_walls(const GridSpec& s, const FloorCeiling& levels, int y_
       while (!queue.empty()) {
         const auto [x, z] = queue.front();
         queue.pop_front();
-        parts[std::size_t(id)].room += room[s.column(x, z)];
-        parts[std::size_t(id)].edge = parts[std::size_t(id)].edge || x == 0 || z == 0 || x == s.nx - 1 || z == s.nz - 1;
+        Part& part = parts[std::size_t(id)];
+        part.room += room[s.column(x, z)];
+        part.edge = part.edge || x == 0 || z == 0 || x == s.nx - 1 || z == s.nz - 1;
         for (const auto& [dx, dz] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
           const int nx = x + dx, nz = z + dz;
           if (nx < 0 || nz < 0 || nx >= s.nx || nz >= s.nz) continue;
@@ -151,14 +155,14 @@ void cut_at_labelled_walls(const GridSpec& s, const FloorCeiling& levels, int y_
     }
   // The room is the largest part the labelled walls close off from the grid's edge; parts as large as half of
   // it are rooms too (the runtime labels each).
-  std::size_t largest = 0, room_inside = 0;
+  std::size_t largest = 0, room_total = 0;
   for (const Part& p : parts) {
     if (!p.edge) largest = std::max(largest, p.room);
-    room_inside += p.room;
+    room_total += p.room;
   }
   // Labels that leave less than half the room in one closed part (walls the runtime did not label, the sides
   // of furniture labelled wall) close nothing.
-  if (2 * largest < room_inside) return;
+  if (2 * largest < room_total) return;
   for (std::size_t c = 0; c < enclosed.size(); ++c) {
     const int id = component[c];
     if (id >= 0 && (parts[std::size_t(id)].edge || 2 * parts[std::size_t(id)].room < largest)) enclosed[c] = 0;

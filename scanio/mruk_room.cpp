@@ -117,12 +117,12 @@ const glm::dmat3 kNativeToPlaneEntity = glm::mat3_cast(glm::angleAxis(-glm::half
 
 // ---- The file --------------------------------------------------------------------------------------------
 
-struct Bounds2 {
-  glm::dvec2 min{0.0}, max{0.0};
+template <glm::length_t N>
+struct Bounds {
+  glm::vec<N, double> min{0.0}, max{0.0};
 };
-struct Bounds3 {
-  glm::dvec3 min{0.0}, max{0.0};
-};
+using Bounds2 = Bounds<2>;
+using Bounds3 = Bounds<3>;
 
 // One anchor, its values already in Unity's convention and metres.
 struct Anchor {
@@ -206,12 +206,20 @@ class Reader {
       if (std::fabs(v[i]) > kMaxLength) fail(where + " lies beyond 1 km");
   }
 
-  template <class Bounds>
-  void check_bounds(const Bounds& b, const std::string& where) const {
-    check_length(b.min, where + ".Min");
-    check_length(b.max, where + ".Max");
-    for (glm::length_t i = 0; i < b.min.length(); ++i)
-      if (b.min[i] > b.max[i]) fail(where + ".Min exceeds Max");
+  // An anchor's "PlaneBounds" or "VolumeBounds", in Unity's convention; none where it has none.
+  template <glm::length_t N>
+  std::optional<Bounds<N>> bounds_member(const json& anchor, const char* key, const std::string& where) const {
+    const json* bounds = member(anchor, key);
+    if (bounds == nullptr) return std::nullopt;
+    const std::string w = where + "." + key;
+    if (!bounds->is_object()) fail(w + " is not an object");
+    Bounds<N> b{vector_member<N>(*bounds, "Min", w), vector_member<N>(*bounds, "Max", w)};
+    if (unreal_) b = from_unreal(b);
+    check_length(b.min, w + ".Min");
+    check_length(b.max, w + ".Max");
+    for (glm::length_t i = 0; i < N; ++i)
+      if (b.min[i] > b.max[i]) fail(w + ".Min exceeds Max");
+    return b;
   }
 
   Anchor read_anchor(const json& a, const std::string& where) const {
@@ -242,14 +250,7 @@ class Reader {
         fail(t + ".Scale is not between 0.001 and 1000");
     }
 
-    if (const json* bounds = member(a, "PlaneBounds"); bounds != nullptr) {
-      const std::string w = where + ".PlaneBounds";
-      if (!bounds->is_object()) fail(w + " is not an object");
-      Bounds2 plane{vector_member<2>(*bounds, "Min", w), vector_member<2>(*bounds, "Max", w)};
-      if (unreal_) plane = from_unreal(plane);
-      check_bounds(plane, w);
-      anchor.plane = plane;
-    }
+    anchor.plane = bounds_member<2>(a, "PlaneBounds", where);
     if (const json* boundary = member(a, "PlaneBoundary2D"); boundary != nullptr) {
       const std::string w = where + ".PlaneBoundary2D";
       if (!boundary->is_array()) fail(w + " is not an array");
@@ -270,14 +271,7 @@ class Reader {
         anchor.plane = box;
       }
     }
-    if (const json* bounds = member(a, "VolumeBounds"); bounds != nullptr) {
-      const std::string w = where + ".VolumeBounds";
-      if (!bounds->is_object()) fail(w + " is not an object");
-      Bounds3 volume{vector_member<3>(*bounds, "Min", w), vector_member<3>(*bounds, "Max", w)};
-      if (unreal_) volume = from_unreal(volume);
-      check_bounds(volume, w);
-      anchor.volume = volume;
-    }
+    anchor.volume = bounds_member<3>(a, "VolumeBounds", where);
     if (const json* mesh = member(a, "GlobalMesh"); mesh != nullptr) {
       if (!mesh->is_object()) fail(where + ".GlobalMesh is not an object");
       anchor.mesh = mesh;

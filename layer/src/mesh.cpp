@@ -71,10 +71,7 @@ Scan merge(const std::vector<const MeshPiece*>& pieces) {
 void add_labelled(LabelledTriangles& out, const MeshPiece& piece, const std::vector<SurfaceLabel>& labels) {
   if (labels.empty() || piece.indices.size() != 3 * labels.size()) return;
   if (out.vertices.size() + piece.vertices.size() > std::numeric_limits<std::uint32_t>::max()) return;
-  const auto base = static_cast<std::uint32_t>(out.vertices.size());
-  out.vertices.insert(out.vertices.end(), piece.vertices.begin(), piece.vertices.end());
-  for (const std::uint32_t i : piece.indices) out.indices.push_back(base + i);
-  out.labels.insert(out.labels.end(), labels.begin(), labels.end());
+  out.add(piece.vertices, piece.indices, labels);
 }
 
 }  // namespace roomsense::layer

@@ -21,9 +21,12 @@ struct LabelledTriangles {
   std::vector<std::uint32_t> indices;  // 3 per triangle
   std::vector<SurfaceLabel> labels;    // one per triangle
   bool empty() const { return labels.empty(); }
-  // Appends the triangles of `mesh` (indices into `vertices`), all labelled `label`.
+  // Appends the triangles of `mesh` (indices into `mesh_vertices`), all labelled `label`, or each with its own
+  // label (one per triangle).
   void add(const std::vector<glm::vec3>& mesh_vertices, const std::vector<std::uint32_t>& mesh_indices,
            SurfaceLabel label);
+  void add(const std::vector<glm::vec3>& mesh_vertices, const std::vector<std::uint32_t>& mesh_indices,
+           const std::vector<SurfaceLabel>& triangle_labels);
 };
 
 struct Scan {

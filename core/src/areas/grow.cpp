@@ -1,6 +1,7 @@
 // Growth of packed areas into the free surface around them (grow.h).
 #include "grow.h"
 
+#include "candidate.h"
 #include "roomsense/cancel.h"
 
 #include <glm/geometric.hpp>
@@ -15,9 +16,8 @@ namespace {
 std::uint64_t sample_key(const glm::vec3& p, float step) {
   // The bias keeps points that lie exactly on a cell border (walls' voxel centres, furniture levels) in one
   // cell whatever the rounding of the sum that gave them.
-  const glm::vec3 q = glm::floor(p / step + 1e-4f);
-  const auto bits = [](float v) { return std::uint64_t(std::uint32_t(std::int32_t(v)) & 0x1FFFFF); };
-  return (bits(q.x) << 42) | (bits(q.y) << 21) | bits(q.z);
+  const glm::ivec3 q(glm::floor(p / step + 1e-4f));
+  return pack_key(q.x, q.y, q.z);
 }
 
 // An area as a rectangle [u0, u1] x [v0, v1] on the axes of its first corner; samples lie at half a step

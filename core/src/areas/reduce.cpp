@@ -20,10 +20,7 @@ namespace {
 // edge share none, two that overlap by a strip of half a voxel or more share some.
 constexpr double kSample = 0.5;  // voxels
 
-std::uint64_t sample_key(long x, long y, long z) {
-  return (std::uint64_t(std::uint32_t(x) & 0x1FFFFF) << 42) | (std::uint64_t(std::uint32_t(y) & 0x1FFFFF) << 21) |
-         std::uint64_t(std::uint32_t(z) & 0x1FFFFF);
-}
+std::uint64_t sample_key(long x, long y, long z) { return pack_key(int(x), int(y), int(z)); }
 
 // Calls f(sx, sy, sz) for each sample cell (half-voxel index) of a wall rectangle, at `layer` voxels off its
 // plane along its horizontal normal, until f returns false. The rectangle runs between voxel centres

@@ -39,10 +39,15 @@ void convert_to_roomsense_frame(Scan& scan, const SourceFrame& frame) {
 
 void LabelledTriangles::add(const std::vector<glm::vec3>& mesh_vertices, const std::vector<std::uint32_t>& mesh_indices,
                             SurfaceLabel label) {
+  add(mesh_vertices, mesh_indices, std::vector<SurfaceLabel>(mesh_indices.size() / 3, label));
+}
+
+void LabelledTriangles::add(const std::vector<glm::vec3>& mesh_vertices, const std::vector<std::uint32_t>& mesh_indices,
+                            const std::vector<SurfaceLabel>& triangle_labels) {
   const auto base = static_cast<std::uint32_t>(vertices.size());
   vertices.insert(vertices.end(), mesh_vertices.begin(), mesh_vertices.end());
   for (const std::uint32_t i : mesh_indices) indices.push_back(base + i);
-  labels.insert(labels.end(), mesh_indices.size() / 3, label);
+  labels.insert(labels.end(), triangle_labels.begin(), triangle_labels.end());
 }
 
 }  // namespace roomsense

@@ -1,0 +1,71 @@
+#include "distance_transform.h"
+
+#include <cmath>
+#include <limits>
+
+namespace roomsense::detail {
+namespace {
+
+// One pass: d[q] = min_p (f[p] + (q - p)²), squared distances in and out. f[0] is finite (a padding cell), so the
+// lower envelope is never empty; cells with no feature hold kFar, far beyond any real squared distance.
+void envelope_1d(const std::vector<double>& f, std::vector<double>& d, std::vector<int>& v, std::vector<double>& z) {
+  const int n = int(f.size());
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const auto at = [&](int i) { return f[std::size_t(i)]; };
+  const auto meet = [&](int q, int p) { return ((at(q) + double(q) * q) - (at(p) + double(p) * p)) / (2.0 * (q - p)); };
+  std::size_t k = 0;
+  v[0] = 0;
+  z[0] = -kInf;
+  z[1] = kInf;
+  for (int q = 1; q < n; ++q) {
+    double s = meet(q, v[k]);
+    while (s <= z[k]) s = meet(q, v[--k]);
+    ++k;
+    v[k] = q;
+    z[k] = s;
+    z[k + 1] = kInf;
+  }
+  k = 0;
+  for (int q = 0; q < n; ++q) {
+    while (z[k + 1] < q) ++k;
+    d[std::size_t(q)] = double(q - v[k]) * double(q - v[k]) + at(v[k]);
+  }
+}
+
+}  // namespace
+
+std::vector<float> distance_to_unmasked(int nx, int nz, const std::vector<std::uint8_t>& mask) {
+  constexpr double kFar = 1e20;
+  // Padded by one cell of 0 on every side: the raster's edge is an edge.
+  const int px = nx + 2, pz = nz + 2;
+  std::vector<double> grid(std::size_t(px) * std::size_t(pz), 0.0);
+  for (int z = 0; z < nz; ++z)
+    for (int x = 0; x < nx; ++x)
+      grid[std::size_t(z + 1) * std::size_t(px) + std::size_t(x + 1)] =
+          mask[std::size_t(z) * std::size_t(nx) + std::size_t(x)] ? kFar : 0.0;
+  const std::size_t longest = std::size_t(std::max(px, pz));
+  std::vector<double> f(longest), d(longest), zs(longest + 1);
+  std::vector<int> v(longest);
+  for (int z = 0; z < pz; ++z) {
+    f.resize(std::size_t(px));
+    d.resize(std::size_t(px));
+    for (int x = 0; x < px; ++x) f[std::size_t(x)] = grid[std::size_t(z) * std::size_t(px) + std::size_t(x)];
+    envelope_1d(f, d, v, zs);
+    for (int x = 0; x < px; ++x) grid[std::size_t(z) * std::size_t(px) + std::size_t(x)] = d[std::size_t(x)];
+  }
+  for (int x = 0; x < px; ++x) {
+    f.resize(std::size_t(pz));
+    d.resize(std::size_t(pz));
+    for (int z = 0; z < pz; ++z) f[std::size_t(z)] = grid[std::size_t(z) * std::size_t(px) + std::size_t(x)];
+    envelope_1d(f, d, v, zs);
+    for (int z = 0; z < pz; ++z) grid[std::size_t(z) * std::size_t(px) + std::size_t(x)] = d[std::size_t(z)];
+  }
+  std::vector<float> out(std::size_t(nx) * std::size_t(nz));
+  for (int z = 0; z < nz; ++z)
+    for (int x = 0; x < nx; ++x)
+      out[std::size_t(z) * std::size_t(nx) + std::size_t(x)] =
+          float(std::sqrt(grid[std::size_t(z + 1) * std::size_t(px) + std::size_t(x + 1)]));
+  return out;
+}
+
+}  // namespace roomsense::detail

@@ -1,0 +1,215 @@
+// Building a RoomQueries: the analysis's grid and features read once into the rasters of room_index.h.
+#include "room_index.h"
+
+#include "areas/classify.h"
+#include "distance_transform.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace roomsense {
+namespace {
+
+// The first occupied level in [from, to), or `to`.
+int first_occupied_up(const std::uint8_t* column, int from, int to) {
+  for (int y = std::max(from, 0); y < to; ++y)
+    if (column[y]) return y;
+  return to;
+}
+
+// The highest occupied level in (to, from], or `to`.
+int first_occupied_down(const std::uint8_t* column, int from, int to) {
+  for (int y = from; y > to; --y)
+    if (column[y]) return y;
+  return to;
+}
+
+// Connected furniture tops: 4-neighbours whose C (Eq. 3.13) differs by at most one level (y_Actual, Eq. 3.41).
+std::vector<std::int32_t> label_tops(const GridSpec& s, const std::vector<int>& furniture) {
+  std::vector<std::int32_t> region(s.column_count(), -1);
+  std::vector<std::size_t> stack;
+  std::int32_t next = 0;
+  for (std::size_t seed = 0; seed < region.size(); ++seed) {
+    if (furniture[seed] == kNoFurniture || region[seed] >= 0) continue;
+    region[seed] = next;
+    stack.assign(1, seed);
+    while (!stack.empty()) {
+      const std::size_t c = stack.back();
+      stack.pop_back();
+      const int x = int(c % std::size_t(s.nx)), z = int(c / std::size_t(s.nx));
+      const int neighbours[4][2] = {{x - 1, z}, {x + 1, z}, {x, z - 1}, {x, z + 1}};
+      for (const auto& n : neighbours) {
+        if (n[0] < 0 || n[1] < 0 || n[0] >= s.nx || n[1] >= s.nz) continue;
+        const std::size_t m = s.column(n[0], n[1]);
+        if (region[m] >= 0 || furniture[m] == kNoFurniture || std::abs(furniture[m] - furniture[c]) > 1) continue;
+        region[m] = next;
+        stack.push_back(m);
+      }
+    }
+    ++next;
+  }
+  return region;
+}
+
+// The wall normals F that face `normal` (within 60°).
+std::uint8_t facing_bits(const glm::vec3& normal) {
+  std::uint8_t bits = 0;
+  for (std::uint8_t b : {kNormalLeft, kNormalRight, kNormalForward, kNormalBackward})
+    if (glm::dot(detail::normal_bits_direction(b), normal) > 0.5f) bits |= b;
+  return bits;
+}
+
+WallFace wall_face(const RoomQueries::Index& ix, const RoomFeatures& f, const Surface& wall) {
+  const GridSpec& s = ix.spec;
+  const float voxel = s.voxel_size;
+  WallFace face;
+  face.storey = wall.storey;
+  face.x_axis = glm::normalize(glm::vec3(wall.x_axis.x, 0.0f, wall.x_axis.z));
+  face.normal = glm::normalize(glm::vec3(wall.normal.x, 0.0f, wall.normal.z));
+  face.start = wall.center - face.x_axis * (0.5f * wall.extents.x);
+  face.start.y = 0.0f;
+  face.nu = std::max(1, int(std::lround(wall.extents.x / voxel)));
+  face.level0 = ix.levels.floor + 1;
+  face.nv = std::max(0, ix.levels.ceiling - face.level0);
+  face.depth.assign(std::size_t(face.nu) * std::size_t(face.nv), 0.0f);
+  const std::uint8_t facing = facing_bits(face.normal);
+  const auto voxel_at = [&](const glm::vec3& p, int level) {
+    return glm::ivec3(int(std::floor((p.x - s.origin.x) / voxel)), level, int(std::floor((p.z - s.origin.z) / voxel)));
+  };
+  constexpr float kMaxDepth = 4.0f;  // metres: deeper is as good as unlimited for any query
+  for (int v = 0; v < face.nv; ++v) {
+    const int level = face.level0 + v;
+    for (int u = 0; u < face.nu; ++u) {
+      const glm::vec3 p = face.start + face.x_axis * ((float(u) + 0.5f) * voxel);
+      // The free voxel F marks lies within a voxel and a half in front of the wall's plane (the plane is where
+      // the scanned surface is, within half a voxel).
+      float t = -1.0f;
+      for (float step : {0.5f, 1.0f, 1.5f}) {
+        const glm::ivec3 q = voxel_at(p + face.normal * (step * voxel), level);
+        if (!s.contains(q.x, q.y, q.z)) continue;
+        const std::size_t i = s.index(q.x, q.y, q.z);
+        if ((f.normals[i] & facing) == 0 || (!f.wall_blocked.empty() && f.wall_blocked[i])) continue;
+        t = step * voxel;
+        break;
+      }
+      if (t < 0.0f) continue;
+      // The wall's scanned surface is there, within a voxel of the plane and a level of the row: an F voxel of a
+      // neighbouring wall column (a wall off the grid's axes) may lie before a window or a hole in this one.
+      bool surface = false;
+      for (float step : {-1.0f, -0.5f, 0.0f, 0.5f})
+        for (int dy = -1; dy <= 1 && !surface; ++dy) {
+          const glm::ivec3 q = voxel_at(p + face.normal * (step * voxel), level + dy);
+          surface = s.contains(q.x, q.y, q.z) && ix.cells[s.index(q.x, q.y, q.z)] != 0;
+        }
+      if (!surface) continue;
+      // Clear space in front: the last free sample, half a voxel apart, before a voxel, a wall or the room's edge.
+      float free_to = t;
+      for (float next = t + 0.5f * voxel; next <= kMaxDepth; next += 0.5f * voxel) {
+        const glm::ivec3 q = voxel_at(p + face.normal * next, level);
+        if (ix.solid(q.x, q.y, q.z) || ix.walls[s.column(q.x, q.z)]) break;
+        free_to = next;
+      }
+      face.depth[std::size_t(v) * std::size_t(face.nu) + std::size_t(u)] = free_to;
+    }
+  }
+  return face;
+}
+
+std::shared_ptr<const RoomQueries::Index> build_index(const AnalysisResult& analysis,
+                                                      const std::vector<Surface>& surfaces) {
+  if (!analysis.ok() || !analysis.features) return nullptr;
+  const RoomFeatures& f = *analysis.features;
+  auto ix = std::make_shared<RoomQueries::Index>();
+  const GridSpec& s = analysis.voxels.grid.spec;
+  ix->spec = s;
+  ix->cells = analysis.voxels.grid.cells;
+  ix->levels = f.levels;
+  ix->floor_y = analysis.floor_y;
+  ix->ceiling_y = analysis.ceiling_y;
+  const AreaParams area_defaults;
+  ix->close_distance = area_defaults.close_distance;
+  ix->close_height = area_defaults.close_height;
+  ix->inside = room_inside(s, f.room, f.enclosed);
+  ix->walls = f.walls;
+  ix->top_level = f.furniture;
+  ix->top_region = label_tops(s, f.furniture);
+
+  const int rough = voxels_for(FeatureParams{}.floor_roughness, s.voxel_size);
+  const std::size_t columns = s.column_count();
+  ix->floor_clear.assign(columns, -1.0f);
+  ix->top_clear.assign(columns, -1.0f);
+  ix->ceiling_clear.assign(columns, -1.0f);
+  std::vector<std::uint8_t> not_floor(columns, 1);
+  for (std::size_t c = 0; c < columns; ++c) {
+    const std::uint8_t* column = ix->cells.data() + c * std::size_t(s.ny);
+    if (!ix->inside[c] || ix->walls[c]) continue;
+    ix->inside_cells.push_back(std::uint32_t(c));
+    if (f.free_floor[c]) {
+      const int o = first_occupied_up(column, f.levels.floor + rough + 1, f.levels.ceiling);
+      ix->floor_clear[c] = (o >= f.levels.ceiling ? ix->ceiling_y : ix->top_y(o)) - ix->floor_y;
+      not_floor[c] = 0;
+      ix->floor_cells.push_back(std::uint32_t(c));
+    }
+    if (f.free_ceiling[c]) {
+      const int o = first_occupied_down(column, f.levels.ceiling - 1, f.levels.floor);
+      ix->ceiling_clear[c] = ix->ceiling_y - (o <= f.levels.floor ? ix->floor_y : ix->top_y(o + 1));
+      ix->ceiling_cells.push_back(std::uint32_t(c));
+    }
+    if (f.furniture[c] != kNoFurniture) {
+      const int o = first_occupied_up(column, f.furniture[c], f.levels.ceiling);
+      ix->top_clear[c] = (o >= f.levels.ceiling ? ix->ceiling_y : ix->top_y(o)) - ix->top_y(f.furniture[c]);
+      ix->top_cells.push_back(std::uint32_t(c));
+    }
+  }
+  ix->stand_distance = detail::distance_to_unmasked(s.nx, s.nz, not_floor);
+  for (float& d : ix->stand_distance) d *= s.voxel_size;
+
+  float longest = 0.0f;
+  for (const Surface& wall : surfaces) {
+    if (wall.kind != SurfaceKind::Wall || wall.storey != 0) continue;
+    ix->faces.push_back(wall_face(*ix, f, wall));
+    if (wall.extents.x > longest) {
+      longest = wall.extents.x;
+      const double deg = std::atan2(-double(wall.x_axis.z), double(wall.x_axis.x)) * 180.0 / std::numbers::pi;
+      ix->dominant_deg = std::fmod(std::fmod(deg, 90.0) + 90.0, 90.0);
+    }
+  }
+  for (std::uint32_t i = 0; i < ix->faces.size(); ++i)
+    for (std::uint32_t c = 0; c < ix->faces[i].depth.size(); ++c)
+      if (ix->faces[i].depth[c] > 0.0f) ix->wall_cells.emplace_back(i, c);
+  return ix;
+}
+
+}  // namespace
+
+RoomQueries::RoomQueries(const AnalysisResult& analysis)
+    : RoomQueries(analysis, analysis.ok() ? extract_surfaces(analysis) : std::vector<Surface>{}) {}
+
+RoomQueries::RoomQueries(const AnalysisResult& analysis, const std::vector<Surface>& surfaces)
+    : index_(build_index(analysis, surfaces)) {}
+
+glm::vec3 Placement::y_axis() const { return glm::cross(normal, x_axis); }
+
+glm::quat Placement::orientation() const { return orientation_of(x_axis, y_axis(), normal); }
+
+std::array<glm::vec3, 4> Placement::corners() const {
+  const glm::vec3 x = x_axis * (0.5f * footprint.x), y = y_axis() * (0.5f * footprint.y);
+  return {center - x - y, center + x - y, center + x + y, center - x + y};
+}
+
+std::string_view to_string(PlacementShortfall shortfall) {
+  switch (shortfall) {
+    case PlacementShortfall::None: return "none";
+    case PlacementShortfall::NoSurface: return "no_surface";
+    case PlacementShortfall::NoSpace: return "no_space";
+    case PlacementShortfall::NoHeadroom: return "no_headroom";
+    case PlacementShortfall::NoReach: return "no_reach";
+    case PlacementShortfall::TooFew: return "too_few";
+  }
+  return "unknown";
+}
+
+}  // namespace roomsense

@@ -77,6 +77,9 @@ class Analyzer {
   std::jthread worker_;
 };
 
+// The analyzer behind a handle of the registry (state.h), or null.
+std::shared_ptr<Analyzer> find_analyzer(XrRoomAnalyzerEXTX handle);
+
 // Runs the core pipeline on `pieces`, with the runtime's `labels`, with the given settings; the stage note
 // (which backend) goes to the log. A stop request ends it with Error(Cancelled) within about 100 ms.
 AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const LabelledTriangles& labels,

@@ -10,7 +10,6 @@
 #include <cstring>
 
 namespace roomsense::layer {
-namespace {
 
 std::shared_ptr<Analyzer> find_analyzer(XrRoomAnalyzerEXTX handle) {
   Registry& r = registry();
@@ -18,6 +17,8 @@ std::shared_ptr<Analyzer> find_analyzer(XrRoomAnalyzerEXTX handle) {
   const auto it = r.analyzers.find(handle);
   return it == r.analyzers.end() ? nullptr : it->second;
 }
+
+namespace {
 
 bool gravity_aligned(XrReferenceSpaceType type) {
   constexpr auto kLocalFloorExt = static_cast<XrReferenceSpaceType>(1000426000);  // XR_EXT_local_floor

@@ -37,7 +37,8 @@
 // XR_EXTX_room_understanding: all of them the layer's own.
 #define ROOMSENSE_EXTX_FUNCTIONS(_)                                                                     \
   _(xrCreateRoomAnalyzerEXTX) _(xrDestroyRoomAnalyzerEXTX) _(xrSubmitRoomMeshEXTX) _(xrComputeRoomEXTX) \
-  _(xrGetRoomComputeStateEXTX) _(xrGetRoomLayoutEXTX) _(xrGetRoomAreasEXTX) _(xrGetRoomBoundsMeshEXTX)
+  _(xrGetRoomComputeStateEXTX) _(xrGetRoomLayoutEXTX) _(xrGetRoomAreasEXTX) _(xrGetRoomBoundsMeshEXTX)    \
+  _(xrFindRoomPlacementsEXTX) _(xrRaycastRoomEXTX) _(xrGetRoomRandomPointEXTX) _(xrLocateRoomPointEXTX)
 
 namespace roomsense::layer {
 

@@ -69,6 +69,7 @@ RoomResult make_room_result(const AnalysisResult& r, const MeshSources& sources,
   out.input_triangles = clamp32(r.input.triangles);
   out.duration = duration;
   out.surfaces = extract_surfaces(r, {}, stop);
+  out.queries = RoomQueries(r, out.surfaces);
 
   nlohmann::json doc = nlohmann::json::parse(analysis_json(r, {kJsonSourceName, 0.0}));
   doc["openxr"] = {{"base_space", sources.base_space},

@@ -2,6 +2,7 @@
 // ROOMSENSE_EXPORT_DIR asks for.
 #pragma once
 #include "roomsense/analysis.h"
+#include "roomsense/queries.h"
 #include "roomsense/surfaces.h"
 
 #include <openxr/openxr.h>
@@ -28,6 +29,7 @@ struct RoomResult {
   std::uint32_t input_vertices = 0, input_triangles = 0;
   XrDuration duration = 0;
   std::vector<Surface> surfaces;  // the planes the standard spatial-entity API serves (spatial/)
+  RoomQueries queries;            // placement queries, raycasts, random points (queries.cpp)
   std::uint64_t input_hash = 0;   // of the meshes analysed (Analyzer::compute_if_changed)
   std::string json;  // roomsense.analysis/1, with an "openxr" member saying where the meshes came from
 };

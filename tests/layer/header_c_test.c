@@ -17,6 +17,23 @@ int main(void) {
   if (strcmp(XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME, "XR_EXTX_room_understanding") != 0) return 1;
   if (XR_ROOM_AREA_TYPE_FURNITURE_EXTX != 4 || XR_ROOM_INTERACTION_NONE_EXTX != 3 || XR_ROOM_COMPUTE_STATE_FAILED_EXTX != 3)
     return 1;
+  {
+    /* Spec version 2: the queries' structures and values. */
+    XrRoomPlacementQueryEXTX query;
+    XrRoomPlacementsEXTX placements = {XR_TYPE_ROOM_PLACEMENTS_EXTX, NULL, 0, 0, NULL, XR_ROOM_PLACEMENT_SHORTFALL_NONE_EXTX};
+    PFN_xrFindRoomPlacementsEXTX place = NULL;
+    PFN_xrRaycastRoomEXTX raycast = NULL;
+    PFN_xrGetRoomRandomPointEXTX random_point = NULL;
+    PFN_xrLocateRoomPointEXTX locate = NULL;
+    memset(&query, 0, sizeof query);
+    query.type = XR_TYPE_ROOM_PLACEMENT_QUERY_EXTX;
+    query.surfaces = XR_ROOM_SURFACE_WALL_BIT_EXTX | XR_ROOM_SURFACE_FURNITURE_BIT_EXTX;
+    if (XR_EXTX_room_understanding_SPEC_VERSION != 2 || query.surfaces != 9 || (long)query.type != 1099999009L ||
+        (long)XR_TYPE_ROOM_POINT_LOCATION_EXTX != 1099999016L || XR_ROOM_PLACEMENT_SHORTFALL_TOO_FEW_EXTX != 5 ||
+        XR_ROOM_REACH_FILTER_DISTANCE_EXTX != 2 || placements.placementCapacityInput != 0)
+      return 1;
+    (void)place, (void)raycast, (void)random_point, (void)locate;
+  }
   (void)get_areas;
   printf("XR_EXTX_room_understanding.h: C ok, %u-byte XrRoomAreaEXTX\n", (unsigned)sizeof area);
   return 0;

@@ -42,6 +42,10 @@ struct Extx {
   PFN_xrGetRoomLayoutEXTX layout = nullptr;
   PFN_xrGetRoomAreasEXTX areas = nullptr;
   PFN_xrGetRoomBoundsMeshEXTX bounds = nullptr;
+  PFN_xrFindRoomPlacementsEXTX place = nullptr;
+  PFN_xrRaycastRoomEXTX raycast = nullptr;
+  PFN_xrGetRoomRandomPointEXTX random_point = nullptr;
+  PFN_xrLocateRoomPointEXTX locate = nullptr;
 
   void load(XrInstance i) {
     create = proc<PFN_xrCreateRoomAnalyzerEXTX>(i, "xrCreateRoomAnalyzerEXTX");
@@ -52,6 +56,10 @@ struct Extx {
     layout = proc<PFN_xrGetRoomLayoutEXTX>(i, "xrGetRoomLayoutEXTX");
     areas = proc<PFN_xrGetRoomAreasEXTX>(i, "xrGetRoomAreasEXTX");
     bounds = proc<PFN_xrGetRoomBoundsMeshEXTX>(i, "xrGetRoomBoundsMeshEXTX");
+    place = proc<PFN_xrFindRoomPlacementsEXTX>(i, "xrFindRoomPlacementsEXTX");
+    raycast = proc<PFN_xrRaycastRoomEXTX>(i, "xrRaycastRoomEXTX");
+    random_point = proc<PFN_xrGetRoomRandomPointEXTX>(i, "xrGetRoomRandomPointEXTX");
+    locate = proc<PFN_xrLocateRoomPointEXTX>(i, "xrLocateRoomPointEXTX");
   }
 };
 

@@ -13,6 +13,7 @@
 #include "spatial_entities.h"
 
 #include "roomsense/areas.h"
+#include "roomsense/queries.h"
 #include "roomsense/bounds.h"
 #include "roomsense/export.h"
 #include "roomsense/report.h"
@@ -132,6 +133,20 @@ void print_report(const demo::Setup& setup, const demo::RoomReport& r, const std
   if (l.inputTriangleCount > 0 && !bounds.indices.empty())
     std::printf("            %.1fx fewer triangles than the scene meshes\n",
                 double(l.inputTriangleCount) / double(bounds.indices.size() / 3));
+
+  const XrRoomPlacementQueryEXTX& q = r.placement_query;
+  std::printf("\nplace       xrFindRoomPlacementsEXTX: %u spots for a %.2f x %.2f x %.2f m object on furniture tops: %zu found%s\n",
+              q.maxPlacements, double(q.objectSize.x), double(q.objectSize.y), double(q.objectSize.z), r.placements.size(),
+              r.placement_shortfall == XR_ROOM_PLACEMENT_SHORTFALL_NONE_EXTX
+                  ? ""
+                  : (std::string(" (") + std::string(to_string(static_cast<PlacementShortfall>(r.placement_shortfall))) + ")").c_str());
+  for (std::size_t i = 0; i < r.placements.size(); ++i) {
+    const XrRoomPlacementEXTX& p = r.placements[i];
+    std::printf("%4zu  %-9s  %-8s  at (%6.2f, %5.2f, %6.2f)  orientation (%.3f, %.3f, %.3f, %.3f)\n", i + 1,
+                type_name(p.surfaceType), reach_name(p.interaction), double(p.pose.position.x), double(p.pose.position.y),
+                double(p.pose.position.z), double(p.pose.orientation.x), double(p.pose.orientation.y),
+                double(p.pose.orientation.z), double(p.pose.orientation.w));
+  }
 }
 
 void write_files(const demo::RoomReport& r, const std::string& room, const fs::path& dir) {

@@ -18,6 +18,7 @@ struct Extx {
   PFN_xrGetRoomLayoutEXTX layout = nullptr;
   PFN_xrGetRoomAreasEXTX areas = nullptr;
   PFN_xrGetRoomBoundsMeshEXTX bounds = nullptr;
+  PFN_xrFindRoomPlacementsEXTX place = nullptr;
 };
 
 bool runtime_offers(const char* extension) {
@@ -82,6 +83,7 @@ RoomReport analyse_room_through_openxr() {
   extx.layout = proc<PFN_xrGetRoomLayoutEXTX>(check, instance.handle, "xrGetRoomLayoutEXTX");
   extx.areas = proc<PFN_xrGetRoomAreasEXTX>(check, instance.handle, "xrGetRoomAreasEXTX");
   extx.bounds = proc<PFN_xrGetRoomBoundsMeshEXTX>(check, instance.handle, "xrGetRoomBoundsMeshEXTX");
+  extx.place = proc<PFN_xrFindRoomPlacementsEXTX>(check, instance.handle, "xrFindRoomPlacementsEXTX");
 
   XrSystemGetInfo system_info{XR_TYPE_SYSTEM_GET_INFO, nullptr};
   system_info.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
@@ -164,6 +166,19 @@ RoomReport analyse_room_through_openxr() {
   bounds.indexCapacityInput = bounds.indexCountOutput;
   bounds.indices = report.bounds_indices.data();
   check(extx.bounds(analyzer, &bounds), "xrGetRoomBoundsMeshEXTX");
+
+  // One placement query: where three 30 cm cubes go on furniture tops (two-call idiom).
+  report.placement_query = {XR_TYPE_ROOM_PLACEMENT_QUERY_EXTX, nullptr};
+  report.placement_query.objectSize = {0.3f, 0.3f, 0.3f};
+  report.placement_query.surfaces = XR_ROOM_SURFACE_FURNITURE_BIT_EXTX;
+  report.placement_query.maxPlacements = 3;
+  XrRoomPlacementsEXTX placements{XR_TYPE_ROOM_PLACEMENTS_EXTX, nullptr};
+  check(extx.place(analyzer, &report.placement_query, &placements), "xrFindRoomPlacementsEXTX");
+  report.placements.assign(placements.placementCountOutput, {XR_TYPE_ROOM_PLACEMENT_EXTX, nullptr});
+  placements.placementCapacityInput = placements.placementCountOutput;
+  placements.placements = report.placements.data();
+  check(extx.place(analyzer, &report.placement_query, &placements), "xrFindRoomPlacementsEXTX");
+  report.placement_shortfall = placements.shortfall;
 
   check(extx.destroy(analyzer), "xrDestroyRoomAnalyzerEXTX");
   check(xrDestroySpace(local), "xrDestroySpace");

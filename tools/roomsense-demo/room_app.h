@@ -18,6 +18,9 @@ struct RoomReport {
   std::vector<XrRoomAreaEXTX> areas;
   std::vector<XrVector3f> bounds_vertices;
   std::vector<uint32_t> bounds_indices;
+  XrRoomPlacementQueryEXTX placement_query{XR_TYPE_ROOM_PLACEMENT_QUERY_EXTX, nullptr};  // the one query the demo asks
+  std::vector<XrRoomPlacementEXTX> placements;
+  XrRoomPlacementShortfallEXTX placement_shortfall = XR_ROOM_PLACEMENT_SHORTFALL_NONE_EXTX;
   std::string json;  // the analysis as the layer reports it (roomsense.analysis/1)
   int frames = 0;    // frames the app ran while the analysis was computed
 };

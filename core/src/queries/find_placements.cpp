@@ -46,6 +46,9 @@ struct Spot {
   float margin = 0;
 };
 
+// The order of spots: higher score first, then lower key (a total order, so the result is deterministic).
+bool worse(const Spot& l, const Spot& r) { return l.score != r.score ? l.score < r.score : l.key > r.key; }
+
 struct Found {
   Placement placement;
   ClearBox object, clear;
@@ -69,16 +72,23 @@ class Search {
     if (glm::length(face) > 1e-6f) face_ = glm::normalize(face);
   }
 
-  // Every spot that may hold the clear box, scored; `up` is the clear space asked along the normal.
-  std::vector<Spot> spots(float up) {
+  // Every spot that may hold the clear box, scored, as a heap: best() takes them out best first. Most queries
+  // take a few dozen of tens of thousands, so ordering them all would cost more than the rest of the query.
+  // `up` is the clear space asked along the normal.
+  std::vector<Spot> spots(float up) const {
     std::vector<Spot> out;
+    out.reserve(4 * ix_.spec.column_count() + 4 * ix_.wall_cells.size());
     for (AreaType type : {AreaType::Floor, AreaType::Ceiling, AreaType::Furniture})
       if (q_.surfaces & surface_bit(type)) horizontal_spots(type, up, out);
     if (q_.surfaces & kOnWall) wall_spots(up, out);
-    std::sort(out.begin(), out.end(), [](const Spot& l, const Spot& r) {
-      return l.score != r.score ? l.score > r.score : l.key < r.key;
-    });
+    std::make_heap(out.begin(), out.end(), worse);
     return out;
+  }
+  static Spot best(std::vector<Spot>& heap) {
+    std::pop_heap(heap.begin(), heap.end(), worse);
+    const Spot spot = heap.back();
+    heap.pop_back();
+    return spot;
   }
 
   // The placement a spot holds, if any, ignoring reach and other placements.
@@ -205,11 +215,15 @@ void Search::wall_spots(float up, std::vector<Spot>& out) const {
     const std::vector<float> dist = detail::distance_to_unmasked(nu, nv, free);
     constexpr double kEps = 1e-6;
     const float hw = need_.half_w + need_.grow, hh = need_.half_d + need_.grow;
-    for (int n = 0; n <= 2 * nv; ++n) {
+    // Centres on cell centres for a footprint an odd number of cells across, on cell edges for an even number:
+    // each then covers as few cells as it can. In half cells, so m and n count half-voxel steps.
+    const auto odd_cells = [&](float half) { return (int(std::ceil(2.0f * half / voxel - 1e-4f)) & 1) != 0; };
+    const int m_first = odd_cells(hw) ? 1 : 0, n_first = odd_cells(hh) ? 1 : 0;
+    for (int n = n_first; n <= 2 * nv; n += 2) {
       const float yc = 0.5f * float(n) * voxel;  // metres above the face's lowest row
       const int v0 = int(std::floor((yc - hh) / voxel + kEps)), v1 = int(std::ceil((yc + hh) / voxel - kEps)) - 1;
       if (v0 < 0 || v1 >= nv || v1 < v0) continue;
-      for (int m = 0; m <= 2 * nu; ++m) {
+      for (int m = m_first; m <= 2 * nu; m += 2) {
         const float uc = 0.5f * float(m) * voxel;
         const int u0 = int(std::floor((uc - hw) / voxel + kEps)), u1 = int(std::ceil((uc + hw) / voxel - kEps)) - 1;
         if (u0 < 0 || u1 >= nu || u1 < u0) continue;
@@ -426,8 +440,8 @@ PlacementResult RoomQueries::find_placements(const PlacementQuery& query) const 
   const float up = search.need().up;
   std::vector<Found> found;
   bool fits_any = false;
-  for (const Spot& spot : search.spots(up)) {
-    std::optional<Found> f = search.place(spot, up);
+  for (std::vector<Spot> spots = search.spots(up); !spots.empty();) {
+    std::optional<Found> f = search.place(Search::best(spots), up);
     if (!f) continue;
     fits_any = true;
     f->placement.reach = search.reach_of(*f);
@@ -450,8 +464,8 @@ PlacementResult RoomQueries::find_placements(const PlacementQuery& query) const 
     return fail(PlacementShortfall::NoReach, "spots on free " + kinds + " hold the " + footprint + ", none within " +
                                                  (query.reach == ReachFilter::Close ? "close" : "distance") + " reach");
   // Would it fit with no clear space along the normal? Then the height was what failed.
-  for (const Spot& spot : search.spots(0.0f))
-    if (search.place(spot, 0.0f))
+  for (std::vector<Spot> spots = search.spots(0.0f); !spots.empty();)
+    if (search.place(Search::best(spots), 0.0f))
       return fail(PlacementShortfall::NoHeadroom, "free " + kinds + " holds the " + footprint + ", but none has " +
                                                       metres(up) + " clear along its normal");
   std::string with;

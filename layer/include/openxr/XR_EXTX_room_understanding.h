@@ -20,6 +20,10 @@
 **   5. xrGetRoomLayoutEXTX, xrGetRoomAreasEXTX (two-call idiom) and xrGetRoomBoundsMeshEXTX (two-call idiom on
 **      both arrays) return the latest completed result; before any result exists they return
 **      XR_ERROR_CALL_ORDER_INVALID. A failed compute leaves the previous result in place.
+**   6. Spec version 2: queries on the latest result, each answered at once (well under a millisecond):
+**      xrFindRoomPlacementsEXTX (where an object of a given size fits: poses best first, two-call idiom),
+**      xrRaycastRoomEXTX, xrGetRoomRandomPointEXTX and xrLocateRoomPointEXTX. Each is deterministic for a given
+**      query and seed. A query the room cannot satisfy succeeds with no result and says why.
 **   Destroying the session (or the instance) destroys its analyzers, also while an analysis runs. Once the
 **   runtime answered one of the layer's calls in the session with XR_ERROR_SESSION_LOST (the compute then ends
 **   FAILED), xrCreateRoomAnalyzerEXTX and xrComputeRoomEXTX return XR_ERROR_SESSION_LOST for that session.
@@ -39,7 +43,7 @@ extern "C" {
 #endif
 
 #define XR_EXTX_room_understanding 1
-#define XR_EXTX_room_understanding_SPEC_VERSION 1
+#define XR_EXTX_room_understanding_SPEC_VERSION 2
 #define XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME "XR_EXTX_room_understanding"
 
 XR_DEFINE_HANDLE(XrRoomAnalyzerEXTX)
@@ -55,6 +59,15 @@ XR_DEFINE_HANDLE(XrRoomAnalyzerEXTX)
 #define XR_TYPE_ROOM_BOUNDS_MESH_EXTX ((XrStructureType)1099999005)
 /* roomsense's addition, chained to XrRoomLayoutEXTX::next: the analysis as JSON (see below). */
 #define XR_TYPE_ROOM_ANALYSIS_JSON_EXTX ((XrStructureType)1099999006)
+/* Spec version 2: the queries. */
+#define XR_TYPE_ROOM_PLACEMENT_QUERY_EXTX ((XrStructureType)1099999009)
+#define XR_TYPE_ROOM_PLACEMENTS_EXTX ((XrStructureType)1099999010)
+#define XR_TYPE_ROOM_PLACEMENT_EXTX ((XrStructureType)1099999011)
+#define XR_TYPE_ROOM_RAYCAST_INFO_EXTX ((XrStructureType)1099999012)
+#define XR_TYPE_ROOM_RAYCAST_HIT_EXTX ((XrStructureType)1099999013)
+#define XR_TYPE_ROOM_RANDOM_POINT_INFO_EXTX ((XrStructureType)1099999014)
+#define XR_TYPE_ROOM_POINT_EXTX ((XrStructureType)1099999015)
+#define XR_TYPE_ROOM_POINT_LOCATION_EXTX ((XrStructureType)1099999016)
 
 #define XR_OBJECT_TYPE_ROOM_ANALYZER_EXTX ((XrObjectType)1099999000)
 
@@ -171,6 +184,127 @@ typedef struct XrRoomBoundsMeshEXTX {
     uint32_t* indices; /* CCW triangles facing free space */
 } XrRoomBoundsMeshEXTX;
 
+/* ---- Queries (spec version 2) ----
+** All positions and directions are in the analyzer's baseSpace. Invalid arguments (a wrong structure type, NULL,
+** a length that is negative, not finite or over 100 m, a zero size or direction, unknown surface bits or enum
+** values, maxPlacements 0 or over 1024) return XR_ERROR_VALIDATION_FAILURE; before the first result,
+** XR_ERROR_CALL_ORDER_INVALID. */
+
+/* Surfaces a query may use: walls, free floor, free ceiling, furniture tops. */
+typedef XrFlags64 XrRoomSurfaceFlagsEXTX;
+static const XrRoomSurfaceFlagsEXTX XR_ROOM_SURFACE_WALL_BIT_EXTX = 0x00000001;
+static const XrRoomSurfaceFlagsEXTX XR_ROOM_SURFACE_FLOOR_BIT_EXTX = 0x00000002;
+static const XrRoomSurfaceFlagsEXTX XR_ROOM_SURFACE_CEILING_BIT_EXTX = 0x00000004;
+static const XrRoomSurfaceFlagsEXTX XR_ROOM_SURFACE_FURNITURE_BIT_EXTX = 0x00000008;
+
+typedef enum XrRoomReachFilterEXTX {
+    XR_ROOM_REACH_FILTER_ANY_EXTX = 0,
+    XR_ROOM_REACH_FILTER_CLOSE_EXTX = 1,    /* interaction CLOSE */
+    XR_ROOM_REACH_FILTER_DISTANCE_EXTX = 2, /* interaction DISTANCE */
+    XR_ROOM_REACH_FILTER_MAX_ENUM_EXTX = 0x7FFFFFFF
+} XrRoomReachFilterEXTX;
+
+/* Why fewer placements than maxPlacements were found. */
+typedef enum XrRoomPlacementShortfallEXTX {
+    XR_ROOM_PLACEMENT_SHORTFALL_NONE_EXTX = 0,
+    XR_ROOM_PLACEMENT_SHORTFALL_NO_SURFACE_EXTX = 1,  /* the room has no free surface of the asked kinds */
+    XR_ROOM_PLACEMENT_SHORTFALL_NO_SPACE_EXTX = 2,    /* none holds the footprint with its clearance and edge distance */
+    XR_ROOM_PLACEMENT_SHORTFALL_NO_HEADROOM_EXTX = 3, /* spots hold the footprint, not its height and clearance above */
+    XR_ROOM_PLACEMENT_SHORTFALL_NO_REACH_EXTX = 4,    /* spots fit, none with the asked reach */
+    XR_ROOM_PLACEMENT_SHORTFALL_TOO_FEW_EXTX = 5,     /* fewer than asked without overlapping */
+    XR_ROOM_PLACEMENT_SHORTFALL_MAX_ENUM_EXTX = 0x7FFFFFFF
+} XrRoomPlacementShortfallEXTX;
+
+/* An object to place, as a box in the frame of the pose a placement returns (the areas' convention): objectSize.x
+** (width) and .y (depth) are its footprint on the surface, .z its height along the surface's normal. On a wall, x
+** runs along the wall, y up it, and z is how far the object stands out. The clear box (footprint grown by
+** clearance on every side, height plus clearanceAbove) holds no scanned surface and stays in the room. */
+typedef struct XrRoomPlacementQueryEXTX {
+    XrStructureType type;
+    const void* XR_MAY_ALIAS next;
+    XrVector3f objectSize;
+    XrRoomSurfaceFlagsEXTX surfaces; /* at least one bit */
+    float clearance;
+    float clearanceAbove;
+    float edgeDistance;              /* the footprint stays this far inside the free surface's edge */
+    XrRoomReachFilterEXTX reach;
+    XrBool32 hasUserPosition;        /* reach from userPosition; else from any free floor (thesis §3.5.1) */
+    XrVector3f userPosition;
+    float userReach;                 /* metres; 0 means 0.7 */
+    XrBool32 hasNearPoint;           /* best first: nearest nearPoint; else the most free space around */
+    XrVector3f nearPoint;
+    XrVector3f faceDirection;        /* non-zero: horizontal footprints turn +Y along it; walls facing it rank higher */
+    uint32_t maxPlacements;          /* 1 to 1024 */
+    XrBool32 allowOverlap;           /* false: no placement lies in another's clear box */
+    uint64_t seed;                   /* breaks ties between equally good spots */
+} XrRoomPlacementQueryEXTX;
+
+typedef struct XrRoomPlacementEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    XrPosef pose;        /* footprint centre on the surface; +Z the normal into free space; walls: +Y up */
+    XrExtent2Df extents; /* the footprint: objectSize.x, objectSize.y */
+    XrRoomAreaTypeEXTX surfaceType;
+    XrRoomInteractionEXTX interaction;
+    uint32_t storeyIndex;
+    float margin;        /* free surface beyond the footprint and its clearance, metres (an estimate, at most 0.5) */
+} XrRoomPlacementEXTX;
+
+/* Two-call idiom on placements: the count is how many the query finds (the same on every call). */
+typedef struct XrRoomPlacementsEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    uint32_t placementCapacityInput;
+    uint32_t placementCountOutput;
+    XrRoomPlacementEXTX* placements; /* each element's type must be XR_TYPE_ROOM_PLACEMENT_EXTX */
+    XrRoomPlacementShortfallEXTX shortfall;
+} XrRoomPlacementsEXTX;
+
+typedef struct XrRoomRaycastInfoEXTX {
+    XrStructureType type;
+    const void* XR_MAY_ALIAS next;
+    XrVector3f origin;
+    XrVector3f direction; /* any length but zero */
+    float maxDistance;    /* metres; 0 means unlimited */
+} XrRoomRaycastInfoEXTX;
+
+/* The first scanned surface or room edge along the ray. */
+typedef struct XrRoomRaycastHitEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    XrBool32 hit;
+    XrVector3f position;
+    XrVector3f normal;   /* unit, against the ray */
+    float distance;
+    XrRoomAreaTypeEXTX surfaceType;
+    XrBool32 scanned;    /* false: the ray left the room where the scan has no surface (a hole, an open door) */
+} XrRoomRaycastHitEXTX;
+
+typedef struct XrRoomRandomPointInfoEXTX {
+    XrStructureType type;
+    const void* XR_MAY_ALIAS next;
+    XrRoomSurfaceFlagsEXTX surfaces; /* 0: a point in the room's free space */
+    float distance;                  /* from the surface's edge; in free space, from every surface */
+    uint64_t seed;
+} XrRoomRandomPointInfoEXTX;
+
+typedef struct XrRoomPointEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    XrBool32 found;
+    XrVector3f position;
+    XrVector3f normal;              /* the surface's; zero for a point in free space */
+    XrRoomAreaTypeEXTX surfaceType; /* 0 for a point in free space */
+} XrRoomPointEXTX;
+
+typedef struct XrRoomPointLocationEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    XrBool32 insideRoom;  /* within its walls, between its floor and its ceiling */
+    XrBool32 inFreeSpace; /* inside, and in no scanned surface */
+    uint32_t storeyIndex;
+} XrRoomPointLocationEXTX;
+
 /* roomsense's addition (chain it to XrRoomLayoutEXTX::next): the whole analysis as JSON, the schema
 ** "roomsense.analysis/1" of the roomsense command line, with stage timings and grid. Two-call idiom:
 ** jsonCountOutput counts the terminating zero; with jsonCapacityInput 0 only the count is written. */
@@ -212,6 +346,14 @@ typedef XrResult(XRAPI_PTR* PFN_xrGetRoomLayoutEXTX)(XrRoomAnalyzerEXTX analyzer
 typedef XrResult(XRAPI_PTR* PFN_xrGetRoomAreasEXTX)(XrRoomAnalyzerEXTX analyzer, uint32_t areaCapacityInput,
                                                     uint32_t* areaCountOutput, XrRoomAreaEXTX* areas);
 typedef XrResult(XRAPI_PTR* PFN_xrGetRoomBoundsMeshEXTX)(XrRoomAnalyzerEXTX analyzer, XrRoomBoundsMeshEXTX* mesh);
+typedef XrResult(XRAPI_PTR* PFN_xrFindRoomPlacementsEXTX)(XrRoomAnalyzerEXTX analyzer, const XrRoomPlacementQueryEXTX* query,
+                                                          XrRoomPlacementsEXTX* placements);
+typedef XrResult(XRAPI_PTR* PFN_xrRaycastRoomEXTX)(XrRoomAnalyzerEXTX analyzer, const XrRoomRaycastInfoEXTX* info,
+                                                   XrRoomRaycastHitEXTX* hit);
+typedef XrResult(XRAPI_PTR* PFN_xrGetRoomRandomPointEXTX)(XrRoomAnalyzerEXTX analyzer, const XrRoomRandomPointInfoEXTX* info,
+                                                          XrRoomPointEXTX* point);
+typedef XrResult(XRAPI_PTR* PFN_xrLocateRoomPointEXTX)(XrRoomAnalyzerEXTX analyzer, const XrVector3f* point,
+                                                       XrRoomPointLocationEXTX* location);
 
 #ifndef XR_NO_PROTOTYPES
 #ifdef XR_EXTENSION_PROTOTYPES
@@ -226,6 +368,14 @@ XRAPI_ATTR XrResult XRAPI_CALL xrGetRoomLayoutEXTX(XrRoomAnalyzerEXTX analyzer, 
 XRAPI_ATTR XrResult XRAPI_CALL xrGetRoomAreasEXTX(XrRoomAnalyzerEXTX analyzer, uint32_t areaCapacityInput,
                                                   uint32_t* areaCountOutput, XrRoomAreaEXTX* areas);
 XRAPI_ATTR XrResult XRAPI_CALL xrGetRoomBoundsMeshEXTX(XrRoomAnalyzerEXTX analyzer, XrRoomBoundsMeshEXTX* mesh);
+XRAPI_ATTR XrResult XRAPI_CALL xrFindRoomPlacementsEXTX(XrRoomAnalyzerEXTX analyzer, const XrRoomPlacementQueryEXTX* query,
+                                                        XrRoomPlacementsEXTX* placements);
+XRAPI_ATTR XrResult XRAPI_CALL xrRaycastRoomEXTX(XrRoomAnalyzerEXTX analyzer, const XrRoomRaycastInfoEXTX* info,
+                                                 XrRoomRaycastHitEXTX* hit);
+XRAPI_ATTR XrResult XRAPI_CALL xrGetRoomRandomPointEXTX(XrRoomAnalyzerEXTX analyzer, const XrRoomRandomPointInfoEXTX* info,
+                                                        XrRoomPointEXTX* point);
+XRAPI_ATTR XrResult XRAPI_CALL xrLocateRoomPointEXTX(XrRoomAnalyzerEXTX analyzer, const XrVector3f* point,
+                                                     XrRoomPointLocationEXTX* location);
 #endif /* XR_EXTENSION_PROTOTYPES */
 #endif /* !XR_NO_PROTOTYPES */
 

@@ -35,6 +35,10 @@ inline XrPosef to_pose(const Rigid& r) {
   return p;
 }
 
+inline glm::vec3 vec3_of(const XrVector3f& v) { return {v.x, v.y, v.z}; }
+inline XrVector3f xr_vector(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+inline XrQuaternionf xr_quaternion(const glm::quat& q) { return {q.x, q.y, q.z, q.w}; }
+
 // A unit quaternion and a finite position, as the spec requires of every pose an application passes in
 // (XR_ERROR_POSE_INVALID otherwise).
 inline bool is_valid_pose(const XrPosef& p) {

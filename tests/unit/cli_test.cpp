@@ -1,5 +1,9 @@
 // `roomsense analyze` as a user runs it: exit codes, one clear stderr line on bad input, the JSON.
 #include "roomsense/mruk_room.h"
+#include "roomsense/analysis.h"
+#include "roomsense/queries.h"
+#include "roomsense/synthetic.h"
+#include "rooms.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
@@ -213,4 +217,76 @@ TEST(Cli, AnMrukRoomIsReadWithItsLabelsUnlessToldNot) {
       EXPECT_GT(wall_areas_over(without, roomsense::scanio::plane_rect(plane)), 0);
     }
   EXPECT_EQ(windows, 1);
+}
+
+// `roomsense place`: the poses core's RoomQueries finds on the same room, as JSON and in plan.svg; what the room
+// cannot hold exits 0 with the reason; bad usage exits 2.
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+TEST(CliPlace, WritesCoresPlacementsAsJsonAndIntoThePlan) {
+  const std::string json = temp_path("place.json"), report = temp_path("place_report");
+  ASSERT_EQ(run_cli("place synthetic:default --size 0.6x0.4x0.05 --on wall --count 4 --seed 3 --json " + json +
+                    " --report " + report).status, 0);
+  const nlohmann::json doc = read_json(json);
+  EXPECT_EQ(doc["schema"], "roomsense.placements/1");
+  EXPECT_EQ(doc["shortfall"], "none");
+  const roomsense::AnalysisResult analysis = roomsense::analyze(roomsense::synth::generate_builtin_source("synthetic:default"));
+  roomsense::PlacementQuery q;
+  q.size = {0.6f, 0.4f, 0.05f};
+  q.surfaces = roomsense::kOnWall;
+  q.max_count = 4;
+  q.seed = 3;
+  const roomsense::PlacementResult want = roomsense::RoomQueries(analysis).find_placements(q);
+  ASSERT_EQ(doc["placements"].size(), want.placements.size());
+  ASSERT_EQ(want.placements.size(), 4u);
+  for (std::size_t i = 0; i < want.placements.size(); ++i) {
+    EXPECT_EQ(doc["placements"][i]["surface"], "wall");
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(doc["placements"][i]["center"][k].get<float>(), want.placements[i].center[k], 1e-5f);
+  }
+  std::ifstream plan(report + "/plan.svg");
+  const std::string svg((std::istreambuf_iterator<char>(plan)), {});
+  std::size_t polygons = 0;
+  for (std::size_t at = svg.find("class=\"placement\""); at != std::string::npos; at = svg.find("class=\"placement\"", at + 1))
+    ++polygons;
+  EXPECT_EQ(polygons, 4u);
+}
+
+TEST(CliPlace, ImpossibleQueriesAnswerAndBadUsageFails) {
+  const std::string json = temp_path("place_none.json");
+  ASSERT_EQ(run_cli("place synthetic:default --size 9x9x1 --on floor --json " + json).status, 0);
+  const nlohmann::json doc = read_json(json);
+  EXPECT_TRUE(doc["placements"].empty());
+  EXPECT_EQ(doc["shortfall"], "no_space");
+  EXPECT_FALSE(doc["reason"].get<std::string>().empty());
+  for (const char* bad : {"place synthetic:default", "place synthetic:default --size 1x1", "place synthetic:default --size 1x1x1 --on sky",
+                          "place synthetic:default --size 1x1x1 --count 0", "place synthetic:default --size 1x1x1 --near 1,2",
+                          "place synthetic:default --size -1x1x1", "place synthetic:default --size 1x1x1 --clearance nan"}) {
+    const CliRun r = run_cli(bad);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_NE(r.err.find("roomsense place:"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(run_cli("place /nonexistent.obj --size 1x1x1").status, 1);
+}
+
+// The acceptance check: three 30 cm cubes on the living room's tables.
+TEST(CliPlace, ThreeCubesOnTheLivingRoomsFurniture) {
+  ROOMSENSE_REQUIRE_ROOM(room, "quest-iwer/living_room.json");
+  const std::string json = temp_path("place_living.json"), report = temp_path("place_living");
+  ASSERT_EQ(run_cli("place " + room.string() + " --size 0.3x0.3x0.3 --on furniture --count 3 --json " + json +
+                    " --report " + report).status, 0);
+  const nlohmann::json doc = read_json(json);
+  ASSERT_EQ(doc["placements"].size(), 3u);
+  for (const auto& p : doc["placements"]) {
+    EXPECT_EQ(p["surface"], "furniture");
+    const float y = p["center"][1].get<float>();  // the capture's floor is at about 0
+    EXPECT_GT(y, 0.3f);
+    EXPECT_LT(y, 1.3f);
+  }
+  std::ifstream plan(report + "/plan.svg");
+  const std::string svg((std::istreambuf_iterator<char>(plan)), {});
+  EXPECT_NE(svg.find("data-index=\"2\" data-surface=\"furniture\""), std::string::npos);
 }

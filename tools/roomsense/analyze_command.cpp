@@ -50,13 +50,6 @@ std::string resolve_backend(const std::string& flag) {
 }
 
 
-// The plan's heading: the scan's file name, or the synthetic:NAME source as given.
-std::string report_title(const std::string& source) {
-  if (synth::is_builtin_source(source)) return source;
-  const std::string name = std::filesystem::path(source).filename().string();
-  return name.empty() ? source : name;
-}
-
 void write_text(const std::string& path, const std::string& text) {
   std::ofstream file(path);
   if (!file || !(file << text << '\n')) throw Error(ErrorCode::Io, "cannot write '" + path + "'");
@@ -64,42 +57,59 @@ void write_text(const std::string& path, const std::string& text) {
 
 }  // namespace
 
+std::string report_title(const std::string& source) {
+  if (synth::is_builtin_source(source)) return source;
+  const std::string name = std::filesystem::path(source).filename().string();
+  return name.empty() ? source : name;
+}
+
+LoadedAnalysis load_and_analyze(const AnalyzeOptions& options, const char*& step) {
+  const std::string backend = resolve_backend(options.backend);
+  LoadedAnalysis out;
+  step = "reading";
+  const auto start = std::chrono::steady_clock::now();
+  out.scan = load_scan(options.scan, options.use_labels);
+  Scan& scan = out.scan;
+  step = "analysing";
+  convert_to_roomsense_frame(scan, options.frame);
+  out.load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  AnalysisOptions analysis;
+  analysis.voxel_size = options.voxel_size;
+  analysis.bounds.min_plateau_area = options.min_plateau;
+  analysis.threads = options.threads;
+  analysis.areas.grow = options.grow_areas;
+  if (options.mode) analysis.mode = *options.mode == "vertices" ? VoxelMode::Vertices : VoxelMode::Triangles;
+  std::unique_ptr<VoxelStage> stage;
+#if ROOMSENSE_HAVE_COMPUTE
+  std::string note;
+  stage = make_voxel_stage(parse_backend(backend), estimated_voxel_count(scan, options.voxel_size), &note);
+  // Say why only when Vulkan was asked for and not given; auto's choice is in the JSON's grid.backend.
+  if (backend == "vulkan" && stage->name() != "vulkan") std::fprintf(stderr, "roomsense analyze: %s\n", note.c_str());
+#else
+  if (backend == "vulkan")
+    throw Error(ErrorCode::BadParameter, "this build has no Vulkan backend (use --backend cpu)");
+#endif
+  analysis.voxel_stage = stage.get();
+  out.result = analyze(scan, analysis);
+  return out;
+}
+
 int analyze_command(const std::vector<std::string>& args) {
   AnalyzeOptions options;
-  std::string backend;
   try {
     options = parse_analyze_options(args);
-    backend = resolve_backend(options.backend);
+    resolve_backend(options.backend);
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "roomsense analyze: %s (see roomsense analyze --help)\n", e.what());
     return 2;
   }
   const char* step = "reading";  // for the out-of-memory line
   try {
-    const auto start = std::chrono::steady_clock::now();
-    Scan scan = load_scan(options.scan, options.use_labels);
-    step = "analysing";
-    convert_to_roomsense_frame(scan, options.frame);
-    const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-
-    AnalysisOptions analysis;
-    analysis.voxel_size = options.voxel_size;
-    analysis.bounds.min_plateau_area = options.min_plateau;
-    analysis.threads = options.threads;
-    analysis.areas.grow = options.grow_areas;
-    if (options.mode) analysis.mode = *options.mode == "vertices" ? VoxelMode::Vertices : VoxelMode::Triangles;
-    std::unique_ptr<VoxelStage> stage;
-#if ROOMSENSE_HAVE_COMPUTE
-    std::string note;
-    stage = make_voxel_stage(parse_backend(backend), estimated_voxel_count(scan, options.voxel_size), &note);
-    // Say why only when Vulkan was asked for and not given; auto's choice is in the JSON's grid.backend.
-    if (backend == "vulkan" && stage->name() != "vulkan") std::fprintf(stderr, "roomsense analyze: %s\n", note.c_str());
-#else
-    if (backend == "vulkan")
-      throw Error(ErrorCode::BadParameter, "this build has no Vulkan backend (use --backend cpu)");
-#endif
-    analysis.voxel_stage = stage.get();
-    const AnalysisResult result = analyze(scan, analysis);
+    const LoadedAnalysis loaded = load_and_analyze(options, step);
+    const Scan& scan = loaded.scan;
+    const AnalysisResult& result = loaded.result;
+    const double load_ms = loaded.load_ms;
     step = "writing the results of";
 
     if (options.bounds_path) {

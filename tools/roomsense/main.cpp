@@ -1,6 +1,7 @@
 // roomsense: the command-line front end of the room pipeline.
 #include "analyze_command.h"
 #include "options.h"
+#include "place_command.h"
 
 #include <cstdio>
 #include <exception>
@@ -15,6 +16,8 @@ int run(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
     std::fputs(roomsense::cli::kUsage, args.empty() ? stderr : stdout);
+    std::fputs("\n", args.empty() ? stderr : stdout);
+    std::fputs(roomsense::cli::kPlaceUsage, args.empty() ? stderr : stdout);
     return args.empty() ? 2 : 0;
   }
   if (args[0] == "analyze") {
@@ -25,6 +28,15 @@ int run(int argc, char** argv) {
         return 0;
       }
     return roomsense::cli::analyze_command(rest);
+  }
+  if (args[0] == "place") {
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
+    for (const std::string& a : rest)
+      if (a == "-h" || a == "--help") {
+        std::fputs(roomsense::cli::kPlaceUsage, stdout);
+        return 0;
+      }
+    return roomsense::cli::place_command(rest);
   }
   std::fprintf(stderr, "roomsense: unknown command '%s' (try roomsense --help)\n", args[0].c_str());
   return 2;

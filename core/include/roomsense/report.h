@@ -6,6 +6,7 @@
 #pragma once
 #include "roomsense/analysis.h"
 #include "roomsense/export.h"
+#include "roomsense/queries.h"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -34,6 +35,7 @@ struct ReportInput {
   const BoundsMesh* bounds = nullptr;  // optional: the room-bounds mesh
   std::span<const Scan> scan;        // the input meshes (several when an app submitted several)
   ReportFeatures voxels;             // optional (both pointers or neither)
+  std::span<const Placement> placements;  // optional: answers of a placement query, drawn above everything
 };
 
 // The CLI's input: a finished analysis of `scan`. Holds references into both.
@@ -51,7 +53,8 @@ std::string_view reach_colour(Reach reach);
 // plan.svg: a top view, looking down -Y. +X points right and +Z points down the page, so the view is the
 // right-handed frame seen from above (+Y towards the viewer). Layers, bottom to top: the room footprint,
 // furniture tops, wall columns with their normals as ticks, the bounds outline at 1.6 m above the floor,
-// then ceiling, floor, furniture and wall areas. Every area is one <polygon class="area"> with data-index,
+// then ceiling, floor, furniture and wall areas, then placements (one <polygon class="placement"> each, with
+// data-index and data-surface; walls as a strip before the wall). Every area is one <polygon class="area"> with data-index,
 // data-type, data-size, data-reach and a <title>; horizontal areas are their rectangle, wall areas (which
 // project to a line) a strip on the room side of their wall. Beside the drawing: a legend, a metre scale
 // bar, the floor and ceiling heights.

@@ -332,9 +332,9 @@ std::string plan_svg(const ReportInput& input) {
   const float draw_w = map.width(), draw_h = map.height();
   const float legend_x = map.left + draw_w + kLegendGap;
   const float below_y = map.top + draw_h + 18.0f;  // scale bar and axes
-  constexpr float kLegendHeight = 440.0f;
+  const float legend_h = input.placements.empty() ? 440.0f : 465.0f;  // one more swatch for placements
   const float page_w = std::ceil(legend_x + kLegendWidth + kMargin);
-  const float page_h = std::ceil(std::max(below_y + 70.0f, map.top + kLegendHeight + kMargin));
+  const float page_h = std::ceil(std::max(below_y + 70.0f, map.top + legend_h + kMargin));
 
   Page p;
   p.line("<?xml version=\"1.0\" encoding=\"UTF-8\"?>");
@@ -457,6 +457,30 @@ std::string plan_svg(const ReportInput& input) {
            escape(area_title(i, a)) + "</title></polygon>");
   }
   p.line("</g>");
+  // Placements: black outlines over everything, numbered best first.
+  p.line("<g id=\"placements\">");
+  for (std::size_t i = 0; i < input.placements.size(); ++i) {
+    const Placement& pl = input.placements[i];
+    const auto xz = [](const glm::vec3& q) { return glm::vec2(q.x, q.z); };
+    const std::array<glm::vec3, 4> c = pl.corners();
+    std::array<glm::vec2, 4> outline = {xz(c[0]), xz(c[1]), xz(c[2]), xz(c[3])};
+    if (pl.surface == AreaType::Wall) {  // a strip before the wall, as deep as a lane
+      const glm::vec2 n = glm::vec2(pl.normal.x, pl.normal.z) * kWallLane;
+      outline = {xz(c[0]), xz(c[1]), xz(c[1]) + n, xz(c[0]) + n};
+    }
+    std::string pts;
+    for (const glm::vec2& q : outline) append(pts, pts.empty() ? "" : " ", map.point(q.x, q.y));
+    const std::string title = "placement " + std::to_string(i + 1) + ": " + std::string(to_string(pl.surface)) + ", " +
+                              std::string(to_string(pl.reach)) + ", at (" + num(pl.center.x, 2) + ", " +
+                              num(pl.center.y, 2) + ", " + num(pl.center.z, 2) + ")";
+    p.line("<polygon class=\"placement\" data-index=\"" + std::to_string(i) + "\" data-surface=\"" +
+           std::string(to_string(pl.surface)) + "\" points=\"" + pts +
+           "\" fill=\"#000000\" fill-opacity=\"0.25\" stroke=\"#000000\" stroke-width=\"2\"><title>" + escape(title) +
+           "</title></polygon>");
+    const glm::vec2 mid = 0.25f * (outline[0] + outline[1] + outline[2] + outline[3]);
+    p.text(map.px(mid.x), map.pz(mid.y) + 4.0f, std::to_string(i + 1), 11, " text-anchor=\"middle\" font-weight=\"bold\"");
+  }
+  p.line("</g>");
   p.line("</g>");  // room
 
   // Metre labels along the top and left of the drawing.
@@ -559,6 +583,10 @@ std::string plan_svg(const ReportInput& input) {
     y += 16.0f;
     p.text(label_x, y, "medium, small further out", 12);
     y += 16.0f;
+    if (!input.placements.empty()) {
+      y += 4.0f;
+      swatch("fill=\"#000000\" fill-opacity=\"0.25\" stroke=\"#000000\" stroke-width=\"2\"", "placement, numbered best first");
+    }
     p.line("</g>");
   }
 

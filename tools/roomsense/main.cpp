@@ -12,31 +12,29 @@
 
 namespace {
 
+struct Command {
+  const char* name;
+  const char* usage;
+  int (*run)(const std::vector<std::string>&);
+};
+const Command kCommands[] = {{"analyze", roomsense::cli::kUsage, roomsense::cli::analyze_command},
+                             {"place", roomsense::cli::kPlaceUsage, roomsense::cli::place_command}};
+
 int run(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
-    std::fputs(roomsense::cli::kUsage, args.empty() ? stderr : stdout);
-    std::fputs("\n", args.empty() ? stderr : stdout);
-    std::fputs(roomsense::cli::kPlaceUsage, args.empty() ? stderr : stdout);
+    for (const Command& c : kCommands) std::fprintf(args.empty() ? stderr : stdout, "%s%s", &c == kCommands ? "" : "\n", c.usage);
     return args.empty() ? 2 : 0;
   }
-  if (args[0] == "analyze") {
+  for (const Command& c : kCommands) {
+    if (args[0] != c.name) continue;
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     for (const std::string& a : rest)
       if (a == "-h" || a == "--help") {
-        std::fputs(roomsense::cli::kUsage, stdout);
+        std::fputs(c.usage, stdout);
         return 0;
       }
-    return roomsense::cli::analyze_command(rest);
-  }
-  if (args[0] == "place") {
-    const std::vector<std::string> rest(args.begin() + 1, args.end());
-    for (const std::string& a : rest)
-      if (a == "-h" || a == "--help") {
-        std::fputs(roomsense::cli::kPlaceUsage, stdout);
-        return 0;
-      }
-    return roomsense::cli::place_command(rest);
+    return c.run(rest);
   }
   std::fprintf(stderr, "roomsense: unknown command '%s' (try roomsense --help)\n", args[0].c_str());
   return 2;

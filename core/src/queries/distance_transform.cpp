@@ -46,20 +46,19 @@ std::vector<float> distance_to_unmasked(int nx, int nz, const std::vector<std::u
   const std::size_t longest = std::size_t(std::max(px, pz));
   std::vector<double> f(longest), d(longest), zs(longest + 1);
   std::vector<int> v(longest);
-  for (int z = 0; z < pz; ++z) {
-    f.resize(std::size_t(px));
-    d.resize(std::size_t(px));
-    for (int x = 0; x < px; ++x) f[std::size_t(x)] = grid[std::size_t(z) * std::size_t(px) + std::size_t(x)];
-    envelope_1d(f, d, v, zs);
-    for (int x = 0; x < px; ++x) grid[std::size_t(z) * std::size_t(px) + std::size_t(x)] = d[std::size_t(x)];
-  }
-  for (int x = 0; x < px; ++x) {
-    f.resize(std::size_t(pz));
-    d.resize(std::size_t(pz));
-    for (int z = 0; z < pz; ++z) f[std::size_t(z)] = grid[std::size_t(z) * std::size_t(px) + std::size_t(x)];
-    envelope_1d(f, d, v, zs);
-    for (int z = 0; z < pz; ++z) grid[std::size_t(z) * std::size_t(px) + std::size_t(x)] = d[std::size_t(z)];
-  }
+  // One pass along every line of `count` cells, `stride` apart, starting at each of `lines` starts `step` apart.
+  const auto pass = [&](int lines, std::size_t step, int count, std::size_t stride) {
+    f.resize(std::size_t(count));
+    d.resize(std::size_t(count));
+    for (int line = 0; line < lines; ++line) {
+      double* cells = grid.data() + std::size_t(line) * step;
+      for (int i = 0; i < count; ++i) f[std::size_t(i)] = cells[std::size_t(i) * stride];
+      envelope_1d(f, d, v, zs);
+      for (int i = 0; i < count; ++i) cells[std::size_t(i) * stride] = d[std::size_t(i)];
+    }
+  };
+  pass(pz, std::size_t(px), px, 1);  // rows
+  pass(px, 1, pz, std::size_t(px));  // columns
   std::vector<float> out(std::size_t(nx) * std::size_t(nz));
   for (int z = 0; z < nz; ++z)
     for (int x = 0; x < nx; ++x)

@@ -3,8 +3,9 @@
 // flags); compute with NULL arrays, index counts that are not whole triangles and indices one past the end;
 // every getter with capacities of 0, the count, one less, one more, NULL buffers and NULL counts (buffers are
 // heap blocks of exactly the capacity, so ASan sees any write past it); waits, state polls, and destroy at any
-// time, also while a compute runs. Returned values are checked against the header's contract.
-//   op (u8 % 11), slot (u8 % 2), then its arguments; at most 24 ops. Point clouds: capi_points.h.
+// time, also while a compute runs; the placement queries with lengths, counts, enums and points in and out of
+// range. Returned values are checked against the header's contract.
+//   op (u8 % 13), slot (u8 % 2), then its arguments; at most 24 ops. Point clouds: capi_points.h.
 #include "capi_points.h"
 #include "roomsense/roomsense.h"
 
@@ -146,13 +147,92 @@ void get_message(FuzzInput& in, rs_analyzer* a) {
   if (r == RS_SUCCESS && cap > 0) check(std::memchr(buffer.get(), 0, cap) != nullptr, "NUL-terminated");
 }
 
+// A length for a query: valid, at the limits, past them, negative, NaN and infinite.
+float length(FuzzInput& in) {
+  static const float lengths[] = {0.0f, 0.05f, 0.3f, 1.0f, 5.0f, 100.0f, 100.5f, -0.1f,
+                                  std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()};
+  return lengths[in.u8() % (sizeof lengths / sizeof lengths[0])];
+}
+
+rs_vec3 point(FuzzInput& in) {
+  const std::vector<float> v = roomsense::fuzz::floats(in, 3);
+  return {v[0], v[1], v[2]};
+}
+
+void find_placements(FuzzInput& in, rs_analyzer* a) {
+  // Exactly sizeof(rs_placement_query) on the heap, as create's options.
+  auto q = std::make_unique<rs_placement_query>();
+  rs_placement_query_init(q.get());
+  const std::uint8_t how = in.u8();
+  if (how & 1) q->struct_size = in.u8();
+  q->size = {length(in), length(in), length(in)};
+  q->surfaces = (how & 2) ? in.u32() : in.u8() % 16;
+  q->clearance = length(in);
+  q->clearance_above = length(in);
+  q->edge_distance = length(in);
+  const std::uint32_t reach = (how & 4) ? in.u32() : in.u8() % 3;
+  std::memcpy(&q->reach, &reach, sizeof reach);
+  q->has_user_position = in.u8() & 1;
+  q->user_position = point(in);
+  q->user_reach = length(in);
+  q->has_near_point = in.u8() & 1;
+  q->near_point = point(in);
+  q->face_direction = (how & 8) ? point(in) : rs_vec3{0, 0, 0};
+  q->max_count = (how & 16) ? in.u32() : in.u8() % 20;
+  q->allow_overlap = in.u8() & 1;
+  q->seed = in.u32();
+  rs_placement_shortfall shortfall = RS_SHORTFALL_MAX_ENUM;
+  two_call<rs_placement>(in, a, [&](rs_analyzer* h, std::uint32_t cap, std::uint32_t* count, rs_placement* out) {
+    const rs_result r = rs_analyzer_find_placements(h, (how & 32) ? nullptr : q.get(), cap, count, out,
+                                                    (how & 64) ? nullptr : &shortfall);
+    if (r == RS_SUCCESS && !(how & 64))
+      check(shortfall >= RS_SHORTFALL_NONE && shortfall <= RS_SHORTFALL_TOO_FEW, "a known shortfall");
+    if (r == RS_SUCCESS && count != nullptr) check(*count <= q->max_count, "at most max_count placements");
+    return r;
+  });
+}
+
+void point_queries(FuzzInput& in, rs_analyzer* a) {
+  const std::uint8_t how = in.u8();
+  const rs_vec3 origin = point(in), direction = point(in);
+  rs_result r;
+  switch (how % 4) {
+    case 0: {
+      auto hit = std::make_unique<rs_ray_hit>();
+      r = rs_analyzer_raycast(a, (how & 4) ? nullptr : &origin, &direction, length(in), (how & 8) ? nullptr : hit.get());
+      if (r == RS_SUCCESS && hit->hit) check(std::isfinite(hit->distance) && hit->distance >= 0.0f, "a finite hit");
+      break;
+    }
+    case 1: {
+      auto where = std::make_unique<rs_location>();
+      r = rs_analyzer_locate(a, (how & 4) ? nullptr : &origin, (how & 8) ? nullptr : where.get());
+      if (r == RS_SUCCESS) check(!where->free || where->inside, "free space is inside");
+      break;
+    }
+    case 2: {
+      auto p = std::make_unique<rs_surface_point>();
+      const std::uint32_t surfaces = (how & 4) ? in.u32() : in.u8() % 16;
+      r = rs_analyzer_random_point_on_surface(a, surfaces, length(in), in.u32(), (how & 8) ? nullptr : p.get());
+      if (r == RS_SUCCESS && p->found) check(p->surface >= RS_AREA_TYPE_WALL && p->surface <= RS_AREA_TYPE_FURNITURE, "a surface");
+      break;
+    }
+    default: {
+      auto p = std::make_unique<rs_surface_point>();
+      r = rs_analyzer_random_point_in_room(a, length(in), in.u32(), (how & 8) ? nullptr : p.get());
+      break;
+    }
+  }
+  check(known(r), "a known result");
+  if (a == nullptr) check(r == RS_ERROR_HANDLE_INVALID, "NULL analyzer");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   FuzzInput in(data, size);
   rs_analyzer* slots[2] = {nullptr, nullptr};
   for (int op = 0; op < 24 && !in.empty(); ++op) {
-    const std::uint8_t code = in.u8() % 11;
+    const std::uint8_t code = in.u8() % 13;
     rs_analyzer*& slot = slots[in.u8() % 2];
     switch (code) {
       case 0: create(in, slot); break;
@@ -198,6 +278,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(rs_result_string(r) != nullptr, "a name for every result");
         break;
       }
+      case 11: find_placements(in, slot); break;
+      case 12: point_queries(in, slot); break;
     }
   }
   rs_analyzer_destroy(slots[0]);

@@ -237,7 +237,7 @@ Bytes thesis_seed(const std::vector<glm::vec3>& points) {
   return out;
 }
 
-// fuzz_capi_handle: create (defaults, 0.1 m), compute (triangles), wait, then every getter, destroy.
+// fuzz_capi_handle: create (defaults, 0.1 m), compute (triangles), wait, then every getter and query, destroy.
 Bytes handle_seed(const Scan& s) {
   Bytes out;
   out.u8(0), out.u8(0);                                   // create, slot 0
@@ -255,6 +255,20 @@ Bytes handle_seed(const Scan& s) {
   out.u8(6), out.u8(0), out.u8(0), out.u8(1);             // areas
   out.u8(7), out.u8(0), out.u8(0), out.u8(1), out.u8(1);  // bounds
   out.u8(8), out.u8(0), out.u8(1);                        // message
+  out.u8(11), out.u8(0), out.u8(0);                       // find placements, slot 0, how
+  out.u8(2), out.u8(2), out.u8(2), out.u8(15);            // a 0.3 m cube on any surface
+  out.u8(0), out.u8(0), out.u8(0), out.u8(0), out.u8(0);  // no clearances, any reach, no user
+  for (int k = 0; k < 3; ++k) out.quantized(0.0f);
+  out.u8(0), out.u8(0);                                   // default user reach, no near point
+  for (int k = 0; k < 3; ++k) out.quantized(0.0f);
+  out.u8(3), out.u8(0), out.u16(7), out.u16(0);           // 3 placements, no overlap, seed 7
+  out.u8(0), out.u8(1);                                   // two calls, capacity = count
+  out.u8(12), out.u8(0), out.u8(0);                       // raycast from the origin
+  for (int k = 0; k < 3; ++k) out.quantized(0.0f);
+  out.quantized(1.0f), out.quantized(-0.5f), out.quantized(0.0f), out.u8(0);
+  out.u8(12), out.u8(0), out.u8(2);                       // a random point on floor or ceiling
+  for (int k = 0; k < 6; ++k) out.quantized(0.0f);        // (the unused ray)
+  out.u8(6), out.u8(1), out.u16(3), out.u16(0);
   out.u8(9), out.u8(0);                                   // destroy
   return out;
 }

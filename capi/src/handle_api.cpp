@@ -6,13 +6,18 @@
 #include "job.h"
 #include "roomsense/analysis.h"
 #include "roomsense/error.h"
+#include "roomsense/queries.h"
 #include "roomsense/scan.h"
 
 #include <algorithm>
+#include <array>
+#include <cstddef>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <new>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -22,6 +27,18 @@ static_assert(sizeof(rs_result) == 4 && sizeof(rs_area_type) == 4 && sizeof(rs_s
 static_assert(sizeof(rs_vec3) == 12 && sizeof(rs_quat) == 16);
 static_assert(sizeof(rs_area) == 4 * 4 + 2 * 12 + 16 + 4 * 12 + 4 * 4);
 static_assert(sizeof(rs_analyzer_options) == 7 * 4);
+static_assert(sizeof(rs_placement) == 3 * 4 + 2 * 12 + 16 + 4 * 12 + 3 * 4);
+static_assert(sizeof(rs_ray_hit) == 4 * 4 + 2 * 12 && sizeof(rs_surface_point) == 2 * 4 + 2 * 12);
+// The query's one padding: 4 bytes before the 8-byte seed, where every C ABI puts them.
+static_assert(sizeof(rs_placement_query) == 104 && offsetof(rs_placement_query, seed) == 96);
+// The surface bits and enums carry core's values (queries.h, areas.h), as the extension's do.
+static_assert(int(RS_SURFACE_WALL) == int(roomsense::kOnWall) && int(RS_SURFACE_FLOOR) == int(roomsense::kOnFloor) &&
+              int(RS_SURFACE_CEILING) == int(roomsense::kOnCeiling) &&
+              int(RS_SURFACE_FURNITURE) == int(roomsense::kOnFurniture) &&
+              int(RS_SURFACE_ANY) == int(roomsense::kOnAnySurface));
+static_assert(RS_REACH_FILTER_CLOSE == int(roomsense::ReachFilter::Close) &&
+              RS_REACH_FILTER_DISTANCE == int(roomsense::ReachFilter::Distance));
+static_assert(RS_SHORTFALL_TOO_FEW == int(roomsense::PlacementShortfall::TooFew));
 
 namespace roomsense::capi {
 
@@ -34,11 +51,14 @@ struct HandleOutput {
   std::vector<rs_area> areas;
   std::vector<float> bounds_xyz;
   std::vector<std::uint32_t> bounds_indices;
+  RoomQueries queries;  // immutable and shared: copied out of the lock and queried there
 };
 
 namespace {
 
 rs_vec3 to_c(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+rs_quat to_c(const glm::quat& q) { return {q.x, q.y, q.z, q.w}; }
+glm::vec3 from_c(const rs_vec3& v) { return {v.x, v.y, v.z}; }
 
 rs_area to_c(const Area& a) {
   rs_area c{};
@@ -48,13 +68,28 @@ rs_area to_c(const Area& a) {
   c.flags = a.flags;
   c.center = to_c(a.center);
   c.normal = to_c(a.normal);
-  const glm::quat q = a.orientation();
-  c.orientation = {q.x, q.y, q.z, q.w};
+  c.orientation = to_c(a.orientation());
   for (std::size_t i = 0; i < 4; ++i) c.corners[i] = to_c(a.corners[i]);
   c.half_width = a.half_width;
   c.half_height = a.half_height;
   c.rotation_deg = a.rotation_deg;
   c.volume_height = a.volume_height;
+  return c;
+}
+
+rs_placement to_c(const Placement& p) {
+  rs_placement c{};
+  c.surface = static_cast<rs_area_type>(p.surface);
+  c.reach = static_cast<rs_reach>(p.reach);
+  c.storey = p.storey;
+  c.center = to_c(p.center);
+  c.normal = to_c(p.normal);
+  c.orientation = to_c(p.orientation());
+  const std::array<glm::vec3, 4> corners = p.corners();
+  for (std::size_t i = 0; i < 4; ++i) c.corners[i] = to_c(corners[i]);
+  c.width = p.footprint.x;
+  c.depth = p.footprint.y;
+  c.margin = p.margin;
   return c;
 }
 
@@ -117,6 +152,7 @@ HandleOutput convert(const AnalysisResult& r) {
   l.area_count = static_cast<std::uint32_t>(out.areas.size());
   l.bounds_vertex_count = static_cast<std::uint32_t>(r.bounds.vertices.size());
   l.bounds_index_count = static_cast<std::uint32_t>(out.bounds_indices.size());
+  out.queries = RoomQueries(r);
   out.status = RS_SUCCESS;
   return out;
 }
@@ -180,11 +216,67 @@ rs_result copy_out(const std::vector<T>& from, std::uint32_t capacity, std::uint
 rs_result guarded(auto&& body) {
   try {
     return body();
+  } catch (const Error& e) {  // core's checks of a query's values: BadParameter
+    return to_result(e.code());
   } catch (const std::bad_alloc&) {
     return RS_ERROR_OUT_OF_MEMORY;
   } catch (...) {
     return RS_ERROR_INTERNAL;
   }
+}
+
+// The queries of the last successful compute, or why there are none; `out` stays empty then, so that a query
+// on it still checks its arguments (core throws BadParameter) before the state is reported.
+rs_result ready_queries(rs_analyzer* analyzer, RoomQueries& out) {
+  return with_ready_output(analyzer, false, [&](const HandleOutput& o) {
+    out = o.queries;
+    return RS_SUCCESS;
+  });
+}
+
+// A C caller can pass any 32 bits in an enum field; read as an integer (see rs_analyzer_create).
+template <class Enum>
+std::uint32_t raw(const Enum& e) {
+  static_assert(sizeof(Enum) == sizeof(std::uint32_t));
+  std::uint32_t v = 0;
+  std::memcpy(&v, &e, sizeof v);
+  return v;
+}
+
+bool finite(const rs_vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// What core cannot check itself: the C struct's version, enum values and flags. Lengths are core's (queries.h).
+std::optional<PlacementQuery> to_core(const rs_placement_query& c) {
+  if (c.struct_size < sizeof(rs_placement_query)) return std::nullopt;
+  if (raw(c.reach) > RS_REACH_FILTER_DISTANCE) return std::nullopt;
+  if (c.has_user_position != 0 && !finite(c.user_position)) return std::nullopt;
+  if (c.has_near_point != 0 && !finite(c.near_point)) return std::nullopt;
+  if (!finite(c.face_direction)) return std::nullopt;
+  PlacementQuery q;
+  q.size = from_c(c.size);
+  q.surfaces = c.surfaces;
+  q.clearance = c.clearance;
+  q.clearance_above = c.clearance_above;
+  q.edge_distance = c.edge_distance;
+  q.reach = static_cast<ReachFilter>(raw(c.reach));
+  if (c.has_user_position != 0) q.user_position = from_c(c.user_position);
+  if (c.user_reach != 0.0f) q.user_reach = c.user_reach;
+  if (c.has_near_point != 0) q.near = from_c(c.near_point);
+  q.face_direction = from_c(c.face_direction);
+  q.max_count = c.max_count;
+  q.allow_overlap = c.allow_overlap != 0;
+  q.seed = c.seed;
+  return q;
+}
+
+rs_surface_point to_c(const std::optional<SurfacePoint>& p) {
+  rs_surface_point c{};
+  if (!p) return c;
+  c.found = 1;
+  c.surface = static_cast<rs_area_type>(p->surface);
+  c.position = to_c(p->position);
+  c.normal = to_c(p->normal);
+  return c;
 }
 
 }  // namespace
@@ -395,6 +487,102 @@ rs_result rs_analyzer_get_message(rs_analyzer* analyzer, uint32_t capacity, uint
       buffer[needed - 1] = '\0';
       return RS_SUCCESS;
     });
+  });
+}
+
+void rs_placement_query_init(rs_placement_query* query) {
+  if (query == nullptr) return;
+  *query = rs_placement_query{};
+  query->struct_size = sizeof(rs_placement_query);
+  const roomsense::PlacementQuery defaults;
+  query->size = to_c(defaults.size);
+  query->surfaces = defaults.surfaces;
+  query->user_reach = defaults.user_reach;
+  query->max_count = defaults.max_count;
+}
+
+rs_result rs_analyzer_find_placements(rs_analyzer* analyzer, const rs_placement_query* query, uint32_t capacity,
+                                      uint32_t* count, rs_placement* placements, rs_placement_shortfall* shortfall) {
+  if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
+  if (query == nullptr || count == nullptr || (capacity != 0 && placements == nullptr)) return RS_ERROR_INVALID_ARGUMENT;
+  const std::optional<roomsense::PlacementQuery> q = to_core(*query);
+  if (!q) return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    roomsense::RoomQueries queries;
+    const rs_result state = ready_queries(analyzer, queries);
+    const roomsense::PlacementResult found = queries.find_placements(*q);  // checks the query's values
+    if (state != RS_SUCCESS) return state;
+    std::vector<rs_placement> out;
+    out.reserve(found.placements.size());
+    for (const roomsense::Placement& p : found.placements) out.push_back(to_c(p));
+    if (shortfall != nullptr) *shortfall = static_cast<rs_placement_shortfall>(found.shortfall);
+    return copy_out(out, capacity, count, placements);
+  });
+}
+
+rs_result rs_analyzer_raycast(rs_analyzer* analyzer, const rs_vec3* origin, const rs_vec3* direction, float max_distance,
+                              rs_ray_hit* out) {
+  if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
+  if (origin == nullptr || direction == nullptr || out == nullptr || !std::isfinite(max_distance) || max_distance < 0.0f)
+    return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    roomsense::RoomQueries queries;
+    const rs_result state = ready_queries(analyzer, queries);
+    const std::optional<roomsense::RayHit> h = queries.raycast(  // checks origin and direction
+        from_c(*origin), from_c(*direction), max_distance == 0.0f ? INFINITY : max_distance);
+    if (state != RS_SUCCESS) return state;
+    *out = rs_ray_hit{};
+    if (h) {
+      out->hit = 1;
+      out->scanned = h->scanned ? 1 : 0;
+      out->surface = static_cast<rs_area_type>(h->surface);
+      out->distance = h->distance;
+      out->position = to_c(h->position);
+      out->normal = to_c(h->normal);
+    }
+    return RS_SUCCESS;
+  });
+}
+
+rs_result rs_analyzer_locate(rs_analyzer* analyzer, const rs_vec3* point, rs_location* out) {
+  if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
+  if (point == nullptr || out == nullptr || !finite(*point)) return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    roomsense::RoomQueries queries;
+    if (const rs_result state = ready_queries(analyzer, queries); state != RS_SUCCESS) return state;
+    const roomsense::RoomLocation where = queries.locate(from_c(*point));
+    *out = {where.inside ? 1 : 0, where.free ? 1 : 0, where.storey};
+    return RS_SUCCESS;
+  });
+}
+
+rs_result rs_analyzer_random_point_on_surface(rs_analyzer* analyzer, uint32_t surfaces, float edge_distance,
+                                              uint64_t seed, rs_surface_point* out) {
+  if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
+  if (out == nullptr) return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    roomsense::RoomQueries queries;
+    const rs_result state = ready_queries(analyzer, queries);
+    const auto found = queries.random_point_on_surface(surfaces, edge_distance, seed);  // checks its arguments
+    if (state != RS_SUCCESS) return state;
+    *out = to_c(found);
+    return RS_SUCCESS;
+  });
+}
+
+rs_result rs_analyzer_random_point_in_room(rs_analyzer* analyzer, float clearance, uint64_t seed,
+                                           rs_surface_point* out) {
+  if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
+  if (out == nullptr) return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    roomsense::RoomQueries queries;
+    const rs_result state = ready_queries(analyzer, queries);
+    const std::optional<glm::vec3> p = queries.random_point_in_room(clearance, seed);
+    if (state != RS_SUCCESS) return state;
+    *out = to_c(p ? std::optional<roomsense::SurfacePoint>(roomsense::SurfacePoint{*p, glm::vec3(0.0f),
+                                                                                  static_cast<roomsense::AreaType>(0)})
+                  : std::nullopt);
+    return RS_SUCCESS;
   });
 }
 

@@ -1,7 +1,7 @@
 /* The C APIs of libRoomCreatorLibrary.so from plain C11, linked against nothing else.
  * The thesis API is used the way a Unity script uses it (thesis §3.8.1): start, poll once per "frame"
  * until the code is not -1, copy the floats out, clean up. The handle API is checked for its two-call
- * idiom, its argument checks and destroying an analyzer while it computes.
+ * idiom, its argument checks, destroying an analyzer while it computes, and its placement queries.
  * Usage: capi_c_test CASE (one ctest per case; see main). */
 #define _POSIX_C_SOURCE 199309L
 #include "roomsense/RoomCreatorLibrary.h"
@@ -654,6 +654,208 @@ static int test_handle_errors(void) {
   return failures;
 }
 
+/* The placement queries (API 1.1) on the box room, against its known geometry: cubes on the table's top, boards
+ * on the walls, footprints on free floor clear of the table; rays to the floor and a wall; inside and outside;
+ * random points; the two-call idiom; every argument check, before and after a compute. */
+static int inside_table(float x, float z, float grow) {
+  return fabsf(x - TABLE_CX) < TABLE_HALF_X + grow && fabsf(z - TABLE_CZ) < TABLE_HALF_Z + grow;
+}
+
+static int test_handle_queries(void) {
+  int n;
+  uint32_t count = 0, i;
+  float* room = box_room(&n, 1);
+  rs_analyzer* a = NULL;
+  rs_placement_query q;
+  rs_placement placements[16];
+  rs_placement_shortfall shortfall = RS_SHORTFALL_MAX_ENUM;
+  const rs_vec3 middle = {BOX_CX - 1.0f, 0.0f, BOX_CZ}, down = {0, -1, 0}, east = {1, 0, 0}, zero = {0, 0, 0};
+  const rs_vec3 outside = {BOX_CX + BOX_HALF_X + 1.0f, 0.0f, BOX_CZ};
+  rs_ray_hit hit;
+  rs_location where;
+  rs_surface_point point;
+
+  rs_placement_query_init(&q);
+  CHECK(q.struct_size == sizeof q && q.size.x == 0.3f && q.surfaces == RS_SURFACE_ANY && q.max_count == 1);
+  rs_placement_query_init(NULL);
+  CHECK(rs_api_version() >= RS_MAKE_VERSION(1, 1, 0));
+
+  /* Before a compute: NULL handle, then the arguments, then the state. */
+  CHECK_RS(rs_analyzer_find_placements(NULL, &q, 0, &count, NULL, NULL), RS_ERROR_HANDLE_INVALID);
+  CHECK_RS(rs_analyzer_raycast(NULL, &middle, &down, 0, &hit), RS_ERROR_HANDLE_INVALID);
+  CHECK_RS(rs_analyzer_locate(NULL, &middle, &where), RS_ERROR_HANDLE_INVALID);
+  CHECK_RS(rs_analyzer_random_point_on_surface(NULL, RS_SURFACE_FLOOR, 0, 0, &point), RS_ERROR_HANDLE_INVALID);
+  CHECK_RS(rs_analyzer_random_point_in_room(NULL, 0, 0, &point), RS_ERROR_HANDLE_INVALID);
+  CHECK_RS(rs_analyzer_create(NULL, &a), RS_SUCCESS);
+  if (!a) return failures;
+  CHECK_RS(rs_analyzer_find_placements(a, &q, 0, &count, NULL, NULL), RS_ERROR_NO_RESULT);
+  q.max_count = 0;
+  CHECK_RS(rs_analyzer_find_placements(a, &q, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+  CHECK_RS(rs_analyzer_raycast(a, &middle, &down, 0, &hit), RS_ERROR_NO_RESULT);
+  CHECK_RS(rs_analyzer_raycast(a, &middle, &zero, 0, &hit), RS_ERROR_INVALID_ARGUMENT);
+  CHECK_RS(rs_analyzer_locate(a, &middle, &where), RS_ERROR_NO_RESULT);
+  CHECK_RS(rs_analyzer_random_point_in_room(a, -1.0f, 0, &point), RS_ERROR_INVALID_ARGUMENT);
+
+  CHECK_RS(rs_analyzer_compute(a, room, (uint32_t)n, NULL, 0), RS_SUCCESS);
+  CHECK_RS(rs_analyzer_wait(a, RS_WAIT_INFINITE, NULL), RS_SUCCESS);
+
+  /* Three 0.3 m cubes on the table's top, two calls; nothing written past the count. */
+  rs_placement_query_init(&q);
+  q.surfaces = RS_SURFACE_FURNITURE;
+  q.max_count = 3;
+  CHECK_RS(rs_analyzer_find_placements(a, &q, 0, &count, NULL, &shortfall), RS_SUCCESS);
+  CHECK_MSG(count == 3 && shortfall == RS_SHORTFALL_NONE, "%u placements, shortfall %d", count, (int)shortfall);
+  if (count >= 2) {
+    uint32_t c = 0;
+    CHECK_RS(rs_analyzer_find_placements(a, &q, count - 1, &c, placements, NULL), RS_ERROR_SIZE_INSUFFICIENT);
+    CHECK(c == count);
+  }
+  memset(placements, 0xAB, sizeof placements);
+  CHECK_RS(rs_analyzer_find_placements(a, &q, 16, &count, placements, NULL), RS_SUCCESS);
+  {
+    unsigned char sentinel[sizeof(rs_placement)];
+    memset(sentinel, 0xAB, sizeof sentinel);
+    CHECK(count <= 3 && memcmp(&placements[count], sentinel, sizeof sentinel) == 0);
+  }
+  for (i = 0; i < count && i < 3; ++i) {
+    const rs_placement* p = &placements[i];
+    int k;
+    CHECK_MSG(p->surface == RS_AREA_TYPE_FURNITURE && p->normal.y > 0.999f && p->width == 0.3f && p->depth == 0.3f,
+              "placement %u: surface %d", i, (int)p->surface);
+    CHECK_MSG(fabsf(p->center.y - (BOX_FLOOR + TABLE_HEIGHT)) < 0.1f, "placement %u at y %g", i, (double)p->center.y);
+    for (k = 0; k < 4; ++k)
+      CHECK_MSG(inside_table(p->corners[k].x, p->corners[k].z, 0.1f), "placement %u corner %d off the table", i, k);
+  }
+
+  /* Floor: 0.6 m squares with 0.2 m clearance never touch the table or leave the room. */
+  rs_placement_query_init(&q);
+  q.size.x = q.size.y = 0.6f;
+  q.size.z = 1.0f;
+  q.clearance = 0.2f;
+  q.surfaces = RS_SURFACE_FLOOR;
+  q.max_count = 6;
+  CHECK_RS(rs_analyzer_find_placements(a, &q, 16, &count, placements, &shortfall), RS_SUCCESS);
+  CHECK_MSG(count == 6, "%u floor placements", count);
+  for (i = 0; i < count && i < 16; ++i) {
+    const rs_placement* p = &placements[i];
+    int k;
+    CHECK(p->surface == RS_AREA_TYPE_FLOOR && fabsf(p->center.y - BOX_FLOOR) < 0.1f);
+    for (k = 0; k < 4; ++k) {
+      CHECK_MSG(!inside_table(p->corners[k].x, p->corners[k].z, 0.1f), "floor placement %u on the table", i);
+      CHECK(fabsf(p->corners[k].x - BOX_CX) < BOX_HALF_X && fabsf(p->corners[k].z - BOX_CZ) < BOX_HALF_Z);
+    }
+  }
+
+  /* Walls: a 0.6 x 0.4 m board, within a voxel of one of the four walls, facing into the room, +Y up. */
+  rs_placement_query_init(&q);
+  q.size.x = 0.6f;
+  q.size.y = 0.4f;
+  q.size.z = 0.05f;
+  q.surfaces = RS_SURFACE_WALL;
+  q.max_count = 4;
+  CHECK_RS(rs_analyzer_find_placements(a, &q, 16, &count, placements, NULL), RS_SUCCESS);
+  CHECK(count == 4);
+  for (i = 0; i < count && i < 16; ++i) {
+    const rs_placement* p = &placements[i];
+    const float dx = BOX_HALF_X - fabsf(p->center.x - BOX_CX), dz = BOX_HALF_Z - fabsf(p->center.z - BOX_CZ);
+    CHECK_MSG(p->surface == RS_AREA_TYPE_WALL && fabsf(p->normal.y) < 1e-5f && (dx < 0.15f || dz < 0.15f),
+              "wall placement %u at (%g, %g)", i, (double)p->center.x, (double)p->center.z);
+    CHECK(fabsf(p->corners[2].y - p->corners[1].y - 0.4f) < 1e-4f); /* +Y up the wall */
+  }
+
+  /* Impossible: a 9 m square. Zero results and why, not an error. */
+  rs_placement_query_init(&q);
+  q.size.x = q.size.y = 9.0f;
+  q.surfaces = RS_SURFACE_FLOOR;
+  CHECK_RS(rs_analyzer_find_placements(a, &q, 16, &count, placements, &shortfall), RS_SUCCESS);
+  CHECK(count == 0 && shortfall == RS_SHORTFALL_NO_SPACE);
+
+  /* Bad queries. */
+  rs_placement_query_init(&q);
+  CHECK_RS(rs_analyzer_find_placements(a, NULL, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+  CHECK_RS(rs_analyzer_find_placements(a, &q, 0, NULL, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+  CHECK_RS(rs_analyzer_find_placements(a, &q, 1, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+  {
+    rs_placement_query bad = q;
+    bad.struct_size = 8;
+    CHECK_RS(rs_analyzer_find_placements(a, &bad, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+    bad = q;
+    bad.surfaces = 0;
+    CHECK_RS(rs_analyzer_find_placements(a, &bad, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+    bad.surfaces = 16;
+    CHECK_RS(rs_analyzer_find_placements(a, &bad, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+    bad = q;
+    bad.reach = (rs_reach_filter)3;
+    CHECK_RS(rs_analyzer_find_placements(a, &bad, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+    bad = q;
+    bad.size.y = -0.1f;
+    CHECK_RS(rs_analyzer_find_placements(a, &bad, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+    bad = q;
+    bad.clearance = NAN;
+    CHECK_RS(rs_analyzer_find_placements(a, &bad, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+    bad = q;
+    bad.edge_distance = 1e9f;
+    CHECK_RS(rs_analyzer_find_placements(a, &bad, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+    bad = q;
+    bad.max_count = 1025;
+    CHECK_RS(rs_analyzer_find_placements(a, &bad, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+    bad = q;
+    bad.has_near_point = 1;
+    bad.near_point.x = INFINITY;
+    CHECK_RS(rs_analyzer_find_placements(a, &bad, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+  }
+
+  /* Rays: down onto the floor (the measured one: the layout's), east onto the wall, none past max_distance. */
+  {
+    rs_layout layout;
+    CHECK_RS(rs_analyzer_get_layout(a, &layout), RS_SUCCESS);
+    CHECK_RS(rs_analyzer_raycast(a, &middle, &down, 0, &hit), RS_SUCCESS);
+    CHECK_MSG(hit.hit && hit.scanned && hit.surface == RS_AREA_TYPE_FLOOR &&
+                  fabsf(hit.position.y - layout.floor_y) < 1e-4f && hit.normal.y > 0.99f,
+              "floor hit %d at y %g, floor %g", hit.hit, (double)hit.position.y, (double)layout.floor_y);
+  }
+  CHECK_RS(rs_analyzer_raycast(a, &middle, &east, 0, &hit), RS_SUCCESS);
+  CHECK_MSG(hit.hit && hit.surface == RS_AREA_TYPE_WALL && fabsf(hit.position.x - (BOX_CX + BOX_HALF_X)) < 0.15f &&
+                hit.normal.x < -0.99f,
+            "wall hit %d at x %g", hit.hit, (double)hit.position.x);
+  CHECK_RS(rs_analyzer_raycast(a, &middle, &east, 0.5f, &hit), RS_SUCCESS);
+  CHECK(!hit.hit && hit.distance == 0.0f);
+  CHECK_RS(rs_analyzer_raycast(a, &middle, &east, -1.0f, &hit), RS_ERROR_INVALID_ARGUMENT);
+  CHECK_RS(rs_analyzer_raycast(a, &middle, &east, NAN, &hit), RS_ERROR_INVALID_ARGUMENT);
+  CHECK_RS(rs_analyzer_raycast(a, NULL, &east, 0, &hit), RS_ERROR_INVALID_ARGUMENT);
+  CHECK_RS(rs_analyzer_raycast(a, &middle, &east, 0, NULL), RS_ERROR_INVALID_ARGUMENT);
+
+  /* Inside and outside. */
+  CHECK_RS(rs_analyzer_locate(a, &middle, &where), RS_SUCCESS);
+  CHECK(where.inside && where.free && where.storey == 0);
+  CHECK_RS(rs_analyzer_locate(a, &outside, &where), RS_SUCCESS);
+  CHECK(!where.inside && !where.free);
+  CHECK_RS(rs_analyzer_locate(a, NULL, &where), RS_ERROR_INVALID_ARGUMENT);
+
+  /* Random points: on the floor, in free space, the same for the same seed. */
+  {
+    rs_surface_point again;
+    uint64_t seed;
+    for (seed = 1; seed <= 8; ++seed) {
+      CHECK_RS(rs_analyzer_random_point_on_surface(a, RS_SURFACE_FLOOR, 0.1f, seed, &point), RS_SUCCESS);
+      CHECK(point.found && point.surface == RS_AREA_TYPE_FLOOR && fabsf(point.position.y - BOX_FLOOR) < 0.1f);
+      CHECK(!inside_table(point.position.x, point.position.z, 0.0f));
+      CHECK_RS(rs_analyzer_random_point_on_surface(a, RS_SURFACE_FLOOR, 0.1f, seed, &again), RS_SUCCESS);
+      CHECK(memcmp(&point, &again, sizeof point) == 0);
+      CHECK_RS(rs_analyzer_random_point_in_room(a, 0.2f, seed, &point), RS_SUCCESS);
+      CHECK(point.found && point.surface == 0 && point.position.y > BOX_FLOOR + 0.2f &&
+            point.position.y < BOX_CEILING - 0.2f && fabsf(point.position.x - BOX_CX) < BOX_HALF_X - 0.2f);
+    }
+    CHECK_RS(rs_analyzer_random_point_on_surface(a, 0, 0, 0, &point), RS_ERROR_INVALID_ARGUMENT);
+    CHECK_RS(rs_analyzer_random_point_on_surface(a, RS_SURFACE_FLOOR, 0, 0, NULL), RS_ERROR_INVALID_ARGUMENT);
+    CHECK_RS(rs_analyzer_random_point_in_room(a, 50.0f, 0, &point), RS_SUCCESS);
+    CHECK(!point.found);
+  }
+  rs_analyzer_destroy(a);
+  free(room);
+  return failures;
+}
+
 /* Destroying analyzers while they compute, several at once: no crash, no leak, no race (ASan/TSan). */
 static int test_handle_destroy_running(void) {
   int n, i;
@@ -724,6 +926,7 @@ int main(int argc, char** argv) {
       {"handle_errors", test_handle_errors},
       {"handle_destroy_running", test_handle_destroy_running},
       {"handle_frames", test_handle_frames},
+      {"handle_queries", test_handle_queries},
   };
   size_t i;
   int ran = 0;

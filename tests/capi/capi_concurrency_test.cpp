@@ -1,7 +1,8 @@
 // Both C APIs under concurrent use, for ThreadSanitizer (scripts/tsan.sh; ctest label `concurrency`) as much as
 // for their results: the handle API on 8 threads sharing one analyzer (getters during computes, computes racing
 // for BUSY), 8 analyzers on 8 threads, analyzers destroyed while they compute on 8 threads, and the thesis API's
-// Retrieve functions polled from 8 threads while both jobs run and while a CleanUp waits for a worker.
+// Retrieve functions polled from 8 threads while both jobs run and while a CleanUp waits for a worker, and the
+// placement queries on 8 threads while computes replace the result they query.
 // Everything uses the C box room (box_room.h), a point cloud that computes in milliseconds.
 #include "roomsense/RoomCreatorLibrary.h"
 #include "roomsense/roomsense.h"
@@ -191,6 +192,63 @@ TEST(CapiConcurrency, HandleDestroyedWhileComputingOnEightThreads) {
 
 // The thesis API's two jobs, each polled from 8 threads: every thread sees -1 until the job is done, then the
 // same array. A CleanUp called while the job runs waits for its worker while the readers keep polling.
+// Queries copy the result's RoomQueries out under the job's lock and run outside it: a compute that replaces the
+// result meanwhile must neither race them nor change an answer (the same room, so the same placements).
+TEST(CapiConcurrency, HandleQueriesOnEightThreadsDuringComputes) {
+  rs_analyzer* a = nullptr;
+  ASSERT_EQ(rs_analyzer_create(nullptr, &a), RS_SUCCESS);
+  ASSERT_EQ(rs_analyzer_compute(a, room().xyz.data(), room().count, nullptr, 0), RS_SUCCESS);
+  ASSERT_EQ(rs_analyzer_wait(a, RS_WAIT_INFINITE, nullptr), RS_SUCCESS);
+  rs_placement_query q;
+  rs_placement_query_init(&q);
+  q.surfaces = RS_SURFACE_FLOOR | RS_SURFACE_FURNITURE;
+  q.max_count = 4;
+  rs_placement expected[4];
+  uint32_t expected_count = 0;
+  ASSERT_EQ(rs_analyzer_find_placements(a, &q, 4, &expected_count, expected, nullptr), RS_SUCCESS);
+  ASSERT_EQ(expected_count, 4u);
+
+  std::atomic<bool> done{false};
+  std::atomic<int> answered{0}, bad{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      const rs_vec3 origin{BOX_CX, 0.0f, BOX_CZ}, down{0.0f, -1.0f, 0.0f};
+      while (!done.load()) {
+        if (t % 2 == 0) {
+          rs_placement got[4];
+          uint32_t count = 0;
+          const rs_result r = rs_analyzer_find_placements(a, &q, 4, &count, got, nullptr);
+          if (r == RS_SUCCESS) {
+            ++answered;
+            if (count != expected_count || std::memcmp(got, expected, sizeof got) != 0) ++bad;
+          } else if (r != RS_ERROR_NOT_READY) {
+            ++bad;
+          }
+        } else {
+          rs_ray_hit hit{};
+          const rs_result r = rs_analyzer_raycast(a, &origin, &down, 0.0f, &hit);
+          if (r == RS_SUCCESS) {
+            ++answered;
+            if (!hit.hit || hit.surface != RS_AREA_TYPE_FLOOR) ++bad;
+          } else if (r != RS_ERROR_NOT_READY) {
+            ++bad;
+          }
+        }
+      }
+    });
+  for (int round = 0; round < 6; ++round) {
+    EXPECT_EQ(rs_analyzer_compute(a, room().xyz.data(), room().count, nullptr, 0), RS_SUCCESS);
+    EXPECT_EQ(rs_analyzer_wait(a, RS_WAIT_INFINITE, nullptr), RS_SUCCESS);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  done = true;
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(bad.load(), 0);
+  EXPECT_GT(answered.load(), 0);
+  rs_analyzer_destroy(a);
+}
+
 TEST(CapiConcurrency, ThesisRetrieveOnEightThreadsWhileBothJobsRun) {
   const std::vector<float>& xyz = room().xyz;
   const int size = static_cast<int>(xyz.size());

@@ -5,6 +5,7 @@
 #include "roomsense/roomsense.h"
 
 #include "roomsense/analysis.h"
+#include "roomsense/queries.h"
 #include "roomsense/synthetic.h"
 
 #include <glm/geometric.hpp>
@@ -64,6 +65,22 @@ ThesisBounds thesis_bounds(const std::vector<float>& flat) {
   }
   EXPECT_EQ(RoomCreator::CleanUpRoomBounds(), 0);
   return out;
+}
+
+// A handle-API analyzer that has analysed `scan` (vertices and triangles) with the default options; null on failure.
+rs_analyzer* computed(const Scan& scan) {
+  rs_analyzer* analyzer = nullptr;
+  EXPECT_EQ(rs_analyzer_create(nullptr, &analyzer), RS_SUCCESS);
+  if (analyzer == nullptr) return nullptr;
+  rs_state state = RS_STATE_IDLE;
+  if (rs_analyzer_compute(analyzer, &scan.vertices[0].x, static_cast<uint32_t>(scan.vertices.size()),
+                          scan.indices.data(), static_cast<uint32_t>(scan.indices.size())) != RS_SUCCESS ||
+      rs_analyzer_wait(analyzer, RS_WAIT_INFINITE, &state) != RS_SUCCESS || state != RS_STATE_READY) {
+    ADD_FAILURE() << "the handle API did not analyse the scan";
+    rs_analyzer_destroy(analyzer);
+    return nullptr;
+  }
+  return analyzer;
 }
 
 class CapiConsistency : public ::testing::TestWithParam<const char*> {
@@ -151,14 +168,8 @@ TEST_P(CapiConsistency, HandleAreasAreAnalyzeAreas) {
   ASSERT_TRUE(expected.ok());
   ASSERT_GT(expected.areas.size(), 0u);
 
-  rs_analyzer* analyzer = nullptr;
-  ASSERT_EQ(rs_analyzer_create(nullptr, &analyzer), RS_SUCCESS);
-  ASSERT_EQ(rs_analyzer_compute(analyzer, &scan.vertices[0].x, static_cast<uint32_t>(scan.vertices.size()),
-                                scan.indices.data(), static_cast<uint32_t>(scan.indices.size())),
-            RS_SUCCESS);
-  rs_state state = RS_STATE_IDLE;
-  ASSERT_EQ(rs_analyzer_wait(analyzer, RS_WAIT_INFINITE, &state), RS_SUCCESS);
-  ASSERT_EQ(state, RS_STATE_READY);
+  rs_analyzer* analyzer = computed(scan);
+  ASSERT_NE(analyzer, nullptr);
   uint32_t count = 0;
   ASSERT_EQ(rs_analyzer_get_areas(analyzer, 0, &count, nullptr), RS_SUCCESS);
   std::vector<rs_area> areas(count);
@@ -199,6 +210,126 @@ TEST_P(CapiConsistency, HandleAreasAreAnalyzeAreas) {
   EXPECT_EQ(layout.storey_count, expected.storeys.size());
   EXPECT_EQ(layout.bounds_vertex_count, expected.bounds.vertices.size());
   EXPECT_EQ(layout.bounds_index_count, expected.bounds.indices.size());
+  rs_analyzer_destroy(analyzer);
+}
+
+void expect_equal(const rs_vec3& c, const glm::vec3& v) {
+  EXPECT_EQ(c.x, v.x);
+  EXPECT_EQ(c.y, v.y);
+  EXPECT_EQ(c.z, v.z);
+}
+
+// The handle API's queries (API 1.1) are core's RoomQueries on the same analysis, value for value.
+TEST_P(CapiConsistency, HandleQueriesAreCoreQueries) {
+  const Scan scan = synth::generate(spec(GetParam()));
+  const AnalysisResult analysis = analyze(scan);
+  ASSERT_TRUE(analysis.ok());
+  const RoomQueries expected(analysis);
+
+  rs_analyzer* analyzer = computed(scan);
+  ASSERT_NE(analyzer, nullptr);
+
+  struct Case {
+    std::uint32_t surfaces;
+    glm::vec3 size;
+    float clearance;
+    rs_reach_filter reach;
+    std::uint32_t count;
+  };
+  for (const Case& k : {Case{RS_SURFACE_FLOOR, {0.5f, 0.5f, 1.0f}, 0.2f, RS_REACH_FILTER_ANY, 4},
+                        Case{RS_SURFACE_FURNITURE, glm::vec3(0.3f), 0.0f, RS_REACH_FILTER_ANY, 3},
+                        Case{RS_SURFACE_WALL, {0.6f, 0.4f, 0.05f}, 0.1f, RS_REACH_FILTER_CLOSE, 5},
+                        Case{RS_SURFACE_ANY, glm::vec3(0.3f), 0.0f, RS_REACH_FILTER_DISTANCE, 8}}) {
+    rs_placement_query c;
+    rs_placement_query_init(&c);
+    c.size = {k.size.x, k.size.y, k.size.z};
+    c.surfaces = k.surfaces;
+    c.clearance = k.clearance;
+    c.reach = k.reach;
+    c.max_count = k.count;
+    c.seed = 7;
+    PlacementQuery q;
+    q.size = k.size;
+    q.surfaces = k.surfaces;
+    q.clearance = k.clearance;
+    q.reach = static_cast<ReachFilter>(k.reach);
+    q.max_count = k.count;
+    q.seed = 7;
+    const PlacementResult want = expected.find_placements(q);
+    SCOPED_TRACE(testing::Message() << "surfaces " << k.surfaces);
+
+    uint32_t count = 0;
+    rs_placement_shortfall shortfall = RS_SHORTFALL_MAX_ENUM;
+    ASSERT_EQ(rs_analyzer_find_placements(analyzer, &c, 0, &count, nullptr, &shortfall), RS_SUCCESS);
+    ASSERT_EQ(count, want.placements.size());
+    EXPECT_EQ(int(shortfall), int(want.shortfall));
+    EXPECT_GT(count, 0u);
+    std::vector<rs_placement> got(count);
+    ASSERT_EQ(rs_analyzer_find_placements(analyzer, &c, count, &count, got.data(), nullptr), RS_SUCCESS);
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      const Placement& p = want.placements[i];
+      EXPECT_EQ(int(got[i].surface), int(p.surface));
+      EXPECT_EQ(int(got[i].reach), int(p.reach));
+      EXPECT_EQ(got[i].storey, p.storey);
+      expect_equal(got[i].center, p.center);
+      expect_equal(got[i].normal, p.normal);
+      const std::array<glm::vec3, 4> corners = p.corners();
+      for (int j = 0; j < 4; ++j) expect_equal(got[i].corners[j], corners[j]);
+      const glm::quat o = p.orientation();
+      EXPECT_EQ(got[i].orientation.x, o.x);
+      EXPECT_EQ(got[i].orientation.w, o.w);
+      EXPECT_EQ(got[i].width, p.footprint.x);
+      EXPECT_EQ(got[i].depth, p.footprint.y);
+      EXPECT_EQ(got[i].margin, p.margin);
+    }
+  }
+
+  // A fan of rays from the room's middle, and points along them.
+  const GridSpec& grid = analysis.voxels.grid.spec;
+  const glm::vec3 far_corner = grid.lattice_to_world(float(grid.nx), float(grid.ny), float(grid.nz));
+  const glm::vec3 middle(0.5f * (grid.origin.x + far_corner.x), 0.5f * (analysis.floor_y + analysis.ceiling_y),
+                         0.5f * (grid.origin.z + far_corner.z));
+  for (int i = 0; i < 24; ++i) {
+    const float a = 0.2618f * float(i);
+    const glm::vec3 direction(std::cos(a), 0.4f * std::sin(3.0f * a), std::sin(a));
+    const std::optional<RayHit> want = expected.raycast(middle, direction);
+    const rs_vec3 o{middle.x, middle.y, middle.z}, d{direction.x, direction.y, direction.z};
+    rs_ray_hit hit{};
+    ASSERT_EQ(rs_analyzer_raycast(analyzer, &o, &d, 0.0f, &hit), RS_SUCCESS);
+    ASSERT_EQ(hit.hit != 0, want.has_value());
+    if (!want) continue;
+    expect_equal(hit.position, want->position);
+    expect_equal(hit.normal, want->normal);
+    EXPECT_EQ(hit.distance, want->distance);
+    EXPECT_EQ(int(hit.surface), int(want->surface));
+    EXPECT_EQ(hit.scanned != 0, want->scanned);
+    for (const float t : {0.5f, 0.99f, 1.01f}) {
+      const glm::vec3 p = middle + glm::normalize(direction) * (t * want->distance);
+      const rs_vec3 cp{p.x, p.y, p.z};
+      rs_location where{};
+      ASSERT_EQ(rs_analyzer_locate(analyzer, &cp, &where), RS_SUCCESS);
+      const RoomLocation w = expected.locate(p);
+      EXPECT_EQ(where.inside != 0, w.inside);
+      EXPECT_EQ(where.free != 0, w.free);
+    }
+  }
+
+  for (std::uint64_t seed = 0; seed < 16; ++seed) {
+    rs_surface_point point{};
+    ASSERT_EQ(rs_analyzer_random_point_on_surface(analyzer, RS_SURFACE_ANY, 0.05f, seed, &point), RS_SUCCESS);
+    const std::optional<SurfacePoint> want = expected.random_point_on_surface(kOnAnySurface, 0.05f, seed);
+    ASSERT_EQ(point.found != 0, want.has_value());
+    if (want) {
+      expect_equal(point.position, want->position);
+      expect_equal(point.normal, want->normal);
+      EXPECT_EQ(int(point.surface), int(want->surface));
+    }
+    ASSERT_EQ(rs_analyzer_random_point_in_room(analyzer, 0.3f, seed, &point), RS_SUCCESS);
+    const std::optional<glm::vec3> free = expected.random_point_in_room(0.3f, seed);
+    ASSERT_EQ(point.found != 0, free.has_value());
+    if (free) expect_equal(point.position, *free);
+    EXPECT_EQ(int(point.surface), 0);
+  }
   rs_analyzer_destroy(analyzer);
 }
 

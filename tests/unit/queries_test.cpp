@@ -161,6 +161,25 @@ TEST(Placements, WallFootprintsLieOnWallsAndFaceTheRoom) {
   }
 }
 
+// A wall off the grid's axes is a voxel staircase, often two voxels thick: its faces must still be whole, so that a
+// board wider than a staircase step fits (before the fix, at 30° no 0.8 m footprint found a place).
+TEST(Placements, WallsOffTheGridAxesHoldWideBoards) {
+  for (const synth::RoomSpec& spec : {synth::rotated_room(30.0f), synth::rotated_room(17.0f), synth::pentagon_room()}) {
+    SCOPED_TRACE(spec.name);
+    PlacementQuery q;
+    q.size = {1.2f, 0.8f, 0.05f};
+    q.clearance = 0.1f;
+    q.surfaces = kOnWall;
+    q.max_count = 4;
+    const PlacementResult r = queries_of(spec).find_placements(q);
+    ASSERT_EQ(r.placements.size(), 4u) << r.reason;
+    for (const Placement& p : r.placements) {
+      for (const glm::vec3& c : p.corners()) EXPECT_LT(std::abs(synth::distance_to_walls(spec, xz(c))), 0.15f);
+      EXPECT_FALSE(crosses_window(spec, p)) << p.center.x << " " << p.center.y << " " << p.center.z;
+    }
+  }
+}
+
 TEST(Placements, CeilingFootprintsHangFromTheCeiling) {
   const synth::RoomSpec spec = synth::default_room();
   PlacementQuery q;

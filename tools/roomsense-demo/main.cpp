@@ -168,8 +168,25 @@ void write_files(const demo::RoomReport& r, const std::string& room, const fs::p
                                    static_cast<Reach>(a.interaction), {a.pose.position.x, a.pose.position.y, a.pose.position.z},
                                    glm::quat(a.pose.orientation.w, a.pose.orientation.x, a.pose.orientation.y, a.pose.orientation.z),
                                    a.extents.width, a.extents.height));
+  // The placements xrFindRoomPlacementsEXTX returned, as the object's pose and box.
+  std::vector<Placement> placements;
+  for (const XrRoomPlacementEXTX& p : r.placements) {
+    const glm::quat q(p.pose.orientation.w, p.pose.orientation.x, p.pose.orientation.y, p.pose.orientation.z);
+    Placement pl;
+    pl.surface = static_cast<AreaType>(p.surfaceType);
+    pl.reach = static_cast<Reach>(p.interaction);
+    pl.storey = p.storeyIndex;
+    pl.center = {p.pose.position.x, p.pose.position.y, p.pose.position.z};
+    pl.normal = q * glm::vec3(0.0f, 0.0f, 1.0f);
+    pl.x_axis = q * glm::vec3(1.0f, 0.0f, 0.0f);
+    pl.footprint = {p.extents.width, p.extents.height};
+    pl.height = r.placement_query.objectSize.z;
+    pl.margin = p.margin;
+    placements.push_back(pl);
+  }
   ReportInput report;
   report.title = room + " (through OpenXR)";
+  report.placements = placements;
   report.floor_y = r.layout.floorHeight;
   report.ceiling_y = r.layout.ceilingHeight;
   report.areas = areas;

@@ -21,6 +21,10 @@
  *     rs_analyzer_get_areas(a, n, &n, areas);
  *     rs_analyzer_destroy(a);
  *
+ * After a compute, the analyzer also answers placement queries (API 1.1, at the end of this header): where an
+ * object of a given size can go, random points on the surfaces and in free space, whether a point is inside
+ * the room, and where a ray hits it.
+ *
  * Frame: results are in roomsense's frame, right-handed, +Y up, metres (OpenXR's STAGE/LOCAL). Input in
  * another frame is converted first as rs_analyzer_options says (up axis, units, handedness); results are
  * not converted back. Triangles, input and output, are counter-clockwise seen from the front.
@@ -52,7 +56,7 @@ extern "C" {
  * a library with the same major version as the header is compatible. */
 #define RS_MAKE_VERSION(major, minor, patch) \
   ((((uint32_t)(major)) << 22) | (((uint32_t)(minor)) << 12) | ((uint32_t)(patch)))
-#define RS_API_VERSION RS_MAKE_VERSION(1, 0, 0)
+#define RS_API_VERSION RS_MAKE_VERSION(1, 1, 0)  /* 1.1: placement queries */
 
 /* Every enum has a _MAX_ENUM member, as in OpenXR: it makes the enum 32 bits wide in every compiler and
  * lets C++ hold any 32-bit value a caller passes (options are checked, not trusted).
@@ -230,6 +234,123 @@ ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_get_bounds(rs_analyzer* analyzer, ui
  * "ok" and any warnings (skipped vertices, ...), or why it failed. */
 ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_get_message(rs_analyzer* analyzer, uint32_t capacity, uint32_t* count,
                                                         char* buffer);
+
+/* ---- Placement queries (API 1.1) ----
+ * Questions about the room of the last successful compute, answered in microseconds to a millisecond without
+ * copying the room, from any thread, at the same time as the getters. Each answer is deterministic for the
+ * same query and seed. Like the getters they return RS_ERROR_NOT_READY while a compute runs, RS_ERROR_NO_RESULT
+ * before the first and the failure's code after a failed one. A query the room cannot satisfy is not an error:
+ * it finds nothing and says why. */
+
+/* The surfaces a query may use. The values are those of the extension's XrRoomSurfaceFlagsEXTX. */
+typedef enum rs_surface_bits {
+  RS_SURFACE_WALL = 1, RS_SURFACE_FLOOR = 2, RS_SURFACE_CEILING = 4, RS_SURFACE_FURNITURE = 8,
+  RS_SURFACE_ANY = 15, RS_SURFACE_BITS_MAX_ENUM = 0x7FFFFFFF
+} rs_surface_bits;
+
+/* The reach a placement must have (thesis §3.5.1); 0 accepts any. */
+typedef enum rs_reach_filter {
+  RS_REACH_FILTER_ANY = 0, RS_REACH_FILTER_CLOSE = 1, RS_REACH_FILTER_DISTANCE = 2, RS_REACH_FILTER_MAX_ENUM = 0x7FFFFFFF
+} rs_reach_filter;
+
+/* Why fewer placements than max_count were found. */
+typedef enum rs_placement_shortfall {
+  RS_SHORTFALL_NONE = 0,
+  RS_SHORTFALL_NO_SURFACE = 1,   /* the room has no free surface of the asked kinds */
+  RS_SHORTFALL_NO_SPACE = 2,     /* no spot holds the footprint with its clearance and edge distance */
+  RS_SHORTFALL_NO_HEADROOM = 3,  /* spots hold the footprint, not the object's height and clearance above */
+  RS_SHORTFALL_NO_REACH = 4,     /* spots fit, none with the asked reach */
+  RS_SHORTFALL_TOO_FEW = 5,      /* some found, not max_count without overlapping */
+  RS_SHORTFALL_MAX_ENUM = 0x7FFFFFFF
+} rs_placement_shortfall;
+
+/* An object to place: a box in the frame of the pose a placement returns. size.x (width) and size.y (depth)
+ * span its footprint on the surface, size.z is its height along the surface's normal; on a wall x runs along
+ * the wall, y up it. Lengths are metres, finite, at most 100 m. */
+typedef struct rs_placement_query {
+  uint32_t struct_size;      /* sizeof(rs_placement_query); rs_placement_query_init sets it */
+  rs_vec3 size;              /* each > 0 */
+  uint32_t surfaces;         /* rs_surface_bits, at least one */
+  float clearance;           /* free space around the footprint on every side */
+  float clearance_above;     /* free space above the object's height */
+  float edge_distance;       /* the footprint stays this far inside its free surface's edge */
+  rs_reach_filter reach;
+  int32_t has_user_position; /* non-zero: reach is judged from user_position (close: within user_reach of it) */
+  rs_vec3 user_position;     /* otherwise close means next to free floor, as the thesis's areas */
+  float user_reach;          /* metres; 0 means 0.7 */
+  int32_t has_near_point;    /* non-zero: best first means nearest near_point; else the most free space */
+  rs_vec3 near_point;
+  rs_vec3 face_direction;    /* non-zero: the footprint's +Y points this way on horizontal surfaces */
+  uint32_t max_count;        /* 1 to 1024 */
+  int32_t allow_overlap;     /* zero: no two placements' clear boxes overlap */
+  uint64_t seed;             /* breaks ties between equally good spots */
+} rs_placement_query;
+
+/* Fills *query with the defaults: a 0.3 m cube on any surface, no clearance, any reach, one placement, seed 0. */
+ROOMSENSE_CAPI_EXPORT void rs_placement_query_init(rs_placement_query* query);
+
+/* One place for the object. Pose as rs_area's: +Z the normal into free space, walls +Y up; corners are the
+ * footprint's, counter-clockwise seen from the front. */
+typedef struct rs_placement {
+  rs_area_type surface;
+  rs_reach reach;
+  uint32_t storey;          /* 0: the main storey */
+  rs_vec3 center;           /* the footprint's centre, on the surface */
+  rs_vec3 normal;
+  rs_quat orientation;      /* rotates (X, Y, Z) onto (width axis, depth axis, normal) */
+  rs_vec3 corners[4];
+  float width, depth;       /* the query's size.x and size.y */
+  float margin;             /* free surface beyond the footprint, its clearance and edge distance, metres */
+} rs_placement;
+
+/* Up to query->max_count placements, best first (two-call idiom: the count and *shortfall are set by both
+ * calls). shortfall may be NULL. RS_ERROR_INVALID_ARGUMENT for a NULL query or count, a struct_size below
+ * this version's, or a value out of range. */
+ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_find_placements(rs_analyzer* analyzer, const rs_placement_query* query,
+                                                            uint32_t capacity, uint32_t* count,
+                                                            rs_placement* placements,
+                                                            rs_placement_shortfall* shortfall);
+
+typedef struct rs_ray_hit {
+  int32_t hit;              /* zero: nothing within max_distance; the other members are zero */
+  int32_t scanned;          /* zero: the ray left through an unscanned part (a hole, an open door); the hit
+                               lies on the room's bounds there */
+  rs_area_type surface;
+  float distance;           /* from the origin along the unit direction, metres */
+  rs_vec3 position;
+  rs_vec3 normal;           /* unit, against the ray */
+} rs_ray_hit;
+
+/* The first scanned surface or room edge along the ray, within a voxel. max_distance 0 means unlimited.
+ * RS_ERROR_INVALID_ARGUMENT for NULL pointers, a non-finite origin, a zero or non-finite direction or a
+ * negative max_distance. */
+ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_raycast(rs_analyzer* analyzer, const rs_vec3* origin,
+                                                    const rs_vec3* direction, float max_distance, rs_ray_hit* out);
+
+typedef struct rs_location {
+  int32_t inside;           /* within the room's walls, between its floor and its ceiling */
+  int32_t free;             /* inside, and in no voxel of the scan */
+  uint32_t storey;
+} rs_location;
+
+ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_locate(rs_analyzer* analyzer, const rs_vec3* point, rs_location* out);
+
+typedef struct rs_surface_point {
+  int32_t found;            /* zero: no such surface, or no free space with that clearance */
+  rs_area_type surface;     /* 0 for a point in free space */
+  rs_vec3 position;
+  rs_vec3 normal;           /* zero for a point in free space */
+} rs_surface_point;
+
+/* A point on free surface of the asked kinds (rs_surface_bits, at least one), at least edge_distance inside
+ * its edge, uniform over their area. */
+ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_random_point_on_surface(rs_analyzer* analyzer, uint32_t surfaces,
+                                                                    float edge_distance, uint64_t seed,
+                                                                    rs_surface_point* out);
+
+/* A point inside the room with no scanned voxel and no room edge within `clearance` metres. */
+ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_random_point_in_room(rs_analyzer* analyzer, float clearance, uint64_t seed,
+                                                                 rs_surface_point* out);
 
 #ifdef __cplusplus
 }  /* extern "C" */

@@ -87,6 +87,7 @@ struct Placement {
   glm::vec3 normal{0.0f, 1.0f, 0.0f};  // +Z, into free space
   glm::vec3 x_axis{1.0f, 0.0f, 0.0f};  // +X, the footprint's width; on walls horizontal
   glm::vec2 footprint{0.0f};           // the query's size.x, size.y
+  float height = 0.0f;                 // the query's size.z: the object's box stands this far along the normal
   float margin = 0.0f;  // free surface beyond the footprint, its clearance and edge distance (metres, capped)
 
   glm::vec3 y_axis() const;        // normal × x_axis: on walls up

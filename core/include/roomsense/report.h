@@ -61,8 +61,9 @@ std::string_view reach_colour(Reach reach);
 std::string plan_svg(const ReportInput& input);
 
 // scene.glb: nodes "scan" (grey), "bounds" (translucent) and one per area, "area N TYPE SIZE REACH" with N
-// the area's index in input.areas, each a thin quad 1 cm in front of its surface, coloured by reach.
-// A node whose mesh would be empty (no scan, no bounds) is left out.
+// the area's index in input.areas, each a thin quad 1 cm in front of its surface, coloured by reach; then one
+// per placement, "placement N SURFACE", the object's box (its footprint extruded along the normal by its height)
+// in magenta. A node whose mesh would be empty (no scan, no bounds) is left out.
 GlbScene scene_glb(const ReportInput& input);
 
 // The file names write_report uses inside its folder.

@@ -318,6 +318,8 @@ std::optional<Found> Search::place_horizontal(const Spot& spot, float up) const 
     p.normal = normal;
     p.x_axis = x_axis;
     p.footprint = glm::vec2(q_.size.x, q_.size.y);
+  p.height = q_.size.z;
+    p.height = q_.size.z;
     p.margin = spot.margin;
     const glm::vec2 c(p.center.x, p.center.z), u(x_axis.x, x_axis.z);
     const float y_far = down ? y - up : y + up;
@@ -343,6 +345,7 @@ std::optional<Found> Search::place_on_wall(const Spot& spot, float up) const {
   p.x_axis = face.x_axis;
   p.storey = face.storey;
   p.footprint = glm::vec2(q_.size.x, q_.size.y);
+  p.height = q_.size.z;
   p.margin = spot.margin;
   const glm::vec2 u(face.x_axis.x, face.x_axis.z), n(face.normal.x, face.normal.z), c(p.center.x, p.center.z);
   f.object = {c + n * (0.5f * q_.size.z), u, need_.half_w, 0.5f * q_.size.z, p.center.y - need_.half_d,

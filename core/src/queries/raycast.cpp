@@ -100,7 +100,9 @@ std::optional<RayHit> RoomQueries::raycast(const glm::vec3& origin, const glm::v
     if ((kind == AreaType::Floor || kind == AreaType::Ceiling) && axis == 1) {
       const double plane = ((kind == AreaType::Floor ? ix.floor_y : ix.ceiling_y) - s.origin.y) / voxel;
       const double t_plane = (plane - o.y) / d.y;
-      if (t_plane > t_grid && t_plane < t_grid + delta.y) t_hit = t_plane;
+      // Up to the voxel's far face included: a scan whose floor lies on a voxel boundary (the grid starts there)
+      // fills the voxel above it.
+      if (t_plane > t_grid && t_plane <= t_grid + delta.y * (1.0 + 1e-6)) t_hit = t_plane;
     }
     h.distance = float(t_hit * voxel);
     h.position = origin + glm::vec3(d) * h.distance;

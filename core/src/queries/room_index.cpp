@@ -54,11 +54,12 @@ std::vector<std::int32_t> label_tops(const GridSpec& s, const std::vector<int>& 
   return region;
 }
 
-// The wall normals F that face `normal` (within 60°).
+// The wall normals F that face `normal` (within 70°: a wall at 30° to the grid is a staircase whose front voxels
+// face either axis).
 std::uint8_t facing_bits(const glm::vec3& normal) {
   std::uint8_t bits = 0;
   for (std::uint8_t b : {kNormalLeft, kNormalRight, kNormalForward, kNormalBackward})
-    if (glm::dot(detail::normal_bits_direction(b), normal) > 0.5f) bits |= b;
+    if (glm::dot(detail::normal_bits_direction(b), normal) > 0.34f) bits |= b;
   return bits;
 }
 
@@ -84,15 +85,23 @@ WallFace wall_face(const RoomQueries::Index& ix, const RoomFeatures& f, const Su
     const int level = face.level0 + v;
     for (int u = 0; u < face.nu; ++u) {
       const glm::vec3 p = face.start + face.x_axis * ((float(u) + 0.5f) * voxel);
-      // The free voxel F marks lies within a voxel and a half in front of the wall's plane (the plane is where
-      // the scanned surface is, within half a voxel).
+      // The first free voxel in front of the wall's plane (the plane is where the scanned surface is, within half
+      // a voxel; the surface's voxels may be two thick) must be F facing this way, or next to one: a wall off the
+      // grid's axes is a staircase, and the line along the normal may pass the F voxel of its step diagonally.
       float t = -1.0f;
-      for (float step : {0.5f, 1.0f, 1.5f}) {
+      for (float step = 0.25f; step <= 2.5f; step += 0.25f) {
         const glm::ivec3 q = voxel_at(p + face.normal * (step * voxel), level);
-        if (!s.contains(q.x, q.y, q.z)) continue;
-        const std::size_t i = s.index(q.x, q.y, q.z);
-        if ((f.normals[i] & facing) == 0 || (!f.wall_blocked.empty() && f.wall_blocked[i])) continue;
-        t = step * voxel;
+        if (!s.contains(q.x, q.y, q.z)) break;
+        if (ix.cells[s.index(q.x, q.y, q.z)] != 0) continue;
+        const auto open_f = [&](int x, int z) {
+          if (!s.contains(x, q.y, z)) return false;
+          const std::size_t i = s.index(x, q.y, z);
+          return (f.normals[i] & facing) != 0 && (f.wall_blocked.empty() || !f.wall_blocked[i]);
+        };
+        const bool blocked = !f.wall_blocked.empty() && f.wall_blocked[s.index(q.x, q.y, q.z)];
+        if (!blocked && (open_f(q.x, q.z) || open_f(q.x - 1, q.z) || open_f(q.x + 1, q.z) || open_f(q.x, q.z - 1) ||
+                         open_f(q.x, q.z + 1)))
+          t = step * voxel;
         break;
       }
       if (t < 0.0f) continue;

@@ -461,6 +461,7 @@ std::string plan_svg(const ReportInput& input) {
   p.line("<g id=\"placements\">");
   for (std::size_t i = 0; i < input.placements.size(); ++i) {
     const Placement& pl = input.placements[i];
+    if (!report_detail::drawable_type(pl.surface) || !report_detail::drawable_reach(pl.reach)) continue;
     const auto xz = [](const glm::vec3& q) { return glm::vec2(q.x, q.z); };
     const std::array<glm::vec3, 4> c = pl.corners();
     std::array<glm::vec2, 4> outline = {xz(c[0]), xz(c[1]), xz(c[2]), xz(c[3])};

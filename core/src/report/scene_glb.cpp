@@ -1,10 +1,11 @@
-// scene.glb: the scan in grey, the translucent bounds and every area as a thin quad coloured by reach, each
-// its own named node of a GlbScene (export.h), so a glTF viewer can toggle them.
+// scene.glb: the scan in grey, the translucent bounds, every area as a thin quad coloured by reach and every
+// placement as the object's box, each its own named node of a GlbScene (export.h), so a glTF viewer can toggle them.
 #include "report/report_common.h"
 #include "roomsense/report.h"
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -16,8 +17,27 @@ constexpr float kAreaLift = 0.01f;  // metres in front of the surface, so the qu
 constexpr std::array<float, 4> kScanGrey = {0.55f, 0.55f, 0.55f, 1.0f};
 constexpr std::array<float, 4> kBoundsColour = {0.95f, 0.72f, 0.30f, 0.30f};
 constexpr float kAreaAlpha = 0.75f;
+constexpr std::array<float, 4> kPlacementColour = {0.80f, 0.05f, 0.75f, 0.85f};  // magenta: no reach colour
+constexpr float kMinBoxHeight = 0.01f;  // metres: a flat object still shows as a slab
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// The object's box of a placement: its footprint on the surface, extruded along the normal. Outward faces
+// counter-clockwise. Empty when a coordinate is not finite.
+std::vector<glm::vec3> placement_box(const Placement& p) {
+  const std::array<glm::vec3, 4> base = p.corners();
+  const glm::vec3 up = p.normal * std::max(p.height, kMinBoxHeight);
+  std::vector<glm::vec3> box(base.begin(), base.end());
+  for (const glm::vec3& c : base) box.push_back(c + up);
+  for (const glm::vec3& c : box)
+    if (!finite(c)) return {};
+  return box;
+}
+
+// Bottom (seen from below), top, then the four sides; base corners 0-3 counter-clockwise seen from the normal's
+// side, top corners 4-7 above them.
+const std::vector<std::uint32_t> kBoxIndices = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                                                 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
 
 // glTF's baseColorFactor is linear; the report's colours are sRGB.
 std::array<float, 4> linear_rgba(std::string_view hex, float alpha) {
@@ -86,6 +106,13 @@ GlbScene scene_glb(const ReportInput& input) {
                              std::string(to_string(a.size)) + " " + std::string(to_string(a.reach));
     // Counter-clockwise from the front, like the corners.
     scene.add_mesh(name, quad, {0, 1, 2, 0, 2, 3}, linear_rgba(reach_colour(a.reach), kAreaAlpha));
+  }
+  for (std::size_t i = 0; i < input.placements.size(); ++i) {
+    const Placement& p = input.placements[i];
+    const std::vector<glm::vec3> box = placement_box(p);
+    if (box.empty() || !report_detail::drawable_type(p.surface)) continue;  // its name is undefined
+    scene.add_mesh("placement " + std::to_string(i) + " " + std::string(to_string(p.surface)), box, kBoxIndices,
+                   kPlacementColour);
   }
   return scene;
 }

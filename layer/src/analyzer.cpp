@@ -8,7 +8,7 @@
 #include <cmath>
 #include <unordered_set>
 #if ROOMSENSE_HAVE_COMPUTE
-#include "roomsense/backend.h"
+#include "roomsense/voxel_stage_choice.h"
 #endif
 
 namespace roomsense::layer {
@@ -50,7 +50,7 @@ std::vector<SourceChunk> query_best_source(const InstanceState& instance, const 
 }  // namespace
 
 AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const LabelledTriangles& labels,
-                              float voxel_size, BackendChoice backend, std::stop_token stop) {
+                              float voxel_size, Backend backend, std::stop_token stop) {
   Scan scan = merge(pieces);
   scan.labels = labels;
   AnalysisOptions options;
@@ -59,14 +59,11 @@ AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const
   std::unique_ptr<VoxelStage> stage;
 #if ROOMSENSE_HAVE_COMPUTE
   std::string note;
-  const Backend wanted = backend == BackendChoice::Cpu ? Backend::Cpu
-                         : backend == BackendChoice::Vulkan ? Backend::Vulkan
-                                                            : Backend::Auto;
-  stage = make_voxel_stage(wanted, estimated_voxel_count(scan, voxel_size), &note);
-  if (backend == BackendChoice::Vulkan && stage->name() != "vulkan") log_warn("backend: " + note);
+  stage = make_voxel_stage(backend, estimated_voxel_count(scan, voxel_size), &note);
+  if (backend == Backend::Vulkan && stage->name() != "vulkan") log_warn("backend: " + note);
   else log_info("backend: " + note);
 #else
-  if (backend == BackendChoice::Vulkan) log_warn("backend: this build has no Vulkan backend; cpu used");
+  if (backend == Backend::Vulkan) log_warn("backend: this build has no Vulkan backend; cpu used");
 #endif
   options.voxel_stage = stage.get();
   return analyze(scan, options);

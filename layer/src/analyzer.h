@@ -25,7 +25,7 @@ class Analyzer {
     XrSpace base_space = XR_NULL_HANDLE;  // the layer's own copy of the application's baseSpace
     XrReferenceSpaceType base_type = XR_REFERENCE_SPACE_TYPE_LOCAL;
     float voxel_size = 0.1f;
-    BackendChoice backend = BackendChoice::Auto;  // already resolved against ROOMSENSE_BACKEND
+    Backend backend = Backend::Auto;  // already resolved against ROOMSENSE_BACKEND
   };
 
   Analyzer(std::shared_ptr<SessionState> session, Settings settings);
@@ -83,6 +83,6 @@ std::shared_ptr<Analyzer> find_analyzer(XrRoomAnalyzerEXTX handle);
 // Runs the core pipeline on `pieces`, with the runtime's `labels`, with the given settings; the stage note
 // (which backend) goes to the log. A stop request ends it with Error(Cancelled) within about 100 ms.
 AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const LabelledTriangles& labels,
-                              float voxel_size, BackendChoice backend, std::stop_token stop = {});
+                              float voxel_size, Backend backend, std::stop_token stop = {});
 
 }  // namespace roomsense::layer

@@ -3,8 +3,6 @@
 #include "log.h"
 #include "sources/source_support.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cstdlib>
 
 namespace roomsense::layer {
@@ -25,14 +23,9 @@ void read_milliseconds(const char* name, long long lo, long long hi, std::chrono
 Config read_config() {
   Config c;
   if (const char* dir = std::getenv("ROOMSENSE_EXPORT_DIR"); dir != nullptr) c.export_dir = dir;
-  if (const char* env = std::getenv("ROOMSENSE_BACKEND"); env != nullptr && *env != '\0') {
-    std::string v = env;
-    std::transform(v.begin(), v.end(), v.begin(), [](unsigned char ch) { return char(std::tolower(ch)); });
-    if (v == "auto") c.env_backend = BackendChoice::Auto;
-    else if (v == "cpu") c.env_backend = BackendChoice::Cpu;
-    else if (v == "vulkan") c.env_backend = BackendChoice::Vulkan;
-    else log_warn(std::string("ROOMSENSE_BACKEND='") + env + "' ignored (auto, cpu or vulkan)");
-  }
+  std::string note;
+  c.env_backend = backend_from_environment(Backend::Auto, &note);
+  if (!note.empty()) log_warn(note);
   read_milliseconds("ROOMSENSE_RUNTIME_TIMEOUT_MS", 1, 600000, c.runtime_timeout);
   read_milliseconds("ROOMSENSE_SPATIAL_INTERVAL_MS", 100, 3600000, c.spatial_interval);
   set_runtime_timeout(c.runtime_timeout);  // the sources' waits (one instance at a time: the loader's limit)

@@ -3,16 +3,16 @@
 // ROOMSENSE_LOG_FILE in log.h.
 // DISABLE_XR_APILAYER_ROOMSENSE is the loader's business (the manifest's disable_environment).
 #pragma once
+#include "roomsense/backend.h"
+
 #include <chrono>
 #include <string>
 
 namespace roomsense::layer {
 
-enum class BackendChoice { Auto, Cpu, Vulkan };
-
 struct Config {
   std::string export_dir;                          // empty: no export
-  BackendChoice env_backend = BackendChoice::Auto;  // ROOMSENSE_BACKEND; applies where the app asks for AUTO
+  Backend env_backend = Backend::Auto;  // ROOMSENSE_BACKEND; applies where the app asks for AUTO
   // ROOMSENSE_RUNTIME_TIMEOUT_MS: how long a mesh source waits for a future or query that never completes.
   std::chrono::milliseconds runtime_timeout = std::chrono::seconds(10);
   // ROOMSENSE_SPATIAL_INTERVAL_MS: how often the layer looks at the runtime's meshes again while an application

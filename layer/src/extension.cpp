@@ -70,8 +70,8 @@ XrResult XRAPI_CALL xrCreateRoomAnalyzerEXTX(XrSession session, const XrRoomAnal
     if (const XrResult r = s->instance->next.xrCreateReferenceSpace(session, &copy, &settings.base_space); XR_FAILED(r)) return r;
     settings.base_type = base.type;
     settings.voxel_size = voxel == 0.0f ? kDefaultVoxelSize : voxel;
-    settings.backend = backend == XR_ROOM_COMPUTE_BACKEND_CPU_EXTX      ? BackendChoice::Cpu
-                       : backend == XR_ROOM_COMPUTE_BACKEND_VULKAN_EXTX ? BackendChoice::Vulkan
+    settings.backend = backend == XR_ROOM_COMPUTE_BACKEND_CPU_EXTX      ? Backend::Cpu
+                       : backend == XR_ROOM_COMPUTE_BACKEND_VULKAN_EXTX ? Backend::Vulkan
                                                                         : s->instance->config.env_backend;
     auto created = std::make_shared<Analyzer>(s, settings);
     Registry& r = registry();

@@ -1,6 +1,6 @@
 // Backend choice: parsing, the environment, the factory's fallbacks, and the device ranking.
 #include "device_choice.h"
-#include "roomsense/backend.h"
+#include "roomsense/voxel_stage_choice.h"
 #include "roomsense/error.h"
 #include "vulkan_test_env.h"
 

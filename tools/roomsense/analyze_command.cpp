@@ -11,7 +11,7 @@
 #include "roomsense/synthetic.h"
 #include "summary.h"
 #if ROOMSENSE_HAVE_COMPUTE
-#include "roomsense/backend.h"
+#include "roomsense/voxel_stage_choice.h"
 #endif
 
 #include <algorithm>

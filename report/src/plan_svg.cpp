@@ -1,6 +1,6 @@
 // plan.svg: the top view of a room analysis, looking down -Y, with +X to the right and +Z down the page
 // (the right-handed frame seen from above). Page units are pixels; world metres map to them by one scale.
-#include "report/report_common.h"
+#include "report_common.h"
 #include "roomsense/report.h"
 
 #include <glm/geometric.hpp>

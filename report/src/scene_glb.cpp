@@ -1,6 +1,6 @@
 // scene.glb: the scan in grey, the translucent bounds, every area as a thin quad coloured by reach and every
 // placement as the object's box, each its own named node of a GlbScene (export.h), so a glTF viewer can toggle them.
-#include "report/report_common.h"
+#include "report_common.h"
 #include "roomsense/report.h"
 
 #include <glm/geometric.hpp>

@@ -1,10 +1,9 @@
-// Choosing the voxel-stage backend: `--backend`, ROOMSENSE_BACKEND, or the extension's create info.
+// Choosing the voxel-stage backend: `--backend`, ROOMSENSE_BACKEND, or the extension's create info. The choice
+// is core's; the Vulkan stage it may pick lives in compute/ (voxel_stage_choice.h: make_voxel_stage).
 #pragma once
 #include "roomsense/scan.h"
-#include "roomsense/voxelize.h"
 
 #include <cstddef>
-#include <memory>
 #include <string>
 #include <string_view>
 
@@ -25,14 +24,8 @@ Backend backend_from_environment(Backend fallback = Backend::Auto, std::string* 
 // (kDefaultVoxelBudget), which the analysis refuses, it probes no device.
 inline constexpr std::size_t kVulkanCrossoverVoxels = std::size_t{1} << 21;
 
-// The stage for `backend`. `problem_size_hint` is the grid's voxel count (GridSpec::voxel_count), used by
-// Auto. Never returns nullptr: when Vulkan is asked for but unavailable, it returns the CPU stage and says
-// why in *note (also set to a one-line account of the choice otherwise).
 // The voxel count of the grid a scan's finite extents need, before outlier rejection: the size hint for
 // make_voxel_stage's Auto choice. 0 for a scan without finite vertices.
 std::size_t estimated_voxel_count(const Scan& scan, float voxel_size);
-
-std::unique_ptr<VoxelStage> make_voxel_stage(Backend backend, std::size_t problem_size_hint,
-                                             std::string* note = nullptr);
 
 }  // namespace roomsense

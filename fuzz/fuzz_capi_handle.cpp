@@ -180,6 +180,7 @@ void find_placements(FuzzInput& in, rs_analyzer* a) {
   q->face_direction = (how & 8) ? point(in) : rs_vec3{0, 0, 0};
   q->max_count = (how & 16) ? in.u32() : in.u8() % 20;
   q->allow_overlap = in.u8() & 1;
+  if (how & 128) q->reserved = in.u8();
   q->seed = in.u32();
   rs_placement_shortfall shortfall = RS_SHORTFALL_MAX_ENUM;
   two_call<rs_placement>(in, a, [&](rs_analyzer* h, std::uint32_t cap, std::uint32_t* count, rs_placement* out) {

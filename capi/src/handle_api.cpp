@@ -29,8 +29,9 @@ static_assert(sizeof(rs_area) == 4 * 4 + 2 * 12 + 16 + 4 * 12 + 4 * 4);
 static_assert(sizeof(rs_analyzer_options) == 7 * 4);
 static_assert(sizeof(rs_placement) == 3 * 4 + 2 * 12 + 16 + 4 * 12 + 3 * 4);
 static_assert(sizeof(rs_ray_hit) == 4 * 4 + 2 * 12 && sizeof(rs_surface_point) == 2 * 4 + 2 * 12);
-// The query's one padding: 4 bytes before the 8-byte seed, where every C ABI puts them.
-static_assert(sizeof(rs_placement_query) == 104 && offsetof(rs_placement_query, seed) == 96);
+// The query has no implicit padding: `reserved` fills the 4 bytes before the 8-byte seed.
+static_assert(sizeof(rs_placement_query) == 104 && offsetof(rs_placement_query, reserved) == 92 &&
+              offsetof(rs_placement_query, seed) == 96);
 // The surface bits and enums carry core's values (queries.h, areas.h), as the extension's do.
 static_assert(int(RS_SURFACE_WALL) == int(roomsense::kOnWall) && int(RS_SURFACE_FLOOR) == int(roomsense::kOnFloor) &&
               int(RS_SURFACE_CEILING) == int(roomsense::kOnCeiling) &&
@@ -38,7 +39,16 @@ static_assert(int(RS_SURFACE_WALL) == int(roomsense::kOnWall) && int(RS_SURFACE_
               int(RS_SURFACE_ANY) == int(roomsense::kOnAnySurface));
 static_assert(RS_REACH_FILTER_CLOSE == int(roomsense::ReachFilter::Close) &&
               RS_REACH_FILTER_DISTANCE == int(roomsense::ReachFilter::Distance));
-static_assert(RS_SHORTFALL_TOO_FEW == int(roomsense::PlacementShortfall::TooFew));
+static_assert(RS_SHORTFALL_NONE == int(roomsense::PlacementShortfall::None) &&
+              RS_SHORTFALL_NO_SURFACE == int(roomsense::PlacementShortfall::NoSurface) &&
+              RS_SHORTFALL_NO_SPACE == int(roomsense::PlacementShortfall::NoSpace) &&
+              RS_SHORTFALL_NO_HEADROOM == int(roomsense::PlacementShortfall::NoHeadroom) &&
+              RS_SHORTFALL_NO_REACH == int(roomsense::PlacementShortfall::NoReach) &&
+              RS_SHORTFALL_TOO_FEW == int(roomsense::PlacementShortfall::TooFew));
+static_assert(RS_AREA_TYPE_NONE == 0 && RS_AREA_TYPE_WALL == int(roomsense::AreaType::Wall) &&
+              RS_AREA_TYPE_FLOOR == int(roomsense::AreaType::Floor) &&
+              RS_AREA_TYPE_CEILING == int(roomsense::AreaType::Ceiling) &&
+              RS_AREA_TYPE_FURNITURE == int(roomsense::AreaType::Furniture));
 
 namespace roomsense::capi {
 
@@ -247,7 +257,7 @@ bool finite(const rs_vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) 
 
 // What core cannot check itself: the C struct's version, enum values and flags. Lengths are core's (queries.h).
 std::optional<PlacementQuery> to_core(const rs_placement_query& c) {
-  if (c.struct_size < sizeof(rs_placement_query)) return std::nullopt;
+  if (c.struct_size < sizeof(rs_placement_query) || c.reserved != 0) return std::nullopt;
   if (raw(c.reach) > RS_REACH_FILTER_DISTANCE) return std::nullopt;
   if (c.has_user_position != 0 && !finite(c.user_position)) return std::nullopt;
   if (c.has_near_point != 0 && !finite(c.near_point)) return std::nullopt;

@@ -803,6 +803,9 @@ static int test_handle_queries(void) {
     bad.has_near_point = 1;
     bad.near_point.x = INFINITY;
     CHECK_RS(rs_analyzer_find_placements(a, &bad, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
+    bad = q;
+    bad.reserved = 1;
+    CHECK_RS(rs_analyzer_find_placements(a, &bad, 0, &count, NULL, NULL), RS_ERROR_INVALID_ARGUMENT);
   }
 
   /* Rays: down onto the floor (the measured one: the layout's), east onto the wall, none past max_distance. */
@@ -818,8 +821,18 @@ static int test_handle_queries(void) {
   CHECK_MSG(hit.hit && hit.surface == RS_AREA_TYPE_WALL && fabsf(hit.position.x - (BOX_CX + BOX_HALF_X)) < 0.15f &&
                 hit.normal.x < -0.99f,
             "wall hit %d at x %g", hit.hit, (double)hit.position.x);
+  {
+    /* Any length of direction but a vanishing one: the same hit. */
+    const rs_vec3 east_short = {1e-3f, 0, 0}, east_long = {1e6f, 0, 0}, tiny = {1e-13f, 0, 0};
+    rs_ray_hit other;
+    CHECK_RS(rs_analyzer_raycast(a, &middle, &east_short, 0, &other), RS_SUCCESS);
+    CHECK(other.hit && fabsf(other.distance - hit.distance) < 1e-5f);
+    CHECK_RS(rs_analyzer_raycast(a, &middle, &east_long, 0, &other), RS_SUCCESS);
+    CHECK(other.hit && fabsf(other.distance - hit.distance) < 1e-5f);
+    CHECK_RS(rs_analyzer_raycast(a, &middle, &tiny, 0, &other), RS_ERROR_INVALID_ARGUMENT);
+  }
   CHECK_RS(rs_analyzer_raycast(a, &middle, &east, 0.5f, &hit), RS_SUCCESS);
-  CHECK(!hit.hit && hit.distance == 0.0f);
+  CHECK(!hit.hit && hit.distance == 0.0f && hit.surface == RS_AREA_TYPE_NONE);
   CHECK_RS(rs_analyzer_raycast(a, &middle, &east, -1.0f, &hit), RS_ERROR_INVALID_ARGUMENT);
   CHECK_RS(rs_analyzer_raycast(a, &middle, &east, NAN, &hit), RS_ERROR_INVALID_ARGUMENT);
   CHECK_RS(rs_analyzer_raycast(a, NULL, &east, 0, &hit), RS_ERROR_INVALID_ARGUMENT);
@@ -843,13 +856,48 @@ static int test_handle_queries(void) {
       CHECK_RS(rs_analyzer_random_point_on_surface(a, RS_SURFACE_FLOOR, 0.1f, seed, &again), RS_SUCCESS);
       CHECK(memcmp(&point, &again, sizeof point) == 0);
       CHECK_RS(rs_analyzer_random_point_in_room(a, 0.2f, seed, &point), RS_SUCCESS);
-      CHECK(point.found && point.surface == 0 && point.position.y > BOX_FLOOR + 0.2f &&
+      CHECK(point.found && point.surface == RS_AREA_TYPE_NONE && point.position.y > BOX_FLOOR + 0.2f &&
             point.position.y < BOX_CEILING - 0.2f && fabsf(point.position.x - BOX_CX) < BOX_HALF_X - 0.2f);
     }
     CHECK_RS(rs_analyzer_random_point_on_surface(a, 0, 0, 0, &point), RS_ERROR_INVALID_ARGUMENT);
     CHECK_RS(rs_analyzer_random_point_on_surface(a, RS_SURFACE_FLOOR, 0, 0, NULL), RS_ERROR_INVALID_ARGUMENT);
+    /* Clearances the room cannot hold: nothing, at once (no walk over a 100 m ball's voxels). */
     CHECK_RS(rs_analyzer_random_point_in_room(a, 50.0f, 0, &point), RS_SUCCESS);
     CHECK(!point.found);
+    CHECK_RS(rs_analyzer_random_point_in_room(a, 100.0f, 0, &point), RS_SUCCESS);
+    CHECK(!point.found);
+    CHECK_RS(rs_analyzer_random_point_in_room(a, 100.5f, 0, &point), RS_ERROR_INVALID_ARGUMENT);
+    CHECK_RS(rs_analyzer_random_point_on_surface(a, RS_SURFACE_FLOOR, NAN, 0, &point), RS_ERROR_INVALID_ARGUMENT);
+  }
+
+  /* While a compute runs the queries are not ready (a few tries: the compute may end first); after a failed
+   * compute they give its code, as the getters do. */
+  {
+    int tries, not_ready = 0;
+    for (tries = 0; tries < 5 && !not_ready; ++tries) {
+      rs_result r;
+      CHECK_RS(rs_analyzer_compute(a, room, (uint32_t)n, NULL, 0), RS_SUCCESS);
+      r = rs_analyzer_find_placements(a, &q, 0, &count, NULL, NULL);
+      CHECK(r == RS_ERROR_NOT_READY || r == RS_SUCCESS);
+      not_ready = r == RS_ERROR_NOT_READY;
+      if (not_ready) {
+        CHECK_RS(rs_analyzer_raycast(a, &middle, &down, 0, &hit), RS_ERROR_NOT_READY);
+        CHECK_RS(rs_analyzer_random_point_in_room(a, 0.2f, 0, &point), RS_ERROR_NOT_READY);
+      }
+      CHECK_RS(rs_analyzer_wait(a, RS_WAIT_INFINITE, NULL), RS_SUCCESS);
+    }
+    CHECK_MSG(not_ready, "never saw RS_ERROR_NOT_READY in %d tries", tries);
+  }
+  {
+    static const float nine[9] = {0, 0, 0, 1, 0, 0, 0, 0, 1};
+    static const uint32_t tri[3] = {0, 1, 2};
+    CHECK_RS(rs_analyzer_compute(a, nine, 3, tri, 3), RS_SUCCESS);
+    CHECK_RS(rs_analyzer_wait(a, RS_WAIT_INFINITE, NULL), RS_SUCCESS);
+    CHECK_RS(rs_analyzer_find_placements(a, &q, 0, &count, NULL, NULL), RS_ERROR_NO_ROOM);
+    CHECK_RS(rs_analyzer_raycast(a, &middle, &down, 0, &hit), RS_ERROR_NO_ROOM);
+    CHECK_RS(rs_analyzer_locate(a, &middle, &where), RS_ERROR_NO_ROOM);
+    CHECK_RS(rs_analyzer_random_point_on_surface(a, RS_SURFACE_FLOOR, 0, 0, &point), RS_ERROR_NO_ROOM);
+    CHECK_RS(rs_analyzer_random_point_in_room(a, 0, 0, &point), RS_ERROR_NO_ROOM);
   }
   rs_analyzer_destroy(a);
   free(room);

@@ -190,8 +190,6 @@ TEST(CapiConcurrency, HandleDestroyedWhileComputingOnEightThreads) {
   EXPECT_EQ(failures.load(), 0);
 }
 
-// The thesis API's two jobs, each polled from 8 threads: every thread sees -1 until the job is done, then the
-// same array. A CleanUp called while the job runs waits for its worker while the readers keep polling.
 // Queries copy the result's RoomQueries out under the job's lock and run outside it: a compute that replaces the
 // result meanwhile must neither race them nor change an answer (the same room, so the same placements).
 TEST(CapiConcurrency, HandleQueriesOnEightThreadsDuringComputes) {
@@ -249,6 +247,8 @@ TEST(CapiConcurrency, HandleQueriesOnEightThreadsDuringComputes) {
   rs_analyzer_destroy(a);
 }
 
+// The thesis API's two jobs, each polled from 8 threads: every thread sees -1 until the job is done, then the
+// same array. A CleanUp called while the job runs waits for its worker while the readers keep polling.
 TEST(CapiConcurrency, ThesisRetrieveOnEightThreadsWhileBothJobsRun) {
   const std::vector<float>& xyz = room().xyz;
   const int size = static_cast<int>(xyz.size());

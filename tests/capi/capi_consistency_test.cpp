@@ -277,6 +277,8 @@ TEST_P(CapiConsistency, HandleQueriesAreCoreQueries) {
       for (int j = 0; j < 4; ++j) expect_equal(got[i].corners[j], corners[j]);
       const glm::quat o = p.orientation();
       EXPECT_EQ(got[i].orientation.x, o.x);
+      EXPECT_EQ(got[i].orientation.y, o.y);
+      EXPECT_EQ(got[i].orientation.z, o.z);
       EXPECT_EQ(got[i].orientation.w, o.w);
       EXPECT_EQ(got[i].width, p.footprint.x);
       EXPECT_EQ(got[i].depth, p.footprint.y);
@@ -289,6 +291,7 @@ TEST_P(CapiConsistency, HandleQueriesAreCoreQueries) {
   const glm::vec3 far_corner = grid.lattice_to_world(float(grid.nx), float(grid.ny), float(grid.nz));
   const glm::vec3 middle(0.5f * (grid.origin.x + far_corner.x), 0.5f * (analysis.floor_y + analysis.ceiling_y),
                          0.5f * (grid.origin.z + far_corner.z));
+  int hits = 0;
   for (int i = 0; i < 24; ++i) {
     const float a = 0.2618f * float(i);
     const glm::vec3 direction(std::cos(a), 0.4f * std::sin(3.0f * a), std::sin(a));
@@ -298,6 +301,7 @@ TEST_P(CapiConsistency, HandleQueriesAreCoreQueries) {
     ASSERT_EQ(rs_analyzer_raycast(analyzer, &o, &d, 0.0f, &hit), RS_SUCCESS);
     ASSERT_EQ(hit.hit != 0, want.has_value());
     if (!want) continue;
+    ++hits;
     expect_equal(hit.position, want->position);
     expect_equal(hit.normal, want->normal);
     EXPECT_EQ(hit.distance, want->distance);
@@ -314,12 +318,17 @@ TEST_P(CapiConsistency, HandleQueriesAreCoreQueries) {
     }
   }
 
+  // From the middle of a closed room every ray meets a surface.
+  EXPECT_EQ(hits, 24);
+
+  int on_surface = 0, in_room = 0;
   for (std::uint64_t seed = 0; seed < 16; ++seed) {
     rs_surface_point point{};
     ASSERT_EQ(rs_analyzer_random_point_on_surface(analyzer, RS_SURFACE_ANY, 0.05f, seed, &point), RS_SUCCESS);
     const std::optional<SurfacePoint> want = expected.random_point_on_surface(kOnAnySurface, 0.05f, seed);
     ASSERT_EQ(point.found != 0, want.has_value());
     if (want) {
+      ++on_surface;
       expect_equal(point.position, want->position);
       expect_equal(point.normal, want->normal);
       EXPECT_EQ(int(point.surface), int(want->surface));
@@ -327,9 +336,14 @@ TEST_P(CapiConsistency, HandleQueriesAreCoreQueries) {
     ASSERT_EQ(rs_analyzer_random_point_in_room(analyzer, 0.3f, seed, &point), RS_SUCCESS);
     const std::optional<glm::vec3> free = expected.random_point_in_room(0.3f, seed);
     ASSERT_EQ(point.found != 0, free.has_value());
-    if (free) expect_equal(point.position, *free);
-    EXPECT_EQ(int(point.surface), 0);
+    if (free) {
+      ++in_room;
+      expect_equal(point.position, *free);
+    }
+    EXPECT_EQ(int(point.surface), int(RS_AREA_TYPE_NONE));
   }
+  EXPECT_EQ(on_surface, 16);
+  EXPECT_EQ(in_room, 16);
   rs_analyzer_destroy(analyzer);
 }
 

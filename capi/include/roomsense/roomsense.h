@@ -183,6 +183,7 @@ ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_get_storeys(rs_analyzer* analyzer, u
 
 /* The numeric values are those of the OpenXR extension XR_EXTX_room_understanding. */
 typedef enum rs_area_type {
+  RS_AREA_TYPE_NONE = 0,  /* no surface: a ray that hit nothing, a point in free space */
   RS_AREA_TYPE_WALL = 1, RS_AREA_TYPE_FLOOR = 2, RS_AREA_TYPE_CEILING = 3, RS_AREA_TYPE_FURNITURE = 4,
   RS_AREA_TYPE_MAX_ENUM = 0x7FFFFFFF
 } rs_area_type;
@@ -283,6 +284,7 @@ typedef struct rs_placement_query {
   rs_vec3 face_direction;    /* non-zero: the footprint's +Y points this way on horizontal surfaces */
   uint32_t max_count;        /* 1 to 1024 */
   int32_t allow_overlap;     /* zero: no two placements' clear boxes overlap */
+  uint32_t reserved;         /* 0; keeps seed 8-byte aligned without implicit padding */
   uint64_t seed;             /* breaks ties between equally good spots */
 } rs_placement_query;
 
@@ -305,7 +307,7 @@ typedef struct rs_placement {
 
 /* Up to query->max_count placements, best first (two-call idiom: the count and *shortfall are set by both
  * calls). shortfall may be NULL. RS_ERROR_INVALID_ARGUMENT for a NULL query or count, a struct_size below
- * this version's, or a value out of range. */
+ * this version's, a non-zero reserved, or a value out of range. */
 ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_find_placements(rs_analyzer* analyzer, const rs_placement_query* query,
                                                             uint32_t capacity, uint32_t* count,
                                                             rs_placement* placements,
@@ -322,8 +324,9 @@ typedef struct rs_ray_hit {
 } rs_ray_hit;
 
 /* The first scanned surface or room edge along the ray, within a voxel. max_distance 0 means unlimited.
- * RS_ERROR_INVALID_ARGUMENT for NULL pointers, a non-finite origin, a zero or non-finite direction or a
- * negative max_distance. */
+ * direction need not be unit length; it is normalized. RS_ERROR_INVALID_ARGUMENT for NULL pointers, a
+ * non-finite origin, a non-finite direction or one of length 1e-12 or less (or too long to normalize in
+ * float), or a negative or non-finite max_distance. */
 ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_raycast(rs_analyzer* analyzer, const rs_vec3* origin,
                                                     const rs_vec3* direction, float max_distance, rs_ray_hit* out);
 
@@ -333,22 +336,26 @@ typedef struct rs_location {
   uint32_t storey;
 } rs_location;
 
+/* Where a point lies. RS_ERROR_INVALID_ARGUMENT for NULL pointers or a non-finite point. */
 ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_locate(rs_analyzer* analyzer, const rs_vec3* point, rs_location* out);
 
 typedef struct rs_surface_point {
   int32_t found;            /* zero: no such surface, or no free space with that clearance */
-  rs_area_type surface;     /* 0 for a point in free space */
+  rs_area_type surface;     /* RS_AREA_TYPE_NONE for a point in free space */
   rs_vec3 position;
   rs_vec3 normal;           /* zero for a point in free space */
 } rs_surface_point;
 
 /* A point on free surface of the asked kinds (rs_surface_bits, at least one), at least edge_distance inside
- * its edge, uniform over their area. */
+ * its edge, uniform over their area. RS_ERROR_INVALID_ARGUMENT for a NULL out, surfaces 0 or with bits
+ * outside RS_SURFACE_ANY, or an edge_distance outside 0 to 100 m (or not finite). */
 ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_random_point_on_surface(rs_analyzer* analyzer, uint32_t surfaces,
                                                                     float edge_distance, uint64_t seed,
                                                                     rs_surface_point* out);
 
-/* A point inside the room with no scanned voxel and no room edge within `clearance` metres. */
+/* A point inside the room with no scanned voxel and no room edge within `clearance` metres, uniform over
+ * such points. RS_ERROR_INVALID_ARGUMENT for a NULL out or a clearance outside 0 to 100 m (or not finite);
+ * a clearance the room cannot hold finds nothing at once. */
 ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_random_point_in_room(rs_analyzer* analyzer, float clearance, uint64_t seed,
                                                                  rs_surface_point* out);
 

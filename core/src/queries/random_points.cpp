@@ -98,12 +98,16 @@ std::optional<glm::vec3> RoomQueries::random_point_in_room(float clearance, std:
   const Index& ix = *index_;
   const GridSpec& s = ix.spec;
   const float voxel = s.voxel_size;
+  // A ball that cannot fit between floor and ceiling, or across the grid, fits nowhere: say so at once rather
+  // than walk a huge cube of voxels per try. Otherwise p's height is drawn where the ball clears both.
+  const float low = ix.floor_y + clearance, high = ix.ceiling_y - clearance;
+  if (low > high || 2.0f * clearance > voxel * float(std::min(s.nx, s.nz))) return std::nullopt;
   detail::SeededRandom random{seed};
   for (int attempt = 0; attempt < kTries; ++attempt) {
     const std::uint32_t column = ix.inside_cells[random.below(ix.inside_cells.size())];
     const float x = s.origin.x + (float(column % std::uint32_t(s.nx)) + float(random.unit())) * voxel;
     const float z = s.origin.z + (float(column / std::uint32_t(s.nx)) + float(random.unit())) * voxel;
-    const float y = ix.floor_y + float(random.unit()) * (ix.ceiling_y - ix.floor_y);
+    const float y = low + float(random.unit()) * (high - low);
     const glm::vec3 p(x, y, z);
     // No solid voxel (scanned, or outside the room) within `clearance` of p, nor at p.
     const glm::vec3 g = (p - s.origin) / voxel;

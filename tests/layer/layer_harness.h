@@ -63,15 +63,18 @@ struct Extx {
   }
 };
 
-inline bool has_extension(const char* layer, const char* name) {
+// The version the loader reports for an instance extension (of one layer, or of all with nullptr); 0 if absent.
+inline uint32_t extension_version(const char* layer, const char* name) {
   uint32_t count = 0;
   check(xrEnumerateInstanceExtensionProperties(layer, 0, &count, nullptr), "xrEnumerateInstanceExtensionProperties");
   std::vector<XrExtensionProperties> props(count, {XR_TYPE_EXTENSION_PROPERTIES, nullptr});
   check(xrEnumerateInstanceExtensionProperties(layer, count, &count, props.data()), "xrEnumerateInstanceExtensionProperties");
   for (const auto& p : props)
-    if (std::strcmp(p.extensionName, name) == 0) return true;
-  return false;
+    if (std::strcmp(p.extensionName, name) == 0) return p.extensionVersion;
+  return 0;
 }
+
+inline bool has_extension(const char* layer, const char* name) { return extension_version(layer, name) != 0; }
 
 inline int layer_listed(const char* name) {
   uint32_t count = 0;

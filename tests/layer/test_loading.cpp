@@ -26,6 +26,9 @@ TEST(LayerLoading, FoundAsAnImplicitLayerThatOffersTheExtension) {
   EXPECT_EQ(layer_listed(kLayerName), 1);
   EXPECT_TRUE(has_extension(nullptr, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME));
   EXPECT_TRUE(has_extension(kLayerName, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME));
+  // The manifest's version (what the loader reports) is the header's: apps test it before using newer calls.
+  EXPECT_EQ(extension_version(kLayerName, XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME),
+            uint32_t(XR_EXTX_room_understanding_SPEC_VERSION));
   App app;
   EXPECT_TRUE(layer_library_loaded());
 }

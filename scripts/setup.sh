@@ -12,6 +12,7 @@ packages=(cmake g++ ninja-build pkg-config
           libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools glslang-dev
           libglm-dev nlohmann-json3-dev libassimp-dev libtinyobjloader-dev libgtest-dev libbenchmark-dev
           libxml2-dev  # libxml2: tests only (plan.svg is checked with a real XML parser)
+          mono-mcs mono-runtime  # tests only: the C# binding (bindings/csharp/) compiled and run under Mono
           ${ROOMSENSE_EXTRA_PACKAGES:-})
 missing=()
 for p in "${packages[@]}"; do

@@ -10,7 +10,6 @@
 #include "roomsense/scan.h"
 
 #include <algorithm>
-#include <array>
 #include <cstddef>
 #include <chrono>
 #include <cmath>
@@ -20,6 +19,7 @@
 #include <optional>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 // The C structs are part of the ABI that bindings (C#, Python ctypes) copy: 4-byte enums, no padding.
@@ -70,16 +70,23 @@ rs_vec3 to_c(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 rs_quat to_c(const glm::quat& q) { return {q.x, q.y, q.z, q.w}; }
 glm::vec3 from_c(const rs_vec3& v) { return {v.x, v.y, v.z}; }
 
+// The pose members rs_area and rs_placement share: centre, normal, orientation and corners.
+template <class C, class Corners>
+void set_pose(C& c, const glm::vec3& center, const glm::vec3& normal, const glm::quat& orientation,
+              const Corners& corners) {
+  c.center = to_c(center);
+  c.normal = to_c(normal);
+  c.orientation = to_c(orientation);
+  for (std::size_t i = 0; i < 4; ++i) c.corners[i] = to_c(corners[i]);
+}
+
 rs_area to_c(const Area& a) {
   rs_area c{};
   c.type = static_cast<rs_area_type>(a.type);
   c.size = static_cast<rs_area_size>(a.size);
   c.reach = static_cast<rs_reach>(a.reach);
   c.flags = a.flags;
-  c.center = to_c(a.center);
-  c.normal = to_c(a.normal);
-  c.orientation = to_c(a.orientation());
-  for (std::size_t i = 0; i < 4; ++i) c.corners[i] = to_c(a.corners[i]);
+  set_pose(c, a.center, a.normal, a.orientation(), a.corners);
   c.half_width = a.half_width;
   c.half_height = a.half_height;
   c.rotation_deg = a.rotation_deg;
@@ -92,11 +99,7 @@ rs_placement to_c(const Placement& p) {
   c.surface = static_cast<rs_area_type>(p.surface);
   c.reach = static_cast<rs_reach>(p.reach);
   c.storey = p.storey;
-  c.center = to_c(p.center);
-  c.normal = to_c(p.normal);
-  c.orientation = to_c(p.orientation());
-  const std::array<glm::vec3, 4> corners = p.corners();
-  for (std::size_t i = 0; i < 4; ++i) c.corners[i] = to_c(corners[i]);
+  set_pose(c, p.center, p.normal, p.orientation(), p.corners());
   c.width = p.footprint.x;
   c.depth = p.footprint.y;
   c.margin = p.margin;
@@ -244,6 +247,19 @@ rs_result ready_queries(rs_analyzer* analyzer, RoomQueries& out) {
   });
 }
 
+// One placement query: `ask` runs on the last result's RoomQueries, copied out of the lock, and `write` stores
+// its answer. `ask` runs even when there is no result (on empty queries), so that bad arguments are reported
+// before the state, as everywhere in this API; core throws BadParameter for them.
+rs_result answer(rs_analyzer* analyzer, auto&& ask, auto&& write) {
+  return guarded([&] {
+    RoomQueries queries;
+    const rs_result state = ready_queries(analyzer, queries);
+    auto found = ask(std::as_const(queries));
+    if (state != RS_SUCCESS) return state;
+    return write(found);
+  });
+}
+
 // A C caller can pass any 32 bits in an enum field; read as an integer (see rs_analyzer_create).
 template <class Enum>
 std::uint32_t raw(const Enum& e) {
@@ -286,6 +302,14 @@ rs_surface_point to_c(const std::optional<SurfacePoint>& p) {
   c.surface = static_cast<rs_area_type>(p->surface);
   c.position = to_c(p->position);
   c.normal = to_c(p->normal);
+  return c;
+}
+
+// A point in free space: no surface (RS_AREA_TYPE_NONE) and no normal.
+rs_surface_point to_c(const std::optional<glm::vec3>& p) {
+  rs_surface_point c{};
+  c.found = p ? 1 : 0;
+  if (p) c.position = to_c(*p);
   return c;
 }
 
@@ -517,17 +541,15 @@ rs_result rs_analyzer_find_placements(rs_analyzer* analyzer, const rs_placement_
   if (query == nullptr || count == nullptr || (capacity != 0 && placements == nullptr)) return RS_ERROR_INVALID_ARGUMENT;
   const std::optional<roomsense::PlacementQuery> q = to_core(*query);
   if (!q) return RS_ERROR_INVALID_ARGUMENT;
-  return guarded([&] {
-    roomsense::RoomQueries queries;
-    const rs_result state = ready_queries(analyzer, queries);
-    const roomsense::PlacementResult found = queries.find_placements(*q);  // checks the query's values
-    if (state != RS_SUCCESS) return state;
-    std::vector<rs_placement> out;
-    out.reserve(found.placements.size());
-    for (const roomsense::Placement& p : found.placements) out.push_back(to_c(p));
-    if (shortfall != nullptr) *shortfall = static_cast<rs_placement_shortfall>(found.shortfall);
-    return copy_out(out, capacity, count, placements);
-  });
+  return answer(
+      analyzer, [&](const roomsense::RoomQueries& queries) { return queries.find_placements(*q); },
+      [&](const roomsense::PlacementResult& found) {
+        std::vector<rs_placement> out;
+        out.reserve(found.placements.size());
+        for (const roomsense::Placement& p : found.placements) out.push_back(to_c(p));
+        if (shortfall != nullptr) *shortfall = static_cast<rs_placement_shortfall>(found.shortfall);
+        return copy_out(out, capacity, count, placements);
+      });
 }
 
 rs_result rs_analyzer_raycast(rs_analyzer* analyzer, const rs_vec3* origin, const rs_vec3* direction, float max_distance,
@@ -535,65 +557,59 @@ rs_result rs_analyzer_raycast(rs_analyzer* analyzer, const rs_vec3* origin, cons
   if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
   if (origin == nullptr || direction == nullptr || out == nullptr || !std::isfinite(max_distance) || max_distance < 0.0f)
     return RS_ERROR_INVALID_ARGUMENT;
-  return guarded([&] {
-    roomsense::RoomQueries queries;
-    const rs_result state = ready_queries(analyzer, queries);
-    const std::optional<roomsense::RayHit> h = queries.raycast(  // checks origin and direction
-        from_c(*origin), from_c(*direction), max_distance == 0.0f ? INFINITY : max_distance);
-    if (state != RS_SUCCESS) return state;
-    *out = rs_ray_hit{};
-    if (h) {
-      out->hit = 1;
-      out->scanned = h->scanned ? 1 : 0;
-      out->surface = static_cast<rs_area_type>(h->surface);
-      out->distance = h->distance;
-      out->position = to_c(h->position);
-      out->normal = to_c(h->normal);
-    }
-    return RS_SUCCESS;
-  });
+  return answer(
+      analyzer,
+      [&](const roomsense::RoomQueries& queries) {
+        return queries.raycast(from_c(*origin), from_c(*direction), max_distance == 0.0f ? INFINITY : max_distance);
+      },
+      [&](const std::optional<roomsense::RayHit>& h) {
+        *out = rs_ray_hit{};
+        if (h) {
+          out->hit = 1;
+          out->scanned = h->scanned ? 1 : 0;
+          out->surface = static_cast<rs_area_type>(h->surface);
+          out->distance = h->distance;
+          out->position = to_c(h->position);
+          out->normal = to_c(h->normal);
+        }
+        return RS_SUCCESS;
+      });
 }
 
 rs_result rs_analyzer_locate(rs_analyzer* analyzer, const rs_vec3* point, rs_location* out) {
   if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
   if (point == nullptr || out == nullptr || !finite(*point)) return RS_ERROR_INVALID_ARGUMENT;
-  return guarded([&] {
-    roomsense::RoomQueries queries;
-    if (const rs_result state = ready_queries(analyzer, queries); state != RS_SUCCESS) return state;
-    const roomsense::RoomLocation where = queries.locate(from_c(*point));
-    *out = {where.inside ? 1 : 0, where.free ? 1 : 0, where.storey};
-    return RS_SUCCESS;
-  });
+  return answer(
+      analyzer, [&](const roomsense::RoomQueries& queries) { return queries.locate(from_c(*point)); },
+      [&](const roomsense::RoomLocation& where) {
+        *out = {where.inside ? 1 : 0, where.free ? 1 : 0, where.storey};
+        return RS_SUCCESS;
+      });
 }
 
 rs_result rs_analyzer_random_point_on_surface(rs_analyzer* analyzer, uint32_t surfaces, float edge_distance,
                                               uint64_t seed, rs_surface_point* out) {
   if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
   if (out == nullptr) return RS_ERROR_INVALID_ARGUMENT;
-  return guarded([&] {
-    roomsense::RoomQueries queries;
-    const rs_result state = ready_queries(analyzer, queries);
-    const auto found = queries.random_point_on_surface(surfaces, edge_distance, seed);  // checks its arguments
-    if (state != RS_SUCCESS) return state;
-    *out = to_c(found);
-    return RS_SUCCESS;
-  });
+  return answer(
+      analyzer,
+      [&](const roomsense::RoomQueries& queries) { return queries.random_point_on_surface(surfaces, edge_distance, seed); },
+      [&](const auto& found) {
+        *out = to_c(found);
+        return RS_SUCCESS;
+      });
 }
 
 rs_result rs_analyzer_random_point_in_room(rs_analyzer* analyzer, float clearance, uint64_t seed,
                                            rs_surface_point* out) {
   if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
   if (out == nullptr) return RS_ERROR_INVALID_ARGUMENT;
-  return guarded([&] {
-    roomsense::RoomQueries queries;
-    const rs_result state = ready_queries(analyzer, queries);
-    const std::optional<glm::vec3> p = queries.random_point_in_room(clearance, seed);
-    if (state != RS_SUCCESS) return state;
-    *out = to_c(p ? std::optional<roomsense::SurfacePoint>(roomsense::SurfacePoint{*p, glm::vec3(0.0f),
-                                                                                  static_cast<roomsense::AreaType>(0)})
-                  : std::nullopt);
-    return RS_SUCCESS;
-  });
+  return answer(
+      analyzer, [&](const roomsense::RoomQueries& queries) { return queries.random_point_in_room(clearance, seed); },
+      [&](const auto& found) {
+        *out = to_c(found);
+        return RS_SUCCESS;
+      });
 }
 
 }  // extern "C"

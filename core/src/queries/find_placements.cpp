@@ -318,7 +318,6 @@ std::optional<Found> Search::place_horizontal(const Spot& spot, float up) const 
     p.normal = normal;
     p.x_axis = x_axis;
     p.footprint = glm::vec2(q_.size.x, q_.size.y);
-  p.height = q_.size.z;
     p.height = q_.size.z;
     p.margin = spot.margin;
     const glm::vec2 c(p.center.x, p.center.z), u(x_axis.x, x_axis.z);

@@ -30,6 +30,17 @@ namespace RoomCreator
         [DllImport(Library, EntryPoint = "CleanUpRoomBounds")]
         extern static public int CleanUpRoomBounds();
 
+        // The thesis's declarations trust arraySize: one larger than the array makes the library read past it.
+        // These take the array's own length (a null array gives 1, no input).
+        public static int StartRoomUnderstanding(float[] vertexPositions)
+        {
+            return StartRoomUnderstanding(vertexPositions, vertexPositions == null ? 0 : vertexPositions.Length);
+        }
+        public static int StartRoomBounds(float[] vertexPositions)
+        {
+            return StartRoomBounds(vertexPositions, vertexPositions == null ? 0 : vertexPositions.Length);
+        }
+
         // Polls RetrieveRoomUnderstanding once. Returns -1 while running, 0 with `areas` (11 floats per area,
         // copied: call CleanUpRoomUnderstanding afterwards), 1 when the job ended without a result.
         public static int TryRetrieveAreas(out float[] areas)
@@ -219,8 +230,11 @@ namespace RoomCreator
         public IntPtr Handle { get { return handle; } }
 
         // Starts a compute on the library's worker; xyz holds 3 floats per vertex, indices 3 per triangle or null.
+        // A null or ragged xyz is the caller's mistake, told in C#'s terms before anything reaches the library.
         public void Compute(float[] xyz, uint[] indices = null)
         {
+            if (xyz == null) throw new ArgumentNullException("xyz");
+            if (xyz.Length % 3 != 0) throw new ArgumentException("xyz must hold 3 floats per vertex, got " + xyz.Length, "xyz");
             Check(Native.rs_analyzer_compute(handle, xyz, (uint)(xyz.Length / 3), indices, indices == null ? 0u : (uint)indices.Length),
                   "rs_analyzer_compute");
         }

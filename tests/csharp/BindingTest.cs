@@ -87,6 +87,8 @@ static class BindingTest
         RoomCreatorLibrary.CleanUpRoomBounds();
         Check(RoomCreatorLibrary.StartRoomUnderstanding(null, 0) == 1 && RoomCreatorLibrary.StartRoomUnderstanding(new float[4], 4) == 2,
               "the thesis API's input errors (1, 2)");
+        Check(RoomCreatorLibrary.StartRoomUnderstanding(null) == 1 && RoomCreatorLibrary.StartRoomBounds(new float[5]) == 2,
+              "the length-taking overloads' input errors (1, 2)");
 
         // The handle API.
         uint version = Native.rs_api_version();
@@ -123,10 +125,21 @@ static class BindingTest
             }
             hitCount = hits.Count(h => h.Hit != 0);
             Check(Bytes(hits.ToArray()).SequenceEqual(File.ReadAllBytes(Path.Combine(dir, "handle_rays.bin"))), "rs_analyzer_raycast differs from C's");
+            try { analyzer.Compute(null); Check(false, "Compute(null) throws"); }
+            catch (ArgumentNullException) {}
+            try { analyzer.Compute(new float[4]); Check(false, "Compute of 4 floats throws"); }
+            catch (ArgumentException) {}
+            try { analyzer.Compute(xyz, new uint[] { 0, 1 }); Check(false, "2 indices throw"); }
+            catch (RoomSenseException e) { Check(e.Result == Result.ErrorBadIndices, "2 indices: " + e.Message); }
             q.MaxCount = 0;
             try { analyzer.FindPlacements(q, out shortfall); Check(false, "max_count 0 throws"); }
             catch (RoomSenseException e) { Check(e.Result == Result.ErrorInvalidArgument, "max_count 0: " + e.Message); }
         }
+        var disposed = new Analyzer();
+        disposed.Dispose();
+        disposed.Dispose();  // twice is harmless
+        try { disposed.Compute(xyz); Check(false, "a disposed analyzer throws"); }
+        catch (RoomSenseException e) { Check(e.Result == Result.ErrorHandleInvalid, "disposed: " + e.Message); }
         if (failures > 0) return 1;
         Console.WriteLine("BindingTest: ok: layouts of 12 structs as C's; thesis API " + areas.Length / 11 + " areas, bounds " +
                           boundsXyz.Length / 3 + " vertices; handle API (" + (version >> 22) + "." + ((version >> 12) & 0x3FF) + ") areas, bounds, " +

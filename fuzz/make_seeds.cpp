@@ -308,6 +308,6 @@ int main(int argc, char** argv) {
     write(root / "capi_thesis" / room.name, thesis_seed(points));
     files += 2;
   }
-  std::printf("wrote %zu seeds to %s\n", files, root.c_str());
+  std::printf("wrote %zu seeds to %s\n", files, root.string().c_str());
   return 0;
 }

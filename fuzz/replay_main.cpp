@@ -37,10 +37,10 @@ int main(int argc, char** argv) {
     std::ifstream in(f, std::ios::binary);
     const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (!in.eof() && in.fail()) {
-      std::fprintf(stderr, "replay: cannot read %s\n", f.c_str());
+      std::fprintf(stderr, "replay: cannot read %s\n", f.string().c_str());
       return 2;
     }
-    std::printf("replay %s (%zu bytes)\n", f.c_str(), bytes.size());
+    std::printf("replay %s (%zu bytes)\n", f.string().c_str(), bytes.size());
     std::fflush(stdout);
     LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
   }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages roomsense needs (only those missing), then configures and builds.
 # Usage: scripts/setup.sh [BUILD_DIR] [extra cmake arguments...]; ROOMSENSE_TARGET=NAME builds one target;
-# ROOMSENSE_EXTRA_PACKAGES="a b" installs more (the fuzzing and TSan scripts' compilers).
+# ROOMSENSE_EXTRA_PACKAGES="a b" installs more (the fuzzing and TSan scripts' compilers); ROOMSENSE_WINDOWS=1 adds
+# the Windows build's (MinGW-w64, Wine, GoogleTest's sources: scripts/windows.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${1:-build}
@@ -14,6 +15,9 @@ packages=(cmake g++ ninja-build pkg-config
           libxml2-dev  # libxml2: tests only (plan.svg is checked with a real XML parser)
           mono-mcs mono-runtime  # tests only: the C# binding (bindings/csharp/) compiled and run under Mono
           ${ROOMSENSE_EXTRA_PACKAGES:-})
+if [ -n "${ROOMSENSE_WINDOWS:-}" ]; then
+  packages+=(g++-mingw-w64-x86-64-posix wine wine64 googletest)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

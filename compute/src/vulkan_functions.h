@@ -1,6 +1,6 @@
 // The Vulkan entry points the backend uses, as X-macro lists, and the tables that hold them. Vulkan is
-// loaded at run time (VK_NO_PROTOTYPES, dlopen, vkGetInstanceProcAddr), so nothing links libvulkan and the
-// layer and the CLI still load on a machine without Vulkan.
+// loaded at run time (VK_NO_PROTOTYPES, platform::SharedLibrary, vkGetInstanceProcAddr), so nothing links
+// libvulkan and the layer and the CLI still load on a machine without Vulkan.
 #pragma once
 #ifndef VK_NO_PROTOTYPES
 #define VK_NO_PROTOTYPES

@@ -1,25 +1,17 @@
 #include "vulkan_library.h"
 
-#include <dlfcn.h>
-
 namespace roomsense::compute {
 
-VulkanLibrary::~VulkanLibrary() {
-  if (handle_ != nullptr) dlclose(handle_);
-}
-
-VulkanLibrary::VulkanLibrary() {
-  handle_ = dlopen("libvulkan.so.1", RTLD_NOW | RTLD_LOCAL);
-  if (handle_ == nullptr) {
-    const char* err = dlerror();
-    error_ = std::string("cannot load libvulkan.so.1 (is a Vulkan loader installed?): ") +
-             (err != nullptr ? err : "unknown error");
+VulkanLibrary::VulkanLibrary() : library_(platform::vulkan_loader_name()) {
+  const std::string name = platform::vulkan_loader_name();
+  if (!library_.loaded()) {
+    error_ = "cannot load " + name + " (is a Vulkan loader installed?): " + library_.error();
     return;
   }
   auto& f = functions_;
-  f.vkGetInstanceProcAddr = reinterpret_cast<PFN_vkGetInstanceProcAddr>(dlsym(handle_, "vkGetInstanceProcAddr"));
+  f.vkGetInstanceProcAddr = reinterpret_cast<PFN_vkGetInstanceProcAddr>(library_.symbol("vkGetInstanceProcAddr"));
   if (f.vkGetInstanceProcAddr == nullptr) {
-    error_ = "libvulkan.so.1 has no vkGetInstanceProcAddr";
+    error_ = name + " has no vkGetInstanceProcAddr";
     return;
   }
 #define ROOMSENSE_VK_LOAD(name) f.name = reinterpret_cast<PFN_##name>(f.vkGetInstanceProcAddr(VK_NULL_HANDLE, #name));

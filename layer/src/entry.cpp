@@ -4,6 +4,7 @@
 #include "capture.h"
 #include "functions.h"
 #include "guard.h"
+#include "roomsense/platform.h"
 #include "roomsense/xr/loader_interface.h"
 #include "log.h"
 #include "state.h"
@@ -25,7 +26,8 @@ constexpr std::size_t kMaxTrackedSpaces = 4096;  // reference spaces remembered 
 
 enum class HookGroup { Always, Session, Spaces, Events, Frame, Extx };
 
-constexpr const char* kTimespecExtension = "XR_KHR_convert_timespec_time";
+// The runtime's clock conversion: XR_KHR_convert_timespec_time, or its Win32 performance-counter twin.
+const platform::ClockConversion kClock = platform::clock_conversion();
 
 struct Hook {
   PFN_xrVoidFunction function;
@@ -205,9 +207,9 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
         extensions.push_back(name);  // a null name is the layers' and runtime's to reject below
     // The layer's own analyses need the runtime's clock where it has one.
     std::vector<std::string> clock;
-    if (spatial.wanted && offered && offers(offered, kTimespecExtension) && !enabled(*info, kTimespecExtension)) {
-      clock.emplace_back(kTimespecExtension);
-      extensions.push_back(kTimespecExtension);
+    if (spatial.wanted && offered && offers(offered, kClock.extension) && !enabled(*info, kClock.extension)) {
+      clock.emplace_back(kClock.extension);
+      extensions.push_back(kClock.extension);
     }
     std::vector<const SourceInfo*> candidates;
     if (capture)
@@ -255,7 +257,7 @@ XrResult XRAPI_CALL xrCreateApiLayerInstance(const XrInstanceCreateInfo* info, c
     if (XR_FAILED(result)) return result;
     try {
       added.insert(added.end(), clock.begin(), clock.end());
-      spatial.clock = !clock.empty() || enabled(*info, kTimespecExtension);
+      spatial.clock = !clock.empty() || enabled(*info, kClock.extension);
       register_instance(*instance, next_gipa, *info, extx, capture, candidates, added, config, spatial);
     } catch (...) {  // the application gets an error, so the instance must not outlive this call
       {
@@ -294,8 +296,8 @@ std::shared_ptr<const SpatialInstance> make_spatial_instance(const InstanceState
   // Only where the extension is enabled: a layer below may hand out a function that has nothing behind it
   // (Debian's core validation does, and calling it crashes).
   PFN_xrVoidFunction convert = nullptr;
-  if (request.clock && XR_SUCCEEDED(state.next.xrGetInstanceProcAddr(state.handle, "xrConvertTimespecTimeToTimeKHR", &convert)))
-    spatial->convert_time = reinterpret_cast<ConvertTimespecTime>(convert);
+  if (request.clock && XR_SUCCEEDED(state.next.xrGetInstanceProcAddr(state.handle, kClock.to_xr_time, &convert)))
+    spatial->convert_time = reinterpret_cast<ConvertClockTime>(convert);
   return spatial;
 }
 
@@ -370,7 +372,7 @@ XrResult XRAPI_CALL xrGetInstanceProcAddr(XrInstance instance, const char* name,
         *function = f;
         return XR_SUCCESS;
       }
-    if (wanted.starts_with("xrConvert") && wanted.ends_with("TimespecTimeKHR") && layer_enabled(*state, kTimespecExtension))
+    if ((wanted == kClock.to_xr_time || wanted == kClock.from_xr_time) && layer_enabled(*state, kClock.extension))
       return XR_ERROR_FUNCTION_UNSUPPORTED;  // the layer's clock, not enabled by the application
     if (const auto* hook = source_hook(wanted); hook != nullptr && state->capture)
       for (const EnabledSource& s : state->sources)
@@ -505,7 +507,7 @@ XrResult XRAPI_CALL xrCreateReferenceSpace(XrSession session, const XrReferenceS
 
 }  // namespace roomsense::layer
 
-extern "C" __attribute__((visibility("default"))) XrResult XRAPI_CALL
+extern "C" ROOMSENSE_PLUGIN_EXPORT XrResult XRAPI_CALL
 xrNegotiateLoaderApiLayerInterface(const XrNegotiateLoaderInfo* loaderInfo, const char* layerName,
                                    XrNegotiateApiLayerRequest* apiLayerRequest) {
   using namespace roomsense::layer;

@@ -1,6 +1,7 @@
 // Loader negotiation (the library's only exported symbol) and xrGetInstanceProcAddr.
 #include "extensions/served_extension.h"
 #include "functions.h"
+#include "roomsense/platform.h"
 #include "roomsense/xr/loader_interface.h"
 #include "runtime.h"
 #include "validate.h"
@@ -70,7 +71,7 @@ XrResult XRAPI_CALL xrGetInstanceProcAddr(XrInstance instance, const char* name,
 
 }  // namespace roomsense::sim
 
-extern "C" __attribute__((visibility("default"))) XrResult XRAPI_CALL
+extern "C" ROOMSENSE_PLUGIN_EXPORT XrResult XRAPI_CALL
 xrNegotiateLoaderRuntimeInterface(const XrNegotiateLoaderInfo* loaderInfo, XrNegotiateRuntimeRequest* runtimeRequest) {
   if (loaderInfo == nullptr || runtimeRequest == nullptr) return XR_ERROR_INITIALIZATION_FAILED;
   if (loaderInfo->structType != XR_LOADER_INTERFACE_STRUCT_LOADER_INFO ||

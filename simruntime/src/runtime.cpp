@@ -3,7 +3,7 @@
 
 #include "extensions/served_extension.h"
 
-#include <time.h>
+#include "roomsense/platform.h"
 
 namespace roomsense::sim {
 
@@ -12,11 +12,7 @@ Runtime& runtime() {
   return instance;
 }
 
-XrTime now_time() {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<XrTime>(ts.tv_sec) * 1000000000 + ts.tv_nsec;
-}
+XrTime now_time() { return platform::monotonic_nanoseconds(); }
 
 void Runtime::push_state(SessionState& session, std::uint64_t session_id, XrSessionState state) {
   session.state = state;

@@ -1,25 +1,39 @@
-# The dynamic symbols libRoomCreatorLibrary.so defines must be exactly the global names of its version
-# script: the six thesis functions and the handle API, nothing of core, glm or the C++ runtime.
-# cmake -DNM=... -DLIB=... -DMAP=... -P check_exports.cmake
-execute_process(COMMAND ${NM} -D --defined-only ${LIB} OUTPUT_VARIABLE out RESULT_VARIABLE rc)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "${NM} failed on ${LIB}")
-endif()
-string(REPLACE "\n" ";" lines "${out}")
+# The symbols a shared library exports must be exactly the global names of its version script: for
+# libRoomCreatorLibrary the six thesis functions and the handle API, for the layer its negotiation function;
+# nothing of core, glm or the C++ runtime. An ELF library's dynamic symbols (nm -D), or a DLL's export table
+# (objdump -p).
+# cmake -DNM=... -DLIB=... -DMAP=... -P check_exports.cmake       (ELF)
+# cmake -DOBJDUMP=... -DLIB=... -DMAP=... -P check_exports.cmake  (DLL)
 set(exported)
-foreach(line IN LISTS lines)
-  # "0000000000012340 T StartRoomUnderstanding"; names may carry a version ("@@V1")
-  if(line MATCHES "^[0-9a-fA-F]* *[A-Za-z] ([^ @]+)")
-    list(APPEND exported ${CMAKE_MATCH_1})
+if(LIB MATCHES "\\.dll$")
+  execute_process(COMMAND ${OBJDUMP} -p ${LIB} OUTPUT_VARIABLE out RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${OBJDUMP} failed on ${LIB}")
   endif()
-endforeach()
+  # "[Ordinal/Name Pointer] Table" then one "\t[   0] Name" line per export, up to a blank line
+  string(REGEX MATCH "\\[Ordinal/Name Pointer\\] Table[^\n]*\n(([^\n]+\n)*)" _ "${out}")
+  string(REGEX MATCHALL "\\[ *[0-9]+\\] [A-Za-z_][A-Za-z0-9_@]*" entries "${CMAKE_MATCH_1}")
+  foreach(entry IN LISTS entries)
+    string(REGEX REPLACE "^\\[ *[0-9]+\\] " "" name "${entry}")
+    list(APPEND exported ${name})
+  endforeach()
+else()
+  execute_process(COMMAND ${NM} -D --defined-only ${LIB} OUTPUT_VARIABLE out RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${NM} failed on ${LIB}")
+  endif()
+  string(REPLACE "\n" ";" lines "${out}")
+  foreach(line IN LISTS lines)
+    # "0000000000012340 T StartRoomUnderstanding"; names may carry a version ("@@V1")
+    if(line MATCHES "^[0-9a-fA-F]* *[A-Za-z] ([^ @]+)")
+      list(APPEND exported ${CMAKE_MATCH_1})
+    endif()
+  endforeach()
+endif()
 list(SORT exported)
 
-file(READ ${MAP} map)
-string(REGEX REPLACE "/\\*.*\\*/" "" map "${map}")  # the comment
-string(REGEX MATCH "global:([^}]*)local:" globals "${map}")
-string(REGEX MATCHALL "[A-Za-z_][A-Za-z0-9_]*" expected "${CMAKE_MATCH_1}")
-list(SORT expected)
+include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/export_names.cmake)
+roomsense_export_names(${MAP} expected)
 
 message(STATUS "exported: ${exported}")
 if(NOT exported STREQUAL expected)

@@ -1,12 +1,24 @@
-# libRoomCreatorLibrary.so may need only the C and C++ runtimes (the thesis: "no other dependency than the
-# C++ Standard Library"), plus the sanitizer runtimes in a sanitizer build.
-# cmake -DREADELF=... -DLIB=... [-DSANITIZE=address,undefined] -P check_needed.cmake
-execute_process(COMMAND ${READELF} -d ${LIB} OUTPUT_VARIABLE out RESULT_VARIABLE rc)
-if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "${READELF} failed on ${LIB}")
+# libRoomCreatorLibrary may need only the C and C++ runtimes (the thesis: "no other dependency than the
+# C++ Standard Library"), plus the sanitizer runtimes in a sanitizer build. A DLL (MinGW-w64, runtimes linked
+# in) may need only Windows' own DLLs: no libstdc++-6.dll, libgcc_s_seh-1.dll or libwinpthread-1.dll.
+# cmake -DREADELF=... -DLIB=... [-DSANITIZE=address,undefined] -P check_needed.cmake   (ELF)
+# cmake -DOBJDUMP=... -DLIB=... -P check_needed.cmake                                  (DLL)
+if(LIB MATCHES "\\.dll$")
+  execute_process(COMMAND ${OBJDUMP} -p ${LIB} OUTPUT_VARIABLE out RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${OBJDUMP} failed on ${LIB}")
+  endif()
+  string(REGEX MATCHALL "DLL Name: [^\n]+" entries "${out}")
+  list(TRANSFORM entries REPLACE "^DLL Name: (.+)$" "[\\1]")
+  set(allowed "^(KERNEL32|msvcrt|ADVAPI32|USER32|SHELL32|WS2_32|api-ms-win-[-a-z0-9]+)\\.dll$")
+else()
+  execute_process(COMMAND ${READELF} -d ${LIB} OUTPUT_VARIABLE out RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${READELF} failed on ${LIB}")
+  endif()
+  string(REGEX MATCHALL "\\(NEEDED\\)[^\n]*\\[[^]]+\\]" entries "${out}")
+  set(allowed "^(libc|libm|libstdc\\+\\+|libgcc_s|libpthread|libdl|ld-linux[-a-z0-9_]*)\\.so")
 endif()
-string(REGEX MATCHALL "\\(NEEDED\\)[^\n]*\\[[^]]+\\]" entries "${out}")
-set(allowed "^(libc|libm|libstdc\\+\\+|libgcc_s|libpthread|libdl|ld-linux[-a-z0-9_]*)\\.so")
 if(SANITIZE)
   set(allowed "^(libc|libm|libstdc\\+\\+|libgcc_s|libpthread|libdl|librt|ld-linux[-a-z0-9_]*|libasan|libubsan|libtsan|liblsan)\\.so")
 endif()

@@ -3,6 +3,7 @@
 // node per area. Skips without the scans, fails without them under CI=1 (tests/support/rooms.h).
 #include "report_checks.h"
 #include "rooms.h"
+#include "test_process.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -15,7 +16,6 @@
 #include <string>
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 namespace roomsense {
 namespace {
@@ -43,7 +43,7 @@ constexpr const char* kScans[] = {
 };
 
 std::string temp_path(const std::string& name) {
-  return testing::TempDir() + "/" + std::to_string(getpid()) + "_report_scan_" + name;
+  return test::temp_path("report_scan_" + name);
 }
 
 std::string read_text(const std::string& path) {

@@ -7,6 +7,7 @@
 #include "roomsense/queries.h"
 #include "roomsense/report.h"
 #include "roomsense/synthetic.h"
+#include "test_process.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
@@ -25,7 +26,6 @@
 #include <string>
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 namespace roomsense {
 namespace {
@@ -49,7 +49,7 @@ const Room& default_room() {
 
 // Per-process paths: ctest runs the tests of this binary in parallel processes.
 std::string temp_path(const std::string& name) {
-  return testing::TempDir() + "/" + std::to_string(getpid()) + "_report_" + name;
+  return test::temp_path("report_" + name);
 }
 
 std::string expected_node_name(std::size_t i, const Area& a) {
@@ -369,10 +369,8 @@ struct CliRun {
 
 CliRun run_cli(const std::string& args) {
   const std::string err_path = temp_path("cli_stderr.txt");
-  const std::string cmd = std::string(ROOMSENSE_CLI) + " " + args + " >/dev/null 2>" + err_path;
-  const int raw = std::system(cmd.c_str());
   CliRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.status = test::run_program(ROOMSENSE_CLI, args, err_path);
   {
     std::ifstream in(err_path);
     r.err.assign(std::istreambuf_iterator<char>(in), {});

@@ -4,6 +4,7 @@
 #include "roomsense/queries.h"
 #include "roomsense/synthetic.h"
 #include "rooms.h"
+#include "test_process.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
@@ -12,9 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <vector>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -26,16 +24,13 @@ struct CliRun {
   std::string err;
 };
 
-// Per-process file names: ctest runs tests of this binary in parallel processes.
-std::string temp_path(const std::string& name) { return testing::TempDir() + "/" + std::to_string(getpid()) + "_" + name; }
+using roomsense::test::temp_path;
 
 // `shell_prefix` runs first in the same shell, e.g. a ulimit.
 CliRun run_cli(const std::string& args, const std::string& shell_prefix = "") {
   const std::string err_path = temp_path("cli_stderr.txt");
-  const std::string cmd = shell_prefix + std::string(ROOMSENSE_CLI) + " " + args + " >/dev/null 2>" + err_path;
-  const int raw = std::system(cmd.c_str());
   CliRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.status = roomsense::test::run_program(ROOMSENSE_CLI, args, err_path, shell_prefix);
   std::ifstream in(err_path);
   r.err.assign(std::istreambuf_iterator<char>(in), {});
   return r;
@@ -123,14 +118,15 @@ TEST(Cli, MalformedPlyFilesGetOneLineAndStatus1) {
 TEST(Cli, SaysWhatAScanPathIsWhenItIsNoFile) {
   const std::string fifo = temp_path("scan.fifo");
   std::remove(fifo.c_str());
-  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   const std::string dir = testing::TempDir();
-  for (const auto& [path, what] : std::vector<std::pair<std::string, std::string>>{
-           {dir, "it is a directory"},
-           {fifo, "it is not a regular file (a FIFO)"},
-           {"/dev/zero", "it is not a regular file (a character device)"},
-           {"/no/such/room.ply", "no such file"},
-           {dir + "/room.json", "no such file"}}) {
+  std::vector<std::pair<std::string, std::string>> cases{
+      {dir, "it is a directory"}, {"/no/such/room.ply", "no such file"}, {dir + "/room.json", "no such file"}};
+  if (roomsense::test::kPosix) {
+    ASSERT_TRUE(roomsense::test::make_fifo(fifo));
+    cases.insert(cases.end(), {{fifo, "it is not a regular file (a FIFO)"},
+                               {"/dev/zero", "it is not a regular file (a character device)"}});
+  }
+  for (const auto& [path, what] : cases) {
     const CliRun r = run_cli("analyze " + path);
     EXPECT_EQ(r.status, 1) << path;
     EXPECT_EQ(r.err, "roomsense analyze: cannot read '" + path + "': " + what + "\n");
@@ -140,9 +136,10 @@ TEST(Cli, SaysWhatAScanPathIsWhenItIsNoFile) {
 
 // --voxel is checked with the options, before the scan is opened: here it would block on a FIFO forever.
 TEST(Cli, VoxelOutOfRangeExits2BeforeReadingTheScan) {
+  if (!roomsense::test::kPosix) GTEST_SKIP() << "needs a FIFO (POSIX)";
   const std::string fifo = temp_path("voxel.fifo");
   std::remove(fifo.c_str());
-  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  ASSERT_TRUE(roomsense::test::make_fifo(fifo));
   const CliRun r = run_cli("analyze " + fifo + " --voxel 0.0001");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "roomsense analyze: --voxel takes a size from 0.01 to 1 m, not '0.0001' (see roomsense analyze --help)\n");
@@ -165,6 +162,7 @@ TEST(Cli, OutOfMemoryIsOneLineAndStatus1) {
   GTEST_SKIP() << "a sanitizer maps terabytes of shadow memory at start: no address-space limit fits it "
                   "(the Release build runs this test)";
 #endif
+  if (!roomsense::test::kPosix) GTEST_SKIP() << "needs ulimit -v (POSIX)";
   // 64 MiB of base64 vertices under a 150 MB address-space limit (enough to start the process and read small scans).
   const std::string path = temp_path("big_capture.json");
   {

@@ -5,6 +5,7 @@
 #include "roomsense/scanio.h"
 #include "roomsense/synthetic.h"
 #include "synthetic_fixture.h"
+#include "test_process.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -13,7 +14,6 @@
 #include <filesystem>
 #include <fstream>
 
-#include <unistd.h>
 
 namespace roomsense {
 namespace {
@@ -26,7 +26,7 @@ std::uint32_t u32(const std::vector<std::uint8_t>& b, std::size_t at) {
 
 TEST(Export, ObjRoundTripsThroughTheLoader) {
   const BoundsMesh& m = test::analysed(synth::default_room()).result.bounds;
-  const std::string path = testing::TempDir() + "/" + std::to_string(getpid()) + "_bounds.obj";
+  const std::string path = test::temp_path("bounds.obj");
   write_bounds(m, path);
   const Scan back = scanio::load_mesh_file(path);
   EXPECT_EQ(back.vertices.size(), m.vertices.size());

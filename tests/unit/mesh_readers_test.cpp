@@ -2,6 +2,7 @@
 // and the issue-18 reproducers that crashed or went unreported under assimp, now one Error(Io) line each.
 #include "roomsense/error.h"
 #include "roomsense/scanio.h"
+#include "test_process.h"
 
 #include <gtest/gtest.h>
 
@@ -15,8 +16,6 @@
 #include <string>
 #include <vector>
 
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace roomsense {
 namespace {
@@ -250,7 +249,7 @@ TEST(ObjReader, BadIndicesNameTheFace) {
 // --- load_mesh_file ------------------------------------------------------------------------------------
 
 std::string temp_file(const std::string& name, const std::string& bytes) {
-  const std::string path = testing::TempDir() + "/" + std::to_string(getpid()) + "_" + name;
+  const std::string path = test::temp_path(name);
   std::ofstream(path, std::ios::binary) << bytes;
   return path;
 }
@@ -268,11 +267,12 @@ TEST(LoadMeshFile, SaysWhatAPathIsWhenItIsNoRegularFile) {
   EXPECT_EQ(io_error([] { scanio::load_mesh_file("/no/such/room.obj"); }), "cannot read '/no/such/room.obj': no such file");
   EXPECT_EQ(io_error([] { scanio::load_mesh_file(testing::TempDir()); }),
             "cannot read '" + testing::TempDir() + "': it is a directory");
+  if (!test::kPosix) return;  // no FIFOs or character devices to name
   EXPECT_EQ(io_error([] { scanio::load_mesh_file("/dev/zero"); }),
             "cannot read '/dev/zero': it is not a regular file (a character device)");
-  const std::string fifo = testing::TempDir() + "/" + std::to_string(getpid()) + "_fifo.ply";
+  const std::string fifo = test::temp_path("fifo.ply");
   std::filesystem::remove(fifo);
-  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  ASSERT_TRUE(test::make_fifo(fifo));
   EXPECT_EQ(io_error([&] { scanio::load_mesh_file(fifo); }), "cannot read '" + fifo + "': it is not a regular file (a FIFO)");
   std::filesystem::remove(fifo);
 }

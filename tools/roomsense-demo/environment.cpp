@@ -1,9 +1,9 @@
 #include "environment.h"
 
+#include "roomsense/platform.h"
+
 #include <cstdlib>
-#include <fstream>
 #include <stdexcept>
-#include <system_error>
 
 namespace roomsense::demo {
 namespace {
@@ -12,13 +12,6 @@ namespace fs = std::filesystem;
 
 constexpr const char* kLayerManifest = "openxr/1/api_layers/implicit.d/XR_APILAYER_ROOMSENSE_room_understanding.json";
 constexpr const char* kRuntimeManifest = "openxr/1/roomsense_simruntime.json";
-
-fs::path executable_dir() {
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) throw std::runtime_error("cannot find the demo's own executable (/proc/self/exe): " + ec.message());
-  return self.parent_path();
-}
 
 std::string env(const char* name) {
   const char* v = std::getenv(name);
@@ -29,7 +22,7 @@ std::string env(const char* name) {
 
 Setup prepare_environment(const std::string& runtime_override, const std::string& scene) {
   Setup s;
-  const fs::path share = executable_dir().parent_path() / "share";
+  const fs::path share = platform::executable_path().parent_path().parent_path() / "share";
   s.layer_search_dir = share;
   s.layer_manifest = share / kLayerManifest;
   if (!fs::exists(s.layer_manifest))
@@ -44,28 +37,20 @@ Setup prepare_environment(const std::string& runtime_override, const std::string
   const std::string old_runtime = env("XR_RUNTIME_JSON");
   if (!old_runtime.empty() && fs::path(old_runtime) != s.runtime_manifest)
     s.notes.push_back("XR_RUNTIME_JSON=" + old_runtime + " is replaced for this run (use --runtime MANIFEST to pick one)");
-  setenv("XR_RUNTIME_JSON", s.runtime_manifest.c_str(), 1);
+  platform::set_environment("XR_RUNTIME_JSON", s.runtime_manifest.string());
 
   // The layer: the tree's share/ goes first in XDG_DATA_DIRS, where the loader also looks for implicit layers.
   // XDG_DATA_HOME (the user's own layers) is left alone; the defaults of XDG_DATA_DIRS are kept behind ours.
   std::string dirs = env("XDG_DATA_DIRS");
   if (dirs.empty()) dirs = "/usr/local/share:/usr/share";
-  setenv("XDG_DATA_DIRS", (share.string() + ":" + dirs).c_str(), 1);
+  platform::set_environment("XDG_DATA_DIRS", share.string() + ":" + dirs);
 
-  if (!scene.empty()) setenv("ROOMSENSE_SIM_SCENE", scene.c_str(), 1);
+  if (!scene.empty()) platform::set_environment("ROOMSENSE_SIM_SCENE", scene);
   if (std::getenv("DISABLE_XR_APILAYER_ROOMSENSE") != nullptr)
     s.notes.push_back("DISABLE_XR_APILAYER_ROOMSENSE is set: the loader will leave the roomsense layer out");
   return s;
 }
 
-std::string loaded_layer_library() {
-  std::ifstream maps("/proc/self/maps");
-  std::string line;
-  while (std::getline(maps, line)) {
-    const auto at = line.find('/');
-    if (at != std::string::npos && line.find("libXrApiLayer_roomsense.so") != std::string::npos) return line.substr(at);
-  }
-  return "";
-}
+std::string loaded_layer_library() { return platform::loaded_module_path("libXrApiLayer_roomsense.so"); }
 
 }  // namespace roomsense::demo

@@ -19,7 +19,7 @@ struct Setup {
 // simulated runtime (ROOMSENSE_SIM_SCENE). Throws std::runtime_error with one line when the tree is incomplete.
 Setup prepare_environment(const std::string& runtime_override, const std::string& scene);
 
-// The path of the layer library the loader actually loaded into this process (from /proc/self/maps), or "".
+// The path of the layer library the loader actually loaded into this process, or "".
 std::string loaded_layer_library();
 
 }  // namespace roomsense::demo

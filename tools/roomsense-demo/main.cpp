@@ -16,6 +16,7 @@
 #include "roomsense/queries.h"
 #include "roomsense/bounds.h"
 #include "roomsense/export.h"
+#include "roomsense/platform.h"
 #include "roomsense/report.h"
 
 #include <nlohmann/json.hpp>
@@ -207,7 +208,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    if (!options.runtime_extensions.empty()) setenv("ROOMSENSE_SIM_EXTENSIONS", options.runtime_extensions.c_str(), 1);
+    if (!options.runtime_extensions.empty()) platform::set_environment("ROOMSENSE_SIM_EXTENSIONS", options.runtime_extensions);
     const demo::Setup setup = demo::prepare_environment(options.runtime, options.room);
     std::printf("roomsense-demo: an OpenXR app through the Khronos loader, the %s runtime and the roomsense layer\n",
                 options.runtime.empty() ? "simulated" : "given");

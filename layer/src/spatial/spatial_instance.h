@@ -3,8 +3,6 @@
 #pragma once
 #include "spatial_declarations.h"
 
-#include <ctime>
-
 // Every XR_EXT_spatial_entity and XR_EXT_future function, one line each: the layer hooks them all when it serves
 // any part of the API (spatial_api.cpp), answers for its own handles and passes the rest on.
 #define ROOMSENSE_SPATIAL_FUNCTIONS(_)                                                                                  \
@@ -19,12 +17,14 @@
 
 namespace roomsense::layer {
 
-// XR_KHR_convert_timespec_time's conversion (declared here: openxr_platform.h needs XR_USE_TIMESPEC).
-using ConvertTimespecTime = XrResult(XRAPI_PTR*)(XrInstance, const struct timespec*, XrTime*);
+// The runtime's conversion of the OS's monotonic clock (platform::clock_conversion(): XR_KHR_convert_timespec_time
+// or XR_KHR_win32_convert_performance_counter_time), declared over the clock reading's storage (a timespec or a
+// LARGE_INTEGER, platform::ClockReading) so that no OS header is needed here.
+using ConvertClockTime = XrResult(XRAPI_PTR*)(XrInstance, const void*, XrTime*);
 
 struct SpatialInstance {
   bool planes = false;            // the layer serves XR_SPATIAL_CAPABILITY_PLANE_TRACKING_EXT: the runtime has none
-  ConvertTimespecTime convert_time = nullptr;  // the runtime's clock, when it has XR_KHR_convert_timespec_time
+  ConvertClockTime convert_time = nullptr;  // the runtime's clock, when it has the clock conversion extension
   struct Forward {
 #define ROOMSENSE_FORWARD_MEMBER(name) PFN_##name name = nullptr;
     ROOMSENSE_SPATIAL_FUNCTIONS(ROOMSENSE_FORWARD_MEMBER)

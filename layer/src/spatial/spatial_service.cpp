@@ -4,7 +4,8 @@
 #include "../log.h"
 #include "spatial_instance.h"
 
-#include <ctime>
+#include "roomsense/platform.h"
+
 #include <stdexcept>
 
 namespace roomsense::layer {
@@ -88,9 +89,9 @@ void SpatialService::shut_down() {
 XrTime SpatialService::now() const {
   const InstanceState& instance = *session_->instance;
   if (instance.spatial && instance.spatial->convert_time != nullptr) {
-    timespec ts{};
+    platform::ClockReading clock;
     XrTime t = 0;
-    if (clock_gettime(CLOCK_MONOTONIC, &ts) == 0 && XR_SUCCEEDED(instance.spatial->convert_time(instance.handle, &ts, &t)) && t > 0)
+    if (platform::read_clock(clock) && XR_SUCCEEDED(instance.spatial->convert_time(instance.handle, clock.data(), &t)) && t > 0)
       return t;
   }
   return session_->frame_time.load();

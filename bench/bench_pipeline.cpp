@@ -1,5 +1,7 @@
 // Per-stage timings of the room pipeline on every real scan and on synthetic rooms (Google Benchmark).
-// Run: build/bench/roomsense_bench [--benchmark_filter=...]. Loading is excluded everywhere.
+// Run: build/bench/roomsense_bench [--benchmark_filter=...]. Loading is excluded everywhere. Each case also
+// reports peak_MB, the most heap one iteration held beyond what was live before it (heap_meter.h).
+#include "heap_meter.h"
 #include "roomsense/analysis.h"
 #include "roomsense/areas.h"
 #include "roomsense/bounds.h"
@@ -89,6 +91,18 @@ void counters(benchmark::State& state, const Room& room) {
   state.counters["triangles"] = double(room.scan.indices.size() / 3);
 }
 
+// Registers `name`, timing body() per iteration and reporting peak_MB: the most heap any iteration held beyond
+// what was live when the case started.
+template <class Body>
+void register_case(const std::string& name, Body body) {
+  benchmark::RegisterBenchmark(name.c_str(), [body](benchmark::State& state) {
+    const std::size_t base = bench::live_heap_bytes();
+    bench::reset_heap_peak();
+    body(state);
+    state.counters["peak_MB"] = double(bench::peak_heap_bytes() - std::min(base, bench::peak_heap_bytes())) / 1e6;
+  })->Unit(benchmark::kMillisecond);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -102,32 +116,32 @@ int main(int argc, char** argv) {
   static const std::vector<Room> rooms = load_rooms();
   for (const Room& room : rooms) {
     const auto p = prepare(room.scan);
-    benchmark::RegisterBenchmark(("voxelize/" + room.name).c_str(), [&room, p](benchmark::State& state) {
+    register_case("voxelize/" + room.name, [&room, p](benchmark::State& state) {
       CpuVoxelStage stage;
       for (auto _ : state)
         benchmark::DoNotOptimize(stage.run({p->spec, p->grid_vertices, p->input.indices, VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}));
       counters(state, room);
-    })->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("features/" + room.name).c_str(), [&room, p](benchmark::State& state) {
+    });
+    register_case("features/" + room.name, [&room, p](benchmark::State& state) {
       for (auto _ : state) benchmark::DoNotOptimize(detect_features(p->voxels, {}));
       counters(state, room);
-    })->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("areas/" + room.name).c_str(), [&room, p](benchmark::State& state) {
+    });
+    register_case("areas/" + room.name, [&room, p](benchmark::State& state) {
       time_areas(state, *p);
       counters(state, room);
-    })->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("understanding/" + room.name).c_str(), [&room](benchmark::State& state) {
+    });
+    register_case("understanding/" + room.name, [&room](benchmark::State& state) {
       AnalysisOptions o;
       o.build_bounds = false;
       for (auto _ : state) benchmark::DoNotOptimize(analyze(room.scan, o));
       counters(state, room);
-    })->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("bounds/" + room.name).c_str(), [&room, p](benchmark::State& state) {
+    });
+    register_case("bounds/" + room.name, [&room, p](benchmark::State& state) {
       for (auto _ : state)
         benchmark::DoNotOptimize(build_bounds(p->voxels.grid, *p->voxels.levels, p->features.y_end, p->features.room));
       counters(state, room);
-    })->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("bounds_pipeline/" + room.name).c_str(), [&room](benchmark::State& state) {
+    });
+    register_case("bounds_pipeline/" + room.name, [&room](benchmark::State& state) {
       for (auto _ : state) {
         const PreparedInput in = prepare_input(room.scan);
         const GridSpec spec = make_grid_spec(in.lo, in.hi, kDefaultVoxelSize);
@@ -138,18 +152,17 @@ int main(int argc, char** argv) {
         benchmark::DoNotOptimize(build_bounds(v.grid, *v.levels, y_end, room_mask));
       }
       counters(state, room);
-    })->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("analyze/" + room.name).c_str(), [&room](benchmark::State& state) {
+    });
+    register_case("analyze/" + room.name, [&room](benchmark::State& state) {
       for (auto _ : state) benchmark::DoNotOptimize(analyze(room.scan));
       counters(state, room);
-    })->Unit(benchmark::kMillisecond);
+    });
   }
   // How the area search grows with room size: empty-ish halls of increasing floor area.
   for (const float scale : {0.25f, 0.5f, 1.0f, 1.5f}) {
     const std::string name = "area_growth/hall_" + std::to_string(int(20 * scale)) + "x" + std::to_string(int(14 * scale));
     const auto p = prepare(synth::generate(synth::hall_room(20.0f * scale, 14.0f * scale)));
-    benchmark::RegisterBenchmark(name.c_str(), [p](benchmark::State& state) { time_areas(state, *p); })
-        ->Unit(benchmark::kMillisecond);
+    register_case(name, [p](benchmark::State& state) { time_areas(state, *p); });
   }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

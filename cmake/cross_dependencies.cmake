@@ -37,3 +37,9 @@ if(ROOMSENSE_BUILD_TESTS)
   add_subdirectory(${_gtest_src} ${PROJECT_BINARY_DIR}/googletest EXCLUDE_FROM_ALL SYSTEM)
   # its CMakeLists defines GTest::gtest and GTest::gtest_main itself
 endif()
+
+# Wine's prefix made now, quietly: otherwise the first test program that runs (gtest discovery, at build time)
+# makes it and prints Wine's setup chatter into the build log.
+if(ROOMSENSE_WINEPREFIX AND CMAKE_CROSSCOMPILING_EMULATOR AND NOT EXISTS ${ROOMSENSE_WINEPREFIX})
+  execute_process(COMMAND ${CMAKE_CROSSCOMPILING_EMULATOR} wineboot --init OUTPUT_QUIET ERROR_QUIET)
+endif()

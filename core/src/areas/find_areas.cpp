@@ -143,13 +143,10 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
     for (std::size_t size = 0; size < 3; ++size)
       for (const Candidate& c : found[type][size]) all[type].push_back({c, kAreaSizes[size]});
     // Eq. 3.49: furniture squares less than reduction_offset levels apart are on one top.
-    const auto is_tile = [&](int x, int z, int level) {
-      if (x < 0 || z < 0 || x >= spec.nx || z >= spec.nz) return false;
-      const std::size_t col = spec.column(x, z);
-      if (type == 1) return features.free_floor[col] != 0;
-      if (type == 2) return features.free_ceiling[col] != 0;
-      return features.furniture[col] == level || features.furniture[col] == level + 1;  // C, y_Actual (Eq. 3.41)
-    };
+    const TileMap is_tile{spec, type == 1 ? std::span<const std::uint8_t>(features.free_floor)
+                                : type == 2 ? std::span<const std::uint8_t>(features.free_ceiling)
+                                            : std::span<const std::uint8_t>(),
+                          type == 3 ? std::span<const int>(features.furniture) : std::span<const int>()};
     kept[type] = type == 0 ? pack_walls(all[type])
                            : pack_squares(all[type], type == 3 ? params.reduction_offset - 1 : 0, dominant_deg, is_tile);
   });

@@ -3,6 +3,8 @@
 // under it.
 #include "reduce.h"
 
+#include "../floor_int.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -35,7 +37,7 @@ bool wall_samples(const Candidate& c, int layer, F f) {
   for (double t = 0.5 * kSample; t < length; t += kSample) {
     const glm::dvec2 p = p1 + t * dir + double(layer) * normal;
     for (double y = y_lo + 0.5 * kSample; y < y_hi; y += kSample)
-      if (!f(long(std::floor(p.x / kSample)), long(std::floor(y / kSample)), long(std::floor(p.y / kSample))))
+      if (!f(long(floor_int(p.x / kSample)), long(floor_int(y / kSample)), long(floor_int(p.y / kSample))))
         return false;
   }
   return true;
@@ -58,8 +60,8 @@ bool square_samples(const Candidate& c, F f) {
     return e.x * q.y - e.y * q.x;
   };
   const double sign = side(0, 0.25 * (v[0] + v[1] + v[2] + v[3])) > 0.0 ? 1.0 : -1.0;
-  for (long sz = long(std::floor(lo.y / kSample)); sz <= long(std::floor(hi.y / kSample)); ++sz)
-    for (long sx = long(std::floor(lo.x / kSample)); sx <= long(std::floor(hi.x / kSample)); ++sx) {
+  for (long sz = long(floor_int(lo.y / kSample)); sz <= long(floor_int(hi.y / kSample)); ++sz)
+    for (long sx = long(floor_int(lo.x / kSample)); sx <= long(floor_int(hi.x / kSample)); ++sx) {
       const glm::dvec2 p((double(sx) + 0.5) * kSample, (double(sz) + 0.5) * kSample);
       bool inside = true;
       for (std::size_t i = 0; i < 4 && inside; ++i) inside = sign * side(i, p) > 1e-9;
@@ -133,10 +135,12 @@ std::vector<std::size_t> pack_walls(const std::vector<Sized>& walls) {
 }
 
 std::vector<std::size_t> pack_squares(const std::vector<Sized>& squares, int level_tolerance, double dominant_deg,
-                                      const std::function<bool(int x, int z, int level)>& is_tile) {
+                                      const TileMap& is_tile) {
   // Contact: unusable cells just outside the square's edges, sampled every half voxel.
   const auto contact = [&](const Candidate& c) {
     int n = 0;
+    glm::dvec2 mid(0.0);
+    for (const glm::ivec3& k : c.corners) mid += glm::dvec2(k.x + 0.5, k.z + 0.5) * 0.25;
     for (std::size_t i = 0; i < 4; ++i) {
       const glm::dvec2 a(c.corners[i].x + 0.5, c.corners[i].z + 0.5);
       const glm::dvec2 b(c.corners[(i + 1) % 4].x + 0.5, c.corners[(i + 1) % 4].z + 0.5);
@@ -144,25 +148,24 @@ std::vector<std::size_t> pack_squares(const std::vector<Sized>& squares, int lev
       if (length <= 0.0) continue;
       const glm::dvec2 dir = (b - a) / length;
       glm::dvec2 out(-dir.y, dir.x);
-      glm::dvec2 mid(0.0);
-      for (const glm::ivec3& k : c.corners) mid += glm::dvec2(k.x + 0.5, k.z + 0.5) * 0.25;
       if (glm::dot(out, 0.5 * (a + b) - mid) < 0.0) out = -out;
       for (double t = 0.0; t <= length; t += kSample) {
         const glm::dvec2 p = a + t * dir + 0.75 * out;
-        n += is_tile(int(std::floor(p.x)), int(std::floor(p.y)), c.corners[0].y) ? 0 : 1;
+        n += is_tile(floor_int(p.x), floor_int(p.y), c.corners[0].y) ? 0 : 1;
       }
     }
     return n;
   };
-  // Within a size, aligned with the room first (in steps of 5°), then by contact, then in search order.
+  // Within a size, aligned with the room first (in steps of 5°), then by contact, then in search order. Each
+  // square's rank is computed once: the sort compares it O(n log n) times (an atan2 each, before).
   std::vector<std::size_t> order(squares.size());
-  std::vector<int> contacts(squares.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i, contacts[i] = contact(squares[i].c);
-  const auto rank = [&](std::size_t i) {
-    return std::tuple(int(squares[i].size), int(std::lround(misalignment_deg(squares[i].c, dominant_deg) / 5.0)),
-                      -contacts[i]);
-  };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
+  std::vector<std::tuple<int, int, int>> rank(squares.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    order[i] = i;
+    rank[i] = {int(squares[i].size), int(std::lround(misalignment_deg(squares[i].c, dominant_deg) / 5.0)),
+               -contact(squares[i].c)};
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank[a] < rank[b]; });
   std::unordered_map<int, std::unordered_set<std::uint64_t>> taken;  // per level
   std::vector<std::size_t> kept;
   for (const std::size_t i : order) {

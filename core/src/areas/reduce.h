@@ -3,7 +3,10 @@
 #pragma once
 #include "candidate.h"
 
-#include <functional>
+#include "roomsense/grid.h"
+
+#include <cstdint>
+#include <span>
 
 namespace roomsense::detail {
 
@@ -30,10 +33,25 @@ double misalignment_deg(const Candidate& square, double dominant_deg);
 // squares aligned with the room's main direction first, so that large areas tile the free surface and
 // smaller ones fill what they leave. Returns the indices kept.
 std::vector<std::size_t> pack_walls(const std::vector<Sized>& walls);
-// Within a size and alignment, squares pressed against more unusable cells (`is_tile` false: walls,
-// clutter, the edge of a top) go first, leaving the free surface in one piece for the next ones. For
-// furniture, squares more than `level_tolerance` levels apart never conflict (Eq. 3.49).
+// The columns a square may rest on: free floor D or free ceiling E (`mask`), or a furniture top C at a square's
+// level (`top`: the column's level, equal or one below, Eq. 3.41). Inline: packing asks it for every sample of
+// every candidate's outline.
+struct TileMap {
+  const GridSpec& spec;
+  std::span<const std::uint8_t> mask;  // D or E; empty for furniture
+  std::span<const int> top;            // C; empty for floor and ceiling
+  bool operator()(int x, int z, int level) const {
+    if (x < 0 || z < 0 || x >= spec.nx || z >= spec.nz) return false;
+    const std::size_t col = spec.column(x, z);
+    if (!mask.empty()) return mask[col] != 0;
+    return top[col] == level || top[col] == level + 1;
+  }
+};
+
+// Within a size and alignment, squares pressed against more unusable cells (not tiles: walls, clutter, the
+// edge of a top) go first, leaving the free surface in one piece for the next ones. For furniture, squares
+// more than `level_tolerance` levels apart never conflict (Eq. 3.49).
 std::vector<std::size_t> pack_squares(const std::vector<Sized>& squares, int level_tolerance, double dominant_deg,
-                                      const std::function<bool(int x, int z, int level)>& is_tile);
+                                      const TileMap& is_tile);
 
 }  // namespace roomsense::detail

@@ -1,6 +1,7 @@
 // Voxelization on the CPU: the reference for every backend (thesis Eq. 3.6/3.7, plus triangle mode).
 // This file is compiled with -ffp-contract=off: a fused multiply-add would round differently from the
 // Vulkan shaders, which mark their arithmetic `precise`.
+#include "../floor_int.h"
 #include "../parallel.h"
 #include "roomsense/cancel.h"
 #include "roomsense/error.h"
@@ -26,11 +27,12 @@ bool separated(float p0, float p1, float p2, float r) {
   return lo > r || hi < -r;
 }
 
+// floor(v) clamped to [0, n - 1], for any v (NaN gives 0). Without std::floor, a libm call here: below 0 and
+// from n - 1 (an integer) on the clamp decides, and in between truncation is the floor.
 int clamp_index(float v, int n) {
-  const float f = std::floor(v);
-  if (!(f >= 0.0f)) return 0;
-  if (f >= float(n - 1)) return n - 1;
-  return int(f);
+  if (!(v >= 0.0f)) return 0;
+  if (v >= float(n - 1)) return n - 1;
+  return int(v);
 }
 
 void mark(std::uint8_t& cell) { std::atomic_ref<std::uint8_t>(cell).store(1, std::memory_order_relaxed); }
@@ -123,9 +125,13 @@ void scan_triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, c
           d_lo = std::min(d_lo, pd);
           d_hi = std::max(d_hi, pd);
         }
-        const double eps = kVoxelTestEpsilon;
-        from = int(std::max<double>(from, std::floor(d_lo + eps) - 1.0));
-        to = int(std::min<double>(to, std::floor(d_hi + eps) + 1.0));
+        // from = max(from, floor(lo) - 1), to = min(to, floor(hi) + 1), without libm's floor; a bound past
+        // the box's far side empties the column as the plain formula would.
+        const double lo = d_lo + double(kVoxelTestEpsilon), hi = d_hi + double(kVoxelTestEpsilon);
+        if (lo >= double(last[d]) + 2.0) from = last[d] + 1;
+        else if (lo >= double(from) + 1.0) from = detail::floor_int(lo) - 1;
+        if (hi < double(first[d]) - 2.0) to = first[d] - 1;
+        else if (hi < double(to) - 1.0) to = detail::floor_int(hi) + 1;
       }
       for (cell[d] = from; cell[d] <= to; ++cell[d]) {
         std::uint8_t& voxel = grid.cells[s.index(cell[0], cell[1], cell[2])];

@@ -9,7 +9,7 @@ build_dir=${1:-build-win}
 shift || true
 ROOMSENSE_WINDOWS=1 scripts/setup.sh "$build_dir" -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/toolchains/mingw-w64-x86_64.cmake" "$@"
 
-echo "== windows: the tests of core, the C APIs, the CLI and the layer DLL under $(wine --version)"
+echo "== windows: the tests of core, the C APIs, the CLI and the layer DLL under $(wine --version 2>/dev/null)"
 ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" | grep -vE '^ +Start |^ *[0-9]+/[0-9]+ Test +#'
 echo "== windows: what the DLLs export and need, and the layer's registration (the checks' own words)"
 ctest --test-dir "$build_dir" -R '^(capi\.exported_symbols|capi\.shared_dependencies|windows\.)' -V |

@@ -1,5 +1,6 @@
-// The Vulkan loader (libvulkan.so.1, vulkan-1.dll: platform.h), opened once per process. The handle is the backend's only global: the loader
-// stays mapped for the life of the process, so instances created by several stages share it.
+// The Vulkan loader (libvulkan.so.1, vulkan-1.dll: platform.h), opened once per process. The handle is the
+// backend's only global: the loader stays mapped for the life of the process, so instances created by several
+// stages share it.
 #pragma once
 #include "vulkan_functions.h"
 

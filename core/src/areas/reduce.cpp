@@ -47,6 +47,20 @@ bool wall_samples(const Candidate& c, int layer, F f) {
 // false. Returns whether every sample was visited.
 template <class F>
 bool square_samples(const Candidate& c, F f) {
+  const glm::ivec3 e = c.corners[1] - c.corners[0];
+  if (e.x == 0 || e.z == 0) {
+    // Along the grid's axes the inside samples are exactly those a quarter voxel or more from the edges:
+    // half-voxel cells 2 min + 1 to 2 max on each axis (the corners are voxel centres), no tests needed.
+    int lo_x = c.corners[0].x, hi_x = lo_x, lo_z = c.corners[0].z, hi_z = lo_z;
+    for (const glm::ivec3& k : c.corners) {
+      lo_x = std::min(lo_x, k.x), hi_x = std::max(hi_x, k.x);
+      lo_z = std::min(lo_z, k.z), hi_z = std::max(hi_z, k.z);
+    }
+    for (long sz = 2L * lo_z + 1; sz <= 2L * hi_z; ++sz)
+      for (long sx = 2L * lo_x + 1; sx <= 2L * hi_x; ++sx)
+        if (!f(sx, sz)) return false;
+    return true;
+  }
   std::array<glm::dvec2, 4> v;
   glm::dvec2 lo(1e300), hi(-1e300);
   for (std::size_t i = 0; i < 4; ++i) {
@@ -149,6 +163,23 @@ std::vector<std::size_t> pack_squares(const std::vector<Sized>& squares, int lev
       const glm::dvec2 dir = (b - a) / length;
       glm::dvec2 out(-dir.y, dir.x);
       if (glm::dot(out, 0.5 * (a + b) - mid) < 0.0) out = -out;
+      const glm::ivec3 e = c.corners[(i + 1) % 4] - c.corners[i];
+      if (e.x == 0 || e.z == 0) {
+        // Along a grid axis every sample below is exact: the 2L + 1 samples of an edge of L voxels fall
+        // on its L + 1 cells twice each, but for the cell at the far end of the direction of travel
+        // (x + 0.5 + t rounds down to x + floor((1 + 2t) / 2); x + 0.5 - t to x - floor(2t / 2)), and
+        // 0.75 voxels out is the neighbouring row. Counted by cell, without the doubles.
+        const bool along_x = e.z == 0;
+        const int steps = std::abs(along_x ? e.x : e.z), step = (along_x ? e.x : e.z) > 0 ? 1 : -1;
+        const int side = (along_x ? out.y : out.x) > 0.0 ? 1 : -1;
+        const int once = step > 0 ? 0 : steps;  // the cell one sample meets
+        for (int j = 0; j <= steps; ++j) {
+          const int x = along_x ? c.corners[i].x + step * j : c.corners[i].x + side;
+          const int z = along_x ? c.corners[i].z + side : c.corners[i].z + step * j;
+          n += is_tile(x, z, c.corners[0].y) ? 0 : (j == once ? 1 : 2);
+        }
+        continue;
+      }
       for (double t = 0.0; t <= length; t += kSample) {
         const glm::dvec2 p = a + t * dir + 0.75 * out;
         n += is_tile(floor_int(p.x), floor_int(p.y), c.corners[0].y) ? 0 : 1;

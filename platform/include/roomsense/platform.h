@@ -1,5 +1,6 @@
 // The operating system, in the few places roomsense needs it. Implemented once per OS family: src/posix.cpp
-// (Linux, Android) and src/windows.cpp. Nothing else in the project includes an OS header.
+// (Linux, Android) and src/windows.cpp. No product code outside platform/ includes an OS header (the tests'
+// own helpers are in tests/support/test_process.h).
 #pragma once
 #include <cstddef>
 #include <cstdint>

@@ -33,6 +33,28 @@ TEST(Export, ObjRoundTripsThroughTheLoader) {
   EXPECT_EQ(back.indices.size(), m.indices.size());
 }
 
+// A build with assimp reads the GLB back; one without (the Windows cross build) refuses it with one line.
+TEST(Export, GlbRoundTripsThroughTheLoaderOrIsRefusedWithOneLine) {
+  const BoundsMesh& m = test::analysed(synth::default_room()).result.bounds;
+  const std::string path = test::temp_path("bounds.glb");
+  write_bounds(m, path);
+#if ROOMSENSE_SCANIO_READS_GLTF
+  const Scan back = scanio::load_mesh_file(path);
+  EXPECT_EQ(back.indices.size(), m.indices.size());
+  EXPECT_GT(back.vertices.size(), 0u);
+#else
+  try {
+    scanio::load_mesh_file(path);
+    ADD_FAILURE() << "a build without assimp read " << path;
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Io);
+    EXPECT_EQ(std::string(e.what()), "cannot read '" + path +
+                                         "': this build of roomsense reads no glTF (it was built without assimp); "
+                                         "use .obj or .ply");
+  }
+#endif
+}
+
 TEST(Export, GlbHasAValidContainerAndAccessors) {
   const BoundsMesh& m = test::analysed(synth::default_room()).result.bounds;
   GlbScene scene;

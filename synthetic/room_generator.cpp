@@ -64,6 +64,19 @@ class MeshBuilder {
     rectangle(o + X, Y, Z);             // Y x Z = +X
   }
 
+  // Risers face down the stair, treads up (stair_footprint's frame: along = the way up, side to its left).
+  void stair(const Stair& st, float floor_y) {
+    const glm::vec2 d = rotate({1.0f, 0.0f}, st.yaw);
+    const glm::vec3 along(d.x, 0.0f, d.y), side(-d.y, 0.0f, d.x);
+    const float h = st.rise / float(st.steps);
+    const glm::vec3 foot(st.start.x, floor_y, st.start.y);
+    for (int k = 0; k < st.steps; ++k) {
+      const glm::vec3 o = foot + along * (float(k) * st.tread) - side * (0.5f * st.width) + glm::vec3(0.0f, float(k) * h, 0.0f);
+      rectangle(o, side * st.width, glm::vec3(0.0f, h, 0.0f));  // side x up = -along
+      if (k + 1 < st.steps) rectangle(o + glm::vec3(0.0f, h, 0.0f), side * st.width, along * st.tread);  // side x along = +Y
+    }
+  }
+
   Scan finish() {
     if (spec_.noise > 0.0f)
       for (glm::vec3& p : scan_.vertices) p += spec_.noise * glm::vec3(jitter_(rng_), jitter_(rng_), jitter_(rng_));
@@ -111,8 +124,12 @@ void add_floor_or_ceiling(MeshBuilder& mesh, const RoomSpec& spec, float y, bool
     hi = glm::max(hi, p);
   }
   const glm::vec3 o(lo.x, y, lo.y), X(hi.x - lo.x, 0.0f, 0.0f), Z(0.0f, 0.0f, hi.y - lo.y);
+  const std::vector<Rect>& openings = ceiling ? spec.ceiling_openings : spec.floor_openings;
   const auto inside = [&](float sx, float sz) {
-    return inside_outline(spec, {lo.x + sx * (hi.x - lo.x), lo.y + sz * (hi.y - lo.y)});
+    const glm::vec2 p{lo.x + sx * (hi.x - lo.x), lo.y + sz * (hi.y - lo.y)};
+    return inside_outline(spec, p) && std::none_of(openings.begin(), openings.end(), [&](const Rect& r) {
+             return p.x > r.lo.x && p.x < r.hi.x && p.y > r.lo.y && p.y < r.hi.y;
+           });
   };
   if (ceiling) mesh.rectangle(o, X, Z, [&](float s, float t) { return inside(s, t); });  // X x Z = -Y
   else mesh.rectangle(o, Z, X, [&](float s, float t) { return inside(t, s); });          // Z x X = +Y
@@ -201,7 +218,24 @@ Scan generate(const RoomSpec& spec) {
     for (glm::vec2 corner : footprint(t.centre, t.size - glm::vec2(3.0f * kLeg), t.yaw))
       mesh.box(corner, glm::vec2(kLeg), t.yaw, spec.floor_y, spec.floor_y + t.height - kTop);
   }
+  for (const Stair& st : spec.stairs) mesh.stair(st, spec.floor_y);
   return mesh.finish();
+}
+
+Scan generate(const HouseSpec& spec) {
+  Scan out;
+  for (const RoomSpec& storey : spec.storeys) {
+    const Scan part = generate(storey);
+    const std::uint32_t base = std::uint32_t(out.vertices.size());
+    out.vertices.insert(out.vertices.end(), part.vertices.begin(), part.vertices.end());
+    for (const std::uint32_t i : part.indices) out.indices.push_back(base + i);
+  }
+  return out;
+}
+
+std::vector<glm::vec2> stair_footprint(const Stair& st) {
+  const float run = float(st.steps - 1) * st.tread;
+  return footprint(st.start + rotate({0.5f * run, 0.0f}, st.yaw), {run, st.width}, st.yaw);
 }
 
 bool inside_outline(const RoomSpec& spec, glm::vec2 p) { return inside_convex(spec.outline, p); }
@@ -311,6 +345,43 @@ RoomSpec thesis_room1() {
   return r;
 }
 
+HouseSpec two_storey_house() {
+  HouseSpec house;
+  house.name = "house";
+  RoomSpec ground;
+  ground.outline = rectangle(7.0f, 5.0f);
+  ground.ceiling_y = 2.5f;
+  ground.boxes.push_back({{1.6f, 1.8f}, {2.0f, 0.9f}, 0.45f, 0.0f});  // sofa along the front wall
+  ground.tables.push_back({{1.4f, -0.2f}, {1.4f, 0.8f}, 0.75f, 0.0f});
+  ground.windows.push_back({1, 1.0f, 2.5f, 0.9f, 2.1f});
+  // Along the back wall, up +X: 15 risers of 0.183 m, 3.64 m of run. The stairwell leaves 1.95 m of head room
+  // over the third tread.
+  ground.stairs.push_back({{-2.8f, -2.0f}, 0.0f, 0.9f, 0.26f, 2.75f, 15});
+  const Rect well{{-2.3f, -2.5f}, {0.84f, -1.5f}};
+  ground.ceiling_openings.push_back(well);
+  ground.noise = 0.005f;
+  ground.seed = 17;
+  RoomSpec upper;
+  upper.outline = ground.outline;
+  upper.floor_y = 2.75f;
+  upper.ceiling_y = 5.15f;
+  upper.floor_openings.push_back(well);
+  upper.boxes.push_back({{1.9f, 1.2f}, {1.6f, 2.0f}, 0.5f, 0.0f});   // a bed
+  upper.boxes.push_back({{-2.9f, 1.9f}, {0.8f, 0.5f}, 1.9f, 0.0f});  // a wardrobe: reads as wall
+  upper.noise = 0.005f;
+  upper.seed = 19;
+  house.storeys = {ground, upper};
+  for (RoomSpec& storey : house.storeys) storey.name = house.name;
+  return house;
+}
+
+std::optional<HouseSpec> builtin_house(const std::string& name) {
+  if (name == "house") return two_storey_house();
+  return std::nullopt;
+}
+
+std::vector<std::string> builtin_house_names() { return {"house"}; }
+
 std::optional<RoomSpec> builtin(const std::string& name) {
   if (name == "default") return default_room();
   if (name == "large-triangles") return large_triangle_room();
@@ -325,13 +396,12 @@ bool is_builtin_source(const std::string& source) { return source.rfind(kSourceP
 
 Scan generate_builtin_source(const std::string& source) {
   const std::string name = is_builtin_source(source) ? source.substr(std::string(kSourcePrefix).size()) : source;
-  const auto spec = builtin(name);
-  if (!spec) {
-    std::string names;
-    for (const std::string& n : builtin_names()) names += (names.empty() ? "" : ", ") + n;
-    throw Error(ErrorCode::BadParameter, "no built-in room '" + name + "' (there are: " + names + ")");
-  }
-  return generate(*spec);
+  if (const auto spec = builtin(name)) return generate(*spec);
+  if (const auto house = builtin_house(name)) return generate(*house);
+  std::string names;
+  for (const auto& list : {builtin_names(), builtin_house_names()})
+    for (const std::string& n : list) names += (names.empty() ? "" : ", ") + n;
+  throw Error(ErrorCode::BadParameter, "no built-in room '" + name + "' (there are: " + names + ")");
 }
 
 std::vector<std::string> builtin_names() { return {"default", "large-triangles", "rotated", "pentagon", "hall", "thesis-room1"}; }

@@ -288,8 +288,11 @@ std::string plan_svg(const ReportInput& input) {
   }
   if (bounds)
     for (const glm::vec3& v : bounds->vertices) world.add(v.x, v.z);
+  // The plan is the main storey's (one plan per storey is issue 15's next step): other storeys' areas are
+  // counted in the heading, not drawn over it.
+  const auto on_plan = [](const Area& a) { return report_detail::drawable(a) && a.storey == 0; };
   for (const Area& a : input.areas)
-    if (report_detail::drawable(a))
+    if (on_plan(a))
       for (const glm::vec2& p : area_outline(a)) world.add(p.x, p.y);
   if (world.empty())
     for (const Scan& s : input.scan)
@@ -311,17 +314,21 @@ std::string plan_svg(const ReportInput& input) {
   std::vector<std::string> heading;
   heading.push_back("floor y = " + num(floor_y, 2) + " m,  ceiling y = " + num(ceiling_y, 2) + " m,  room height " +
                     num(ceiling_y - floor_y, 2) + " m");
-  for (std::size_t i = 1; i < input.storeys.size(); ++i)
+  for (std::size_t i = 1; i < input.storeys.size(); ++i) {
+    const auto areas = std::count_if(input.areas.begin(), input.areas.end(), [i](const Area& a) { return a.storey == i; });
     heading.push_back("storey " + std::to_string(i + 1) + ": floor y = " + num(input.storeys[i].floor_y, 2) +
-                      " m, ceiling y = " + num(input.storeys[i].ceiling_y, 2) + " m (not drawn)");
+                      " m, ceiling y = " + num(input.storeys[i].ceiling_y, 2) + " m, " + std::to_string(areas) +
+                      " areas (not drawn)");
+  }
   std::array<std::size_t, 3> per_reach{};
   std::array<std::size_t, 4> per_type{};
   for (const Area& a : input.areas) {
-    if (!report_detail::drawable(a)) continue;
+    if (!on_plan(a)) continue;
     ++per_reach[std::size_t(a.reach) - 1];
     ++per_type[std::size_t(a.type) - 1];
   }
-  heading.push_back(std::to_string(input.areas.size()) + " areas: " + std::to_string(per_type[0]) + " wall, " +
+  const std::size_t drawn = per_type[0] + per_type[1] + per_type[2] + per_type[3];
+  heading.push_back(std::to_string(drawn) + " areas: " + std::to_string(per_type[0]) + " wall, " +
                     std::to_string(per_type[1]) + " floor, " + std::to_string(per_type[2]) + " ceiling, " +
                     std::to_string(per_type[3]) + " furniture; " + std::to_string(per_reach[0]) + " close, " +
                     std::to_string(per_reach[1]) + " distance, " + std::to_string(per_reach[2]) + " none");
@@ -444,7 +451,7 @@ std::string plan_svg(const ReportInput& input) {
   p.line("<g id=\"areas\" stroke-linejoin=\"round\">");
   for (const std::size_t i : order) {
     const Area& a = input.areas[i];
-    if (!report_detail::drawable(a)) continue;
+    if (!on_plan(a)) continue;
     std::string pts;
     for (const glm::vec2& q : area_outline(a)) append(pts, pts.empty() ? "" : " ", map.point(q.x, q.y));
     const std::string colour(reach_colour(a.reach));

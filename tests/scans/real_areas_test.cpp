@@ -84,12 +84,18 @@ TEST_P(ScanAreas, ClassifiedAreasOfEveryKind) {
   for (const Area& a : r.areas) {
     ++by_type[std::size_t(a.type) - 1];
     EXPECT_EQ(a.flags, category_flags(a.type, a.size, a.reach));
+    ASSERT_LT(a.storey, r.storeys.size());
+    const Storey& storey = r.storeys[a.storey];
     if (a.type == AreaType::Floor) {
-      EXPECT_NEAR(a.center.y, r.floor_y, 1e-4f);
+      EXPECT_NEAR(a.center.y, storey.floor_y, 1e-4f);
       EXPECT_EQ(a.reach, Reach::Close);
     }
     if (a.type == AreaType::Ceiling) {
-      EXPECT_NEAR(a.center.y, r.ceiling_y, 1e-4f);
+      EXPECT_NEAR(a.center.y, storey.ceiling_y, 1e-4f);
+    }
+    if (a.type != AreaType::Ceiling) {
+      EXPECT_GE(a.center.y, storey.floor_y - 1e-4f);
+      EXPECT_LE(a.center.y, storey.ceiling_y);
     }
     if (a.type == AreaType::Wall) {
       EXPECT_NEAR(a.normal.y, 0.0f, 1e-6f);

@@ -109,8 +109,7 @@ TEST(Bounds, SyntheticRoomsGiveClosedMeshesFacingFreeSpace) {
     const test::AnalysedRoom& room = test::analysed(*synth::builtin(name));
     const AnalysisResult& r = room.result;
     ASSERT_TRUE(r.ok()) << name;
-    std::vector<std::uint8_t> volume =
-        bounds_volume(r.voxels.grid, *r.voxels.levels, r.features->y_end, r.features->room);
+    std::vector<std::uint8_t> volume = bounds_volume(r.voxels.grid, bounds_storeys(r));
     fill_edge_contacts(r.voxels.grid.spec, volume);
     expect_exact_mesh(r.voxels.grid.spec, volume, r.bounds, 1e-3, 1e-3, name);
     if (r.input.triangles > 10000) {

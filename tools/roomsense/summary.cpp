@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <iterator>
 #include <numeric>
 
 namespace roomsense::cli {
@@ -20,13 +21,13 @@ std::string format(const char* fmt, Args... args) {
 std::size_t count_set(const std::vector<std::uint8_t>& v) { return std::size_t(std::count(v.begin(), v.end(), 1)); }
 
 // Areas per type, by size and by reach: the full list is in the JSON.
-std::string areas_summary(const std::vector<Area>& areas) {
-  std::string out = format("  areas     %zu placement areas   large medium small | close distance none\n", areas.size());
+std::string areas_summary(const std::vector<Area>& areas, const std::string& indent) {
+  std::string out = indent + format("  areas     %zu placement areas   large medium small | close distance none\n", areas.size());
   for (const AreaType type : kAreaTypes) {
     std::array<int, 3> sizes{}, reach{};
     for (const Area& a : areas)
       if (a.type == type) ++sizes[std::size_t(a.size) - 1], ++reach[std::size_t(a.reach) - 1];
-    out += format("            %-24s %5d %6d %5d | %5d %8d %4d\n", std::string(to_string(type)).c_str(), sizes[0],
+    out += indent + format("            %-24s %5d %6d %5d | %5d %8d %4d\n", std::string(to_string(type)).c_str(), sizes[0],
                   sizes[1], sizes[2], reach[0], reach[1], reach[2]);
   }
   return out;
@@ -44,24 +45,36 @@ std::string summary(const AnalysisResult& r, const std::string& source, double l
   out += format("  grid      %d x %d x %d voxels of %s m (%s backend)\n", g.nx, g.ny, g.nz,
                 fixed_or_g(g.voxel_size, 2).c_str(), r.backend.c_str());
   if (!r.ok()) return out + "  status    " + r.status_message + "\n";
-  const RoomFeatures& f = *r.features;
   out += format("  floor     y = %s m\n  ceiling   y = %s m (room height %s m)\n", fixed_or_g(r.floor_y, 2).c_str(),
                 fixed_or_g(r.ceiling_y, 2).c_str(), fixed_or_g(double(r.ceiling_y) - double(r.floor_y), 2).c_str());
-  if (r.storeys.size() > 1) {
-    out += format("  storeys   %zu:", r.storeys.size());
-    for (const Storey& s : r.storeys) out += format(" [%s, %s]", fixed_or_g(s.floor_y, 2).c_str(), fixed_or_g(s.ceiling_y, 2).c_str());
-    out += "\n";
+  // With several storeys each gets its own block, bottom to top, indented under its heading.
+  const bool several = r.storeys.size() > 1;
+  std::vector<std::size_t> order(r.storeys.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return r.storeys[a].floor_y < r.storeys[b].floor_y; });
+  if (several) out += format("  storeys   %zu, bottom to top (the main one is the thesis's floor and ceiling)\n", r.storeys.size());
+  for (const std::size_t i : order) {
+    const Storey& s = r.storeys[i];
+    const RoomFeatures& f = r.storey_features(i);
+    const std::string indent = several ? "  " : "";
+    if (several)
+      out += format("  storey %zu  floor y = %s m, ceiling y = %s m (height %s m)%s\n", i + 1,
+                    fixed_or_g(s.floor_y, 2).c_str(), fixed_or_g(s.ceiling_y, 2).c_str(),
+                    fixed_or_g(double(s.ceiling_y) - double(s.floor_y), 2).c_str(), i == 0 ? ", main" : "");
+    const std::size_t furniture =
+        std::size_t(std::count_if(f.furniture.begin(), f.furniture.end(), [](int c) { return c != kNoFurniture; }));
+    const std::size_t normals =
+        std::size_t(std::count_if(f.normals.begin(), f.normals.end(), [](std::uint8_t n) { return n != 0; }));
+    const auto line = [&](const char* label, const std::string& text) { out += indent + "  " + label + text + "\n"; };
+    line("room      ", fixed_or_g(double(count_set(f.room)) * tile, 1) + " m2 inside the walls");
+    line("walls     ", format("%zu wall columns, %zu voxels facing into the room", count_set(f.walls), normals));
+    line("floor     ", fixed_or_g(double(count_set(f.free_floor)) * tile, 1) + " m2 free floor (1.5 m clear above)");
+    line("ceiling   ", fixed_or_g(double(count_set(f.free_ceiling)) * tile, 1) + " m2 free ceiling (1 m clear below)");
+    line("furniture ", fixed_or_g(double(furniture) * tile, 1) + " m2 of furniture tops below 1.5 m");
+    std::vector<Area> areas;
+    std::copy_if(r.areas.begin(), r.areas.end(), std::back_inserter(areas), [&](const Area& a) { return a.storey == i; });
+    out += areas_summary(areas, indent);
   }
-  const std::size_t furniture =
-      std::size_t(std::count_if(f.furniture.begin(), f.furniture.end(), [](int c) { return c != kNoFurniture; }));
-  const std::size_t normals =
-      std::size_t(std::count_if(f.normals.begin(), f.normals.end(), [](std::uint8_t n) { return n != 0; }));
-  out += format("  room      %s m2 inside the walls\n", fixed_or_g(double(count_set(f.room)) * tile, 1).c_str());
-  out += format("  walls     %zu wall columns, %zu voxels facing into the room\n", count_set(f.walls), normals);
-  out += format("  floor     %s m2 free floor (1.5 m clear above)\n", fixed_or_g(double(count_set(f.free_floor)) * tile, 1).c_str());
-  out += format("  ceiling   %s m2 free ceiling (1 m clear below)\n", fixed_or_g(double(count_set(f.free_ceiling)) * tile, 1).c_str());
-  out += format("  furniture %s m2 of furniture tops below 1.5 m\n", fixed_or_g(double(furniture) * tile, 1).c_str());
-  out += areas_summary(r.areas);
   const std::size_t bt = r.bounds.indices.size() / 3;
   out += format("  bounds    %zu vertices, %zu triangles, %s", r.bounds.vertices.size(), bt,
                 check_closure(r.bounds).closed() ? "closed" : "NOT closed");

@@ -36,9 +36,12 @@ enum class AnalysisStatus {
   NoFloorCeiling,  // no two horizontal levels at least min_floor_ceiling apart: no room to analyse
 };
 
+// A floor/ceiling pair of the scan (Eq. 3.9/3.10 for the main storey; beyond the thesis, the pairs above and
+// below it). Each storey has its own features, areas and bounds.
 struct Storey {
-  float floor_y = 0.0f;
+  float floor_y = 0.0f;    // metres, the measured surfaces
   float ceiling_y = 0.0f;
+  FloorCeiling levels{};   // voxel levels
 };
 
 struct StageTimings {  // milliseconds
@@ -60,16 +63,25 @@ struct AnalysisResult {
   VoxelMode mode = VoxelMode::Triangles;
   std::string backend;
   VoxelStageResult voxels;        // V, level and column counts
-  std::optional<RoomFeatures> features;  // present when status is Ok
+  std::optional<RoomFeatures> features;  // the main storey's; present when status is Ok
+  std::vector<RoomFeatures> other_features;  // storeys[1..]'s, in that order
   float floor_y = 0.0f;           // metres; the scanned floor surface of the main storey
   float ceiling_y = 0.0f;
   std::vector<Storey> storeys;    // main storey first; empty when status is not Ok
-  std::vector<Area> areas;        // classified placement areas (§3.5); empty unless status is Ok
-  AreaCounts area_counts;
-  BoundsMesh bounds;
+  // Classified placement areas (§3.5) of every storey, storey by storey (Area::storey); empty unless Ok.
+  std::vector<Area> areas;
+  AreaCounts area_counts;         // summed over the storeys
+  BoundsMesh bounds;              // one closed mesh around every storey's free space
   StageTimings timings;
   bool ok() const { return status == AnalysisStatus::Ok; }
+  // The features of storeys[index]; requires ok() and index < storeys.size().
+  const RoomFeatures& storey_features(std::size_t index) const {
+    return index == 0 ? *features : other_features.at(index - 1);
+  }
 };
+
+// What the bounds read of each storey of an ok() result (build_bounds over several storeys).
+std::vector<BoundsStorey> bounds_storeys(const AnalysisResult& result);
 
 // Throws Error for bad input (see input.h and grid.h), Error(TooMuchWork) past voxel_test_budget and
 // Error(Cancelled) on a stop request. A scan without a floor/ceiling pair at least

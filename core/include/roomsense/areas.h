@@ -86,6 +86,7 @@ struct Area {
   float rotation_deg = 0.0f;     // Eq. 3.57, right-handed, about the normal; in [0, 90) for squares, 0 for walls
   float volume_height = 0.0f;    // clear space checked in front of the surface, along the normal
   std::uint32_t flags = 0;       // Eq. 3.58
+  std::uint32_t storey = 0;      // beyond the thesis: index into AnalysisResult::storeys (0: the main storey)
 
   glm::vec3 x_axis() const;      // unit, along the width
   glm::vec3 y_axis() const;      // unit, along the height

@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <span>
 #include <stop_token>
 #include <vector>
 
@@ -48,6 +49,21 @@ BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& vo
 // bounds_volume, fill_edge_contacts and mesh_volume in order.
 BoundsMesh build_bounds(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
                         const std::vector<std::uint8_t>& room, const BoundsParams& params = {},
+                        unsigned threads = 0, std::stop_token stop = {});
+
+// What bounds_volume reads of one storey.
+struct BoundsStorey {
+  FloorCeiling levels;
+  int y_end = 0;
+  const std::vector<std::uint8_t>* room = nullptr;  // B of the storey; not owned
+};
+// Beyond the thesis: the union of the storeys' bounds volumes. Storeys lie in disjoint levels, so each keeps
+// its own shell unless their volumes touch.
+std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,
+                                        const BoundsParams& params = {}, unsigned threads = 0,
+                                        const std::stop_token& stop = {});
+// That union, fill_edge_contacts and mesh_volume: one closed mesh, as apps get one bounds mesh.
+BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys, const BoundsParams& params = {},
                         unsigned threads = 0, std::stop_token stop = {});
 
 // Edges used by other than exactly two triangles, and edges not used once in each direction (a closed,

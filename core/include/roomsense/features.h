@@ -96,6 +96,7 @@ void apply_furniture_labels(const GridSpec& spec, const FloorCeiling& levels, co
 // `rough_levels`: levels above I_Floor that still count as floor (FeatureParams::floor_roughness).
 std::vector<int> detect_furniture(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
                                   const std::vector<std::uint8_t>& walls, int clear_levels, int rough_levels);
+// D: beyond the thesis, a column without floor but with scanned surface below it (a stairwell) is not free.
 std::vector<std::uint8_t> detect_free_floor(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
                                             const std::vector<std::uint8_t>& walls,
                                             const std::vector<std::uint8_t>& room, int rough_levels);
@@ -107,10 +108,14 @@ std::vector<std::uint8_t> detect_wall_normals(const VoxelGrid& grid, const Floor
                                               const std::vector<std::uint8_t>& room,
                                               const std::vector<int>& furniture);
 
-// All of §3.2 on a voxel stage's result that found a floor and a ceiling. C, D and E run in parallel
-// when threads allows; the result does not depend on the thread count.
-// A stop request throws Error(Cancelled) between the steps.
+// All of §3.2 on one storey of a grid: its levels and count_columns over them. C, D and E run in parallel when threads allows; the result does not
+// depend on the thread count. A stop request throws Error(Cancelled) between the steps.
 // `labels`, when not empty, are the runtime's semantics on the same grid.
+RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
+                             const std::vector<std::uint32_t>& column_counts,
+                             const std::vector<std::uint8_t>& column_any, const FeatureParams& params,
+                             unsigned threads = 0, const std::stop_token& stop = {}, const LabelGrid& labels = {});
+// The same on a voxel stage's result that found a floor and a ceiling: its main storey.
 RoomFeatures detect_features(const VoxelStageResult& voxels, const FeatureParams& params, unsigned threads = 0,
                              const std::stop_token& stop = {}, const LabelGrid& labels = {});
 

@@ -59,9 +59,8 @@ struct Surface {
 // walls, then furniture tops (tables before other furniture); within a kind by storey, then by position:
 // walls go round their storey's outline counter-clockwise seen from above, from its lowest corner in z
 // (then x), and tops by centre z, then x. Empty for a result that is not ok.
-// - The main storey's floor and ceiling follow the largest region of B with its holes filled; other
-//   storeys (features exist for the main one only) read the grid's occupancy a voxel either side of their
-//   floor and ceiling levels, and their walls Eq. 3.11 over their own levels. Furniture tops: main storey.
+// - Each storey's floor and ceiling follow the largest region of its B with its holes filled, its walls its
+//   A; furniture tops come from each storey's C.
 // - Horizontal surfaces take x_axis along the side of their least-area bounding rectangle nearest +X (so
 //   +X for a room on the grid axes); then y_axis is -Z-ish for a floor or a top, +Z-ish for a ceiling.
 // - Walls lie on the line through their wall columns, where the scanned surface is (within half a voxel).

@@ -41,6 +41,7 @@ struct FloorCeiling {
   int ceiling = 0;       // I_Ceiling: the bottom of the ceiling's band
   int floor_peak = 0;    // the fullest floor level, floor_peak <= floor
   int ceiling_peak = 0;  // the fullest ceiling level, ceiling_peak >= ceiling
+  bool operator==(const FloorCeiling&) const = default;
 };
 
 // Eq. 3.9/3.10: the two fullest levels at least `min_separation` levels apart. Ties go to the lower level.

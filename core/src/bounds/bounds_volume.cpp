@@ -198,8 +198,25 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
 BoundsMesh build_bounds(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
                         const std::vector<std::uint8_t>& room, const BoundsParams& params, unsigned threads,
                         std::stop_token stop) {
-  std::vector<std::uint8_t> volume = bounds_volume(grid, levels, y_end, room, params, threads, stop);
-  stop_point(stop);
+  const BoundsStorey storey{levels, y_end, &room};
+  return build_bounds(grid, std::span(&storey, 1), params, threads, std::move(stop));
+}
+
+std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,
+                                        const BoundsParams& params, unsigned threads, const std::stop_token& stop) {
+  std::vector<std::uint8_t> volume(grid.spec.voxel_count(), 0);
+  for (const BoundsStorey& storey : storeys) {
+    const std::vector<std::uint8_t> part =
+        bounds_volume(grid, storey.levels, storey.y_end, *storey.room, params, threads, stop);
+    for (std::size_t i = 0; i < volume.size(); ++i) volume[i] |= part[i];
+    stop_point(stop);
+  }
+  return volume;
+}
+
+BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys, const BoundsParams& params,
+                        unsigned threads, std::stop_token stop) {
+  std::vector<std::uint8_t> volume = bounds_volume(grid, storeys, params, threads, stop);
   fill_edge_contacts(grid.spec, volume);
   return mesh_volume(grid.spec, volume, threads, stop);
 }

@@ -1,10 +1,12 @@
 // The CLI's JSON, schema roomsense.analysis/1 (DESIGN.md). Extra members beyond the contract: status,
 // message, warnings, input.{outlier_vertices, dropped_triangles, mode}, grid.backend, bounds.closed,
-// areas[].orientation (the pose quaternion x, y, z, w) and area_counts (per type: wall, floor, ceiling, furniture).
+// areas[].orientation (the pose quaternion x, y, z, w), areas[].storey (an index into storeys, main first),
+// storeys[].room_m2 (B, Eq. 3.12) and area_counts (per type: wall, floor, ceiling, furniture).
 #include "roomsense/export.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace roomsense {
@@ -29,7 +31,8 @@ nlohmann::json areas_json(const std::vector<Area>& areas) {
                    {"volume_height", a.volume_height},
                    {"corners", {vec(a.corners[0]), vec(a.corners[1]), vec(a.corners[2]), vec(a.corners[3])}},
                    {"orientation", {q.x, q.y, q.z, q.w}},
-                   {"flags", a.flags}});
+                   {"flags", a.flags},
+                   {"storey", a.storey}});
   }
   return out;
 }
@@ -40,7 +43,17 @@ std::string analysis_json(const AnalysisResult& r, const JsonSource& source) {
   using nlohmann::json;
   const GridSpec& g = r.voxels.grid.spec;
   json storeys = json::array();
-  for (const Storey& s : r.storeys) storeys.push_back({{"floor_y", s.floor_y}, {"ceiling_y", s.ceiling_y}});
+  for (std::size_t i = 0; i < r.storeys.size(); ++i) {
+    const Storey& s = r.storeys[i];
+    const RoomFeatures& f = r.storey_features(i);
+    const double cell = double(g.voxel_size) * double(g.voxel_size);
+    const auto square_metres = [cell](const std::vector<std::uint8_t>& mask) {
+      return double(std::count(mask.begin(), mask.end(), std::uint8_t{1})) * cell;
+    };
+    storeys.push_back({{"floor_y", s.floor_y},
+                       {"ceiling_y", s.ceiling_y},
+                       {"room_m2", square_metres(f.room)}});
+  }
   if (storeys.empty()) storeys.push_back({{"floor_y", nullptr}, {"ceiling_y", nullptr}});
   const StageTimings& t = r.timings;
   json doc = {

@@ -11,14 +11,21 @@ namespace roomsense {
 
 RoomFeatures detect_features(const VoxelStageResult& voxels, const FeatureParams& params, unsigned threads,
                              const std::stop_token& stop, const LabelGrid& labels) {
-  const VoxelGrid& grid = voxels.grid;
+  return detect_features(voxels.grid, voxels.levels.value(), voxels.column_counts, voxels.column_any, params,
+                         threads, stop, labels);
+}
+
+RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
+                             const std::vector<std::uint32_t>& column_counts,
+                             const std::vector<std::uint8_t>& column_any, const FeatureParams& params,
+                             unsigned threads, const std::stop_token& stop, const LabelGrid& labels) {
   const float s = grid.spec.voxel_size;
   RoomFeatures f;
-  f.levels = voxels.levels.value();
+  f.levels = levels;
   f.y_end = f.levels.floor + voxels_for(params.furniture_top, s);
-  f.walls = detect_walls(grid.spec, voxels.column_counts, f.levels, params.wall_fill);
+  f.walls = detect_walls(grid.spec, column_counts, f.levels, params.wall_fill);
   drop_free_standing(grid, f.levels, voxels_for(params.wall_top_gap, s), f.walls);
-  f.room = detect_room(grid.spec, voxels.column_any);
+  f.room = detect_room(grid.spec, column_any);
   // B counts voxels from I_Floor up; a floor that spans two levels (select_floor_ceiling) has part of its scan
   // in the level below, and those columns are room too.
   for (std::size_t c = 0; c < f.room.size(); ++c) {

@@ -27,7 +27,18 @@ std::vector<std::uint8_t> detect_free_floor(const VoxelGrid& grid, const FloorCe
                                             const std::vector<std::uint8_t>& walls,
                                             const std::vector<std::uint8_t>& room, int rough_levels) {
   // Beyond the thesis: voxels within the floor's roughness above I_Floor are floor (a rug, a sloping scan).
-  return clear_columns(grid, levels.floor + 1 + rough_levels, y_end, walls, room);
+  std::vector<std::uint8_t> out = clear_columns(grid, levels.floor + 1 + rough_levels, y_end, walls, room);
+  // Beyond the thesis: B fills the patches of floor the scan missed, but a column with no floor voxel that
+  // has scanned surface further down looks down a drop (a stairwell, a gallery's edge): no free floor.
+  const GridSpec& s = grid.spec;
+  const int band_lo = std::max(levels.floor_peak - 1, 0), band_hi = std::min(levels.floor + rough_levels, s.ny - 1);
+  const auto any = [](const std::uint8_t* b, const std::uint8_t* e) { return std::find(b, e, std::uint8_t{1}) != e; };
+  for (std::size_t col = 0; col < out.size(); ++col) {
+    if (!out[col]) continue;
+    const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
+    if (!any(v + band_lo, v + band_hi + 1) && any(v, v + band_lo)) out[col] = 0;
+  }
+  return out;
 }
 
 std::vector<std::uint8_t> detect_free_ceiling(const VoxelGrid& grid, const FloorCeiling& levels, int clear_levels,

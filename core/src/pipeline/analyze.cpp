@@ -3,6 +3,7 @@
 #include "roomsense/cancel.h"
 #include "roomsense/error.h"
 #include "roomsense/number_text.h"
+#include "storeys.h"
 #include "surface_heights.h"
 
 #include <chrono>
@@ -26,6 +27,15 @@ class Stopwatch {
 std::string metres(float value) { return fixed_or_g(value, 2) + " m"; }
 
 }  // namespace
+
+std::vector<BoundsStorey> bounds_storeys(const AnalysisResult& result) {
+  std::vector<BoundsStorey> out;
+  for (std::size_t i = 0; i < result.storeys.size(); ++i) {
+    const RoomFeatures& f = result.storey_features(i);
+    out.push_back({f.levels, f.y_end, &f.room});
+  }
+  return out;
+}
 
 AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
   Stopwatch clock;
@@ -70,6 +80,14 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
   if (!r.voxels.levels)
     return no_room("no floor and ceiling found: no two horizontal levels are at least " + metres(min_height) +
                    " apart (" + std::to_string(spec.ny) + " levels scanned)");
+  // Beyond the thesis: the stage's pair may span several storeys (storeys.h); the main one gets its own counts.
+  const detail::StoreyLevels storeys =
+      detail::find_storeys(r.voxels.level_counts, detail::horizontal_counts(r.voxels.grid), *r.voxels.levels,
+                           min_separation);
+  if (storeys.main != *r.voxels.levels) {
+    r.voxels.levels = storeys.main;
+    count_columns(r.voxels.grid, r.voxels.levels, r.voxels.column_counts, r.voxels.column_any);
+  }
   const FloorCeiling& levels = *r.voxels.levels;
   const auto height = [&](int lower, int upper) { return detail::surface_height(spec, in.vertices, in.indices, lower, upper); };
   r.floor_y = height(levels.floor_peak, levels.floor);
@@ -79,32 +97,47 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
   if (r.ceiling_y - r.floor_y < min_height)
     return no_room("no floor and ceiling found: the fullest levels, at " + metres(r.floor_y) + " and " +
                    metres(r.ceiling_y) + ", are less than " + metres(min_height) + " apart");
-  r.storeys.push_back({r.floor_y, r.ceiling_y});
-  for (const FloorCeiling& other : detail::other_storeys(r.voxels.level_counts, levels, min_separation)) {
-    const Storey storey{height(other.floor_peak, other.floor), height(other.ceiling, other.ceiling_peak)};
+  r.storeys.push_back({r.floor_y, r.ceiling_y, levels});
+  for (const FloorCeiling& other : storeys.others) {
+    const Storey storey{height(other.floor_peak, other.floor), height(other.ceiling, other.ceiling_peak), other};
     if (storey.ceiling_y - storey.floor_y >= min_height) r.storeys.push_back(storey);
   }
+  // Beyond the thesis: §3.2-3.6 for each storey on its own levels and column counts.
   const LabelGrid labels = voxelize_labels(spec, scan.labels, options.voxel_test_budget, r.warnings);
   r.features = detect_features(r.voxels, options.features, options.threads, options.stop, labels);
+  std::vector<std::uint32_t> column_counts;
+  std::vector<std::uint8_t> column_any;
+  for (std::size_t i = 1; i < r.storeys.size(); ++i) {
+    stop_point(options.stop);
+    count_columns(r.voxels.grid, r.storeys[i].levels, column_counts, column_any);
+    r.other_features.push_back(detect_features(r.voxels.grid, r.storeys[i].levels, column_counts, column_any,
+                                               options.features, options.threads, options.stop, labels));
+  }
   r.status_message = "ok";
   r.timings.features = clock.lap();
   stop_point(options.stop);
 
-  if (options.find_areas) {
-    AreaResult found = find_areas(r.voxels.grid, *r.features, {r.floor_y, r.ceiling_y}, options.areas,
-                                  options.features, options.threads, options.stop);
-    r.areas = std::move(found.areas);
-    r.area_counts = found.counts;
-    r.warnings.insert(r.warnings.end(), found.warnings.begin(), found.warnings.end());
-    r.timings.areas = found.timings.search;
-    r.timings.reduce = found.timings.reduce;
-    r.timings.classify = found.timings.classify;
-    clock.lap();
+  for (std::uint32_t i = 0; options.find_areas && i < r.storeys.size(); ++i) {
+    const Storey& storey = r.storeys[i];
+    AreaResult found = find_areas(r.voxels.grid, r.storey_features(i), {storey.floor_y, storey.ceiling_y},
+                                  options.areas, options.features, options.threads, options.stop);
+    for (Area& area : found.areas) area.storey = i;
+    r.areas.insert(r.areas.end(), found.areas.begin(), found.areas.end());
+    for (std::size_t type = 0; type < kAreaTypes.size(); ++type) {
+      r.area_counts.found[type] += found.counts.found[type];
+      r.area_counts.deduplicated[type] += found.counts.deduplicated[type];
+      r.area_counts.reduced[type] += found.counts.reduced[type];
+    }
+    for (std::string& warning : found.warnings)
+      r.warnings.push_back(i == 0 ? std::move(warning) : "storey " + std::to_string(i + 1) + ": " + warning);
+    r.timings.areas += found.timings.search;
+    r.timings.reduce += found.timings.reduce;
+    r.timings.classify += found.timings.classify;
   }
+  clock.lap();
   stop_point(options.stop);
   if (options.build_bounds) {
-    r.bounds = build_bounds(r.voxels.grid, levels, r.features->y_end, r.features->room, options.bounds,
-                            options.threads, options.stop);
+    r.bounds = build_bounds(r.voxels.grid, bounds_storeys(r), options.bounds, options.threads, options.stop);
     r.timings.bounds = clock.lap();
   }
   r.timings.total = r.timings.prepare + r.timings.voxelize + r.timings.features + r.timings.areas +

@@ -44,23 +44,4 @@ float surface_height(const GridSpec& spec, std::span<const glm::vec3> vertices,
   return 0.5f * (y_lo + y_hi);
 }
 
-std::vector<FloorCeiling> other_storeys(std::span<const std::uint32_t> counts, const FloorCeiling& main,
-                                        int min_separation) {
-  std::vector<FloorCeiling> out;
-  const std::uint32_t main_count = counts[std::size_t(main.floor_peak)];
-  const auto search = [&](std::size_t begin, std::size_t end) {
-    if (end <= begin) return;
-    std::vector<std::uint32_t> part(counts.begin() + std::ptrdiff_t(begin), counts.begin() + std::ptrdiff_t(end));
-    for (std::uint32_t& c : part)
-      if (4 * std::uint64_t(c) < main_count) c = 0;
-    if (auto fc = select_floor_ceiling(part, min_separation)) {
-      const int shift = int(begin);
-      out.push_back({fc->floor + shift, fc->ceiling + shift, fc->floor_peak + shift, fc->ceiling_peak + shift});
-    }
-  };
-  search(std::size_t(main.ceiling_peak + 1), counts.size());
-  search(0, std::size_t(main.floor_peak));
-  return out;
-}
-
 }  // namespace roomsense::detail

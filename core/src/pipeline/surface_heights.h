@@ -1,4 +1,4 @@
-// Metric heights of the floor and ceiling levels, and further storeys (internal to the pipeline).
+// Metric heights of the floor and ceiling levels (internal to the pipeline).
 #pragma once
 #include "roomsense/analysis.h"
 
@@ -10,10 +10,5 @@ namespace roomsense::detail {
 // triangles there, or of the vertices there for a point cloud; the middle of the band if neither exists.
 float surface_height(const GridSpec& spec, std::span<const glm::vec3> vertices,
                      std::span<const std::uint32_t> indices, int lo, int hi);
-
-// Storeys besides the main one: floor/ceiling pairs above the main ceiling or below the main floor whose
-// levels hold at least a quarter of the main floor's count.
-std::vector<FloorCeiling> other_storeys(std::span<const std::uint32_t> level_counts, const FloorCeiling& main,
-                                        int min_separation);
 
 }  // namespace roomsense::detail

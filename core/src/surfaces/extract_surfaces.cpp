@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <optional>
 #include <tuple>
 #include <utility>
 
@@ -28,8 +27,7 @@ using detail::Polygon2;
 struct StoreyRaster {
   int floor_level = 0, ceiling_level = 0;  // I_Floor, I_Ceiling of the storey
   float floor_y = 0.0f, ceiling_y = 0.0f;
-  ColumnMask floor_region;                 // the room region: B (Eq. 3.12) for the main storey
-  std::optional<ColumnMask> ceiling_region;  // none: the ceiling has the floor's outline
+  ColumnMask floor_region;                 // the room region: B (Eq. 3.12); the ceiling has its outline
   ColumnMask walls;                        // A (Eq. 3.11)
 };
 
@@ -39,51 +37,12 @@ ColumnMask mask_of(const GridSpec& s, const std::vector<std::uint8_t>& cells) {
   return m;
 }
 
-int level_of(const GridSpec& s, float y) {
-  return std::clamp(int(std::floor((y - s.origin.y) / s.voxel_size)), 0, s.ny - 1);
-}
-
-// Columns with a voxel in the levels [lo, hi].
-ColumnMask occupied(const VoxelGrid& grid, int lo, int hi) {
-  const GridSpec& s = grid.spec;
-  ColumnMask m(s.nx, s.nz);
-  lo = std::max(lo, 0);
-  hi = std::min(hi, s.ny - 1);
-  for (std::size_t c = 0; c < m.cells.size(); ++c) {
-    const std::uint8_t* v = grid.cells.data() + c * std::size_t(s.ny);
-    m.cells[c] = std::any_of(v + lo, v + hi + 1, [](std::uint8_t a) { return a != 0; }) ? 1 : 0;
-  }
-  return m;
-}
-
-// The main storey has its features; another one (storeys[1..]) only its heights, so its room region is
-// what the grid holds at its floor level, its ceiling what it holds at its ceiling level (a voxel either
-// side, for a floor straddling a level boundary), and its walls Eq. 3.11 over its own levels.
-StoreyRaster main_storey(const AnalysisResult& analysis) {
+// Each storey has its features (analysis.h): its floor and ceiling follow its B, its walls its A.
+StoreyRaster storey_raster(const AnalysisResult& analysis, std::size_t index) {
   const GridSpec& s = analysis.voxels.grid.spec;
-  const RoomFeatures& f = *analysis.features;
-  return {f.levels.floor, f.levels.ceiling, analysis.floor_y, analysis.ceiling_y, mask_of(s, f.room), std::nullopt,
-          mask_of(s, f.walls)};
-}
-
-StoreyRaster other_storey(const AnalysisResult& analysis, const Storey& storey) {
-  const VoxelGrid& grid = analysis.voxels.grid;
-  const GridSpec& s = grid.spec;
-  StoreyRaster r;
-  r.floor_level = level_of(s, storey.floor_y);
-  r.ceiling_level = level_of(s, storey.ceiling_y);
-  r.floor_y = storey.floor_y;
-  r.ceiling_y = storey.ceiling_y;
-  r.floor_region = occupied(grid, r.floor_level - 1, r.floor_level + 1);
-  r.ceiling_region = occupied(grid, r.ceiling_level - 1, r.ceiling_level + 1);
-  std::vector<std::uint32_t> counts(s.column_count(), 0);
-  for (std::size_t c = 0; c < counts.size(); ++c) {
-    const std::uint8_t* v = grid.cells.data() + c * std::size_t(s.ny);
-    counts[c] = std::uint32_t(std::count(v + r.floor_level, v + r.ceiling_level + 1, std::uint8_t{1}));
-  }
-  FloorCeiling levels{r.floor_level, r.ceiling_level, r.floor_level, r.ceiling_level};
-  r.walls = mask_of(s, detect_walls(s, counts, levels, FeatureParams{}.wall_fill));
-  return r;
+  const RoomFeatures& f = analysis.storey_features(index);
+  const Storey& storey = analysis.storeys[index];
+  return {f.levels.floor, f.levels.ceiling, storey.floor_y, storey.ceiling_y, mask_of(s, f.room), mask_of(s, f.walls)};
 }
 
 // A column holding wall both in the lower and in the upper half of the storey: under a window, a sill, over
@@ -183,25 +142,16 @@ void storey_surfaces(const AnalysisResult& analysis, std::uint32_t index, const 
   const detail::StoreyOutline room = detail::fit_walls(outline, search);
   floors.push_back(horizontal(SurfaceKind::Floor, index, s, room.polygon, r.floor_y, true));
   for (const detail::WallSegment& segment : room.walls) walls.push_back(wall(index, s, segment, r));
-  if (!r.ceiling_region) {
-    ceilings.push_back(horizontal(SurfaceKind::Ceiling, index, s, room.polygon, r.ceiling_y, false));
-    return;
-  }
-  stop_point(stop);
-  const ColumnMask top = main_region(*r.ceiling_region);
-  if (top.count() == 0 || double(top.count()) < min_cells) return;
-  const Polygon2 ceiling = detail::inset_polygon(
-      detail::simplify_outline(detail::trace_outline(top), params.outline_tolerance), 0.5);
-  ceilings.push_back(horizontal(SurfaceKind::Ceiling, index, s, ceiling, r.ceiling_y, false));
+  ceilings.push_back(horizontal(SurfaceKind::Ceiling, index, s, room.polygon, r.ceiling_y, false));
 }
 
-// Furniture tops of the main storey: 4-connected runs of C (Eq. 3.13) whose levels differ by at most one
+// Furniture tops of one storey: 4-connected runs of C (Eq. 3.13) whose levels differ by at most one
 // (a top straddling a level boundary), each at the level most of it has. C holds the level above the top
 // voxel, and the top surface is that level's lower face, where find_areas places furniture areas.
-std::vector<Surface> furniture_tops(const AnalysisResult& analysis, const SurfaceParams& params,
+std::vector<Surface> furniture_tops(const AnalysisResult& analysis, std::uint32_t storey, const SurfaceParams& params,
                                     const std::stop_token& stop) {
   const GridSpec& s = analysis.voxels.grid.spec;
-  const std::vector<int>& c = analysis.features->furniture;
+  const std::vector<int>& c = analysis.storey_features(storey).furniture;
   const double voxel = s.voxel_size, min_cells = params.min_area / (voxel * voxel);
   const detail::Components parts = detail::label_components(
       s.nx, s.nz, [&](std::size_t col) { return c[col] != kNoFurniture; },
@@ -224,9 +174,9 @@ std::vector<Surface> furniture_tops(const AnalysisResult& analysis, const Surfac
     // Half a voxel in: the top's edge lies somewhere inside its boundary columns, on average at their centres.
     const Polygon2 outline = detail::inset_polygon(
         detail::simplify_outline(detail::trace_outline(region), params.outline_tolerance), 0.5);
-    const float y = s.origin.y + float(level) * s.voxel_size, above = y - analysis.floor_y;
+    const float y = s.origin.y + float(level) * s.voxel_size, above = y - analysis.storeys[storey].floor_y;
     const bool table = above >= params.table_min && above <= params.table_max;
-    Surface top = horizontal(table ? SurfaceKind::Table : SurfaceKind::Furniture, 0, s, outline, y, true);
+    Surface top = horizontal(table ? SurfaceKind::Table : SurfaceKind::Furniture, storey, s, outline, y, true);
     // A window's sill is C too (wall below, 1 m clear above), but a strip a wall thick is no place to put
     // things; the least-area rectangle measures the narrow side whatever the strip's direction.
     if (std::min(top.extents.x, top.extents.y) >= params.min_top_width) out.push_back(std::move(top));
@@ -279,11 +229,16 @@ std::vector<Surface> extract_surfaces(const AnalysisResult& analysis, const Surf
   std::vector<Surface> floors, ceilings, walls;
   for (std::size_t i = 0; i < analysis.storeys.size(); ++i) {
     stop_point(stop);
-    const StoreyRaster r = i == 0 ? main_storey(analysis) : other_storey(analysis, analysis.storeys[i]);
-    storey_surfaces(analysis, std::uint32_t(i), r, params, stop, floors, ceilings, walls);
+    storey_surfaces(analysis, std::uint32_t(i), storey_raster(analysis, i), params, stop, floors, ceilings, walls);
   }
-  stop_point(stop);
-  std::vector<Surface> tops = furniture_tops(analysis, params, stop);
+  std::vector<Surface> tops;
+  for (std::uint32_t i = 0; i < analysis.storeys.size(); ++i) {
+    stop_point(stop);
+    std::vector<Surface> more = furniture_tops(analysis, i, params, stop);
+    tops.insert(tops.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
+  }
+  // Tables before other furniture, then by storey, as the other kinds.
+  std::stable_sort(tops.begin(), tops.end(), [](const Surface& a, const Surface& b) { return a.kind < b.kind; });
   std::vector<Surface> out;
   out.reserve(floors.size() + ceilings.size() + walls.size() + tops.size());
   for (std::vector<Surface>* part : {&floors, &ceilings, &walls, &tops})

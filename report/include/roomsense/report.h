@@ -57,7 +57,8 @@ std::string_view reach_colour(Reach reach);
 // data-index and data-surface; walls as a strip before the wall). Every area is one <polygon class="area"> with data-index,
 // data-type, data-size, data-reach and a <title>; horizontal areas are their rectangle, wall areas (which
 // project to a line) a strip on the room side of their wall. Beside the drawing: a legend, a metre scale
-// bar, the floor and ceiling heights.
+// bar, the floor and ceiling heights. The drawing is the main storey's: the heading lists the other storeys
+// and counts their areas (Area::storey), which it does not draw.
 std::string plan_svg(const ReportInput& input);
 
 // scene.glb: nodes "scan" (grey), "bounds" (translucent) and one per area, "area N TYPE SIZE REACH" with N

@@ -44,6 +44,22 @@ struct Hole {
   float radius = 0.3f;
 };
 
+// An axis-aligned rectangle in (x, z), e.g. a stairwell cut out of a floor and the ceiling below it.
+struct Rect {
+  glm::vec2 lo{0.0f}, hi{0.0f};
+};
+
+// A straight stair of treads and risers, open below, rising from the storey's floor by `rise` in `steps`
+// equal risers; the last riser ends at the next floor's edge, so the stair has steps - 1 treads.
+struct Stair {
+  glm::vec2 start{0.0f};  // the foot of the first riser, the middle of its width, (x, z)
+  float yaw = 0.0f;       // the way up: +X turned by yaw about +Y (towards +Z for a positive yaw)
+  float width = 1.0f;
+  float tread = 0.26f;
+  float rise = 2.75f;
+  int steps = 15;
+};
+
 struct RoomSpec {
   std::string name = "room";
   std::vector<glm::vec2> outline;  // convex floor polygon in (x, z), counter-clockwise seen from above (+Y)
@@ -53,15 +69,28 @@ struct RoomSpec {
   std::vector<Table> tables;
   std::vector<Window> windows;
   std::vector<Hole> holes;
+  std::vector<Rect> floor_openings;    // cut out of the floor (only where cell > 0)
+  std::vector<Rect> ceiling_openings;  // cut out of the ceiling (only where cell > 0)
+  std::vector<Stair> stairs;
   float cell = 0.05f;    // triangle size; 0: every planar piece is two large triangles
   float noise = 0.0f;    // standard deviation of the vertex jitter, metres
   std::uint32_t seed = 1;
+};
+
+// Storeys stacked in one scan, bottom to top, each a room of its own (its name, noise and seed are the
+// house's); stairs and the stairwells they rise through are in the storeys' specs.
+struct HouseSpec {
+  std::string name = "house";
+  std::vector<RoomSpec> storeys;
 };
 
 // A rectangular outline of width (x) by depth (z), centred at the origin, turned by yaw radians.
 std::vector<glm::vec2> rectangle(float width, float depth, float yaw = 0.0f);
 
 Scan generate(const RoomSpec& spec);
+Scan generate(const HouseSpec& spec);
+// The footprint of a stair in (x, z), counter-clockwise seen from above.
+std::vector<glm::vec2> stair_footprint(const Stair& stair);
 
 // Ground-truth queries.
 bool inside_outline(const RoomSpec& spec, glm::vec2 p);
@@ -80,11 +109,15 @@ RoomSpec hall_room(float width = 20.0f, float depth = 14.0f);  // a large hall w
 RoomSpec thesis_room1();                 // about 78k vertices, the size of the thesis's room 1
 std::optional<RoomSpec> builtin(const std::string& name);
 std::vector<std::string> builtin_names();
+// Built-in buildings of several storeys.
+HouseSpec two_storey_house();            // 7 x 5 m, two storeys 0.25 m of slab apart, a stair between them
+std::optional<HouseSpec> builtin_house(const std::string& name);
+std::vector<std::string> builtin_house_names();
 
 // "synthetic:NAME", the way the CLI and the simulated runtime name a built-in room in place of a file.
 inline constexpr const char* kSourcePrefix = "synthetic:";
 bool is_builtin_source(const std::string& source);
-// The room a "synthetic:NAME" source names. Throws Error(BadParameter), listing the names, for an unknown one.
+// The room or house a "synthetic:NAME" source names. Throws Error(BadParameter), listing the names, for an unknown one.
 Scan generate_builtin_source(const std::string& source);
 
 }  // namespace roomsense::synth

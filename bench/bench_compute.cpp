@@ -23,7 +23,7 @@ namespace {
 
 using namespace roomsense;
 
-struct Room {
+struct BenchRoom {
   std::string name;
   GridSpec spec;
   std::vector<glm::vec3> grid_vertices;
@@ -39,9 +39,9 @@ struct Room {
   }
 };
 
-Room prepare(std::string name, const Scan& scan) {
+BenchRoom prepare(std::string name, const Scan& scan) {
   const PreparedInput in = prepare_input(scan);
-  Room room;
+  BenchRoom room;
   room.name = std::move(name);
   room.spec = make_grid_spec(in.lo, in.hi, kDefaultVoxelSize);
   room.grid_vertices = to_grid_units(in.vertices, room.spec);
@@ -62,13 +62,13 @@ VulkanVoxelStage* vulkan() {
 
 const char* mode_name(VoxelMode m) { return m == VoxelMode::Triangles ? "tri" : "vtx"; }
 
-void set_size_counters(benchmark::State& state, const Room& room) {
+void set_size_counters(benchmark::State& state, const BenchRoom& room) {
   state.counters["voxels"] = double(room.spec.voxel_count());
   state.counters["verts"] = double(room.grid_vertices.size());
   state.counters["tris"] = double(room.indices.size() / 3);
 }
 
-void cpu_end_to_end(benchmark::State& state, const Room& room, VoxelMode mode) {
+void cpu_end_to_end(benchmark::State& state, const BenchRoom& room, VoxelMode mode) {
   const VoxelizeRequest r = room.request(mode);
   CpuVoxelStage cpu;
   for (auto _ : state) benchmark::DoNotOptimize(cpu.run(r));
@@ -76,7 +76,7 @@ void cpu_end_to_end(benchmark::State& state, const Room& room, VoxelMode mode) {
 }
 
 // The CPU's stages one by one: voxelize (Eq. 3.6/3.7), |V_y| (3.8), levels (3.9/3.10), columns (3.11/3.12).
-void cpu_stages(benchmark::State& state, const Room& room, VoxelMode mode) {
+void cpu_stages(benchmark::State& state, const BenchRoom& room, VoxelMode mode) {
   const VoxelizeRequest r = room.request(mode);
   double voxelize = 0, levels = 0, select = 0, columns = 0;
   using Clock = std::chrono::steady_clock;
@@ -103,7 +103,7 @@ void cpu_stages(benchmark::State& state, const Room& room, VoxelMode mode) {
   state.counters["columns_ms"] = columns / n;
 }
 
-void vulkan_end_to_end(benchmark::State& state, const Room& room, VoxelMode mode) {
+void vulkan_end_to_end(benchmark::State& state, const BenchRoom& room, VoxelMode mode) {
   VulkanVoxelStage* stage = vulkan();
   if (stage == nullptr) {
     state.SkipWithError("no Vulkan device");
@@ -159,8 +159,8 @@ void vulkan_create(benchmark::State& state) {
   }
 }
 
-std::vector<Room>& rooms() {
-  static std::vector<Room> all;
+std::vector<BenchRoom>& rooms() {
+  static std::vector<BenchRoom> all;
   return all;
 }
 
@@ -196,7 +196,7 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   load_rooms();
   benchmark::RegisterBenchmark("vulkan/create_stage", vulkan_create)->Unit(benchmark::kMillisecond)->Iterations(3);
-  for (const Room& room : rooms())
+  for (const BenchRoom& room : rooms())
     for (VoxelMode mode : {VoxelMode::Vertices, VoxelMode::Triangles}) {
       const std::string suffix = room.name + "/" + mode_name(mode);
       benchmark::RegisterBenchmark(("cpu/end_to_end/" + suffix).c_str(), cpu_end_to_end, room, mode)->Unit(benchmark::kMillisecond);

@@ -22,13 +22,13 @@ namespace {
 
 using namespace roomsense;
 
-struct Room {
+struct BenchRoom {
   std::string name;
   Scan scan;
 };
 
-std::vector<Room> load_rooms() {
-  std::vector<Room> rooms;
+std::vector<BenchRoom> load_rooms() {
+  std::vector<BenchRoom> rooms;
   for (const char* name : {"thesis-room1", "hall", "default"}) rooms.push_back({std::string("synthetic:") + name, synth::generate(*synth::builtin(name))});
   const std::filesystem::path dir = ROOMSENSE_BENCH_ROOMS_DIR;
   for (const char* file : {"hololens1/holotoolkit_fake_spatial_mapping.obj", "hololens1/mrtk_example_spatial_mesh.obj",
@@ -86,7 +86,7 @@ void time_areas(benchmark::State& state, const Prepared& p) {
       tile * double(std::count(p.features.free_floor.begin(), p.features.free_floor.end(), std::uint8_t{1}));
 }
 
-void counters(benchmark::State& state, const Room& room) {
+void counters(benchmark::State& state, const BenchRoom& room) {
   state.counters["vertices"] = double(room.scan.vertices.size());
   state.counters["triangles"] = double(room.scan.indices.size() / 3);
 }
@@ -113,8 +113,8 @@ int main(int argc, char** argv) {
       "Stages: voxelize = voxel stage (V, |V_y|, levels, |V_xz|); features = A-F; areas = search + reduce + classify\n"
       "(§3.3-3.5); understanding = prepare + voxelize + features + areas (what StartRoomUnderstanding runs);\n"
       "bounds = I + its mesh; bounds_pipeline = prepare + voxelize + A/B + bounds (StartRoomBounds); analyze = all.\n\n");
-  static const std::vector<Room> rooms = load_rooms();
-  for (const Room& room : rooms) {
+  static const std::vector<BenchRoom> rooms = load_rooms();
+  for (const BenchRoom& room : rooms) {
     const auto p = prepare(room.scan);
     register_case("voxelize/" + room.name, [&room, p](benchmark::State& state) {
       CpuVoxelStage stage;

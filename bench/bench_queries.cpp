@@ -21,7 +21,7 @@ namespace {
 
 using namespace roomsense;
 
-struct Room {
+struct BenchRoom {
   std::string name;
   std::size_t vertices = 0;
   AnalysisResult analysis;
@@ -30,8 +30,8 @@ struct Room {
   glm::vec3 centre{0.0f};  // the middle of the room's bounds, 1.2 m above its floor
 };
 
-std::shared_ptr<Room> analysed(std::string name, const Scan& scan) {
-  auto room = std::make_shared<Room>();
+std::shared_ptr<BenchRoom> analysed(std::string name, const Scan& scan) {
+  auto room = std::make_shared<BenchRoom>();
   room->name = std::move(name);
   room->vertices = scan.vertices.size();
   room->analysis = analyze(scan);
@@ -43,8 +43,8 @@ std::shared_ptr<Room> analysed(std::string name, const Scan& scan) {
   return room;
 }
 
-std::vector<std::shared_ptr<Room>> load_rooms() {
-  std::vector<std::shared_ptr<Room>> rooms;
+std::vector<std::shared_ptr<BenchRoom>> load_rooms() {
+  std::vector<std::shared_ptr<BenchRoom>> rooms;
   for (const char* name : {"thesis-room1", "default", "hall"})
     rooms.push_back(analysed(std::string("synthetic:") + name, synth::generate(*synth::builtin(name))));
   const std::filesystem::path dir = ROOMSENSE_BENCH_ROOMS_DIR;
@@ -66,14 +66,14 @@ PlacementQuery ten(glm::vec3 size, std::uint32_t surfaces, float clearance = 0.0
   return q;
 }
 
-void room_counters(benchmark::State& state, const Room& room) {
+void room_counters(benchmark::State& state, const BenchRoom& room) {
   const GridSpec& s = room.analysis.voxels.grid.spec;
   state.counters["vertices"] = double(room.vertices);
   state.counters["columns"] = double(s.column_count());
   state.counters["floor_m2"] = double(s.column_count()) * double(s.voxel_size) * double(s.voxel_size);
 }
 
-void register_queries(const std::shared_ptr<Room>& room, bool everything) {
+void register_queries(const std::shared_ptr<BenchRoom>& room, bool everything) {
   const std::string& n = room->name;
   benchmark::RegisterBenchmark(("queries_build/" + n).c_str(), [room](benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(RoomQueries(room->analysis, room->surfaces));
@@ -130,10 +130,10 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   std::printf("Targets (issue 16): 10 placements on a ~78k-vertex room <= 1 ms, one raycast <= 10 us.\n"
               "place10/QUERY/ROOM: one find_placements call for 10 objects; raycast/ROOM: one ray.\n\n");
-  static const std::vector<std::shared_ptr<Room>> rooms = load_rooms();
+  static const std::vector<std::shared_ptr<BenchRoom>> rooms = load_rooms();
   for (const auto& room : rooms) register_queries(room, true);
   // Growth with room size: halls of increasing floor area.
-  static std::vector<std::shared_ptr<Room>> halls;
+  static std::vector<std::shared_ptr<BenchRoom>> halls;
   for (const float scale : {0.25f, 0.5f, 1.0f, 1.5f, 2.0f}) {
     const float w = 20.0f * scale, d = 14.0f * scale;
     halls.push_back(analysed("growth_hall_" + std::to_string(int(w)) + "x" + std::to_string(int(d)),

@@ -20,6 +20,16 @@ glm::vec2 rotate(glm::vec2 p, float yaw) {
   return {c * p.x - s * p.y, s * p.x + c * p.y};
 }
 
+// Splits [0, 1] at the given cuts, so a coarse mesh still follows window edges.
+std::vector<float> breakpoints(std::vector<float> cuts) {
+  cuts.push_back(0.0f);
+  cuts.push_back(1.0f);
+  for (float& c : cuts) c = std::clamp(c, 0.0f, 1.0f);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  return cuts;
+}
+
 class MeshBuilder {
  public:
   explicit MeshBuilder(const RoomSpec& spec) : spec_(spec), rng_(spec.seed), jitter_(0.0f, 1.0f) {}
@@ -77,6 +87,41 @@ class MeshBuilder {
     }
   }
 
+  // Both faces of an interior wall with its doorways, the doorways' jambs and lintels, and its two ends.
+  void partition(const Partition& w, float floor_y, float ceiling_y) {
+    const glm::vec2 along2 = w.b - w.a;
+    const float length = glm::length(along2);
+    const glm::vec2 d = along2 / length;
+    const glm::vec3 U(d.x, 0.0f, d.y), N(-d.y, 0.0f, d.x), V(0.0f, ceiling_y - floor_y, 0.0f);
+    const glm::vec3 start(w.a.x, floor_y, w.a.y);
+    const float half = 0.5f * w.thickness, height = ceiling_y - floor_y;
+    std::vector<float> cuts;
+    for (const Doorway& door : w.doorways) {
+      cuts.push_back(door.u0 / length);
+      cuts.push_back(door.u1 / length);
+    }
+    const std::vector<float> su = breakpoints(cuts);
+    for (std::size_t i = 0; i + 1 < su.size(); ++i) {
+      const float u0 = su[i] * length, u1 = su[i + 1] * length, mid = 0.5f * (u0 + u1);
+      const auto door = std::find_if(w.doorways.begin(), w.doorways.end(),
+                                     [&](const Doorway& dw) { return mid > dw.u0 && mid < dw.u1; });
+      const float bottom = door == w.doorways.end() ? 0.0f : door->height;
+      const glm::vec3 lo = start + U * u0 + glm::vec3(0.0f, bottom, 0.0f);
+      const glm::vec3 run = U * (u1 - u0), up = V * ((height - bottom) / height);
+      rectangle(lo + N * half, run, up);         // U x Y = N
+      rectangle(lo - N * half + run, -run, up);  // -U x Y = -N
+      if (door != w.doorways.end()) rectangle(lo - N * half, run, N * w.thickness);  // U x N = -Y: the lintel
+    }
+    const glm::vec3 across = N * w.thickness;
+    for (const Doorway& door : w.doorways) {
+      const glm::vec3 rise(0.0f, door.height, 0.0f);
+      rectangle(start + U * door.u0 - N * half + across, -across, rise);  // -N x Y = U: into the doorway
+      rectangle(start + U * door.u1 - N * half, across, rise);            // N x Y = -U
+    }
+    rectangle(start - N * half, across, V);                          // the ends, facing away along -U and +U
+    rectangle(start + U * length + N * half, -across, V);
+  }
+
   Scan finish() {
     if (spec_.noise > 0.0f)
       for (glm::vec3& p : scan_.vertices) p += spec_.noise * glm::vec3(jitter_(rng_), jitter_(rng_), jitter_(rng_));
@@ -98,16 +143,6 @@ class MeshBuilder {
   std::mt19937 rng_;
   std::normal_distribution<float> jitter_;
 };
-
-// Splits [0, 1] at the given cuts, so a coarse mesh still follows window edges.
-std::vector<float> breakpoints(std::vector<float> cuts) {
-  cuts.push_back(0.0f);
-  cuts.push_back(1.0f);
-  for (float& c : cuts) c = std::clamp(c, 0.0f, 1.0f);
-  std::sort(cuts.begin(), cuts.end());
-  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-  return cuts;
-}
 
 void add_floor_or_ceiling(MeshBuilder& mesh, const RoomSpec& spec, float y, bool ceiling) {
   if (spec.cell <= 0.0f) {
@@ -219,6 +254,7 @@ Scan generate(const RoomSpec& spec) {
       mesh.box(corner, glm::vec2(kLeg), t.yaw, spec.floor_y, spec.floor_y + t.height - kTop);
   }
   for (const Stair& st : spec.stairs) mesh.stair(st, spec.floor_y);
+  for (const Partition& w : spec.partitions) mesh.partition(w, spec.floor_y, spec.ceiling_y);
   return mesh.finish();
 }
 
@@ -240,7 +276,11 @@ std::vector<glm::vec2> stair_footprint(const Stair& st) {
 
 bool inside_outline(const RoomSpec& spec, glm::vec2 p) { return inside_convex(spec.outline, p); }
 
-float distance_to_walls(const RoomSpec& spec, glm::vec2 p) { return distance_to_polygon_edges(spec.outline, p); }
+float distance_to_walls(const RoomSpec& spec, glm::vec2 p) {
+  float d = distance_to_polygon_edges(spec.outline, p);
+  for (const Partition& w : spec.partitions) d = std::min(d, std::max(0.0f, distance_to_segment(p, w.a, w.b) - 0.5f * w.thickness));
+  return d;
+}
 
 std::optional<float> furniture_top_at(const RoomSpec& spec, glm::vec2 p) {
   std::optional<float> top;
@@ -382,6 +422,29 @@ std::optional<HouseSpec> builtin_house(const std::string& name) {
 
 std::vector<std::string> builtin_house_names() { return {"house"}; }
 
+RoomSpec three_room_flat() {
+  RoomSpec r;
+  r.name = "flat";
+  r.outline = rectangle(9.0f, 6.0f);
+  r.ceiling_y = 2.5f;
+  // From the bedroom's corner (0.5, -3) down to the bathroom's (0.5, 3): doorways into the bedroom and the
+  // bathroom; then the wall between those two, from (0.5, 0) to (4.5, 0), without a door.
+  r.partitions.push_back({{0.5f, -3.0f}, {0.5f, 3.0f}, 0.1f, {{0.8f, 1.7f, 2.0f}, {4.4f, 5.3f, 2.0f}}});
+  r.partitions.push_back({{0.5f, 0.0f}, {4.5f, 0.0f}, 0.1f, {}});
+  r.boxes.push_back({{-2.0f, 2.4f}, {2.2f, 0.9f}, 0.45f, 0.0f});   // sofa
+  r.tables.push_back({{-2.0f, -0.5f}, {1.4f, 0.8f}, 0.75f, 0.0f});
+  r.boxes.push_back({{3.4f, -1.9f}, {1.6f, 2.0f}, 0.5f, 0.0f});    // bed
+  r.boxes.push_back({{3.6f, 2.5f}, {1.7f, 0.75f}, 0.55f, 0.0f});   // bathtub
+  r.windows.push_back({0, 1.0f, 3.0f, 0.9f, 2.1f});
+  r.noise = 0.005f;
+  r.seed = 23;
+  return r;
+}
+
+std::vector<Rect> three_room_flat_rooms() {
+  return {{{-4.5f, -3.0f}, {0.45f, 3.0f}}, {{0.55f, -3.0f}, {4.5f, -0.05f}}, {{0.55f, 0.05f}, {4.5f, 3.0f}}};
+}
+
 std::optional<RoomSpec> builtin(const std::string& name) {
   if (name == "default") return default_room();
   if (name == "large-triangles") return large_triangle_room();
@@ -389,6 +452,7 @@ std::optional<RoomSpec> builtin(const std::string& name) {
   if (name == "pentagon") return pentagon_room();
   if (name == "hall") return hall_room();
   if (name == "thesis-room1") return thesis_room1();
+  if (name == "flat") return three_room_flat();
   return std::nullopt;
 }
 
@@ -404,6 +468,8 @@ Scan generate_builtin_source(const std::string& source) {
   throw Error(ErrorCode::BadParameter, "no built-in room '" + name + "' (there are: " + names + ")");
 }
 
-std::vector<std::string> builtin_names() { return {"default", "large-triangles", "rotated", "pentagon", "hall", "thesis-room1"}; }
+std::vector<std::string> builtin_names() {
+  return {"default", "large-triangles", "rotated", "pentagon", "hall", "thesis-room1", "flat"};
+}
 
 }  // namespace roomsense::synth

@@ -44,6 +44,16 @@ struct Storey {
   FloorCeiling levels{};   // voxel levels
 };
 
+// Beyond the thesis (issue 15): a room of a storey, its free space bounded by walls and passages at most
+// FeatureParams::min_passage wide (RoomFeatures::rooms).
+struct Room {
+  std::uint32_t storey = 0;   // index into AnalysisResult::storeys
+  float floor_area = 0.0f;    // m² of its free columns
+  glm::vec3 center{0.0f};     // the centroid of its free columns, on its floor
+  float floor_y = 0.0f;       // metres, its storey's
+  float ceiling_y = 0.0f;
+};
+
 struct StageTimings {  // milliseconds
   double prepare = 0, voxelize = 0, features = 0, areas = 0, reduce = 0, classify = 0, bounds = 0, total = 0;
 };
@@ -68,6 +78,7 @@ struct AnalysisResult {
   float floor_y = 0.0f;           // metres; the scanned floor surface of the main storey
   float ceiling_y = 0.0f;
   std::vector<Storey> storeys;    // main storey first; empty when status is not Ok
+  std::vector<Room> rooms;        // storey by storey, each storey's largest first; Area::room indexes it
   // Classified placement areas (§3.5) of every storey, storey by storey (Area::storey); empty unless Ok.
   std::vector<Area> areas;
   AreaCounts area_counts;         // summed over the storeys

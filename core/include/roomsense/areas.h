@@ -87,6 +87,7 @@ struct Area {
   float volume_height = 0.0f;    // clear space checked in front of the surface, along the normal
   std::uint32_t flags = 0;       // Eq. 3.58
   std::uint32_t storey = 0;      // beyond the thesis: index into AnalysisResult::storeys (0: the main storey)
+  int room = kNoRoom;            // beyond the thesis: index into AnalysisResult::rooms, or kNoRoom
 
   glm::vec3 x_axis() const;      // unit, along the width
   glm::vec3 y_axis() const;      // unit, along the height

@@ -33,6 +33,10 @@ struct FeatureParams {
   // Bumps on the floor up to this high are floor (a rug, a floor that crosses a voxel boundary): free floor
   // tiles ignore them and furniture tops lie above them.
   float floor_roughness = 0.1f;
+  // Rooms (issue 15): a passage at most this wide between wall columns (a doorway, a narrow corridor) divides
+  // a storey's free space into rooms of at least min_room_area (smaller ones join a neighbour).
+  float min_passage = 1.2f;
+  float min_room_area = 1.5f;
 };
 
 // ⌊metres / S_Voxel⌋, robust to the float error of e.g. 1.5 / 0.1.
@@ -47,6 +51,13 @@ enum WallNormalBits : std::uint8_t {
 };
 
 inline constexpr int kNoFurniture = -1;
+inline constexpr int kNoRoom = -1;
+
+// Beyond the thesis (issue 15): per column, the room (0 the largest, then by size) or kNoRoom.
+struct RoomSplit {
+  std::vector<int> room;
+  int count = 0;
+};
 
 struct RoomFeatures {
   FloorCeiling levels;
@@ -62,6 +73,7 @@ struct RoomFeatures {
   // Per voxel, or empty when there is none: before an opening in the wall behind (a window, a hole, a door
   // gap) or a surface the runtime labels a window, door or screen; no wall area may cover it.
   std::vector<std::uint8_t> wall_blocked;
+  RoomSplit rooms;                       // the inside's free columns (not walls) by room
 };
 
 std::vector<std::uint8_t> detect_walls(const GridSpec& spec, const std::vector<std::uint32_t>& column_counts,
@@ -107,6 +119,15 @@ std::vector<std::uint8_t> detect_wall_normals(const VoxelGrid& grid, const Floor
                                               const std::vector<std::uint8_t>& walls,
                                               const std::vector<std::uint8_t>& room,
                                               const std::vector<int>& furniture);
+
+// The rooms of a storey: its inside columns that are not walls, split where a passage is at most
+// `min_passage` wide. Cores (columns more than half of it from the nearest blocked column) make the rooms;
+// every free column joins the core it reaches first; free space without a core is a room of its own. A room
+// under `min_room_area` m² joins the neighbour it shares the longest border with, or no room without one.
+RoomSplit split_rooms(const GridSpec& spec, const std::vector<std::uint8_t>& inside,
+                      const std::vector<std::uint8_t>& walls, float min_passage, float min_room_area);
+// The room of column (x, z), or of the nearest column with one within `reach` columns; kNoRoom if none.
+int room_at(const GridSpec& spec, const RoomSplit& rooms, int x, int z, int reach);
 
 // All of §3.2 on one storey of a grid: its levels and count_columns over them. C, D and E run in parallel when threads allows; the result does not
 // depend on the thread count. A stop request throws Error(Cancelled) between the steps.

@@ -1,6 +1,7 @@
 // The CLI's JSON, schema roomsense.analysis/1 (DESIGN.md). Extra members beyond the contract: status,
 // message, warnings, input.{outlier_vertices, dropped_triangles, mode}, grid.backend, bounds.closed,
 // areas[].orientation (the pose quaternion x, y, z, w), areas[].storey (an index into storeys, main first),
+// areas[].room (an index into rooms, or null), rooms (issue 15),
 // storeys[].room_m2 (B, Eq. 3.12) and area_counts (per type: wall, floor, ceiling, furniture).
 #include "roomsense/export.h"
 
@@ -32,7 +33,8 @@ nlohmann::json areas_json(const std::vector<Area>& areas) {
                    {"corners", {vec(a.corners[0]), vec(a.corners[1]), vec(a.corners[2]), vec(a.corners[3])}},
                    {"orientation", {q.x, q.y, q.z, q.w}},
                    {"flags", a.flags},
-                   {"storey", a.storey}});
+                   {"storey", a.storey},
+                   {"room", a.room == kNoRoom ? nlohmann::json(nullptr) : nlohmann::json(a.room)}});
   }
   return out;
 }
@@ -55,6 +57,13 @@ std::string analysis_json(const AnalysisResult& r, const JsonSource& source) {
                        {"room_m2", square_metres(f.room)}});
   }
   if (storeys.empty()) storeys.push_back({{"floor_y", nullptr}, {"ceiling_y", nullptr}});
+  json rooms = json::array();
+  for (const Room& room : r.rooms)
+    rooms.push_back({{"storey", room.storey},
+                     {"floor_area_m2", room.floor_area},
+                     {"center", vec(room.center)},
+                     {"floor_y", room.floor_y},
+                     {"ceiling_y", room.ceiling_y}});
   const StageTimings& t = r.timings;
   json doc = {
       {"schema", "roomsense.analysis/1"},
@@ -78,6 +87,7 @@ std::string analysis_json(const AnalysisResult& r, const JsonSource& source) {
       {"floor_y", height(r.floor_y, r.ok())},
       {"ceiling_y", height(r.ceiling_y, r.ok())},
       {"storeys", storeys},
+      {"rooms", rooms},
       {"areas", areas_json(r.areas)},
       {"area_counts",
        {{"found", r.area_counts.found}, {"deduplicated", r.area_counts.deduplicated}, {"reduced", r.area_counts.reduced}}},

@@ -63,6 +63,7 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
   stop_point(stop);
   f.normals = detect_wall_normals(grid, f.levels, voxels_for(params.wall_normal_reach, s), f.walls, inside,
                                   f.furniture);
+  f.rooms = split_rooms(grid.spec, inside, f.walls, params.min_passage, params.min_room_area);
   f.wall_blocked = detect_wall_openings(grid, f.levels, f.walls, inside, voxels_for(params.wall_recess, s),
                                         max_opening, labels);
   return f;

@@ -6,7 +6,10 @@
 #include "storeys.h"
 #include "surface_heights.h"
 
+#include <glm/vec2.hpp>
+
 #include <chrono>
+#include <cmath>
 
 namespace roomsense {
 namespace {
@@ -25,6 +28,40 @@ class Stopwatch {
 };
 
 std::string metres(float value) { return fixed_or_g(value, 2) + " m"; }
+
+// Issue 15: the rooms of every storey in one list, and each area's room: the room of the column under a
+// horizontal area's centre or in front of a wall area's, or the nearest within 0.3 m.
+void assign_rooms(AnalysisResult& r) {
+  const GridSpec& s = r.voxels.grid.spec;
+  const double cell = double(s.voxel_size) * double(s.voxel_size);
+  std::vector<int> first_room;  // per storey, its first index into r.rooms
+  for (std::uint32_t i = 0; i < r.storeys.size(); ++i) {
+    const RoomSplit& split = r.storey_features(i).rooms;
+    first_room.push_back(int(r.rooms.size()));
+    std::vector<glm::dvec2> sum(std::size_t(split.count), glm::dvec2(0.0));
+    std::vector<std::size_t> cells(std::size_t(split.count), 0);
+    for (std::size_t c = 0; c < split.room.size(); ++c) {
+      if (split.room[c] == kNoRoom) continue;
+      const std::size_t k = std::size_t(split.room[c]);
+      sum[k] += glm::dvec2(double(c % std::size_t(s.nx)) + 0.5, double(c / std::size_t(s.nx)) + 0.5);
+      ++cells[k];
+    }
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      const glm::dvec2 mean = sum[k] / double(std::max<std::size_t>(cells[k], 1));
+      const Storey& storey = r.storeys[i];
+      r.rooms.push_back({i, float(double(cells[k]) * cell),
+                         {s.origin.x + float(mean.x) * s.voxel_size, storey.floor_y, s.origin.z + float(mean.y) * s.voxel_size},
+                         storey.floor_y, storey.ceiling_y});
+    }
+  }
+  const int reach = std::max(1, int(std::lround(0.3 / double(s.voxel_size))));
+  for (Area& a : r.areas) {
+    const glm::vec3 p = a.type == AreaType::Wall ? a.center + 0.5f * s.voxel_size * a.normal : a.center;
+    const int x = int(std::floor((p.x - s.origin.x) / s.voxel_size)), z = int(std::floor((p.z - s.origin.z) / s.voxel_size));
+    const int local = room_at(s, r.storey_features(a.storey).rooms, x, z, reach);
+    a.room = local == kNoRoom ? kNoRoom : first_room[a.storey] + local;
+  }
+}
 
 }  // namespace
 
@@ -134,6 +171,7 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
     r.timings.reduce += found.timings.reduce;
     r.timings.classify += found.timings.classify;
   }
+  assign_rooms(r);
   clock.lap();
   stop_point(options.stop);
   if (options.build_bounds) {

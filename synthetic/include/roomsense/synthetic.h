@@ -60,6 +60,19 @@ struct Stair {
   int steps = 15;
 };
 
+// A doorway in a partition: from u0 to u1 metres along it from its start, from the floor up to `height`.
+struct Doorway {
+  float u0 = 1.0f, u1 = 1.9f;
+  float height = 2.0f;
+};
+
+// An interior wall from the floor to the ceiling along a -> b, `thickness` thick, both faces scanned.
+struct Partition {
+  glm::vec2 a{0.0f}, b{1.0f, 0.0f};
+  float thickness = 0.1f;
+  std::vector<Doorway> doorways;
+};
+
 struct RoomSpec {
   std::string name = "room";
   std::vector<glm::vec2> outline;  // convex floor polygon in (x, z), counter-clockwise seen from above (+Y)
@@ -72,6 +85,7 @@ struct RoomSpec {
   std::vector<Rect> floor_openings;    // cut out of the floor (only where cell > 0)
   std::vector<Rect> ceiling_openings;  // cut out of the ceiling (only where cell > 0)
   std::vector<Stair> stairs;
+  std::vector<Partition> partitions;   // interior walls dividing it into rooms
   float cell = 0.05f;    // triangle size; 0: every planar piece is two large triangles
   float noise = 0.0f;    // standard deviation of the vertex jitter, metres
   std::uint32_t seed = 1;
@@ -94,7 +108,7 @@ std::vector<glm::vec2> stair_footprint(const Stair& stair);
 
 // Ground-truth queries.
 bool inside_outline(const RoomSpec& spec, glm::vec2 p);
-float distance_to_walls(const RoomSpec& spec, glm::vec2 p);
+float distance_to_walls(const RoomSpec& spec, glm::vec2 p);  // the outline's and the partitions' (doorways too)
 // The furniture (box or table top) whose footprint covers p: its top height above floor_y, if any.
 std::optional<float> furniture_top_at(const RoomSpec& spec, glm::vec2 p);
 // Distance from p to the nearest furniture footprint edge (0 inside one).
@@ -107,6 +121,11 @@ RoomSpec rotated_room(float yaw_degrees);  // default_room turned about +Y: wall
 RoomSpec pentagon_room();                // walls at five different angles
 RoomSpec hall_room(float width = 20.0f, float depth = 14.0f);  // a large hall with furniture rows
 RoomSpec thesis_room1();                 // about 78k vertices, the size of the thesis's room 1
+// A 9 x 6 m flat of three rooms: a living room (x < 0.5), a bedroom (x > 0.5, z < 0) and a bathroom
+// (x > 0.5, z > 0), joined by 0.9 m doorways in 0.1 m partitions.
+RoomSpec three_room_flat();
+// The rectangles (x, z) of three_room_flat's rooms inside their walls, largest first.
+std::vector<Rect> three_room_flat_rooms();
 std::optional<RoomSpec> builtin(const std::string& name);
 std::vector<std::string> builtin_names();
 // Built-in buildings of several storeys.

@@ -1,4 +1,5 @@
-// Whole homes (issue 15): every storey found and analysed, against the synthetic house's ground truth.
+// Whole homes (issue 15): every storey found and analysed, and a storey split into rooms, against the ground
+// truth of the synthetic house and flat.
 #include "roomsense/analysis.h"
 #include "roomsense/bounds.h"
 #include "roomsense/export.h"
@@ -187,6 +188,99 @@ TEST(Storeys, SingleRoomsKeepOneStoreyEvenUnderAHighCeiling) {
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(r.storeys.size(), 1u);
   EXPECT_NEAR(r.ceiling_y, 4.5f, 0.05f);
+}
+
+// The flat's room containing p (ground truth), or -1.
+int true_room(glm::vec2 p, float margin) {
+  const std::vector<synth::Rect> rooms = synth::three_room_flat_rooms();
+  for (std::size_t i = 0; i < rooms.size(); ++i)
+    if (in_rect(rooms[i], p, margin)) return int(i);
+  return -1;
+}
+
+const AnalysisResult& flat() {
+  static const AnalysisResult r = analyze(synth::generate(synth::three_room_flat()));
+  return r;
+}
+
+TEST(Rooms, TheFlatHasItsThreeRoomsAtTheirPlacesAndSizes) {
+  const synth::RoomSpec spec = synth::three_room_flat();
+  const AnalysisResult& r = flat();
+  ASSERT_TRUE(r.ok());
+  ASSERT_EQ(r.storeys.size(), 1u);
+  const std::vector<synth::Rect> truth = synth::three_room_flat_rooms();
+  ASSERT_EQ(r.rooms.size(), truth.size());
+  std::vector<int> matched(truth.size(), 0);
+  for (const Room& room : r.rooms) {
+    const int t = true_room({room.center.x, room.center.z}, 0.0f);
+    ASSERT_GE(t, 0) << "a room centred at " << room.center.x << ", " << room.center.z;
+    ++matched[std::size_t(t)];
+    const synth::Rect& rect = truth[std::size_t(t)];
+    const float area = (rect.hi.x - rect.lo.x) * (rect.hi.y - rect.lo.y);
+    std::printf("[ figures  ] flat room %d: %.1f m2 of %.1f m2 inside its walls, floor %.3f, ceiling %.3f\n", t,
+                double(room.floor_area), double(area), double(room.floor_y), double(room.ceiling_y));
+    EXPECT_GT(room.floor_area, 0.85f * area);
+    EXPECT_LE(room.floor_area, 1.02f * area);
+    EXPECT_NEAR(room.floor_y, spec.floor_y, 0.05f);
+    EXPECT_NEAR(room.ceiling_y, spec.ceiling_y, 0.05f);
+  }
+  for (const int m : matched) EXPECT_EQ(m, 1);
+  // Largest first.
+  for (std::size_t k = 1; k < r.rooms.size(); ++k) EXPECT_GE(r.rooms[k - 1].floor_area, r.rooms[k].floor_area);
+}
+
+TEST(Rooms, EveryAreaOfTheFlatLiesInTheRoomItNamesAndTheFloorIsCovered) {
+  const synth::RoomSpec spec = synth::three_room_flat();
+  const AnalysisResult& r = flat();
+  ASSERT_TRUE(r.ok());
+  const std::vector<synth::Rect> truth = synth::three_room_flat_rooms();
+  std::vector<int> truth_of_room(r.rooms.size(), -1);
+  for (std::size_t k = 0; k < r.rooms.size(); ++k)
+    truth_of_room[k] = true_room({r.rooms[k].center.x, r.rooms[k].center.z}, 0.0f);
+  std::vector<std::array<int, 4>> by_type(r.rooms.size());
+  for (const Area& a : r.areas) {
+    ASSERT_NE(a.room, kNoRoom) << to_string(a.type) << " area at " << a.center.x << ", " << a.center.z;
+    ASSERT_LT(std::size_t(a.room), r.rooms.size());
+    ++by_type[std::size_t(a.room)][std::size_t(a.type) - 1];
+    const int t = truth_of_room[std::size_t(a.room)];
+    // Horizontal areas lie wholly in their room (to within a voxel); a wall area faces into it.
+    if (a.type == AreaType::Wall) {
+      const glm::vec3 front = a.center + 0.15f * a.normal;
+      EXPECT_EQ(true_room({front.x, front.z}, 0.1f), t) << "wall area at " << a.center.x << ", " << a.center.z;
+    } else {
+      for (const glm::vec3& c : a.corners) EXPECT_TRUE(in_rect(truth[std::size_t(t)], {c.x, c.z}, 0.1f))
+          << to_string(a.type) << " area at " << a.center.x << ", " << a.center.z;
+    }
+  }
+  for (std::size_t k = 0; k < r.rooms.size(); ++k) {
+    std::printf("[ figures  ] flat room %d: %d wall, %d floor, %d ceiling, %d furniture areas\n", truth_of_room[k],
+                by_type[k][0], by_type[k][1], by_type[k][2], by_type[k][3]);
+    EXPECT_GT(by_type[k][0], 0);
+    EXPECT_GT(by_type[k][1], 0);
+    EXPECT_GT(by_type[k][2], 0);
+  }
+  // Coverage of each room's free floor by its floor areas, on a 5 cm raster.
+  for (std::size_t k = 0; k < r.rooms.size(); ++k) {
+    const synth::Rect& rect = truth[std::size_t(truth_of_room[k])];
+    int free = 0, covered = 0;
+    for (float z = rect.lo.y + 0.025f; z < rect.hi.y; z += 0.05f)
+      for (float x = rect.lo.x + 0.025f; x < rect.hi.x; x += 0.05f) {
+        const glm::vec2 p{x, z};
+        if (synth::distance_to_walls(spec, p) <= 0.1f || synth::distance_to_furniture(spec, p) <= 0.1f) continue;
+        ++free;
+        for (const Area& a : r.areas) {
+          if (a.type != AreaType::Floor || a.room != int(k)) continue;
+          const glm::vec3 d = glm::vec3(x, a.center.y, z) - a.center;
+          if (std::fabs(glm::dot(d, a.x_axis())) <= a.half_width && std::fabs(glm::dot(d, a.y_axis())) <= a.half_height) {
+            ++covered;
+            break;
+          }
+        }
+      }
+    const double share = double(covered) / double(std::max(free, 1));
+    std::printf("[ figures  ] flat room %d: floor areas cover %.1f %% of its free floor\n", truth_of_room[k], 100.0 * share);
+    EXPECT_GE(share, 0.5);
+  }
 }
 
 }  // namespace

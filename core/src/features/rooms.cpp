@@ -1,0 +1,127 @@
+// Beyond the thesis (issue 15): a storey's free space split into rooms at doorways and narrow passages.
+#include "roomsense/features.h"
+
+#include "queries/distance_transform.h"
+#include "surfaces/regions.h"
+
+#include <algorithm>
+#include <deque>
+
+namespace roomsense {
+
+RoomSplit split_rooms(const GridSpec& spec, const std::vector<std::uint8_t>& inside,
+                      const std::vector<std::uint8_t>& walls, float min_passage, float min_room_area) {
+  const std::size_t columns = spec.column_count();
+  std::vector<std::uint8_t> free(columns, 0);
+  for (std::size_t c = 0; c < columns; ++c) free[c] = inside[c] && !walls[c] ? 1 : 0;
+  // A core cell has more than half the passage to the nearest blocked cell, centre to centre: a corridor of
+  // w cells has cores only when w > min_passage / voxel.
+  const std::vector<float> clearance = detail::distance_to_unmasked(spec.nx, spec.nz, free);
+  const float core_cells = 0.5f * min_passage / spec.voxel_size;
+  const detail::Components cores = detail::label_components(
+      spec.nx, spec.nz, [&](std::size_t c) { return free[c] && clearance[c] > core_cells + 1e-3f; },
+      [](std::size_t, std::size_t) { return true; });
+
+  // Every free column joins the core it reaches first through free columns (a breadth-first search from all
+  // cores at once, 4-connected, in column order on ties): a doorway is split where the two fronts meet.
+  std::vector<int> label(columns, kNoRoom);
+  std::deque<std::size_t> queue;
+  for (std::size_t c = 0; c < columns; ++c)
+    if (cores.label[c] >= 0) {
+      label[c] = cores.label[c];
+      queue.push_back(c);
+    }
+  int next = int(cores.sizes.size());
+  // Breadth-first from the queued columns over free unlabelled ones, each taking its parent's label.
+  const auto spread = [&] {
+    while (!queue.empty()) {
+      const std::size_t c = queue.front();
+      queue.pop_front();
+      const int x = int(c % std::size_t(spec.nx)), z = int(c / std::size_t(spec.nx));
+      const int nbr[4][2] = {{x - 1, z}, {x + 1, z}, {x, z - 1}, {x, z + 1}};
+      for (const auto& n : nbr) {
+        if (n[0] < 0 || n[1] < 0 || n[0] >= spec.nx || n[1] >= spec.nz) continue;
+        const std::size_t nc = spec.column(n[0], n[1]);
+        if (!free[nc] || label[nc] != kNoRoom) continue;
+        label[nc] = label[c];
+        queue.push_back(nc);
+      }
+    }
+  };
+  spread();
+  // Free space no core reaches (a closet narrower than the passage) is a room of its own.
+  for (std::size_t c = 0; c < columns; ++c) {
+    if (!free[c] || label[c] != kNoRoom) continue;
+    label[c] = next++;
+    queue.push_back(c);
+    spread();
+  }
+
+  // A room below min_room_area (a wide spot of a corridor, a core squeezed between two others) joins the room
+  // it shares the longest border with, the smallest first; one with no neighbour belongs to no room.
+  const double min_cells = double(min_room_area) / (double(spec.voxel_size) * double(spec.voxel_size));
+  std::vector<std::size_t> size(std::size_t(next), 0);
+  for (const int l : label)
+    if (l != kNoRoom) ++size[std::size_t(l)];
+  for (;;) {
+    int small = -1;
+    for (int l = 0; l < next; ++l)
+      if (size[std::size_t(l)] > 0 && double(size[std::size_t(l)]) < min_cells &&
+          (small < 0 || size[std::size_t(l)] < size[std::size_t(small)]))
+        small = l;
+    if (small < 0) break;
+    std::vector<std::size_t> border(std::size_t(next), 0);
+    for (int z = 0; z < spec.nz; ++z)
+      for (int x = 0; x < spec.nx; ++x) {
+        if (label[spec.column(x, z)] != small) continue;
+        const int nbr[4][2] = {{x - 1, z}, {x + 1, z}, {x, z - 1}, {x, z + 1}};
+        for (const auto& n : nbr)
+          if (n[0] >= 0 && n[1] >= 0 && n[0] < spec.nx && n[1] < spec.nz) {
+            const int other = label[spec.column(n[0], n[1])];
+            if (other != kNoRoom && other != small) ++border[std::size_t(other)];
+          }
+      }
+    const auto most = std::max_element(border.begin(), border.end());
+    const int into = *most > 0 ? int(most - border.begin()) : kNoRoom;
+    for (int& l : label)
+      if (l == small) l = into;
+    if (into != kNoRoom) size[std::size_t(into)] += size[std::size_t(small)];
+    size[std::size_t(small)] = 0;
+  }
+
+  // Rooms numbered by size, largest first (then by their first column), so that room 0 is the main room.
+  std::vector<std::size_t> first(std::size_t(next), columns);
+  for (std::size_t c = 0; c < columns; ++c)
+    if (label[c] != kNoRoom) first[std::size_t(label[c])] = std::min(first[std::size_t(label[c])], c);
+  std::vector<int> order;
+  for (int l = 0; l < next; ++l)
+    if (size[std::size_t(l)] > 0) order.push_back(l);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    if (size[std::size_t(a)] != size[std::size_t(b)]) return size[std::size_t(a)] > size[std::size_t(b)];
+    return first[std::size_t(a)] < first[std::size_t(b)];
+  });
+  std::vector<int> rank(static_cast<std::size_t>(next), kNoRoom);
+  for (std::size_t i = 0; i < order.size(); ++i) rank[std::size_t(order[i])] = int(i);
+  RoomSplit out;
+  out.count = int(order.size());
+  out.room = std::move(label);
+  for (int& r : out.room)
+    if (r != kNoRoom) r = rank[std::size_t(r)];
+  return out;
+}
+
+int room_at(const GridSpec& spec, const RoomSplit& rooms, int x, int z, int reach) {
+  // The nearest labelled column by Chebyshev rings, then by scan order within a ring.
+  for (int d = 0; d <= reach; ++d)
+    for (int dz = -d; dz <= d; ++dz)
+      for (int dx = -d; dx <= d; ++dx) {
+        if (std::max(std::abs(dx), std::abs(dz)) != d) continue;
+        const int cx = x + dx, cz = z + dz;
+        if (cx < 0 || cz < 0 || cx >= spec.nx || cz >= spec.nz) continue;
+        const int r = rooms.room[spec.column(cx, cz)];
+        if (r != kNoRoom) return r;
+      }
+  return kNoRoom;
+}
+
+}  // namespace roomsense

@@ -28,6 +28,7 @@ static_assert(sizeof(rs_vec3) == 12 && sizeof(rs_quat) == 16);
 static_assert(sizeof(rs_area) == 4 * 4 + 2 * 12 + 16 + 4 * 12 + 4 * 4);
 static_assert(sizeof(rs_analyzer_options) == 7 * 4);
 static_assert(sizeof(rs_placement) == 3 * 4 + 2 * 12 + 16 + 4 * 12 + 3 * 4);
+static_assert(sizeof(rs_room) == 4 * 4 + 12 && sizeof(rs_area_place) == 8 && RS_NO_ROOM == roomsense::kNoRoom);
 static_assert(sizeof(rs_ray_hit) == 4 * 4 + 2 * 12 && sizeof(rs_surface_point) == 2 * 4 + 2 * 12);
 // The query has no implicit padding: `reserved` fills the 4 bytes before the 8-byte seed.
 static_assert(sizeof(rs_placement_query) == 104 && offsetof(rs_placement_query, reserved) == 92 &&
@@ -59,6 +60,8 @@ struct HandleOutput {
   rs_layout layout{};
   std::vector<rs_storey> storeys;
   std::vector<rs_area> areas;
+  std::vector<rs_area_place> area_places;  // one per area
+  std::vector<rs_room> rooms;
   std::vector<float> bounds_xyz;
   std::vector<std::uint32_t> bounds_indices;
   RoomQueries queries;  // immutable and shared: copied out of the lock and queried there
@@ -152,6 +155,10 @@ HandleOutput convert(const AnalysisResult& r) {
   for (const Storey& s : r.storeys) out.storeys.push_back({s.floor_y, s.ceiling_y});
   out.areas.reserve(r.areas.size());
   for (const Area& a : r.areas) out.areas.push_back(to_c(a));
+  out.area_places.reserve(r.areas.size());
+  for (const Area& a : r.areas) out.area_places.push_back({a.storey, a.room});
+  for (const Room& room : r.rooms)
+    out.rooms.push_back({room.storey, room.floor_area, to_c(room.center), room.floor_y, room.ceiling_y});
   out.bounds_xyz.reserve(r.bounds.vertices.size() * 3);
   for (const glm::vec3& v : r.bounds.vertices) out.bounds_xyz.insert(out.bounds_xyz.end(), {v.x, v.y, v.z});
   out.bounds_indices = r.bounds.indices;
@@ -484,6 +491,25 @@ rs_result rs_analyzer_get_areas(rs_analyzer* analyzer, uint32_t capacity, uint32
   return guarded([&] {
     return with_ready_output(analyzer, false,
                              [&](const HandleOutput& o) { return copy_out(o.areas, capacity, count, areas); });
+  });
+}
+
+rs_result rs_analyzer_get_rooms(rs_analyzer* analyzer, uint32_t capacity, uint32_t* count, rs_room* rooms) {
+  if (analyzer != nullptr && (count == nullptr || (capacity != 0 && rooms == nullptr)))
+    return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    return with_ready_output(analyzer, false,
+                             [&](const HandleOutput& o) { return copy_out(o.rooms, capacity, count, rooms); });
+  });
+}
+
+rs_result rs_analyzer_get_area_places(rs_analyzer* analyzer, uint32_t capacity, uint32_t* count,
+                                      rs_area_place* places) {
+  if (analyzer != nullptr && (count == nullptr || (capacity != 0 && places == nullptr)))
+    return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    return with_ready_output(analyzer, false,
+                             [&](const HandleOutput& o) { return copy_out(o.area_places, capacity, count, places); });
   });
 }
 

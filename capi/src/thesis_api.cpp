@@ -24,6 +24,7 @@ constexpr int kRunning = -1;            // Retrieve: not finished yet
 constexpr int kNoResult = 1;            // Retrieve: finished without a result
 
 constexpr int kFloatsPerArea = 11;
+constexpr int kFloatsPerPlace = 2;      // RetrieveRoomUnderstandingPlaces
 // Bounds indices travel as floats; every integer below 2^24 is exact in a float.
 constexpr std::size_t kMaxExactFloatIndex = std::size_t{1} << 24;
 
@@ -59,10 +60,14 @@ ThesisOutput understand(const Scan& scan, std::stop_token stop) {
   const AnalysisResult result = analyze(scan, options);
   ThesisOutput out;
   if (!result.ok()) return out;
-  if (result.areas.size() > std::size_t(INT_MAX / kFloatsPerArea)) return out;
-  out.data.reserve(result.areas.size() * kFloatsPerArea + 1);  // + 1: a valid pointer for zero areas
+  if (result.areas.size() > std::size_t(INT_MAX / (kFloatsPerArea + kFloatsPerPlace))) return out;
+  // The thesis's array, then (beyond the thesis) each area's storey and room: RetrieveRoomUnderstandingPlaces.
+  out.data.reserve(result.areas.size() * (kFloatsPerArea + kFloatsPerPlace) + 1);  // + 1: a valid pointer for zero areas
   for (const Area& area : result.areas) append_area(out.data, area);
   out.first_size = static_cast<int>(out.data.size());
+  for (const Area& area : result.areas)
+    out.data.insert(out.data.end(), {static_cast<float>(area.storey), static_cast<float>(area.room)});
+  out.second_size = static_cast<int>(out.data.size()) - out.first_size;
   out.code = kOk;
   return out;
 }
@@ -158,6 +163,16 @@ int StartRoomUnderstanding(const float* VertexPositions, int ArraySize) {
 float* RetrieveRoomUnderstanding(int* OutErrorCode, int* OutArraySize) {
   try {
     return retrieve(understanding_job(), OutErrorCode, OutArraySize, nullptr);
+  } catch (...) {
+    return nullptr;
+  }
+}
+
+float* RetrieveRoomUnderstandingPlaces(int* OutErrorCode, int* OutArraySize) {
+  try {
+    int areas_size = 0;
+    float* const areas = retrieve(understanding_job(), OutErrorCode, &areas_size, OutArraySize);
+    return areas == nullptr ? nullptr : areas + areas_size;
   } catch (...) {
     return nullptr;
   }

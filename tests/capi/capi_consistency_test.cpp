@@ -14,6 +14,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <set>
 #include <thread>
 #include <vector>
 
@@ -345,6 +346,81 @@ TEST_P(CapiConsistency, HandleQueriesAreCoreQueries) {
   EXPECT_EQ(on_surface, 16);
   EXPECT_EQ(in_room, 16);
   rs_analyzer_destroy(analyzer);
+}
+
+// Issue 15: where each area lies (storey, room) and the rooms, through both C APIs, are analyze()'s, on the
+// three-room flat and the two-storey house.
+std::vector<Scan> whole_home_scans() {
+  return {synth::generate(*synth::builtin("flat")), synth::generate(*synth::builtin_house("house"))};
+}
+
+TEST(CapiWholeHomes, ThesisPlacesAreAnalyzePlaces) {
+  for (const Scan& scan : whole_home_scans()) {
+    const std::vector<float> flat = flat_vertices(scan);
+    AnalysisOptions options;
+    options.build_bounds = false;
+    const AnalysisResult expected = analyze(scan_from_flat_array(flat.data(), static_cast<long long>(flat.size())),
+                                            options);
+    ASSERT_TRUE(expected.ok()) << expected.status_message;
+    ASSERT_EQ(RoomCreator::StartRoomUnderstanding(flat.data(), static_cast<int>(flat.size())), 0);
+    int code = -1, size = 0, places_size = -1;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+    while (RoomCreator::RetrieveRoomUnderstanding(&code, &size), code == -1 && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_EQ(code, 0);
+    const float* places = RoomCreator::RetrieveRoomUnderstandingPlaces(&code, &places_size);
+    ASSERT_EQ(code, 0);
+    ASSERT_NE(places, nullptr);
+    ASSERT_EQ(size, int(expected.areas.size()) * 11);
+    ASSERT_EQ(places_size, int(expected.areas.size()) * 2);
+    std::set<std::pair<int, int>> seen;
+    for (std::size_t i = 0; i < expected.areas.size(); ++i) {
+      EXPECT_EQ(places[2 * i], float(expected.areas[i].storey)) << "area " << i;
+      EXPECT_EQ(places[2 * i + 1], float(expected.areas[i].room)) << "area " << i;
+      seen.insert({int(places[2 * i]), int(places[2 * i + 1])});
+    }
+    // Not all zeros: the flat's areas lie in its three rooms, the house's on its two storeys.
+    EXPECT_GE(seen.size(), 2u);
+    EXPECT_EQ(RoomCreator::CleanUpRoomUnderstanding(), 0);
+    RoomCreator::RetrieveRoomUnderstandingPlaces(&code, &places_size);
+    EXPECT_EQ(code, 1);
+    EXPECT_EQ(places_size, 0);
+  }
+}
+
+TEST(CapiWholeHomes, HandleRoomsAndPlacesAreAnalyzes) {
+  for (const Scan& scan : whole_home_scans()) {
+    const AnalysisResult expected = analyze(scan);
+    ASSERT_TRUE(expected.ok());
+    ASSERT_GE(expected.rooms.size(), 2u);
+    rs_analyzer* analyzer = computed(scan);
+    ASSERT_NE(analyzer, nullptr);
+    uint32_t count = 0;
+    ASSERT_EQ(rs_analyzer_get_rooms(analyzer, 0, &count, nullptr), RS_SUCCESS);
+    ASSERT_EQ(count, expected.rooms.size());
+    std::vector<rs_room> rooms(count);
+    EXPECT_EQ(rs_analyzer_get_rooms(analyzer, 1, &count, rooms.data()), RS_ERROR_SIZE_INSUFFICIENT);
+    ASSERT_EQ(rs_analyzer_get_rooms(analyzer, count, &count, rooms.data()), RS_SUCCESS);
+    for (std::size_t k = 0; k < rooms.size(); ++k) {
+      const Room& want = expected.rooms[k];
+      EXPECT_EQ(rooms[k].storey, want.storey);
+      EXPECT_EQ(rooms[k].floor_area, want.floor_area);
+      expect_equal(rooms[k].center, want.center);
+      EXPECT_EQ(rooms[k].floor_y, want.floor_y);
+      EXPECT_EQ(rooms[k].ceiling_y, want.ceiling_y);
+    }
+    ASSERT_EQ(rs_analyzer_get_area_places(analyzer, 0, &count, nullptr), RS_SUCCESS);
+    ASSERT_EQ(count, expected.areas.size());
+    std::vector<rs_area_place> places(count);
+    ASSERT_EQ(rs_analyzer_get_area_places(analyzer, count, &count, places.data()), RS_SUCCESS);
+    for (std::size_t i = 0; i < places.size(); ++i) {
+      EXPECT_EQ(places[i].storey, expected.areas[i].storey) << "area " << i;
+      EXPECT_EQ(places[i].room, expected.areas[i].room) << "area " << i;
+    }
+    EXPECT_EQ(rs_analyzer_get_area_places(analyzer, 0, nullptr, nullptr), RS_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(rs_analyzer_get_rooms(analyzer, 2, &count, nullptr), RS_ERROR_INVALID_ARGUMENT);
+    rs_analyzer_destroy(analyzer);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Rooms, CapiConsistency, ::testing::Values("default", "rotated", "pentagon"),

@@ -2,7 +2,7 @@
  * flattened vertex array: Unity through DllImport("RoomCreatorLibrary"), Unreal, or plain C.
  *
  * Six functions in two independent pairs of jobs, room understanding (placement areas) and room bounds (a
- * closed, simplified room mesh). Each job runs on a worker thread of the library; the caller polls:
+ * closed, simplified room mesh), and one addition, RetrieveRoomUnderstandingPlaces. Each job runs on a worker thread of the library; the caller polls:
  *
  *     int code = StartRoomUnderstanding(xyz, 3 * vertex_count);       // 0: started
  *     float* areas; int size;
@@ -56,6 +56,13 @@
  *           type 64 wall, 128 floor, 256 furniture, 512 ceiling.
  *   Areas come as walls, floors, ceilings, furniture; large before medium before small.
  *
+ * RetrieveRoomUnderstandingPlaces(OutErrorCode, OutArraySize): beyond the thesis, where each area lies: 2 floats
+ *   per area, in the order of RetrieveRoomUnderstanding's array (OutArraySize is 2/11 of its size): the storey
+ *   (0 the main storey, then the others) and the room (its index among the rooms of the whole scan, storey by
+ *   storey, each storey's largest first; -1: none), as floats; (int)f gives the number. The same codes,
+ *   lifetime and job as RetrieveRoomUnderstanding: valid until CleanUpRoomUnderstanding. A room is a storey's
+ *   free space up to passages at most 1.2 m wide between walls (a doorway, a narrow corridor).
+ *
  * RetrieveRoomBounds: one array of *OutVertexSize + *OutTriangleSize floats: first the vertices, x,y,z
  *   each (*OutVertexSize is a multiple of 3, no vertex twice), then the triangles, three vertex indices
  *   each, stored as floats (*OutTriangleSize is a multiple of 3; (int)f is the index). Sizes are element
@@ -107,6 +114,7 @@ extern "C" {
 ROOMSENSE_CAPI_EXPORT int StartRoomUnderstanding(const float* VertexPositions, int ArraySize);
 ROOMSENSE_CAPI_EXPORT float* RetrieveRoomUnderstanding(int* OutErrorCode, int* OutArraySize);
 ROOMSENSE_CAPI_EXPORT int CleanUpRoomUnderstanding(void);
+ROOMSENSE_CAPI_EXPORT float* RetrieveRoomUnderstandingPlaces(int* OutErrorCode, int* OutArraySize);
 
 ROOMSENSE_CAPI_EXPORT int StartRoomBounds(const float* VertexPositions, int ArraySize);
 ROOMSENSE_CAPI_EXPORT float* RetrieveRoomBounds(int* OutErrorCode, int* OutVertexSize, int* OutTriangleSize);
@@ -119,6 +127,7 @@ namespace RoomCreator {  // the thesis's namespace
 using ::StartRoomUnderstanding;
 using ::RetrieveRoomUnderstanding;
 using ::CleanUpRoomUnderstanding;
+using ::RetrieveRoomUnderstandingPlaces;
 using ::StartRoomBounds;
 using ::RetrieveRoomBounds;
 using ::CleanUpRoomBounds;

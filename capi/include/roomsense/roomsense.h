@@ -56,7 +56,7 @@ extern "C" {
  * a library with the same major version as the header is compatible. */
 #define RS_MAKE_VERSION(major, minor, patch) \
   ((((uint32_t)(major)) << 22) | (((uint32_t)(minor)) << 12) | ((uint32_t)(patch)))
-#define RS_API_VERSION RS_MAKE_VERSION(1, 1, 0)  /* 1.1: placement queries */
+#define RS_API_VERSION RS_MAKE_VERSION(1, 2, 0)  /* 1.1: placement queries; 1.2: rooms */
 
 /* Every enum has a _MAX_ENUM member, as in OpenXR: it makes the enum 32 bits wide in every compiler and
  * lets C++ hold any 32-bit value a caller passes (options are checked, not trusted).
@@ -222,6 +222,31 @@ typedef struct rs_area {
 /* The areas: walls, floors, ceilings, furniture; large before medium before small (two-call idiom). */
 ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_get_areas(rs_analyzer* analyzer, uint32_t capacity, uint32_t* count,
                                                       rs_area* areas);
+
+/* ---- Rooms (API 1.2) ----
+ * Each storey's free space split into rooms at doorways and passages at most 1.2 m wide between walls. */
+#define RS_NO_ROOM (-1)
+
+/* A room: its storey (an index into rs_analyzer_get_storeys), its free floor and where it is. */
+typedef struct rs_room {
+  uint32_t storey;
+  float floor_area;        /* m² of free floor columns */
+  rs_vec3 center;          /* the centroid of its free floor, at its floor's height */
+  float floor_y, ceiling_y;
+} rs_room;
+
+/* The rooms, storey by storey, each storey's largest first (two-call idiom). */
+ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_get_rooms(rs_analyzer* analyzer, uint32_t capacity, uint32_t* count,
+                                                      rs_room* rooms);
+
+/* Where an area lies: element i belongs to element i of rs_analyzer_get_areas (the same count). */
+typedef struct rs_area_place {
+  uint32_t storey;         /* index into rs_analyzer_get_storeys; 0: the main storey */
+  int32_t room;            /* index into rs_analyzer_get_rooms, or RS_NO_ROOM */
+} rs_area_place;
+
+ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_get_area_places(rs_analyzer* analyzer, uint32_t capacity,
+                                                            uint32_t* count, rs_area_place* places);
 
 /* The room-bounds mesh: the surface of the solid bounds volume (thesis §3.6), closed, each vertex once,
  * counter-clockwise front faces towards free space (inside the room, towards the room). Capacities and counts are in vertices (xyz holds 3 floats per vertex) and in indices (3 per

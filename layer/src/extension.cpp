@@ -6,6 +6,7 @@
 #include "log.h"
 #include "state.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -148,8 +149,23 @@ XrResult XRAPI_CALL xrGetRoomLayoutEXTX(XrRoomAnalyzerEXTX analyzer, XrRoomLayou
     if (!has_type(layout, XR_TYPE_ROOM_LAYOUT_EXTX)) return XR_ERROR_VALIDATION_FAILURE;
     auto* json = find_next<XrRoomAnalysisJsonEXTX>(layout->next, XR_TYPE_ROOM_ANALYSIS_JSON_EXTX);
     if (json != nullptr && json->jsonCapacityInput > 0 && json->json == nullptr) return XR_ERROR_VALIDATION_FAILURE;
+    auto* home = find_next<XrRoomHomeLayoutEXTX>(layout->next, XR_TYPE_ROOM_HOME_LAYOUT_EXTX);
+    if (home != nullptr && ((home->storeyCapacityInput > 0 && home->storeys == nullptr) ||
+                            (home->roomCapacityInput > 0 && home->rooms == nullptr)))
+      return XR_ERROR_VALIDATION_FAILURE;
     const std::shared_ptr<const RoomResult> result = a->latest();
     if (!result) return XR_ERROR_CALL_ORDER_INVALID;
+    if (home != nullptr) {
+      const auto storeys = static_cast<uint32_t>(result->storeys.size());
+      const auto rooms = static_cast<uint32_t>(result->rooms.size());
+      home->storeyCountOutput = storeys;
+      home->roomCountOutput = rooms;
+      if ((home->storeyCapacityInput > 0 && home->storeyCapacityInput < storeys) ||
+          (home->roomCapacityInput > 0 && home->roomCapacityInput < rooms))
+        return XR_ERROR_SIZE_INSUFFICIENT;
+      if (home->storeyCapacityInput > 0) std::copy(result->storeys.begin(), result->storeys.end(), home->storeys);
+      if (home->roomCapacityInput > 0) std::copy(result->rooms.begin(), result->rooms.end(), home->rooms);
+    }
     if (json != nullptr) {
       const auto needed = static_cast<uint32_t>(result->json.size() + 1);
       json->jsonCountOutput = needed;
@@ -160,7 +176,7 @@ XrResult XRAPI_CALL xrGetRoomLayoutEXTX(XrRoomAnalyzerEXTX analyzer, XrRoomLayou
     }
     layout->floorHeight = result->floor_y;
     layout->ceilingHeight = result->ceiling_y;
-    layout->storeyCount = result->storeys;
+    layout->storeyCount = static_cast<uint32_t>(result->storeys.size());
     layout->boundsMin = result->bounds_min;
     layout->boundsMax = result->bounds_max;
     layout->inputVertexCount = result->input_vertices;
@@ -188,6 +204,11 @@ XrResult XRAPI_CALL xrGetRoomAreasEXTX(XrRoomAnalyzerEXTX analyzer, uint32_t are
       void* next = areas[i].next;  // the application's chain stays as it was
       areas[i] = result->areas[i];
       areas[i].next = next;
+      if (auto* location = find_next<XrRoomAreaLocationEXTX>(next, XR_TYPE_ROOM_AREA_LOCATION_EXTX)) {
+        void* after = location->next;
+        *location = result->area_locations[i];
+        location->next = after;
+      }
     }
     return XR_SUCCESS;
   });

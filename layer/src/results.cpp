@@ -50,9 +50,16 @@ RoomResult make_room_result(const AnalysisResult& r, const MeshSources& sources,
   RoomResult out;
   out.floor_y = r.floor_y;
   out.ceiling_y = r.ceiling_y;
-  out.storeys = clamp32(r.storeys.size());
+  for (const Storey& s : r.storeys) out.storeys.push_back({s.floor_y, s.ceiling_y});
+  for (const Room& room : r.rooms)
+    out.rooms.push_back({room.storey, room.floor_area, {room.center.x, room.center.y, room.center.z}, room.floor_y,
+                         room.ceiling_y});
   out.areas.reserve(r.areas.size());
-  for (const Area& a : r.areas) out.areas.push_back(to_xr(a));
+  for (const Area& a : r.areas) {
+    out.areas.push_back(to_xr(a));
+    out.area_locations.push_back({XR_TYPE_ROOM_AREA_LOCATION_EXTX, nullptr, a.storey,
+                                  a.room == kNoRoom ? XR_ROOM_INDEX_NONE_EXTX : static_cast<std::uint32_t>(a.room)});
+  }
   out.bounds_vertices.reserve(r.bounds.vertices.size());
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
   for (const glm::vec3& v : r.bounds.vertices) {

@@ -21,8 +21,10 @@ inline constexpr const char* kJsonSourceName = "openxr:XR_APILAYER_ROOMSENSE_roo
 
 struct RoomResult {
   float floor_y = 0.0f, ceiling_y = 0.0f;
-  std::uint32_t storeys = 0;
-  std::vector<XrRoomAreaEXTX> areas;  // type set, next null
+  std::vector<XrRoomStoreyEXTX> storeys;        // main first
+  std::vector<XrRoomInfoEXTX> rooms;
+  std::vector<XrRoomAreaEXTX> areas;            // type set, next null
+  std::vector<XrRoomAreaLocationEXTX> area_locations;  // one per area; type set, next null
   std::vector<XrVector3f> bounds_vertices;
   std::vector<std::uint32_t> bounds_indices;
   XrVector3f bounds_min{0, 0, 0}, bounds_max{0, 0, 0};

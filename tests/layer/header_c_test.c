@@ -28,11 +28,22 @@ int main(void) {
     memset(&query, 0, sizeof query);
     query.type = XR_TYPE_ROOM_PLACEMENT_QUERY_EXTX;
     query.surfaces = XR_ROOM_SURFACE_WALL_BIT_EXTX | XR_ROOM_SURFACE_FURNITURE_BIT_EXTX;
-    if (XR_EXTX_room_understanding_SPEC_VERSION != 2 || query.surfaces != 9 || (long)query.type != 1099999009L ||
+    if (query.surfaces != 9 || (long)query.type != 1099999009L ||
         (long)XR_TYPE_ROOM_POINT_LOCATION_EXTX != 1099999016L || XR_ROOM_PLACEMENT_SHORTFALL_TOO_FEW_EXTX != 5 ||
         XR_ROOM_REACH_FILTER_DISTANCE_EXTX != 2 || placements.placementCapacityInput != 0)
       return 1;
     (void)place, (void)raycast, (void)random_point, (void)locate;
+  }
+  {
+    /* Spec version 3: storeys and rooms. */
+    XrRoomStoreyEXTX storeys[2];
+    XrRoomInfoEXTX rooms[4];
+    XrRoomHomeLayoutEXTX home = {XR_TYPE_ROOM_HOME_LAYOUT_EXTX, NULL, 2, 0, storeys, 4, 0, rooms};
+    XrRoomAreaLocationEXTX location = {XR_TYPE_ROOM_AREA_LOCATION_EXTX, NULL, 0, XR_ROOM_INDEX_NONE_EXTX};
+    area.next = &location;
+    if (XR_EXTX_room_understanding_SPEC_VERSION != 3 || (long)home.type != 1099999017L ||
+        (long)location.type != 1099999018L || location.roomIndex != 0xFFFFFFFFu || home.rooms != rooms)
+      return 1;
   }
   (void)get_areas;
   printf("XR_EXTX_room_understanding.h: C ok, %u-byte XrRoomAreaEXTX\n", (unsigned)sizeof area);

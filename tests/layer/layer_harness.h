@@ -204,6 +204,9 @@ struct App {
 struct Result {
   XrRoomLayoutEXTX layout{XR_TYPE_ROOM_LAYOUT_EXTX, nullptr};
   std::vector<XrRoomAreaEXTX> areas;
+  std::vector<XrRoomAreaLocationEXTX> area_locations;  // chained to each area (spec version 3)
+  std::vector<XrRoomStoreyEXTX> storeys;                // XrRoomHomeLayoutEXTX
+  std::vector<XrRoomInfoEXTX> rooms;
   std::vector<XrVector3f> vertices;
   std::vector<uint32_t> indices;
   std::string json;
@@ -211,19 +214,29 @@ struct Result {
 
 inline Result read_result(const Extx& extx, XrRoomAnalyzerEXTX a) {
   Result r;
-  XrRoomAnalysisJsonEXTX json{XR_TYPE_ROOM_ANALYSIS_JSON_EXTX, nullptr};
+  XrRoomHomeLayoutEXTX home{XR_TYPE_ROOM_HOME_LAYOUT_EXTX, nullptr};
+  XrRoomAnalysisJsonEXTX json{XR_TYPE_ROOM_ANALYSIS_JSON_EXTX, &home};
   r.layout.next = &json;
   LT_CHECK(extx.layout(a, &r.layout));
   std::vector<char> text(json.jsonCountOutput);
   json.jsonCapacityInput = json.jsonCountOutput;
   json.json = text.data();
+  r.storeys.resize(home.storeyCountOutput);
+  r.rooms.resize(home.roomCountOutput);
+  home.storeyCapacityInput = home.storeyCountOutput;
+  home.storeys = r.storeys.data();
+  home.roomCapacityInput = home.roomCountOutput;
+  home.rooms = r.rooms.data();
   LT_CHECK(extx.layout(a, &r.layout));
   r.layout.next = nullptr;
   r.json.assign(text.data(), text.empty() ? 0 : text.size() - 1);
   uint32_t count = 0;
   LT_CHECK(extx.areas(a, 0, &count, nullptr));
+  r.area_locations.assign(count, {XR_TYPE_ROOM_AREA_LOCATION_EXTX, nullptr});
   r.areas.assign(count, {XR_TYPE_ROOM_AREA_EXTX, nullptr});
+  for (uint32_t i = 0; i < count; ++i) r.areas[i].next = &r.area_locations[i];
   LT_CHECK(extx.areas(a, count, &count, r.areas.data()));
+  for (XrRoomAreaEXTX& area : r.areas) area.next = nullptr;
   XrRoomBoundsMeshEXTX bounds{XR_TYPE_ROOM_BOUNDS_MESH_EXTX, nullptr};
   LT_CHECK(extx.bounds(a, &bounds));
   r.vertices.resize(bounds.vertexCountOutput);

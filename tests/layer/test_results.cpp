@@ -21,6 +21,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 namespace {
 
 using namespace layertest;
@@ -49,6 +51,49 @@ TEST(LayerResults, SubmittedSyntheticRoomMatchesAnalyzeAndTheCliExactly) {
   EXPECT_FALSE(want.areas.empty()) << "the pipeline finds no areas in the default room";
   expect_identical(got, want);
   expect_same_room_json(nlohmann::json::parse(got.json), run_cli("synthetic:default"));
+}
+
+// Spec version 3 on whole homes: every storey's heights, the rooms and each area's storey and room are
+// analyze()'s, and there is more than one of each (the flat's three rooms, the house's two storeys).
+TEST(LayerResults, SubmittedWholeHomesSayEachAreasStoreyAndRoom) {
+  for (const char* source : {"synthetic:flat", "synthetic:house"}) {
+    SCOPED_TRACE(source);
+    const roomsense::Scan scan = roomsense::synth::generate_builtin_source(source);
+    const Result got = analyse_submitted(scan);
+    const roomsense::AnalysisResult want = roomsense::analyze(scan);
+    ASSERT_TRUE(want.ok());
+    expect_identical(got, want);
+    EXPECT_GE(got.rooms.size(), 2u);
+    EXPECT_EQ(got.layout.storeyCount, got.storeys.size());
+    std::set<std::uint32_t> storeys, rooms;
+    for (const XrRoomAreaLocationEXTX& l : got.area_locations) {
+      storeys.insert(l.storeyIndex);
+      rooms.insert(l.roomIndex);
+    }
+    EXPECT_EQ(storeys.size(), got.storeys.size());
+    EXPECT_GE(rooms.size(), 2u);
+  }
+}
+
+// The two-call idiom on the home layout: counts alone, a too-small array, a null array with a capacity.
+TEST(LayerResults, HomeLayoutFollowsTheTwoCallIdiom) {
+  App app;
+  const XrRoomAnalyzerEXTX a = app.analyzer();
+  const roomsense::Scan scan = roomsense::synth::generate_builtin_source("synthetic:flat");
+  app.submit(a, xr_vertices(scan), scan.indices);
+  ASSERT_EQ(app.compute(a, false), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  XrRoomHomeLayoutEXTX home{XR_TYPE_ROOM_HOME_LAYOUT_EXTX, nullptr};
+  XrRoomLayoutEXTX layout{XR_TYPE_ROOM_LAYOUT_EXTX, &home};
+  ASSERT_EQ(app.extx.layout(a, &layout), XR_SUCCESS);
+  EXPECT_EQ(home.storeyCountOutput, 1u);
+  EXPECT_EQ(home.roomCountOutput, 3u);
+  std::vector<XrRoomInfoEXTX> rooms(2);
+  home.roomCapacityInput = 2;
+  home.rooms = rooms.data();
+  EXPECT_EQ(app.extx.layout(a, &layout), XR_ERROR_SIZE_INSUFFICIENT);
+  EXPECT_EQ(home.roomCountOutput, 3u);
+  home.rooms = nullptr;
+  EXPECT_EQ(app.extx.layout(a, &layout), XR_ERROR_VALIDATION_FAILURE);
 }
 
 // The Vulkan voxel stage through the layer (lavapipe where there is no GPU): the same room as the CPU path,

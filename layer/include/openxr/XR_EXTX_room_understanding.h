@@ -24,6 +24,9 @@
 **      xrFindRoomPlacementsEXTX (where an object of a given size fits: poses best first, two-call idiom),
 **      xrRaycastRoomEXTX, xrGetRoomRandomPointEXTX and xrLocateRoomPointEXTX. Each is deterministic for a given
 **      query and seed. A query the room cannot satisfy succeeds with no result and says why.
+**   7. Spec version 3: whole homes. Chain XrRoomHomeLayoutEXTX to XrRoomLayoutEXTX::next for every storey's
+**      heights and the rooms (each storey's free space split at doorways and passages at most 1.2 m wide
+**      between walls), and XrRoomAreaLocationEXTX to an XrRoomAreaEXTX's next for that area's storey and room.
 **   Destroying the session (or the instance) destroys its analyzers, also while an analysis runs. Once the
 **   runtime answered one of the layer's calls in the session with XR_ERROR_SESSION_LOST (the compute then ends
 **   FAILED), xrCreateRoomAnalyzerEXTX and xrComputeRoomEXTX return XR_ERROR_SESSION_LOST for that session.
@@ -43,7 +46,7 @@ extern "C" {
 #endif
 
 #define XR_EXTX_room_understanding 1
-#define XR_EXTX_room_understanding_SPEC_VERSION 2
+#define XR_EXTX_room_understanding_SPEC_VERSION 3
 #define XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME "XR_EXTX_room_understanding"
 
 XR_DEFINE_HANDLE(XrRoomAnalyzerEXTX)
@@ -68,6 +71,12 @@ XR_DEFINE_HANDLE(XrRoomAnalyzerEXTX)
 #define XR_TYPE_ROOM_RANDOM_POINT_INFO_EXTX ((XrStructureType)1099999014)
 #define XR_TYPE_ROOM_POINT_EXTX ((XrStructureType)1099999015)
 #define XR_TYPE_ROOM_POINT_LOCATION_EXTX ((XrStructureType)1099999016)
+/* Spec version 3: storeys and rooms. */
+#define XR_TYPE_ROOM_HOME_LAYOUT_EXTX ((XrStructureType)1099999017)
+#define XR_TYPE_ROOM_AREA_LOCATION_EXTX ((XrStructureType)1099999018)
+
+/* XrRoomAreaLocationEXTX::roomIndex of an area in no room. */
+#define XR_ROOM_INDEX_NONE_EXTX 0xFFFFFFFFu
 
 #define XR_OBJECT_TYPE_ROOM_ANALYZER_EXTX ((XrObjectType)1099999000)
 
@@ -183,6 +192,45 @@ typedef struct XrRoomBoundsMeshEXTX {
     uint32_t indexCountOutput;
     uint32_t* indices; /* CCW triangles facing free space */
 } XrRoomBoundsMeshEXTX;
+
+/* ---- Storeys and rooms (spec version 3) ---- */
+
+typedef struct XrRoomStoreyEXTX {
+    float floorHeight;   /* y of the storey's scanned floor surface */
+    float ceilingHeight; /* y of its ceiling surface */
+} XrRoomStoreyEXTX;
+
+/* A room: a storey's free space up to doorways and passages at most 1.2 m wide between walls. */
+typedef struct XrRoomInfoEXTX {
+    uint32_t storeyIndex; /* into XrRoomHomeLayoutEXTX::storeys */
+    float floorArea;      /* m² of free floor */
+    XrVector3f center;    /* the centroid of its free floor, at its floor's height */
+    float floorHeight;
+    float ceilingHeight;
+} XrRoomInfoEXTX;
+
+/* Chained to XrRoomLayoutEXTX::next. Two-call idiom on both arrays (as XrRoomBoundsMeshEXTX): the counts are
+** always written; an array with a non-zero capacity below its count makes the call return
+** XR_ERROR_SIZE_INSUFFICIENT. Storeys come main storey first (its heights are XrRoomLayoutEXTX's), rooms storey by
+** storey, each storey's largest first. */
+typedef struct XrRoomHomeLayoutEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    uint32_t storeyCapacityInput;
+    uint32_t storeyCountOutput;   /* XrRoomLayoutEXTX::storeyCount */
+    XrRoomStoreyEXTX* storeys;
+    uint32_t roomCapacityInput;
+    uint32_t roomCountOutput;
+    XrRoomInfoEXTX* rooms;
+} XrRoomHomeLayoutEXTX;
+
+/* Chained to the next of any element of xrGetRoomAreasEXTX's array: where that area lies. */
+typedef struct XrRoomAreaLocationEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    uint32_t storeyIndex; /* 0: the main storey */
+    uint32_t roomIndex;   /* into XrRoomHomeLayoutEXTX::rooms, or XR_ROOM_INDEX_NONE_EXTX */
+} XrRoomAreaLocationEXTX;
 
 /* ---- Queries (spec version 2) ----
 ** All positions and directions are in the analyzer's baseSpace. Invalid arguments (a wrong structure type, NULL,

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -268,118 +269,97 @@ class Page {
   }
 };
 
-}  // namespace
+// One storey's drawing: which features, heights and id suffix it has.
+struct StoreyView {
+  std::size_t index = 0;
+  const RoomFeatures* features = nullptr;  // null: draw from the bounds
+  float floor_y = 0.0f, ceiling_y = 0.0f;
+  std::string suffix;                      // "" for the main storey, "-storeyN" for storey N (from 2)
+  std::size_t first_room = 0;              // index into ReportInput::rooms of its room 0
+};
 
-std::string plan_svg(const ReportInput& input) {
-  const bool have_features = valid_features(input.voxels);
-  const BoundsMesh* bounds = valid_mesh(input.bounds) ? input.bounds : nullptr;
-  const float floor_y = input.floor_y, ceiling_y = input.ceiling_y;
+bool valid_storey_features(const GridSpec& g, const RoomFeatures& f) {
+  const std::size_t columns = g.column_count();
+  return f.walls.size() == columns && f.room.size() == columns && f.furniture.size() == columns &&
+         (f.normals.empty() || f.normals.size() == g.voxel_count());
+}
 
-  // What the drawing must show: the room mask, the bounds and the areas; the scan only when none of those.
-  Extent world;
-  if (have_features) {
-    const GridSpec& g = *input.voxels.grid;
-    for (int z = 0; z < g.nz; ++z)
-      for (int x = 0; x < g.nx; ++x)
-        if (input.voxels.features->room[g.column(x, z)] || input.voxels.features->walls[g.column(x, z)]) {
-          world.add(g.origin.x + float(x) * g.voxel_size, g.origin.z + float(z) * g.voxel_size);
-          world.add(g.origin.x + float(x + 1) * g.voxel_size, g.origin.z + float(z + 1) * g.voxel_size);
-        }
-  }
-  if (bounds)
-    for (const glm::vec3& v : bounds->vertices) world.add(v.x, v.z);
-  // The plan is the main storey's (one plan per storey is issue 15's next step): other storeys' areas are
-  // counted in the heading, not drawn over it.
-  const auto on_plan = [](const Area& a) { return report_detail::drawable(a) && a.storey == 0; };
-  for (const Area& a : input.areas)
-    if (on_plan(a))
-      for (const glm::vec2& p : area_outline(a)) world.add(p.x, p.y);
-  if (world.empty())
-    for (const Scan& s : input.scan)
-      for (const glm::vec3& v : s.vertices) world.add(v.x, v.z);
-  if (world.empty()) world = {-0.5f, -0.5f, 0.5f, 0.5f};
-  world.x0 -= kPadding;
-  world.z0 -= kPadding;
-  world.x1 += kPadding;
-  world.z1 += kPadding;
+// Each room's border, with walls, the outside and other rooms: the cell edges between a column of the room
+// and one that is not, as one path per room.
+std::vector<std::string> room_borders(const GridSpec& g, const RoomSplit& split, const Mapper& map) {
+  std::vector<std::string> out(std::size_t(std::max(split.count, 0)));
+  const float s = g.voxel_size;
+  const auto label = [&](int x, int z) {
+    return x < 0 || z < 0 || x >= g.nx || z >= g.nz ? kNoRoom : split.room[g.column(x, z)];
+  };
+  for (int z = 0; z < g.nz; ++z)
+    for (int x = 0; x < g.nx; ++x) {
+      const int k = label(x, z);
+      if (k == kNoRoom || k >= split.count) continue;
+      std::string& d = out[std::size_t(k)];
+      const float x0 = g.origin.x + float(x) * s, x1 = x0 + s, z0 = g.origin.z + float(z) * s, z1 = z0 + s;
+      if (label(x - 1, z) != k) append(d, "M", map.point(x0, z0), "V", num(map.pz(z1)));
+      if (label(x + 1, z) != k) append(d, "M", map.point(x1, z0), "V", num(map.pz(z1)));
+      if (label(x, z - 1) != k) append(d, "M", map.point(x0, z0), "H", num(map.px(x1)));
+      if (label(x, z + 1) != k) append(d, "M", map.point(x0, z1), "H", num(map.px(x1)));
+    }
+  return out;
+}
 
-  Mapper map;
-  map.world = world;
-  const float ww = world.x1 - world.x0, wd = world.z1 - world.z0;
-  map.scale = std::clamp(std::min(kMaxDrawingWidth / ww, kMaxDrawingHeight / wd), kMinScale, kMaxScale);
-  // Far-flung input (an app's stray area) must not make a page of many thousand pixels.
-  map.scale = std::min(map.scale, kMaxPageSide / std::max(ww, wd));
+// Areas: ceilings at the bottom, then floors, furniture, walls; larger before smaller within a type.
+std::vector<std::size_t> drawing_order(std::span<const Area> areas) {
+  std::vector<std::size_t> order(areas.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const auto layer = [](AreaType t) {
+    switch (t) {
+      case AreaType::Ceiling: return 0;
+      case AreaType::Floor: return 1;
+      case AreaType::Furniture: return 2;
+      case AreaType::Wall: return 3;
+    }
+    return 3;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const Area &A = areas[a], &B = areas[b];
+    if (layer(A.type) != layer(B.type)) return layer(A.type) < layer(B.type);
+    return int(A.size) < int(B.size);
+  });
+  return order;
+}
 
-  // Heading lines.
-  std::vector<std::string> heading;
-  heading.push_back("floor y = " + num(floor_y, 2) + " m,  ceiling y = " + num(ceiling_y, 2) + " m,  room height " +
-                    num(ceiling_y - floor_y, 2) + " m");
-  for (std::size_t i = 1; i < input.storeys.size(); ++i) {
-    const auto areas = std::count_if(input.areas.begin(), input.areas.end(), [i](const Area& a) { return a.storey == i; });
-    heading.push_back("storey " + std::to_string(i + 1) + ": floor y = " + num(input.storeys[i].floor_y, 2) +
-                      " m, ceiling y = " + num(input.storeys[i].ceiling_y, 2) + " m, " + std::to_string(areas) +
-                      " areas (not drawn)");
-  }
-  std::array<std::size_t, 3> per_reach{};
-  std::array<std::size_t, 4> per_type{};
-  for (const Area& a : input.areas) {
-    if (!on_plan(a)) continue;
-    ++per_reach[std::size_t(a.reach) - 1];
-    ++per_type[std::size_t(a.type) - 1];
-  }
-  const std::size_t drawn = per_type[0] + per_type[1] + per_type[2] + per_type[3];
-  heading.push_back(std::to_string(drawn) + " areas: " + std::to_string(per_type[0]) + " wall, " +
-                    std::to_string(per_type[1]) + " floor, " + std::to_string(per_type[2]) + " ceiling, " +
-                    std::to_string(per_type[3]) + " furniture; " + std::to_string(per_reach[0]) + " close, " +
-                    std::to_string(per_reach[1]) + " distance, " + std::to_string(per_reach[2]) + " none");
-
-  const float heading_h = 30.0f + 18.0f * float(heading.size()) + 8.0f;
-  map.left = kMargin + kAxisLabelRoom;
-  map.top = heading_h + kAxisLabelRoom;
+// Everything of one storey inside its drawing frame: footprint, furniture tops, grid, wall columns and
+// normals, the bounds cut above its floor, room borders, its areas and placements. Returns whether it drew
+// raised surfaces from the bounds (for the legend).
+bool draw_storey(Page& p, const ReportInput& input, const StoreyView& v, const Mapper& map, const BoundsMesh* bounds,
+                 bool& drew_rooms) {
+  const Extent& world = map.world;
+  const std::string& sfx = v.suffix;
   const float draw_w = map.width(), draw_h = map.height();
-  const float legend_x = map.left + draw_w + kLegendGap;
-  const float below_y = map.top + draw_h + 18.0f;  // scale bar and axes
-  const float legend_h = input.placements.empty() ? 440.0f : 465.0f;  // one more swatch for placements
-  const float page_w = std::ceil(legend_x + kLegendWidth + kMargin);
-  const float page_h = std::ceil(std::max(below_y + 70.0f, map.top + legend_h + kMargin));
-
-  Page p;
-  p.line("<?xml version=\"1.0\" encoding=\"UTF-8\"?>");
-  p.line("<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + num(page_w, 0) + "\" height=\"" +
-         num(page_h, 0) + "\" viewBox=\"0 0 " + num(page_w, 0) + " " + num(page_h, 0) +
-         "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" data-generator=\"roomsense\">");
-  p.line("<title>roomsense plan: " + escape(input.title) + "</title>");
-  p.line("<desc>Top view looking down -Y: +X to the right, +Z down the page (right-handed, +Y towards the viewer). "
-         "Metres.</desc>");
-  p.rect(0, 0, page_w, page_h, "fill=\"#ffffff\"");
-
-  // Heading.
-  p.text(kMargin, 30.0f, "roomsense plan: " + input.title, 18, " font-weight=\"bold\"");
-  for (std::size_t i = 0; i < heading.size(); ++i) p.text(kMargin, 30.0f + 20.0f * float(i + 1), heading[i], 13);
-
   // Drawing frame and its clip: nothing of the room is drawn over the labels around it.
-  p.line("<defs><clipPath id=\"drawing\"><rect x=\"" + num(map.left) + "\" y=\"" + num(map.top) + "\" width=\"" +
-         num(draw_w) + "\" height=\"" + num(draw_h) + "\"/></clipPath></defs>");
+  p.line("<defs><clipPath id=\"drawing" + sfx + "\"><rect x=\"" + num(map.left) + "\" y=\"" + num(map.top) +
+         "\" width=\"" + num(draw_w) + "\" height=\"" + num(draw_h) + "\"/></clipPath></defs>");
   p.rect(map.left, map.top, draw_w, draw_h, "fill=\"#fbfbfb\" stroke=\"#bbbbbb\" stroke-width=\"1\"");
-  p.line("<g id=\"room\" clip-path=\"url(#drawing)\">");
+  p.line("<g id=\"room" + sfx + "\" class=\"storey\" data-storey=\"" + std::to_string(v.index) +
+         "\" clip-path=\"url(#drawing" + sfx + ")\">");
 
   // Footprint and furniture tops.
   std::vector<std::size_t> floor_faces, raised_faces;
-  if (bounds && !have_features) split_floor_faces(*bounds, floor_y, floor_faces, raised_faces);
-  if (have_features) {
+  if (bounds && !v.features) split_floor_faces(*bounds, v.floor_y, floor_faces, raised_faces);
+  if (v.features) {
     const GridSpec& g = *input.voxels.grid;
-    const RoomFeatures& f = *input.voxels.features;
-    p.line("<path id=\"footprint\" fill=\"" + std::string(kFootprintFill) + "\" shape-rendering=\"crispEdges\" d=\"" +
+    const RoomFeatures& f = *v.features;
+    p.line("<path id=\"footprint" + sfx + "\" fill=\"" + std::string(kFootprintFill) +
+           "\" shape-rendering=\"crispEdges\" d=\"" +
            cell_path(g, map, [&](int x, int z) { return f.room[g.column(x, z)] != 0; }) + "\"/>");
-    p.line("<path id=\"furniture-tops\" fill=\"" + std::string(kFurnitureFill) +
+    p.line("<path id=\"furniture-tops" + sfx + "\" fill=\"" + std::string(kFurnitureFill) +
            "\" shape-rendering=\"crispEdges\" d=\"" +
            cell_path(g, map, [&](int x, int z) { return f.furniture[g.column(x, z)] != kNoFurniture; }) + "\"/>");
   } else if (bounds) {
     // Up-facing faces of the bounds near the floor are the floor; higher ones, below the cut, raised surfaces.
-    p.line("<path id=\"footprint\" fill=\"" + std::string(kFootprintFill) + "\" stroke=\"" + kFootprintFill +
-           "\" stroke-width=\"0.5\" d=\"" + triangle_path(*bounds, floor_faces, map) + "\"/>");
-    p.line("<path id=\"furniture-tops\" fill=\"" + std::string(kFurnitureFill) + "\" stroke=\"" + kFurnitureFill +
-           "\" stroke-width=\"0.5\" d=\"" + triangle_path(*bounds, raised_faces, map) + "\"/>");
+    p.line("<path id=\"footprint" + sfx + "\" fill=\"" + std::string(kFootprintFill) + "\" stroke=\"" +
+           kFootprintFill + "\" stroke-width=\"0.5\" d=\"" + triangle_path(*bounds, floor_faces, map) + "\"/>");
+    p.line("<path id=\"furniture-tops" + sfx + "\" fill=\"" + std::string(kFurnitureFill) + "\" stroke=\"" +
+           kFurnitureFill + "\" stroke-width=\"0.5\" d=\"" + triangle_path(*bounds, raised_faces, map) + "\"/>");
   }
 
   // A metre grid, faint, over the footprint.
@@ -388,14 +368,15 @@ std::string plan_svg(const ReportInput& input) {
     append(grid_d, "M", map.point(x, world.z0), "V", num(map.pz(world.z1)));
   for (float z = std::ceil(world.z0); z <= world.z1; z += 1.0f)
     append(grid_d, "M", map.point(world.x0, z), "H", num(map.px(world.x1)));
-  p.line("<path id=\"metre-grid\" fill=\"none\" stroke=\"" + std::string(kGridStroke) +
+  p.line("<path id=\"metre-grid" + sfx + "\" fill=\"none\" stroke=\"" + std::string(kGridStroke) +
          "\" stroke-opacity=\"0.45\" stroke-width=\"0.6\" d=\"" + grid_d + "\"/>");
 
   // Wall columns, then their normals: a tick from each wall column into the room, one voxel long.
-  if (have_features) {
+  if (v.features) {
     const GridSpec& g = *input.voxels.grid;
-    const RoomFeatures& f = *input.voxels.features;
-    p.line("<path id=\"wall-columns\" fill=\"" + std::string(kWallFill) + "\" shape-rendering=\"crispEdges\" d=\"" +
+    const RoomFeatures& f = *v.features;
+    p.line("<path id=\"wall-columns" + sfx + "\" fill=\"" + std::string(kWallFill) +
+           "\" shape-rendering=\"crispEdges\" d=\"" +
            cell_path(g, map, [&](int x, int z) { return f.walls[g.column(x, z)] != 0; }) + "\"/>");
     std::string ticks;
     if (!f.normals.empty()) {
@@ -421,35 +402,19 @@ std::string plan_svg(const ReportInput& input) {
           }
         }
     }
-    p.line("<path id=\"wall-normals\" fill=\"none\" stroke=\"" + std::string(kNormalStroke) +
+    p.line("<path id=\"wall-normals" + sfx + "\" fill=\"none\" stroke=\"" + std::string(kNormalStroke) +
            "\" stroke-width=\"1.2\" stroke-linecap=\"round\" d=\"" + ticks + "\"/>");
   }
 
   // The bounds cut above furniture height: the walls' surfaces as the bounds mesh sees them.
   if (bounds)
-    p.line("<path id=\"bounds-outline\" fill=\"none\" stroke=\"" + std::string(kOutlineStroke) + "\" stroke-width=\"" +
-           (have_features ? "1" : "2") + "\" stroke-linecap=\"round\" d=\"" +
-           slice_path(*bounds, floor_y + kOutlineAboveFloor, map) + "\"/>");
+    p.line("<path id=\"bounds-outline" + sfx + "\" fill=\"none\" stroke=\"" + std::string(kOutlineStroke) +
+           "\" stroke-width=\"" + (v.features ? "1" : "2") + "\" stroke-linecap=\"round\" d=\"" +
+           slice_path(*bounds, v.floor_y + kOutlineAboveFloor, map) + "\"/>");
 
-  // Areas: ceilings at the bottom, then floors, furniture, walls; larger before smaller within a type.
-  std::vector<std::size_t> order(input.areas.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  const auto layer = [](AreaType t) {
-    switch (t) {
-      case AreaType::Ceiling: return 0;
-      case AreaType::Floor: return 1;
-      case AreaType::Furniture: return 2;
-      case AreaType::Wall: return 3;
-    }
-    return 3;
-  };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const Area &A = input.areas[a], &B = input.areas[b];
-    if (layer(A.type) != layer(B.type)) return layer(A.type) < layer(B.type);
-    return int(A.size) < int(B.size);
-  });
-  p.line("<g id=\"areas\" stroke-linejoin=\"round\">");
-  for (const std::size_t i : order) {
+  const auto on_plan = [&](const Area& a) { return report_detail::drawable(a) && a.storey == v.index; };
+  p.line("<g id=\"areas" + sfx + "\" stroke-linejoin=\"round\">");
+  for (const std::size_t i : drawing_order(input.areas)) {
     const Area& a = input.areas[i];
     if (!on_plan(a)) continue;
     std::string pts;
@@ -464,11 +429,33 @@ std::string plan_svg(const ReportInput& input) {
            escape(area_title(i, a)) + "</title></polygon>");
   }
   p.line("</g>");
+  // Rooms (issue 15), over the areas: each one's border in its colour, labelled at its centre.
+  if (v.features && !input.rooms.empty() && v.features->rooms.room.size() == input.voxels.grid->column_count()) {
+    const std::vector<std::string> borders = room_borders(*input.voxels.grid, v.features->rooms, map);
+    p.line("<g id=\"rooms" + sfx + "\">");
+    for (std::size_t k = 0; k < borders.size(); ++k) {
+      const std::size_t global = v.first_room + k;
+      if (global >= input.rooms.size()) break;
+      const Room& room = input.rooms[global];
+      const std::string colour(room_colour(global));
+      p.line("<path class=\"room-outline\" data-room=\"" + std::to_string(global) + "\" fill=\"none\" stroke=\"" +
+             colour + "\" stroke-width=\"2.5\" stroke-linecap=\"square\" d=\"" + borders[k] + "\"><title>room " +
+             std::to_string(global) + ": " + num(room.floor_area, 1) + " m2 of free floor</title></path>");
+      p.text(map.px(room.center.x), map.pz(room.center.z), "room " + std::to_string(global) + ", " +
+             num(room.floor_area, 1) + " m\u00b2", 13,
+             (" text-anchor=\"middle\" font-weight=\"bold\" fill=\"" + colour +
+              "\" stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\"").c_str());
+      drew_rooms = true;
+    }
+    p.line("</g>");
+  }
+
   // Placements: black outlines over everything, numbered best first.
-  p.line("<g id=\"placements\">");
+  p.line("<g id=\"placements" + sfx + "\">");
   for (std::size_t i = 0; i < input.placements.size(); ++i) {
     const Placement& pl = input.placements[i];
     if (!report_detail::drawable_type(pl.surface) || !report_detail::drawable_reach(pl.reach)) continue;
+    if (pl.storey != v.index) continue;
     const auto xz = [](const glm::vec3& q) { return glm::vec2(q.x, q.z); };
     const std::array<glm::vec3, 4> c = pl.corners();
     std::array<glm::vec2, 4> outline = {xz(c[0]), xz(c[1]), xz(c[2]), xz(c[3])};
@@ -498,6 +485,128 @@ std::string plan_svg(const ReportInput& input) {
     p.text(map.left - 6.0f, map.pz(z) + 4.0f, num(z, 0), 11, " text-anchor=\"end\" fill=\"#555555\"");
   p.text(map.left + draw_w, map.top - 8.0f, "x (m)", 11, " text-anchor=\"end\" fill=\"#555555\" dx=\"0\" dy=\"-12\"");
   p.text(map.left - 6.0f, map.top - 20.0f, "z (m)", 11, " text-anchor=\"end\" fill=\"#555555\"");
+  return !raised_faces.empty();
+}
+
+}  // namespace
+
+std::string plan_svg(const ReportInput& input) {
+  const bool have_features = valid_features(input.voxels);
+  const BoundsMesh* bounds = valid_mesh(input.bounds) ? input.bounds : nullptr;
+  const float floor_y = input.floor_y, ceiling_y = input.ceiling_y;
+
+  // One drawing per storey; the main storey's heights are the input's own.
+  std::vector<StoreyView> views;
+  for (std::size_t i = 0; i < std::max<std::size_t>(1, input.storeys.size()); ++i) {
+    StoreyView v;
+    v.index = i;
+    v.floor_y = i == 0 ? floor_y : input.storeys[i].floor_y;
+    v.ceiling_y = i == 0 ? ceiling_y : input.storeys[i].ceiling_y;
+    v.suffix = i == 0 ? "" : "-storey" + std::to_string(i + 1);
+    if (have_features) {
+      const RoomFeatures* f = i == 0 ? input.voxels.features
+                                     : (i - 1 < input.voxels.other_storeys.size() ? &input.voxels.other_storeys[i - 1] : nullptr);
+      if (f && valid_storey_features(*input.voxels.grid, *f)) v.features = f;
+    }
+    for (const Room& room : input.rooms) v.first_room += room.storey < i ? 1 : 0;
+    views.push_back(std::move(v));
+  }
+
+  // What the drawings must show: every storey's room mask, the bounds and the areas; the scan only when none.
+  Extent world;
+  for (const StoreyView& v : views) {
+    if (!v.features) continue;
+    const GridSpec& g = *input.voxels.grid;
+    for (int z = 0; z < g.nz; ++z)
+      for (int x = 0; x < g.nx; ++x)
+        if (v.features->room[g.column(x, z)] || v.features->walls[g.column(x, z)]) {
+          world.add(g.origin.x + float(x) * g.voxel_size, g.origin.z + float(z) * g.voxel_size);
+          world.add(g.origin.x + float(x + 1) * g.voxel_size, g.origin.z + float(z + 1) * g.voxel_size);
+        }
+  }
+  if (bounds)
+    for (const glm::vec3& v : bounds->vertices) world.add(v.x, v.z);
+  for (const Area& a : input.areas)
+    if (report_detail::drawable(a) && a.storey < views.size())
+      for (const glm::vec2& p : area_outline(a)) world.add(p.x, p.y);
+  if (world.empty())
+    for (const Scan& s : input.scan)
+      for (const glm::vec3& v : s.vertices) world.add(v.x, v.z);
+  if (world.empty()) world = {-0.5f, -0.5f, 0.5f, 0.5f};
+  world.x0 -= kPadding;
+  world.z0 -= kPadding;
+  world.x1 += kPadding;
+  world.z1 += kPadding;
+
+  Mapper map;
+  map.world = world;
+  const float ww = world.x1 - world.x0, wd = world.z1 - world.z0;
+  map.scale = std::clamp(std::min(kMaxDrawingWidth / ww, kMaxDrawingHeight / wd), kMinScale, kMaxScale);
+  // Far-flung input (an app's stray area) must not make a page of many thousand pixels.
+  map.scale = std::min(map.scale, kMaxPageSide / std::max(ww, wd));
+
+  // Heading lines: the main storey's heights, then what is drawn.
+  std::vector<std::string> heading;
+  heading.push_back("floor y = " + num(floor_y, 2) + " m,  ceiling y = " + num(ceiling_y, 2) + " m,  room height " +
+                    num(ceiling_y - floor_y, 2) + " m");
+  std::array<std::size_t, 3> per_reach{};
+  std::array<std::size_t, 4> per_type{};
+  for (const Area& a : input.areas) {
+    if (!report_detail::drawable(a) || a.storey >= views.size()) continue;
+    ++per_reach[std::size_t(a.reach) - 1];
+    ++per_type[std::size_t(a.type) - 1];
+  }
+  const std::size_t drawn = per_type[0] + per_type[1] + per_type[2] + per_type[3];
+  heading.push_back(std::to_string(drawn) + " areas: " + std::to_string(per_type[0]) + " wall, " +
+                    std::to_string(per_type[1]) + " floor, " + std::to_string(per_type[2]) + " ceiling, " +
+                    std::to_string(per_type[3]) + " furniture; " + std::to_string(per_reach[0]) + " close, " +
+                    std::to_string(per_reach[1]) + " distance, " + std::to_string(per_reach[2]) + " none" +
+                    (views.size() > 1 ? "; " + std::to_string(views.size()) + " storeys, one drawing each" : ""));
+  // Each drawing's own line: its storey, heights, areas and rooms.
+  const auto storey_line = [&](const StoreyView& v) {
+    const auto areas = std::count_if(input.areas.begin(), input.areas.end(),
+                                     [&](const Area& a) { return report_detail::drawable(a) && a.storey == v.index; });
+    std::size_t rooms = 0;
+    for (const Room& room : input.rooms) rooms += room.storey == v.index ? 1 : 0;
+    return "storey " + std::to_string(v.index + 1) + (v.index == 0 ? " (main)" : "") + ": floor y = " +
+           num(v.floor_y, 2) + " m, ceiling y = " + num(v.ceiling_y, 2) + " m, " + std::to_string(areas) + " areas" +
+           (input.rooms.empty() ? "" : ", " + std::to_string(rooms) + (rooms == 1 ? " room" : " rooms"));
+  };
+
+  const float heading_h = 30.0f + 18.0f * float(heading.size()) + 8.0f;
+  constexpr float kStoreyLine = 24.0f;  // the drawing's own line above its metre labels
+  constexpr float kPanelGap = 24.0f;
+  map.left = kMargin + kAxisLabelRoom;
+  const float draw_w = map.width(), draw_h = map.height();
+  const float panel_h = kStoreyLine + kAxisLabelRoom + draw_h + kPanelGap;
+  const float first_top = heading_h + kStoreyLine + kAxisLabelRoom;
+  const float legend_x = map.left + draw_w + kLegendGap;
+  const float below_y = first_top + float(views.size() - 1) * panel_h + draw_h + 18.0f;  // scale bar and axes
+  const float legend_h = input.placements.empty() ? 460.0f : 485.0f;  // one more swatch for placements
+  const float page_w = std::ceil(legend_x + kLegendWidth + kMargin);
+  const float page_h = std::ceil(std::max(below_y + 70.0f, first_top + legend_h + kMargin));
+
+  Page p;
+  p.line("<?xml version=\"1.0\" encoding=\"UTF-8\"?>");
+  p.line("<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + num(page_w, 0) + "\" height=\"" +
+         num(page_h, 0) + "\" viewBox=\"0 0 " + num(page_w, 0) + " " + num(page_h, 0) +
+         "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" data-generator=\"roomsense\">");
+  p.line("<title>roomsense plan: " + escape(input.title) + "</title>");
+  p.line("<desc>Top view looking down -Y: +X to the right, +Z down the page (right-handed, +Y towards the viewer). "
+         "Metres. One drawing per storey, main storey first.</desc>");
+  p.rect(0, 0, page_w, page_h, "fill=\"#ffffff\"");
+
+  // Heading.
+  p.text(kMargin, 30.0f, "roomsense plan: " + input.title, 18, " font-weight=\"bold\"");
+  for (std::size_t i = 0; i < heading.size(); ++i) p.text(kMargin, 30.0f + 20.0f * float(i + 1), heading[i], 13);
+
+  bool raised = false, drew_rooms = false;
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    map.top = first_top + float(i) * panel_h;
+    p.text(kMargin, map.top - kAxisLabelRoom - 6.0f, storey_line(views[i]), 14, " font-weight=\"bold\"");
+    raised = draw_storey(p, input, views[i], map, bounds, drew_rooms) || raised;
+  }
+  map.top = first_top;
 
   // Scale bar, in alternating black and white metre segments.
   {
@@ -548,7 +657,7 @@ std::string plan_svg(const ReportInput& input) {
     if (have_features || bounds)
       swatch("fill=\"" + std::string(kFootprintFill) + "\"",
              have_features ? "room footprint (mask B)" : "floor footprint (bounds)");
-    if (have_features || !raised_faces.empty())
+    if (have_features || raised)
       swatch("fill=\"" + std::string(kFurnitureFill) + "\"",
              have_features ? "furniture tops (C)" : "raised surfaces (bounds)");
     if (have_features) {
@@ -562,6 +671,11 @@ std::string plan_svg(const ReportInput& input) {
     if (bounds) {
       p.segment(x, y - 4.0f, x + 24.0f, y - 4.0f, "stroke=\"" + std::string(kOutlineStroke) + "\" stroke-width=\"2\"");
       p.text(label_x, y, "bounds, cut " + num(kOutlineAboveFloor, 1) + " m above the floor", 12);
+      y += 21.0f;
+    }
+    if (drew_rooms) {
+      p.segment(x, y - 4.0f, x + 24.0f, y - 4.0f, "stroke=\"" + std::string(room_colour(0)) + "\" stroke-width=\"2.5\"");
+      p.text(label_x, y, "room border: walls, doorways", 12);
       y += 21.0f;
     }
     p.segment(x, y - 4.0f, x + 24.0f, y - 4.0f, "stroke=\"" + std::string(kGridStroke) + "\" stroke-width=\"1\"");

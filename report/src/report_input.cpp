@@ -3,6 +3,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <iterator>
+
 namespace roomsense {
 
 ReportInput report_input(const AnalysisResult& result, const Scan& scan, std::string title) {
@@ -11,10 +13,11 @@ ReportInput report_input(const AnalysisResult& result, const Scan& scan, std::st
   in.floor_y = result.floor_y;
   in.ceiling_y = result.ceiling_y;
   in.storeys = result.storeys;
+  in.rooms = result.rooms;
   in.areas = result.areas;
   in.bounds = &result.bounds;
   in.scan = std::span<const Scan>(&scan, 1);
-  if (result.features) in.voxels = {&result.voxels.grid.spec, &*result.features};
+  if (result.features) in.voxels = {&result.voxels.grid.spec, &*result.features, result.other_features};
   return in;
 }
 
@@ -44,6 +47,13 @@ std::string_view reach_colour(Reach reach) {
     case Reach::None: break;
   }
   return "#2166ac";
+}
+
+std::string_view room_colour(std::size_t room) {
+  // Tableau-like hues without pure red, green or blue, which mean reach.
+  static constexpr std::string_view kPalette[] = {"#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
+                                                  "#bcbd22", "#17becf", "#7f7f7f", "#b8860b"};
+  return kPalette[room % std::size(kPalette)];
 }
 
 }  // namespace roomsense

@@ -1,5 +1,5 @@
-// scene.glb: the scan in grey, the translucent bounds, every area as a thin quad coloured by reach and every
-// placement as the object's box, each its own named node of a GlbScene (export.h), so a glTF viewer can toggle them.
+// scene.glb: the scan in grey, the translucent bounds, every area as a thin quad coloured by reach, every
+// placement as the object's box and every room's floor in its colour, each its own named node of a GlbScene (export.h), so a glTF viewer can toggle them.
 #include "report_common.h"
 #include "roomsense/report.h"
 
@@ -17,6 +17,7 @@ constexpr float kAreaLift = 0.01f;  // metres in front of the surface, so the qu
 constexpr std::array<float, 4> kScanGrey = {0.55f, 0.55f, 0.55f, 1.0f};
 constexpr std::array<float, 4> kBoundsColour = {0.95f, 0.72f, 0.30f, 0.30f};
 constexpr float kAreaAlpha = 0.75f;
+constexpr float kRoomAlpha = 0.5f;
 constexpr std::array<float, 4> kPlacementColour = {0.80f, 0.05f, 0.75f, 0.85f};  // magenta: no reach colour
 constexpr float kMinBoxHeight = 0.01f;  // metres: a flat object still shows as a slab
 
@@ -75,6 +76,45 @@ void merge_meshes(std::span<const Scan> meshes, std::vector<glm::vec3>& vertices
   }
 }
 
+// Issue 15: each room's free floor, 1 cm above its storey's floor, in the room's colour: one node per room,
+// its columns merged into runs along x per row. Needs the features of every storey with rooms.
+void add_rooms(const ReportInput& input, GlbScene& scene) {
+  const ReportFeatures& v = input.voxels;
+  if (v.grid == nullptr || v.features == nullptr || input.rooms.empty()) return;
+  const GridSpec& g = *v.grid;
+  std::size_t first = 0;  // the storey's room 0 in input.rooms
+  for (std::size_t storey = 0; storey <= v.other_storeys.size(); ++storey) {
+    const RoomSplit& split = storey == 0 ? v.features->rooms : v.other_storeys[storey - 1].rooms;
+    if (split.room.size() != g.column_count()) return;
+    for (int k = 0; k < split.count && first + std::size_t(k) < input.rooms.size(); ++k) {
+      const Room& room = input.rooms[first + std::size_t(k)];
+      const float y = room.floor_y + kAreaLift, s = g.voxel_size;
+      std::vector<glm::vec3> vertices;
+      std::vector<std::uint32_t> indices;
+      for (int z = 0; z < g.nz; ++z)
+        for (int x = 0; x < g.nx;) {
+          if (split.room[g.column(x, z)] != k) {
+            ++x;
+            continue;
+          }
+          int end = x + 1;
+          while (end < g.nx && split.room[g.column(end, z)] == k) ++end;
+          const float x0 = g.origin.x + float(x) * s, x1 = g.origin.x + float(end) * s;
+          const float z0 = g.origin.z + float(z) * s, z1 = z0 + s;
+          const auto base = std::uint32_t(vertices.size());
+          vertices.insert(vertices.end(), {{x0, y, z0}, {x0, y, z1}, {x1, y, z1}, {x1, y, z0}});
+          // Counter-clockwise seen from above (+Y).
+          indices.insert(indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+          x = end;
+        }
+      if (!indices.empty())
+        scene.add_mesh("room " + std::to_string(first + std::size_t(k)), vertices, indices,
+                       linear_rgba(room_colour(first + std::size_t(k)), kRoomAlpha));
+    }
+    first += std::size_t(std::max(split.count, 0));
+  }
+}
+
 }  // namespace
 
 GlbScene scene_glb(const ReportInput& input) {
@@ -114,6 +154,7 @@ GlbScene scene_glb(const ReportInput& input) {
     scene.add_mesh("placement " + std::to_string(i) + " " + std::string(to_string(p.surface)), box, kBoxIndices,
                    kPlacementColour);
   }
+  add_rooms(input, scene);
   return scene;
 }
 

@@ -69,23 +69,31 @@ TEST_P(ReportOfScan, HasBothFilesWithOneElementAndOneNodePerArea) {
   ASSERT_TRUE(fs::is_regular_file(dir + "/plan.svg"));
   const test::SvgReading svg = test::read_svg(read_text(dir + "/plan.svg"));
   ASSERT_TRUE(svg.well_formed) << svg.error;
-  // The plan is the main storey's: one element per area of storey 0 (the others' are counted in the heading).
-  std::size_t main_areas = 0;
-  for (const auto& a : analysis["areas"]) main_areas += a["storey"].get<int>() == 0 ? 1 : 0;
-  ASSERT_EQ(svg.areas.size(), main_areas);
+  // One drawing per storey (ids of storey N from 2 end in -storeyN), one element per area, one border per room.
+  ASSERT_EQ(svg.areas.size(), areas);
   for (const test::SvgArea& e : svg.areas) {
     const auto& a = analysis["areas"][std::stoul(e.index)];
-    EXPECT_EQ(a["storey"], 0);
     EXPECT_EQ(e.type, a["type"].get<std::string>());
     EXPECT_EQ(e.reach, a["interaction"].get<std::string>());
     EXPECT_EQ(test::dominant_channel(e.fill), test::expected_channel(e.reach));
   }
+  const std::string plan = read_text(dir + "/plan.svg");
+  for (std::size_t i = 0; i < analysis["storeys"].size(); ++i) {
+    const std::string suffix = i == 0 ? "" : "-storey" + std::to_string(i + 1);
+    EXPECT_TRUE(svg.ids.count("room" + suffix)) << "no drawing of storey " << i + 1;
+    EXPECT_TRUE(svg.ids.count("wall-columns" + suffix)) << "storey " << i + 1;
+  }
+  std::size_t borders = 0;
+  for (std::size_t at = plan.find("class=\"room-outline\""); at != std::string::npos;
+       at = plan.find("class=\"room-outline\"", at + 1))
+    ++borders;
+  EXPECT_EQ(borders, analysis["rooms"].size());
   EXPECT_TRUE(svg.ids.count("wall-columns"));
 
   ASSERT_TRUE(fs::is_regular_file(dir + "/scene.glb"));
   const test::GlbReading glb = test::check_glb(test::read_bytes(dir + "/scene.glb"));
   for (const std::string& p : glb.problems) ADD_FAILURE() << p;
-  ASSERT_EQ(glb.node_names.size(), areas + 2);
+  ASSERT_EQ(glb.node_names.size(), areas + 2 + analysis["rooms"].size());
   EXPECT_EQ(glb.node_names[0], "scan");
   EXPECT_EQ(glb.node_names[1], "bounds");
   std::printf("[ report   ] %s: %zu areas, plan %zu bytes, scene %zu bytes\n", GetParam(), areas,

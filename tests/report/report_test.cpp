@@ -154,7 +154,7 @@ TEST(Report, PlanSurvivesEmptyInputAndMarkupInTheTitle) {
   spec.nx = spec.nz = 4;
   spec.ny = 3;
   RoomFeatures wrong;
-  in.voxels = {&spec, &wrong};
+  in.voxels = {&spec, &wrong, {}};
   const std::vector<Area> areas = handmade_areas();
   in.areas = areas;
   const test::SvgReading svg = test::read_svg(plan_svg(in));
@@ -187,7 +187,10 @@ TEST(Report, SceneGlbPassesTheStructuralCheckWithANodePerArea) {
   const ReportInput in = report_input(room.result, room.scan, "synthetic:default");
   const test::GlbReading glb = test::check_glb(scene_glb(in).encode());
   for (const std::string& p : glb.problems) ADD_FAILURE() << p;
-  ASSERT_EQ(glb.node_names.size(), room.result.areas.size() + 2);
+  // scan, bounds, the areas, then the one room.
+  ASSERT_EQ(room.result.rooms.size(), 1u);
+  ASSERT_EQ(glb.node_names.size(), room.result.areas.size() + 3);
+  EXPECT_EQ(glb.node_names.back(), "room 0");
   EXPECT_EQ(glb.node_names[0], "scan");
   EXPECT_EQ(glb.node_names[1], "bounds");
   for (std::size_t i = 0; i < room.result.areas.size(); ++i)
@@ -211,6 +214,48 @@ TEST(Report, SceneGlbPassesTheStructuralCheckWithANodePerArea) {
   }
 }
 
+// Issue 15: the flat's three rooms are outlined in the plan and coloured in the scene, each where it is.
+TEST(Report, RoomsAreOutlinedInThePlanAndColouredInTheScene) {
+  Room flat;
+  flat.scan = synth::generate(*synth::builtin("flat"));
+  flat.result = analyze(flat.scan);
+  ASSERT_TRUE(flat.result.ok());
+  ASSERT_EQ(flat.result.rooms.size(), 3u);
+  const ReportInput in = report_input(flat.result, flat.scan, "synthetic:flat");
+  const std::string text = plan_svg(in);
+  const test::SvgReading svg = test::read_svg(text);
+  ASSERT_TRUE(svg.well_formed) << svg.error;
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NE(text.find("class=\"room-outline\" data-room=\"" + std::to_string(k) + "\""), std::string::npos) << k;
+    EXPECT_NE(text.find("room " + std::to_string(k) + ", "), std::string::npos) << "the label of room " << k;
+  }
+  const test::GlbReading glb = test::check_glb(scene_glb(in).encode());
+  for (const std::string& p : glb.problems) ADD_FAILURE() << p;
+  ASSERT_EQ(glb.node_names.size(), flat.result.areas.size() + 2 + 3);
+  std::set<std::string> colours;
+  const std::vector<synth::Rect> truth = synth::three_room_flat_rooms();
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::size_t node = flat.result.areas.size() + 2 + k;
+    EXPECT_EQ(glb.node_names[node], "room " + std::to_string(k));
+    const std::size_t mesh = glb.doc["nodes"][node]["mesh"].get<std::size_t>();
+    const auto& primitive = glb.doc["meshes"][mesh]["primitives"][0];
+    colours.insert(glb.doc["materials"][primitive["material"].get<std::size_t>()]["pbrMetallicRoughness"]
+                       ["baseColorFactor"].dump());
+    // The accessor's bounds lie within the room's true rectangle (walls included: a voxel of slack).
+    const auto& position = glb.doc["accessors"][primitive["attributes"]["POSITION"].get<std::size_t>()];
+    const glm::vec2 lo(position["min"][0].get<float>(), position["min"][2].get<float>());
+    const glm::vec2 hi(position["max"][0].get<float>(), position["max"][2].get<float>());
+    const glm::vec2 centre = 0.5f * (lo + hi);
+    bool inside = false;
+    for (const synth::Rect& r : truth)
+      if (lo.x > r.lo.x - 0.15f && lo.y > r.lo.y - 0.15f && hi.x < r.hi.x + 0.15f && hi.y < r.hi.y + 0.15f &&
+          centre.x > r.lo.x && centre.x < r.hi.x)
+        inside = true;
+    EXPECT_TRUE(inside) << "room " << k << " spans (" << lo.x << ", " << lo.y << ") to (" << hi.x << ", " << hi.y << ")";
+  }
+  EXPECT_EQ(colours.size(), 3u) << "three rooms, three colours";
+}
+
 TEST(Report, SceneGlbMergesSeveralSubmittedMeshesAndDropsNonFiniteVertices) {
   Scan a{{{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {NAN, 0, 0}}, {0, 2, 1, 0, 3, 1}};  // the second face touches NaN
   Scan b{{{0, 2, 0}, {1, 2, 0}, {0, 2, 1}}, {0, 1, 2, 0, 1, 7}};                // the second face is out of range
@@ -230,7 +275,9 @@ TEST(Report, SceneGlbMergesSeveralSubmittedMeshesAndDropsNonFiniteVertices) {
 TEST(Report, SceneGlbReadsBackThroughAssimp) {
   const Room& room = default_room();
   const std::string dir = temp_path("assimp");
-  write_report(report_input(room.result, room.scan, "synthetic:default"), dir);
+  ReportInput in = report_input(room.result, room.scan, "synthetic:default");
+  in.rooms = {};  // no room nodes: the face count below is the scan's, the bounds' and the areas'
+  write_report(in, dir);
   const std::string path = dir + "/scene.glb";
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
@@ -390,7 +437,7 @@ TEST(ReportCli, AnalyzeWritesBothFilesIntoANewFolder) {
   EXPECT_EQ(svg.areas.size(), default_room().result.areas.size());
   const test::GlbReading glb = test::check_glb(test::read_bytes(dir + "/scene.glb"));
   EXPECT_TRUE(glb.problems.empty());
-  EXPECT_EQ(glb.node_names.size(), default_room().result.areas.size() + 2);
+  EXPECT_EQ(glb.node_names.size(), default_room().result.areas.size() + 2 + default_room().result.rooms.size());
   fs::remove_all(temp_path("cli"));
 }
 

@@ -21,7 +21,8 @@ namespace roomsense {
 // The voxel features behind the plan's footprint, wall columns and furniture tops (CLI only).
 struct ReportFeatures {
   const GridSpec* grid = nullptr;          // the grid the features index (VoxelGrid::spec)
-  const RoomFeatures* features = nullptr;  // A, B, C and F
+  const RoomFeatures* features = nullptr;  // A, B, C and F of the main storey
+  std::span<const RoomFeatures> other_storeys;  // optional: those of storeys[1..], in that order
 };
 
 // Everything a report draws. Non-owning: the referenced data must outlive the call.
@@ -29,7 +30,8 @@ struct ReportInput {
   std::string title;                 // shown in the plan's heading, e.g. the scan's file name
   float floor_y = 0.0f;              // metres: the main storey's scanned floor and ceiling surfaces
   float ceiling_y = 0.0f;
-  std::span<const Storey> storeys;   // optional: more storeys are listed in the plan's heading
+  std::span<const Storey> storeys;   // optional: the plan draws one drawing per storey (main first)
+  std::span<const Room> rooms;       // optional: outlined in the plan and coloured in the scene (with features)
   std::span<const Area> areas;       // classified areas, one plan element and one scene node each
                                      // (areas with a type, size or reach outside its enum are left out)
   const BoundsMesh* bounds = nullptr;  // optional: the room-bounds mesh
@@ -49,22 +51,28 @@ Area area_from_pose(AreaType type, AreaSize size, Reach reach, const glm::vec3& 
 
 // The thesis's reach colours (Fig. 3.17): red for close, green for distance, blue for none; sRGB, "#rrggbb".
 std::string_view reach_colour(Reach reach);
+// A room's colour (index into AnalysisResult::rooms), from a palette of eight that avoids the reach colours.
+std::string_view room_colour(std::size_t room);
 
 // plan.svg: a top view, looking down -Y. +X points right and +Z points down the page, so the view is the
 // right-handed frame seen from above (+Y towards the viewer). Layers, bottom to top: the room footprint,
 // furniture tops, wall columns with their normals as ticks, the bounds outline at 1.6 m above the floor,
-// then ceiling, floor, furniture and wall areas, then placements (one <polygon class="placement"> each, with
+// then ceiling, floor, furniture and wall areas, room borders, then placements (one <polygon class="placement"> each, with
 // data-index and data-surface; walls as a strip before the wall). Every area is one <polygon class="area"> with data-index,
 // data-type, data-size, data-reach and a <title>; horizontal areas are their rectangle, wall areas (which
 // project to a line) a strip on the room side of their wall. Beside the drawing: a legend, a metre scale
-// bar, the floor and ceiling heights. The drawing is the main storey's: the heading lists the other storeys
-// and counts their areas (Area::storey), which it does not draw.
+// bar, the floor and ceiling heights. One drawing per storey, main storey first, each with its own heading
+// line, its storey's features, its areas (Area::storey) and the bounds cut 1.6 m above its floor; ids of the
+// main storey's elements are as above, those of storey N (from 2) end in "-storeyN". With features, each
+// room is one <path class="room-outline" data-room="K"> (its border with walls and other rooms) in its room
+// colour and labelled with its index and floor area.
 std::string plan_svg(const ReportInput& input);
 
 // scene.glb: nodes "scan" (grey), "bounds" (translucent) and one per area, "area N TYPE SIZE REACH" with N
 // the area's index in input.areas, each a thin quad 1 cm in front of its surface, coloured by reach; then one
 // per placement, "placement N SURFACE", the object's box (its footprint extruded along the normal by its height)
-// in magenta. A node whose mesh would be empty (no scan, no bounds) is left out.
+// in magenta; then with features, one per room, "room K", its free floor 1 cm above the storey's floor in the
+// room's colour. A node whose mesh would be empty (no scan, no bounds) is left out.
 GlbScene scene_glb(const ReportInput& input);
 
 // The file names write_report uses inside its folder.

@@ -64,6 +64,11 @@ struct HandleOutput {
   std::vector<rs_room> rooms;
   std::vector<float> bounds_xyz;
   std::vector<std::uint32_t> bounds_indices;
+  struct Mesh {
+    std::vector<float> xyz;
+    std::vector<std::uint32_t> indices;
+  };
+  std::vector<Mesh> room_bounds;  // one per room
   RoomQueries queries;  // immutable and shared: copied out of the lock and queried there
 };
 
@@ -162,6 +167,11 @@ HandleOutput convert(const AnalysisResult& r) {
   out.bounds_xyz.reserve(r.bounds.vertices.size() * 3);
   for (const glm::vec3& v : r.bounds.vertices) out.bounds_xyz.insert(out.bounds_xyz.end(), {v.x, v.y, v.z});
   out.bounds_indices = r.bounds.indices;
+  for (const BoundsMesh& mesh : r.room_bounds) {
+    HandleOutput::Mesh& m = out.room_bounds.emplace_back();
+    for (const glm::vec3& v : mesh.vertices) m.xyz.insert(m.xyz.end(), {v.x, v.y, v.z});
+    m.indices = mesh.indices;
+  }
   if (out.storeys.size() > 0xffffffffu || out.areas.size() > 0xffffffffu || r.bounds.vertices.size() > 0xffffffffu ||
       out.bounds_indices.size() > 0xffffffffu) {
     out.status = RS_ERROR_INTERNAL;
@@ -324,6 +334,37 @@ rs_surface_point to_c(const std::optional<glm::vec3>& p) {
 }  // namespace roomsense::capi
 
 using namespace roomsense::capi;
+
+namespace {
+
+// The two-call idiom on a mesh (rs_analyzer_get_bounds): `mesh` picks it from the output, null when there is none.
+template <class Pick>
+rs_result get_mesh(rs_analyzer* analyzer, Pick mesh, uint32_t vertex_capacity, uint32_t* vertex_count, float* xyz,
+                   uint32_t index_capacity, uint32_t* index_count, uint32_t* indices) {
+  if (analyzer != nullptr &&
+      (vertex_count == nullptr || index_count == nullptr || (vertex_capacity != 0 && xyz == nullptr) ||
+       (index_capacity != 0 && indices == nullptr)))
+    return RS_ERROR_INVALID_ARGUMENT;
+  return guarded([&] {
+    return with_ready_output(analyzer, false, [&](const HandleOutput& o) {
+      const auto picked = mesh(o);
+      if (!picked) return RS_ERROR_INVALID_ARGUMENT;
+      const auto& [from_xyz, from_indices] = *picked;
+      const std::size_t vertices = from_xyz.size() / 3;
+      *vertex_count = static_cast<uint32_t>(vertices);
+      *index_count = static_cast<uint32_t>(from_indices.size());
+      if (vertex_capacity == 0 && index_capacity == 0) return RS_SUCCESS;
+      if (vertex_capacity < vertices || index_capacity < from_indices.size()) return RS_ERROR_SIZE_INSUFFICIENT;
+      if (!from_xyz.empty()) std::memcpy(xyz, from_xyz.data(), from_xyz.size() * sizeof(float));
+      if (!from_indices.empty()) std::memcpy(indices, from_indices.data(), from_indices.size() * sizeof(uint32_t));
+      return RS_SUCCESS;
+    });
+  });
+}
+
+using MeshView = std::pair<const std::vector<float>&, const std::vector<std::uint32_t>&>;
+
+}  // namespace
 
 extern "C" {
 
@@ -515,23 +556,21 @@ rs_result rs_analyzer_get_area_places(rs_analyzer* analyzer, uint32_t capacity, 
 
 rs_result rs_analyzer_get_bounds(rs_analyzer* analyzer, uint32_t vertex_capacity, uint32_t* vertex_count, float* xyz,
                                  uint32_t index_capacity, uint32_t* index_count, uint32_t* indices) {
-  if (analyzer != nullptr &&
-      (vertex_count == nullptr || index_count == nullptr || (vertex_capacity != 0 && xyz == nullptr) ||
-       (index_capacity != 0 && indices == nullptr)))
-    return RS_ERROR_INVALID_ARGUMENT;
-  return guarded([&] {
-    return with_ready_output(analyzer, false, [&](const HandleOutput& o) {
-      const std::size_t vertices = o.bounds_xyz.size() / 3;
-      *vertex_count = static_cast<uint32_t>(vertices);
-      *index_count = static_cast<uint32_t>(o.bounds_indices.size());
-      if (vertex_capacity == 0 && index_capacity == 0) return RS_SUCCESS;
-      if (vertex_capacity < vertices || index_capacity < o.bounds_indices.size()) return RS_ERROR_SIZE_INSUFFICIENT;
-      if (!o.bounds_xyz.empty()) std::memcpy(xyz, o.bounds_xyz.data(), o.bounds_xyz.size() * sizeof(float));
-      if (!o.bounds_indices.empty())
-        std::memcpy(indices, o.bounds_indices.data(), o.bounds_indices.size() * sizeof(uint32_t));
-      return RS_SUCCESS;
-    });
-  });
+  return get_mesh(
+      analyzer, [](const HandleOutput& o) { return std::optional<MeshView>(MeshView(o.bounds_xyz, o.bounds_indices)); },
+      vertex_capacity, vertex_count, xyz, index_capacity, index_count, indices);
+}
+
+rs_result rs_analyzer_get_room_bounds(rs_analyzer* analyzer, uint32_t room, uint32_t vertex_capacity,
+                                      uint32_t* vertex_count, float* xyz, uint32_t index_capacity, uint32_t* index_count,
+                                      uint32_t* indices) {
+  return get_mesh(
+      analyzer,
+      [room](const HandleOutput& o) {
+        if (room >= o.room_bounds.size()) return std::optional<MeshView>();
+        return std::optional<MeshView>(MeshView(o.room_bounds[room].xyz, o.room_bounds[room].indices));
+      },
+      vertex_capacity, vertex_count, xyz, index_capacity, index_count, indices);
 }
 
 rs_result rs_analyzer_get_message(rs_analyzer* analyzer, uint32_t capacity, uint32_t* count, char* buffer) {

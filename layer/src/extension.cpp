@@ -223,15 +223,22 @@ XrResult XRAPI_CALL xrGetRoomBoundsMeshEXTX(XrRoomAnalyzerEXTX analyzer, XrRoomB
       return XR_ERROR_VALIDATION_FAILURE;
     const std::shared_ptr<const RoomResult> result = a->latest();
     if (!result) return XR_ERROR_CALL_ORDER_INVALID;
-    const auto vertices = static_cast<uint32_t>(result->bounds_vertices.size());
-    const auto indices = static_cast<uint32_t>(result->bounds_indices.size());
+    const std::vector<XrVector3f>* from_vertices = &result->bounds_vertices;
+    const std::vector<uint32_t>* from_indices = &result->bounds_indices;
+    if (const auto* room = find_next<const XrRoomBoundsMeshRoomEXTX>(mesh->next, XR_TYPE_ROOM_BOUNDS_MESH_ROOM_EXTX)) {
+      if (room->roomIndex >= result->room_bounds.size()) return XR_ERROR_VALIDATION_FAILURE;
+      from_vertices = &result->room_bounds[room->roomIndex].vertices;
+      from_indices = &result->room_bounds[room->roomIndex].indices;
+    }
+    const auto vertices = static_cast<uint32_t>(from_vertices->size());
+    const auto indices = static_cast<uint32_t>(from_indices->size());
     mesh->vertexCountOutput = vertices;
     mesh->indexCountOutput = indices;
     if ((mesh->vertexCapacityInput > 0 && mesh->vertexCapacityInput < vertices) ||
         (mesh->indexCapacityInput > 0 && mesh->indexCapacityInput < indices))
       return XR_ERROR_SIZE_INSUFFICIENT;
-    if (mesh->vertexCapacityInput > 0) std::memcpy(mesh->vertices, result->bounds_vertices.data(), vertices * sizeof(XrVector3f));
-    if (mesh->indexCapacityInput > 0) std::memcpy(mesh->indices, result->bounds_indices.data(), indices * sizeof(uint32_t));
+    if (mesh->vertexCapacityInput > 0) std::memcpy(mesh->vertices, from_vertices->data(), vertices * sizeof(XrVector3f));
+    if (mesh->indexCapacityInput > 0) std::memcpy(mesh->indices, from_indices->data(), indices * sizeof(uint32_t));
     return XR_SUCCESS;
   });
 }

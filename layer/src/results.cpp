@@ -72,6 +72,12 @@ RoomResult make_room_result(const AnalysisResult& r, const MeshSources& sources,
     out.bounds_max = {hi.x, hi.y, hi.z};
   }
   out.bounds_indices = r.bounds.indices;
+  for (const BoundsMesh& mesh : r.room_bounds) {
+    RoomResult::Mesh& m = out.room_bounds.emplace_back();
+    m.vertices.reserve(mesh.vertices.size());
+    for (const glm::vec3& v : mesh.vertices) m.vertices.push_back({v.x, v.y, v.z});
+    m.indices = mesh.indices;
+  }
   out.input_vertices = clamp32(r.input.vertices);
   out.input_triangles = clamp32(r.input.triangles);
   out.duration = duration;

@@ -27,6 +27,11 @@ struct RoomResult {
   std::vector<XrRoomAreaLocationEXTX> area_locations;  // one per area; type set, next null
   std::vector<XrVector3f> bounds_vertices;
   std::vector<std::uint32_t> bounds_indices;
+  struct Mesh {
+    std::vector<XrVector3f> vertices;
+    std::vector<std::uint32_t> indices;
+  };
+  std::vector<Mesh> room_bounds;  // one per room (XrRoomBoundsMeshRoomEXTX)
   XrVector3f bounds_min{0, 0, 0}, bounds_max{0, 0, 0};
   std::uint32_t input_vertices = 0, input_triangles = 0;
   XrDuration duration = 0;

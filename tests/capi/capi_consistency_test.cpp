@@ -417,6 +417,26 @@ TEST(CapiWholeHomes, HandleRoomsAndPlacesAreAnalyzes) {
       EXPECT_EQ(places[i].storey, expected.areas[i].storey) << "area " << i;
       EXPECT_EQ(places[i].room, expected.areas[i].room) << "area " << i;
     }
+    // Each room's bounds, value for value.
+    ASSERT_EQ(expected.room_bounds.size(), expected.rooms.size());
+    for (uint32_t k = 0; k < expected.rooms.size(); ++k) {
+      uint32_t vertices = 0, indices = 0;
+      ASSERT_EQ(rs_analyzer_get_room_bounds(analyzer, k, 0, &vertices, nullptr, 0, &indices, nullptr), RS_SUCCESS);
+      const BoundsMesh& want = expected.room_bounds[k];
+      ASSERT_EQ(vertices, want.vertices.size());
+      ASSERT_EQ(indices, want.indices.size());
+      std::vector<float> xyz(3 * vertices);
+      std::vector<uint32_t> got(indices);
+      ASSERT_EQ(rs_analyzer_get_room_bounds(analyzer, k, vertices, &vertices, xyz.data(), indices, &indices, got.data()),
+                RS_SUCCESS);
+      EXPECT_EQ(got, want.indices);
+      for (std::size_t v = 0; v < want.vertices.size(); ++v)
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(xyz[3 * v + std::size_t(c)], want.vertices[v][c]);
+    }
+    uint32_t vertices = 0, indices = 0;
+    EXPECT_EQ(rs_analyzer_get_room_bounds(analyzer, uint32_t(expected.rooms.size()), 0, &vertices, nullptr, 0, &indices,
+                                          nullptr),
+              RS_ERROR_INVALID_ARGUMENT);
     EXPECT_EQ(rs_analyzer_get_area_places(analyzer, 0, nullptr, nullptr), RS_ERROR_INVALID_ARGUMENT);
     EXPECT_EQ(rs_analyzer_get_rooms(analyzer, 2, &count, nullptr), RS_ERROR_INVALID_ARGUMENT);
     rs_analyzer_destroy(analyzer);

@@ -1,6 +1,8 @@
 // `roomsense analyze` as a user runs it: exit codes, one clear stderr line on bad input, the JSON.
 #include "roomsense/mruk_room.h"
 #include "roomsense/analysis.h"
+#include "roomsense/bounds.h"
+#include "roomsense/scanio.h"
 #include "roomsense/queries.h"
 #include "roomsense/synthetic.h"
 #include "rooms.h"
@@ -14,6 +16,7 @@
 #include <cmath>
 #include <vector>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -56,6 +59,26 @@ TEST(Cli, AnalyzesTheBuiltInRoomIntoJsonAndBounds) {
   char magic[4] = {};
   bounds.read(magic, 4);
   EXPECT_EQ(std::string(magic, 4), "glTF");
+}
+
+// Issue 15: --room-bounds writes one closed mesh per room of the JSON, each around its own room.
+TEST(Cli, WritesEachRoomsBoundsOfTheFlat) {
+  const std::string json = temp_path("flat.json"), dir = temp_path("flat_rooms");
+  std::filesystem::remove_all(dir);
+  const CliRun r = run_cli("analyze synthetic:flat --json " + json + " --room-bounds " + dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(json);
+  const auto doc = nlohmann::json::parse(in);
+  ASSERT_EQ(doc["rooms"].size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::string obj = dir + "/room_" + std::to_string(k) + ".obj";
+    const roomsense::Scan mesh = roomsense::scanio::load_mesh_file(obj);
+    EXPECT_EQ(mesh.indices.size() / 3, doc["rooms"][k]["bounds"]["triangles"].get<std::size_t>()) << obj;
+    EXPECT_TRUE(doc["rooms"][k]["bounds"]["closed"].get<bool>());
+    EXPECT_TRUE(roomsense::check_closure(roomsense::BoundsMesh{mesh.vertices, mesh.indices}).closed()) << obj;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir + "/room_3.obj"));
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Cli, BadInputGetsOneClearLineAndAnErrorStatus) {

@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
+#include <span>
 #include <cmath>
 #include <cstdio>
 
@@ -280,6 +282,94 @@ TEST(Rooms, EveryAreaOfTheFlatLiesInTheRoomItNamesAndTheFloorIsCovered) {
     const double share = double(covered) / double(std::max(free, 1));
     std::printf("[ figures  ] flat room %d: floor areas cover %.1f %% of its free floor\n", truth_of_room[k], 100.0 * share);
     EXPECT_GE(share, 0.5);
+  }
+}
+
+}  // namespace
+}  // namespace roomsense
+
+namespace roomsense {
+namespace {
+
+// Issue 15: a closed bounds mesh per room. Each keeps its room's free space (as the house's storeys, on the
+// room's volume) and none of the other rooms' beyond their doorways, and its mesh spans its room.
+TEST(Rooms, EachRoomHasAClosedBoundsMeshAroundItsOwnFreeSpace) {
+  const synth::RoomSpec spec = synth::three_room_flat();
+  const AnalysisResult& r = flat();
+  ASSERT_TRUE(r.ok());
+  ASSERT_EQ(r.room_bounds.size(), r.rooms.size());
+  const std::vector<synth::Rect> truth = synth::three_room_flat_rooms();
+  const GridSpec& s = r.voxels.grid.spec;
+  const int reach = int(std::lround(0.3f / s.voxel_size));
+  const auto voxel_of = [&](glm::vec3 p) { return glm::ivec3(glm::floor((p - s.origin) / s.voxel_size)); };
+  for (std::size_t k = 0; k < r.rooms.size(); ++k) {
+    const BoundsMesh& mesh = r.room_bounds[k];
+    EXPECT_TRUE(check_closure(mesh).closed()) << "room " << k;
+    ASSERT_FALSE(mesh.indices.empty());
+    const int t = true_room({r.rooms[k].center.x, r.rooms[k].center.z}, 0.0f);
+    ASSERT_GE(t, 0);
+    // The room's volume, as analyze() built the mesh from it; its free space is what the room's centre reaches.
+    const std::vector<std::uint8_t> mask = room_mask(s, r.features->room, r.features->rooms, int(k), reach);
+    const BoundsStorey storey = bounds_storeys(r)[0];
+    std::vector<std::uint8_t> volume = room_bounds_volume(r.voxels.grid, storey, mask);
+    fill_edge_contacts(s, volume);
+    EXPECT_EQ(mesh.indices, build_room_bounds(r.voxels.grid, storey, mask).indices);
+    std::vector<std::uint8_t> reached(volume.size(), 0);
+    std::vector<glm::ivec3> stack{voxel_of({r.rooms[k].center.x, 1.2f, r.rooms[k].center.z})};
+    ASSERT_EQ(volume[s.index(stack[0].x, stack[0].y, stack[0].z)], 0) << "room " << k << "'s centre is solid";
+    reached[s.index(stack[0].x, stack[0].y, stack[0].z)] = 1;
+    while (!stack.empty()) {
+      const glm::ivec3 v = stack.back();
+      stack.pop_back();
+      for (const glm::ivec3 d : {glm::ivec3(1, 0, 0), glm::ivec3(-1, 0, 0), glm::ivec3(0, 1, 0), glm::ivec3(0, -1, 0),
+                                 glm::ivec3(0, 0, 1), glm::ivec3(0, 0, -1)}) {
+        const glm::ivec3 n = v + d;
+        if (!s.contains(n.x, n.y, n.z)) continue;
+        const std::size_t i = s.index(n.x, n.y, n.z);
+        if (volume[i] || reached[i]) continue;
+        reached[i] = 1;
+        stack.push_back(n);
+      }
+    }
+    std::array<std::size_t, 3> free{}, kept{};
+    for (float y = 0.23f; y < spec.ceiling_y - 0.2f; y += 0.1f)
+      for (float z = -3.0f; z < 3.0f; z += 0.1f)
+        for (float x = -4.5f; x < 4.5f; x += 0.1f) {
+          const glm::vec2 p{x + 0.033f, z + 0.027f};
+          if (synth::distance_to_walls(spec, p) < 0.15f || synth::distance_to_furniture(spec, p) < 0.15f) continue;
+          if (const auto top = synth::furniture_top_at(spec, p); top && y < *top + 0.15f) continue;
+          const int owner = true_room(p, 0.0f);
+          if (owner < 0) continue;
+          // 0.7 m either side of a doorway belongs to both rooms: the split runs somewhere through it.
+          bool near_door = false;
+          for (const synth::Partition& w : spec.partitions)
+            for (const synth::Doorway& d : w.doorways) {
+              const glm::vec2 dir = glm::normalize(w.b - w.a);
+              const glm::vec2 lo = w.a + dir * d.u0, hi = w.a + dir * d.u1;
+              const glm::vec2 mid = 0.5f * (lo + hi);
+              near_door = near_door || glm::distance(p, mid) < 0.5f * glm::distance(lo, hi) + 0.7f;
+            }
+          if (near_door) continue;
+          const glm::ivec3 v = voxel_of({p.x, y, p.y});
+          ++free[std::size_t(owner)];
+          kept[std::size_t(owner)] += s.contains(v.x, v.y, v.z) && reached[s.index(v.x, v.y, v.z)] ? 1 : 0;
+        }
+    for (int o = 0; o < 3; ++o) {
+      const double share = double(kept[std::size_t(o)]) / double(std::max<std::size_t>(free[std::size_t(o)], 1));
+      if (o == t) {
+        std::printf("[ figures  ] flat room %d: bounds of %zu triangles keep %.2f %% of its %zu free points\n", t,
+                    mesh.indices.size() / 3, 100.0 * share, free[std::size_t(o)]);
+        EXPECT_GE(share, 0.99) << "room " << t;
+      } else {
+        EXPECT_EQ(kept[std::size_t(o)], 0u) << "room " << t << "'s bounds hold free space of room " << o;
+      }
+    }
+    // Its furniture is enclosed: no part of it is free space.
+    for (const synth::Box& b : spec.boxes)
+      for (float y = 0.05f; y < b.height - 0.05f; y += 0.1f) {
+        const glm::ivec3 v = voxel_of({b.centre.x, y, b.centre.y});
+        EXPECT_FALSE(s.contains(v.x, v.y, v.z) && reached[s.index(v.x, v.y, v.z)]) << "box at " << b.centre.x;
+      }
   }
 }
 

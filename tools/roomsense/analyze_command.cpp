@@ -116,6 +116,15 @@ int analyze_command(const std::vector<std::string>& args) {
       if (!result.ok()) throw Error(ErrorCode::BadParameter, "no bounds to write: " + result.status_message);
       write_bounds(result.bounds, *options.bounds_path);
     }
+    if (options.room_bounds_dir) {
+      if (!result.ok()) throw Error(ErrorCode::BadParameter, "no bounds to write: " + result.status_message);
+      std::error_code ec;
+      std::filesystem::create_directories(*options.room_bounds_dir, ec);
+      if (ec) throw Error(ErrorCode::Io, "cannot create " + *options.room_bounds_dir + ": " + ec.message());
+      for (std::size_t k = 0; k < result.room_bounds.size(); ++k)
+        write_bounds(result.room_bounds[k],
+                     (std::filesystem::path(*options.room_bounds_dir) / ("room_" + std::to_string(k) + ".obj")).string());
+    }
     if (options.report_dir) {
       if (!result.ok()) throw Error(ErrorCode::BadParameter, "no report to write: " + result.status_message);
       write_report(report_input(result, scan, report_title(options.scan)), *options.report_dir);

@@ -18,10 +18,12 @@ simplified room-bounds mesh (the voxel pipeline of the thesis, chapter 3).
 SCAN                  an OBJ, PLY, glTF or GLB file, a Quest scene capture or a Meta MRUK
                       room (.json), or synthetic:NAME for a built-in room
                       (NAME: default, large-triangles, rotated, pentagon, hall, thesis-room1,
-                      house)
+                      flat, house)
 options:
   --json OUT.json     write the analysis (schema roomsense.analysis/1); without it, print a summary
   --bounds OUT.obj    write the room-bounds mesh (.obj or .glb)
+  --room-bounds DIR   write each room's own bounds mesh (closed across its doorways) into DIR
+                      (created if needed) as room_K.obj, K the room's index in the JSON's rooms
   --report DIR        write pictures into DIR (created if needed): plan.svg, a top view of
                       footprint, walls, furniture tops and areas coloured by reach; scene.glb,
                       the scan, the bounds and the areas as glTF nodes a viewer can toggle
@@ -75,6 +77,7 @@ AnalyzeOptions parse_analyze_options(const std::vector<std::string>& args) {
     };
     if (a == "--json") o.json_path = value();
     else if (a == "--bounds") o.bounds_path = value();
+    else if (a == "--room-bounds") o.room_bounds_dir = value();
     else if (a == "--report") o.report_dir = value();
     else if (a == "--up") {
       const std::string& v = value();

@@ -13,6 +13,7 @@ struct AnalyzeOptions {
   std::string scan;  // a file, or synthetic:NAME
   std::optional<std::string> json_path;
   std::optional<std::string> bounds_path;
+  std::optional<std::string> room_bounds_dir;
   std::optional<std::string> report_dir;  // plan.svg and scene.glb go there
   SourceFrame frame;
   float voxel_size = 0.10f;

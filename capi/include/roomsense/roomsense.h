@@ -256,6 +256,14 @@ ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_get_bounds(rs_analyzer* analyzer, ui
                                                        uint32_t* vertex_count, float* xyz, uint32_t index_capacity,
                                                        uint32_t* index_count, uint32_t* indices);
 
+/* API 1.2: one room's own bounds (room: an index into rs_analyzer_get_rooms), closed across its doorways where
+ * the next room begins; otherwise as rs_analyzer_get_bounds. A room index out of range is
+ * RS_ERROR_INVALID_ARGUMENT. */
+ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_get_room_bounds(rs_analyzer* analyzer, uint32_t room,
+                                                            uint32_t vertex_capacity, uint32_t* vertex_count,
+                                                            float* xyz, uint32_t index_capacity,
+                                                            uint32_t* index_count, uint32_t* indices);
+
 /* A line for people about the last compute, NUL-terminated (two-call idiom; count includes the NUL):
  * "ok" and any warnings (skipped vertices, ...), or why it failed. */
 ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_get_message(rs_analyzer* analyzer, uint32_t capacity, uint32_t* count,

@@ -83,6 +83,9 @@ struct AnalysisResult {
   std::vector<Area> areas;
   AreaCounts area_counts;         // summed over the storeys
   BoundsMesh bounds;              // one closed mesh around every storey's free space
+  // Beyond the thesis (issue 15): one closed mesh per room (index as rooms), around its free space and the
+  // walls nearest it, closed across its doorways where it meets the next room. With one room, `bounds`.
+  std::vector<BoundsMesh> room_bounds;
   StageTimings timings;
   bool ok() const { return status == AnalysisStatus::Ok; }
   // The features of storeys[index]; requires ok() and index < storeys.size().

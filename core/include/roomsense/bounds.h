@@ -66,6 +66,18 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, std::span<const B
 BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys, const BoundsParams& params = {},
                         unsigned threads = 0, std::stop_token stop = {});
 
+// Beyond the thesis (issue 15): the bounds volume of one room of a storey. The storey's volume built over
+// `room_columns` (the room's part of its B) and, on the rest of its B (the other rooms), solid from floor to
+// ceiling: the room's shell closes across its doorways where the next room begins.
+std::vector<std::uint8_t> room_bounds_volume(const VoxelGrid& grid, const BoundsStorey& storey,
+                                             const std::vector<std::uint8_t>& room_columns,
+                                             const BoundsParams& params = {}, unsigned threads = 0,
+                                             const std::stop_token& stop = {});
+// That volume, fill_edge_contacts and mesh_volume.
+BoundsMesh build_room_bounds(const VoxelGrid& grid, const BoundsStorey& storey,
+                             const std::vector<std::uint8_t>& room_columns, const BoundsParams& params = {},
+                             unsigned threads = 0, std::stop_token stop = {});
+
 // Edges used by other than exactly two triangles, and edges not used once in each direction (a closed,
 // consistently oriented surface has none of either). For tests and for the CLI's report.
 struct MeshClosure {

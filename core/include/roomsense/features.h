@@ -128,6 +128,10 @@ RoomSplit split_rooms(const GridSpec& spec, const std::vector<std::uint8_t>& ins
                       const std::vector<std::uint8_t>& walls, float min_passage, float min_room_area);
 // The room of column (x, z), or of the nearest column with one within `reach` columns; kNoRoom if none.
 int room_at(const GridSpec& spec, const RoomSplit& rooms, int x, int z, int reach);
+// The columns of `mask` (e.g. B) whose room_at is `room`: its free columns and the walls and doorway columns
+// nearest it. Every column of `mask` within `reach` of a room belongs to exactly one room's mask.
+std::vector<std::uint8_t> room_mask(const GridSpec& spec, const std::vector<std::uint8_t>& mask, const RoomSplit& rooms,
+                                    int room, int reach);
 
 // All of §3.2 on one storey of a grid: its levels and count_columns over them. C, D and E run in parallel when threads allows; the result does not
 // depend on the thread count. A stop request throws Error(Cancelled) between the steps.

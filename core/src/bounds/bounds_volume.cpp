@@ -214,6 +214,28 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, std::span<const B
   return volume;
 }
 
+std::vector<std::uint8_t> room_bounds_volume(const VoxelGrid& grid, const BoundsStorey& storey,
+                                             const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
+                                             unsigned threads, const std::stop_token& stop) {
+  const GridSpec& s = grid.spec;
+  std::vector<std::uint8_t> volume = bounds_volume(grid, storey.levels, storey.y_end, room_columns, params, threads, stop);
+  const int lo = std::max(storey.levels.floor, 0), hi = std::min(storey.levels.ceiling, s.ny - 1);
+  for (std::size_t col = 0; col < s.column_count(); ++col) {
+    if (!(*storey.room)[col] || room_columns[col]) continue;
+    std::uint8_t* out = volume.data() + col * std::size_t(s.ny);
+    for (int y = lo; y <= hi; ++y) out[y] = 1;
+  }
+  return volume;
+}
+
+BoundsMesh build_room_bounds(const VoxelGrid& grid, const BoundsStorey& storey,
+                             const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
+                             unsigned threads, std::stop_token stop) {
+  std::vector<std::uint8_t> volume = room_bounds_volume(grid, storey, room_columns, params, threads, stop);
+  fill_edge_contacts(grid.spec, volume);
+  return mesh_volume(grid.spec, volume, threads, stop);
+}
+
 BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys, const BoundsParams& params,
                         unsigned threads, std::stop_token stop) {
   std::vector<std::uint8_t> volume = bounds_volume(grid, storeys, params, threads, stop);

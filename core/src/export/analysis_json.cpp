@@ -1,7 +1,7 @@
 // The CLI's JSON, schema roomsense.analysis/1 (DESIGN.md). Extra members beyond the contract: status,
 // message, warnings, input.{outlier_vertices, dropped_triangles, mode}, grid.backend, bounds.closed,
 // areas[].orientation (the pose quaternion x, y, z, w), areas[].storey (an index into storeys, main first),
-// areas[].room (an index into rooms, or null), rooms (issue 15),
+// areas[].room (an index into rooms, or null), rooms (issue 15, with rooms[].bounds as bounds),
 // storeys[].room_m2 (B, Eq. 3.12) and area_counts (per type: wall, floor, ceiling, furniture).
 #include "roomsense/export.h"
 
@@ -16,6 +16,12 @@ namespace {
 nlohmann::json height(float y, bool ok) { return ok && std::isfinite(y) ? nlohmann::json(y) : nlohmann::json(nullptr); }
 
 nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+nlohmann::json bounds_json(const BoundsMesh& mesh, bool ok) {
+  return {{"vertices", mesh.vertices.size()},
+          {"triangles", mesh.indices.size() / 3},
+          {"closed", ok && check_closure(mesh).closed()}};
+}
 
 nlohmann::json areas_json(const std::vector<Area>& areas) {
   nlohmann::json out = nlohmann::json::array();
@@ -58,12 +64,17 @@ std::string analysis_json(const AnalysisResult& r, const JsonSource& source) {
   }
   if (storeys.empty()) storeys.push_back({{"floor_y", nullptr}, {"ceiling_y", nullptr}});
   json rooms = json::array();
-  for (const Room& room : r.rooms)
-    rooms.push_back({{"storey", room.storey},
-                     {"floor_area_m2", room.floor_area},
-                     {"center", vec(room.center)},
-                     {"floor_y", room.floor_y},
-                     {"ceiling_y", room.ceiling_y}});
+  for (std::size_t k = 0; k < r.rooms.size(); ++k) {
+    const Room& room = r.rooms[k];
+    json entry = {{"storey", room.storey},
+                  {"floor_area_m2", room.floor_area},
+                  {"center", vec(room.center)},
+                  {"floor_y", room.floor_y},
+                  {"ceiling_y", room.ceiling_y}};
+    if (k < r.room_bounds.size())
+      entry["bounds"] = bounds_json(r.room_bounds[k], r.ok());
+    rooms.push_back(std::move(entry));
+  }
   const StageTimings& t = r.timings;
   json doc = {
       {"schema", "roomsense.analysis/1"},
@@ -91,10 +102,7 @@ std::string analysis_json(const AnalysisResult& r, const JsonSource& source) {
       {"areas", areas_json(r.areas)},
       {"area_counts",
        {{"found", r.area_counts.found}, {"deduplicated", r.area_counts.deduplicated}, {"reduced", r.area_counts.reduced}}},
-      {"bounds",
-       {{"vertices", r.bounds.vertices.size()},
-        {"triangles", r.bounds.indices.size() / 3},
-        {"closed", r.ok() && check_closure(r.bounds).closed()}}},
+      {"bounds", bounds_json(r.bounds, r.ok())},
       {"timings_ms",
        {{"load", source.load_ms},
         {"prepare", t.prepare},

@@ -124,4 +124,15 @@ int room_at(const GridSpec& spec, const RoomSplit& rooms, int x, int z, int reac
   return kNoRoom;
 }
 
+std::vector<std::uint8_t> room_mask(const GridSpec& spec, const std::vector<std::uint8_t>& mask, const RoomSplit& rooms,
+                                    int room, int reach) {
+  std::vector<std::uint8_t> out(spec.column_count(), 0);
+  for (int z = 0; z < spec.nz; ++z)
+    for (int x = 0; x < spec.nx; ++x) {
+      const std::size_t c = spec.column(x, z);
+      if (mask[c] && room_at(spec, rooms, x, z, reach) == room) out[c] = 1;
+    }
+  return out;
+}
+
 }  // namespace roomsense

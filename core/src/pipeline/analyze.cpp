@@ -63,6 +63,25 @@ void assign_rooms(AnalysisResult& r) {
   }
 }
 
+// Issue 15: each room's bounds (build_room_bounds) over its room_mask of its storey's B (its free columns and
+// the walls within 0.3 m of them). A scan of one room has its bounds.
+std::vector<BoundsMesh> build_room_bounds(const AnalysisResult& r, const AnalysisOptions& options) {
+  if (r.rooms.size() <= 1) return std::vector<BoundsMesh>(r.rooms.size(), r.bounds);
+  const GridSpec& s = r.voxels.grid.spec;
+  const int reach = std::max(1, int(std::lround(0.3 / double(s.voxel_size))));
+  const std::vector<BoundsStorey> storeys = bounds_storeys(r);
+  std::vector<BoundsMesh> out;
+  for (std::size_t i = 0; i < storeys.size(); ++i) {
+    const RoomSplit& split = r.storey_features(i).rooms;
+    for (int k = 0; k < split.count; ++k) {
+      stop_point(options.stop);
+      const std::vector<std::uint8_t> mask = room_mask(s, *storeys[i].room, split, k, reach);
+      out.push_back(build_room_bounds(r.voxels.grid, storeys[i], mask, options.bounds, options.threads, options.stop));
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<BoundsStorey> bounds_storeys(const AnalysisResult& result) {
@@ -176,6 +195,7 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
   stop_point(options.stop);
   if (options.build_bounds) {
     r.bounds = build_bounds(r.voxels.grid, bounds_storeys(r), options.bounds, options.threads, options.stop);
+    r.room_bounds = build_room_bounds(r, options);
     r.timings.bounds = clock.lap();
   }
   r.timings.total = r.timings.prepare + r.timings.voxelize + r.timings.features + r.timings.areas +

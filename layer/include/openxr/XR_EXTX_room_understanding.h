@@ -26,7 +26,8 @@
 **      query and seed. A query the room cannot satisfy succeeds with no result and says why.
 **   7. Spec version 3: whole homes. Chain XrRoomHomeLayoutEXTX to XrRoomLayoutEXTX::next for every storey's
 **      heights and the rooms (each storey's free space split at doorways and passages at most 1.2 m wide
-**      between walls), and XrRoomAreaLocationEXTX to an XrRoomAreaEXTX's next for that area's storey and room.
+**      between walls), XrRoomAreaLocationEXTX to an XrRoomAreaEXTX's next for that area's storey and room, and
+**      XrRoomBoundsMeshRoomEXTX to XrRoomBoundsMeshEXTX::next for one room's own closed bounds mesh.
 **   Destroying the session (or the instance) destroys its analyzers, also while an analysis runs. Once the
 **   runtime answered one of the layer's calls in the session with XR_ERROR_SESSION_LOST (the compute then ends
 **   FAILED), xrCreateRoomAnalyzerEXTX and xrComputeRoomEXTX return XR_ERROR_SESSION_LOST for that session.
@@ -74,6 +75,7 @@ XR_DEFINE_HANDLE(XrRoomAnalyzerEXTX)
 /* Spec version 3: storeys and rooms. */
 #define XR_TYPE_ROOM_HOME_LAYOUT_EXTX ((XrStructureType)1099999017)
 #define XR_TYPE_ROOM_AREA_LOCATION_EXTX ((XrStructureType)1099999018)
+#define XR_TYPE_ROOM_BOUNDS_MESH_ROOM_EXTX ((XrStructureType)1099999019)
 
 /* XrRoomAreaLocationEXTX::roomIndex of an area in no room. */
 #define XR_ROOM_INDEX_NONE_EXTX 0xFFFFFFFFu
@@ -231,6 +233,15 @@ typedef struct XrRoomAreaLocationEXTX {
     uint32_t storeyIndex; /* 0: the main storey */
     uint32_t roomIndex;   /* into XrRoomHomeLayoutEXTX::rooms, or XR_ROOM_INDEX_NONE_EXTX */
 } XrRoomAreaLocationEXTX;
+
+/* Chained to XrRoomBoundsMeshEXTX::next: xrGetRoomBoundsMeshEXTX returns that room's bounds instead, a closed
+** mesh around its free space, closed across its doorways where the next room begins (two-call idiom as usual).
+** A roomIndex not below XrRoomHomeLayoutEXTX::roomCountOutput returns XR_ERROR_VALIDATION_FAILURE. */
+typedef struct XrRoomBoundsMeshRoomEXTX {
+    XrStructureType type;
+    const void* XR_MAY_ALIAS next;
+    uint32_t roomIndex;
+} XrRoomBoundsMeshRoomEXTX;
 
 /* ---- Queries (spec version 2) ----
 ** All positions and directions are in the analyzer's baseSpace. Invalid arguments (a wrong structure type, NULL,

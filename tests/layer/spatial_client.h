@@ -51,7 +51,8 @@ inline const std::vector<SpatialComponent> kPlaneComponents = {
     XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT, XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT,
     XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT};
 inline const std::vector<SpatialComponent> kPlacementComponents = {
-    XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT, XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX, XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT};
+    XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT, XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX, XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT,
+    XR_SPATIAL_COMPONENT_TYPE_ROOM_LOCATION_EXTX};
 
 inline bool has_component(const std::vector<SpatialComponent>& list, SpatialComponent c) {
   return std::find(list.begin(), list.end(), c) != list.end();

@@ -3,6 +3,7 @@
 #include "roomsense/analysis.h"
 #include "roomsense/bounds.h"
 #include "roomsense/export.h"
+#include "roomsense/surfaces.h"
 #include "roomsense/synthetic.h"
 
 #include <glm/geometric.hpp>
@@ -371,6 +372,66 @@ TEST(Rooms, EachRoomHasAClosedBoundsMeshAroundItsOwnFreeSpace) {
         EXPECT_FALSE(s.contains(v.x, v.y, v.z) && reached[s.index(v.x, v.y, v.z)]) << "box at " << b.centre.x;
       }
   }
+}
+
+}  // namespace
+}  // namespace roomsense
+
+namespace roomsense {
+namespace {
+
+double polygon_area(const std::vector<glm::vec2>& p) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const glm::vec2 a = p[i], b = p[(i + 1) % p.size()];
+    twice += double(a.x) * double(b.y) - double(b.x) * double(a.y);
+  }
+  return 0.5 * twice;
+}
+
+// Issue 15: each plane says its room. The flat has a floor and a ceiling per room, over that room; each wall
+// faces the room it names; each furniture top stands in the room it names.
+TEST(Rooms, EveryPlaneOfTheFlatSaysItsRoom) {
+  const AnalysisResult& r = flat();
+  ASSERT_TRUE(r.ok());
+  const std::vector<synth::Rect> truth = synth::three_room_flat_rooms();
+  std::vector<int> truth_of_room(r.rooms.size(), -1);
+  for (std::size_t k = 0; k < r.rooms.size(); ++k)
+    truth_of_room[k] = true_room({r.rooms[k].center.x, r.rooms[k].center.z}, 0.0f);
+  std::array<std::vector<int>, 2> horizontal_rooms;  // floors, ceilings
+  std::size_t walls = 0, tops = 0;
+  for (const Surface& s : extract_surfaces(r)) {
+    ASSERT_NE(s.room, kNoRoom) << surface_kind_name(s.kind) << " at " << s.center.x << ", " << s.center.z;
+    ASSERT_LT(std::size_t(s.room), r.rooms.size());
+    const int t = truth_of_room[std::size_t(s.room)];
+    const synth::Rect& rect = truth[std::size_t(t)];
+    if (s.kind == SurfaceKind::Floor || s.kind == SurfaceKind::Ceiling) {
+      horizontal_rooms[s.kind == SurfaceKind::Floor ? 0 : 1].push_back(s.room);
+      const double area = polygon_area(s.polygon), want = double(rect.hi.x - rect.lo.x) * double(rect.hi.y - rect.lo.y);
+      std::printf("[ figures  ] flat room %d: %s plane of %.1f m2 (%.1f m2 inside its walls)\n", t,
+                  std::string(surface_kind_name(s.kind)).c_str(), area, want);
+      EXPECT_NEAR(area, want, 0.15 * want) << surface_kind_name(s.kind) << " of room " << t;
+      const glm::vec3 y_axis = s.y_axis();
+      for (const glm::vec2& p : s.polygon) {
+        const glm::vec3 w = s.center + s.x_axis * p.x + y_axis * p.y;
+        EXPECT_TRUE(in_rect(rect, {w.x, w.z}, 0.2f)) << surface_kind_name(s.kind) << " of room " << t << " reaches "
+                                                     << w.x << ", " << w.z;
+      }
+    } else if (s.kind == SurfaceKind::Wall) {
+      ++walls;
+      const glm::vec3 front = s.center + 0.15f * s.normal;
+      EXPECT_EQ(true_room({front.x, front.z}, 0.1f), t) << "wall at " << s.center.x << ", " << s.center.z;
+    } else {
+      ++tops;
+      EXPECT_TRUE(in_rect(rect, {s.center.x, s.center.z}, 0.0f)) << "top at " << s.center.x << ", " << s.center.z;
+    }
+  }
+  for (std::vector<int>& rooms : horizontal_rooms) {
+    std::sort(rooms.begin(), rooms.end());
+    EXPECT_EQ(rooms, (std::vector<int>{0, 1, 2}));
+  }
+  EXPECT_GE(walls, 10u);
+  EXPECT_GE(tops, 3u);
 }
 
 }  // namespace

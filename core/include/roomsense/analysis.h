@@ -97,6 +97,16 @@ struct AnalysisResult {
 // What the bounds read of each storey of an ok() result (build_bounds over several storeys).
 std::vector<BoundsStorey> bounds_storeys(const AnalysisResult& result);
 
+// Beyond the thesis (issue 15): how far a point may lie from its room's free columns and still be in it (a
+// wall's face, the walls around a room's floor), in metres, and in columns of a grid.
+inline constexpr float kRoomReach = 0.3f;
+int room_reach_columns(const GridSpec& spec);
+// The index into result.rooms of storey `storey`'s first room.
+int first_room_of(const AnalysisResult& result, std::uint32_t storey);
+// The room (an index into result.rooms) of storey `storey` at p's column, or of the nearest column of a room
+// within kRoomReach; kNoRoom if none.
+int room_at_point(const AnalysisResult& result, std::uint32_t storey, const glm::vec3& p);
+
 // Throws Error for bad input (see input.h and grid.h), Error(TooMuchWork) past voxel_test_budget and
 // Error(Cancelled) on a stop request. A scan without a floor/ceiling pair at least
 // features.min_floor_ceiling apart is no error: it returns status NoFloorCeiling with the grid and counts

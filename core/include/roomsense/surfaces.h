@@ -41,6 +41,8 @@ struct SurfaceParams {
 struct Surface {
   SurfaceKind kind = SurfaceKind::Floor;
   std::uint32_t storey = 0;      // index into AnalysisResult::storeys
+  int room = kNoRoom;            // index into AnalysisResult::rooms: the room a wall faces, a top stands in, a
+                                 // floor or ceiling covers; kNoRoom where none is near (a stray top)
   glm::vec3 center{0.0f};        // centre of the bounding rectangle, on the plane
   glm::vec3 normal{0.0f, 1.0f, 0.0f};  // unit, into free space: +Z of the pose
   glm::vec3 x_axis{1.0f, 0.0f, 0.0f};  // unit, along the width; horizontal for walls, so +Y = normal × x is up
@@ -60,7 +62,9 @@ struct Surface {
 // walls go round their storey's outline counter-clockwise seen from above, from its lowest corner in z
 // (then x), and tops by centre z, then x. Empty for a result that is not ok.
 // - Each storey's floor and ceiling follow the largest region of its B with its holes filled, its walls its
-//   A; furniture tops come from each storey's C.
+//   A; furniture tops come from each storey's C. A storey of several rooms (RoomFeatures::rooms) has one
+//   floor and one ceiling per room instead, over the room's part of that region (room_mask); its walls
+//   still follow the storey's outline, each saying the room it faces.
 // - Horizontal surfaces take x_axis along the side of their least-area bounding rectangle nearest +X (so
 //   +X for a room on the grid axes); then y_axis is -Z-ish for a floor or a top, +Z-ish for a ceiling.
 // - Walls lie on the line through their wall columns, where the scanned surface is (within half a voxel).

@@ -8,6 +8,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -34,10 +35,8 @@ std::string metres(float value) { return fixed_or_g(value, 2) + " m"; }
 void assign_rooms(AnalysisResult& r) {
   const GridSpec& s = r.voxels.grid.spec;
   const double cell = double(s.voxel_size) * double(s.voxel_size);
-  std::vector<int> first_room;  // per storey, its first index into r.rooms
   for (std::uint32_t i = 0; i < r.storeys.size(); ++i) {
     const RoomSplit& split = r.storey_features(i).rooms;
-    first_room.push_back(int(r.rooms.size()));
     std::vector<glm::dvec2> sum(std::size_t(split.count), glm::dvec2(0.0));
     std::vector<std::size_t> cells(std::size_t(split.count), 0);
     for (std::size_t c = 0; c < split.room.size(); ++c) {
@@ -54,13 +53,8 @@ void assign_rooms(AnalysisResult& r) {
                          storey.floor_y, storey.ceiling_y});
     }
   }
-  const int reach = std::max(1, int(std::lround(0.3 / double(s.voxel_size))));
-  for (Area& a : r.areas) {
-    const glm::vec3 p = a.type == AreaType::Wall ? a.center + 0.5f * s.voxel_size * a.normal : a.center;
-    const int x = int(std::floor((p.x - s.origin.x) / s.voxel_size)), z = int(std::floor((p.z - s.origin.z) / s.voxel_size));
-    const int local = room_at(s, r.storey_features(a.storey).rooms, x, z, reach);
-    a.room = local == kNoRoom ? kNoRoom : first_room[a.storey] + local;
-  }
+  for (Area& a : r.areas)
+    a.room = room_at_point(r, a.storey, a.type == AreaType::Wall ? a.center + 0.5f * s.voxel_size * a.normal : a.center);
 }
 
 // Issue 15: each room's bounds (build_room_bounds) over its room_mask of its storey's B (its free columns and
@@ -68,7 +62,7 @@ void assign_rooms(AnalysisResult& r) {
 std::vector<BoundsMesh> build_room_bounds(const AnalysisResult& r, const AnalysisOptions& options) {
   if (r.rooms.size() <= 1) return std::vector<BoundsMesh>(r.rooms.size(), r.bounds);
   const GridSpec& s = r.voxels.grid.spec;
-  const int reach = std::max(1, int(std::lround(0.3 / double(s.voxel_size))));
+  const int reach = room_reach_columns(s);
   const std::vector<BoundsStorey> storeys = bounds_storeys(r);
   std::vector<BoundsMesh> out;
   for (std::size_t i = 0; i < storeys.size(); ++i) {
@@ -91,6 +85,23 @@ std::vector<BoundsStorey> bounds_storeys(const AnalysisResult& result) {
     out.push_back({f.levels, f.y_end, &f.room});
   }
   return out;
+}
+
+int room_reach_columns(const GridSpec& spec) {
+  return std::max(1, int(std::lround(double(kRoomReach) / double(spec.voxel_size))));
+}
+
+int first_room_of(const AnalysisResult& result, std::uint32_t storey) {
+  return int(std::count_if(result.rooms.begin(), result.rooms.end(), [&](const Room& r) { return r.storey < storey; }));
+}
+
+int room_at_point(const AnalysisResult& result, std::uint32_t storey, const glm::vec3& p) {
+  if (storey >= result.storeys.size()) return kNoRoom;
+  const GridSpec& s = result.voxels.grid.spec;
+  const float fx = std::floor((p.x - s.origin.x) / s.voxel_size), fz = std::floor((p.z - s.origin.z) / s.voxel_size);
+  if (!(std::fabs(fx) < 1e8f && std::fabs(fz) < 1e8f)) return kNoRoom;  // NaN or far outside
+  const int local = room_at(s, result.storey_features(storey).rooms, int(fx), int(fz), room_reach_columns(s));
+  return local == kNoRoom ? kNoRoom : first_room_of(result, storey) + local;
 }
 
 AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {

@@ -131,18 +131,40 @@ void storey_surfaces(const AnalysisResult& analysis, std::uint32_t index, const 
   const double voxel = s.voxel_size, min_cells = params.min_area / (voxel * voxel);
   const ColumnMask region = main_region(r.floor_region);
   if (region.count() == 0 || double(region.count()) < min_cells) return;
-  stop_point(stop);
-  const Polygon2 outline = detail::simplify_outline(detail::trace_outline(region), params.outline_tolerance);
-  stop_point(stop);
   detail::WallSearch search;
   search.walls = &r.walls;
   search.bridges = [&](int x, int z) { return bridges(grid, x, z, r); };
   search.opening = params.opening_width / voxel;
   search.min_width = params.min_wall_width / voxel;
-  const detail::StoreyOutline room = detail::fit_walls(outline, search);
-  floors.push_back(horizontal(SurfaceKind::Floor, index, s, room.polygon, r.floor_y, true));
-  for (const detail::WallSegment& segment : room.walls) walls.push_back(wall(index, s, segment, r));
-  ceilings.push_back(horizontal(SurfaceKind::Ceiling, index, s, room.polygon, r.ceiling_y, false));
+  // The floor, the ceiling and the walls around one region, all of room `room`.
+  const auto outline_surfaces = [&](const ColumnMask& part, int room) {
+    stop_point(stop);
+    const Polygon2 outline = detail::simplify_outline(detail::trace_outline(part), params.outline_tolerance);
+    stop_point(stop);
+    const detail::StoreyOutline fitted = detail::fit_walls(outline, search);
+    floors.push_back(horizontal(SurfaceKind::Floor, index, s, fitted.polygon, r.floor_y, true));
+    ceilings.push_back(horizontal(SurfaceKind::Ceiling, index, s, fitted.polygon, r.ceiling_y, false));
+    floors.back().room = ceilings.back().room = room;
+    for (const detail::WallSegment& segment : fitted.walls) {
+      walls.push_back(wall(index, s, segment, r));
+      walls.back().room = room;
+    }
+  };
+  const RoomSplit& split = analysis.storey_features(index).rooms;
+  const int first = first_room_of(analysis, index);
+  if (split.count <= 1) {
+    outline_surfaces(region, split.count == 1 ? first : kNoRoom);
+    return;
+  }
+  // Several rooms: each room's part of the region (its free columns and the walls nearest it) has its own
+  // floor, ceiling and walls; a wall between two rooms is a plane on each side, a doorway ends them.
+  std::vector<std::uint8_t> cells(s.column_count(), 0);  // the region on the whole grid (it is cropped)
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) cells[s.column(x, z)] = region.at(x - region.x0, z - region.z0) ? 1 : 0;
+  for (int k = 0; k < split.count; ++k) {
+    const ColumnMask part = main_region(mask_of(s, room_mask(s, cells, split, k, room_reach_columns(s))));
+    if (double(part.count()) >= min_cells) outline_surfaces(part, first + k);
+  }
 }
 
 // Furniture tops of one storey: 4-connected runs of C (Eq. 3.13) whose levels differ by at most one
@@ -177,6 +199,7 @@ std::vector<Surface> furniture_tops(const AnalysisResult& analysis, std::uint32_
     const float y = s.origin.y + float(level) * s.voxel_size, above = y - analysis.storeys[storey].floor_y;
     const bool table = above >= params.table_min && above <= params.table_max;
     Surface top = horizontal(table ? SurfaceKind::Table : SurfaceKind::Furniture, storey, s, outline, y, true);
+    top.room = room_at_point(analysis, storey, top.center);
     // A window's sill is C too (wall below, 1 m clear above), but a strip a wall thick is no place to put
     // things; the least-area rectangle measures the narrow side whatever the strip's direction.
     if (std::min(top.extents.x, top.extents.y) >= params.min_top_width) out.push_back(std::move(top));

@@ -386,6 +386,9 @@ typedef struct XrRoomAnalysisJsonEXTX {
 **     XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX (read with XrSpatialComponentPlacementAreaListEXTX);
 **   - one room entity: MESH_3D, the closed room-bounds mesh (VECTOR3F vertices, UINT32 indices, CCW triangles
 **     facing free space).
+** Spec version 3: XR_SPATIAL_COMPONENT_TYPE_ROOM_LOCATION_EXTX, the storey and room of a plane or a placement
+** area (read with XrSpatialComponentRoomLocationListEXTX). Enable it in the placement-areas configuration, or in
+** a plane-tracking configuration, which the layer then serves itself (a runtime's planes do not have it).
 ** A context of this capability cannot also hold the runtime's own capabilities: create two contexts.
 ** The structures below need the XR_EXT_spatial_entity types: they are declared once a header that has them
 ** (<openxr/openxr.h> of OpenXR 1.1.49 or later) came first, or when this header is included again after it. */
@@ -393,6 +396,8 @@ typedef struct XrRoomAnalysisJsonEXTX {
 #define XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX ((XrSpatialComponentTypeEXT)1099999000)
 #define XR_TYPE_SPATIAL_CAPABILITY_CONFIGURATION_PLACEMENT_AREAS_EXTX ((XrStructureType)1099999007)
 #define XR_TYPE_SPATIAL_COMPONENT_PLACEMENT_AREA_LIST_EXTX ((XrStructureType)1099999008)
+#define XR_SPATIAL_COMPONENT_TYPE_ROOM_LOCATION_EXTX ((XrSpatialComponentTypeEXT)1099999001)
+#define XR_TYPE_SPATIAL_COMPONENT_ROOM_LOCATION_LIST_EXTX ((XrStructureType)1099999020)
 
 
 typedef XrResult(XRAPI_PTR* PFN_xrCreateRoomAnalyzerEXTX)(XrSession session, const XrRoomAnalyzerCreateInfoEXTX* createInfo,
@@ -469,6 +474,20 @@ typedef struct XrSpatialPlacementAreaDataEXTX {
     float volumeHeight;     /* clear space checked in front of the surface, along +Z */
     uint32_t categoryFlags; /* thesis Eq. 3.58 bits: XR_ROOM_AREA_CATEGORY_*_BIT_EXTX */
 } XrSpatialPlacementAreaDataEXTX;
+
+/* Where a plane or placement area lies (spec version 3): as XrRoomAreaLocationEXTX. */
+typedef struct XrSpatialRoomLocationDataEXTX {
+    uint32_t storeyIndex; /* 0: the main storey */
+    uint32_t roomIndex;   /* into XrRoomHomeLayoutEXTX::rooms, or XR_ROOM_INDEX_NONE_EXTX */
+} XrSpatialRoomLocationDataEXTX;
+
+/* Chained to XrSpatialComponentDataQueryResultEXT::next, one element per entity id of the query. */
+typedef struct XrSpatialComponentRoomLocationListEXTX {
+    XrStructureType type;
+    void* XR_MAY_ALIAS next;
+    uint32_t locationCount;
+    XrSpatialRoomLocationDataEXTX* locations;
+} XrSpatialComponentRoomLocationListEXTX;
 
 /* Chained to XrSpatialComponentDataQueryResultEXT::next, one element per entity id of the query. */
 typedef struct XrSpatialComponentPlacementAreaListEXTX {

@@ -41,6 +41,7 @@ ServedEntity plane_of(const Surface& s) {
   e.extents = {s.extents.x, s.extents.y};
   e.alignment = alignment_of(s.kind);
   e.label = label_of(s.kind);
+  e.location = {s.storey, s.room == kNoRoom ? XR_ROOM_INDEX_NONE_EXTX : std::uint32_t(s.room)};
   e.polygon.reserve(s.polygon.size());
   for (const glm::vec2& p : s.polygon) e.polygon.push_back({p.x, p.y});
   // MESH_2D: the outline's own vertices, triangulated; its UINT16 indices reach 65535 vertices, far beyond an outline.
@@ -51,9 +52,10 @@ ServedEntity plane_of(const Surface& s) {
   return e;
 }
 
-ServedEntity area_of(const XrRoomAreaEXTX& a) {
+ServedEntity area_of(const XrRoomAreaEXTX& a, const XrRoomAreaLocationEXTX& location) {
   ServedEntity e;
   e.kind = EntityKind::Area;
+  e.location = {location.storeyIndex, location.roomIndex};
   e.pose = xr::to_rigid(a.pose);
   e.extents = a.extents;
   e.area = {a.areaType, a.size, a.interaction, a.extents, a.volumeHeight, a.categoryFlags};
@@ -102,7 +104,8 @@ bool same_entity(const ServedEntity& a, const ServedEntity& b) {
          near(a.extents.height, b.extents.height) && near_all(a.polygon, b.polygon) && a.mesh_indices == b.mesh_indices &&
          a.area.interaction == b.area.interaction && a.area.categoryFlags == b.area.categoryFlags &&
          near(a.area.volumeHeight, b.area.volumeHeight) && near_all(a.room_vertices, b.room_vertices) &&
-         a.room_indices == b.room_indices;
+         a.room_indices == b.room_indices && a.location.storeyIndex == b.location.storeyIndex &&
+         a.location.roomIndex == b.location.roomIndex;
 }
 
 }  // namespace
@@ -112,9 +115,11 @@ bool ServedEntity::has(XrSpatialComponentTypeEXT component) const {
     case EntityKind::Plane:
       return component == XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT || component == XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT ||
              component == XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT || component == XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT ||
-             component == XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT;
+             component == XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT ||
+             component == XR_SPATIAL_COMPONENT_TYPE_ROOM_LOCATION_EXTX;
     case EntityKind::Area:
-      return component == XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT || component == XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX;
+      return component == XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT || component == XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX ||
+             component == XR_SPATIAL_COMPONENT_TYPE_ROOM_LOCATION_EXTX;
     case EntityKind::Room: return component == XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT;
   }
   return false;
@@ -134,7 +139,7 @@ EntitySet build_entity_set(const RoomResult& result, const EntitySet& previous) 
   std::vector<ServedEntity> fresh;
   fresh.reserve(result.surfaces.size() + result.areas.size() + 1);
   for (const Surface& s : result.surfaces) fresh.push_back(plane_of(s));
-  for (const XrRoomAreaEXTX& a : result.areas) fresh.push_back(area_of(a));
+  for (std::size_t i = 0; i < result.areas.size(); ++i) fresh.push_back(area_of(result.areas[i], result.area_locations[i]));
   if (!result.bounds_indices.empty()) {
     ServedEntity room;
     room.kind = EntityKind::Room;

@@ -27,6 +27,8 @@ struct ServedEntity {
   std::vector<XrVector2f> polygon;          // CCW seen from +Z, in the pose's XY
   std::vector<XrVector2f> mesh_vertices;    // MESH_2D: the polygon triangulated
   std::vector<std::uint16_t> mesh_indices;  // UINT16, as the spec serves MESH_2D
+  // Planes and areas: where they lie
+  XrSpatialRoomLocationDataEXTX location{0, XR_ROOM_INDEX_NONE_EXTX};
   // Areas
   XrSpatialPlacementAreaDataEXTX area{};
   // The room: the bounds mesh, in the pose's frame (the identity: the base space itself)

@@ -34,10 +34,11 @@ constexpr std::size_t kMaxObjects = 1u << 16;                    // live handles
 const std::vector<Component> kPlaneComponents = {
     XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT, XR_SPATIAL_COMPONENT_TYPE_PLANE_ALIGNMENT_EXT,
     XR_SPATIAL_COMPONENT_TYPE_POLYGON_2D_EXT, XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT,
-    XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT};
+    XR_SPATIAL_COMPONENT_TYPE_PLANE_SEMANTIC_LABEL_EXT, XR_SPATIAL_COMPONENT_TYPE_ROOM_LOCATION_EXTX};
 const std::vector<Component> kPlacementComponents = {XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT,
                                                      XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX,
-                                                     XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT};
+                                                     XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT,
+                                                     XR_SPATIAL_COMPONENT_TYPE_ROOM_LOCATION_EXTX};
 
 enum BufferKind : std::uint64_t { kPolygon = 1, kMeshVertices = 2, kMeshIndices = 3 };
 
@@ -488,13 +489,18 @@ XrResult XRAPI_CALL xrQuerySpatialComponentDataEXT(XrSpatialSnapshotEXT snapshot
     const auto [bounds, alignments, polygons, meshes, labels, described] = xr::plane_component_lists(result->next);
     XrSpatialComponentPlacementAreaListEXTX* areas = nullptr;
     XrSpatialComponentMesh3DListEXT* rooms = nullptr;
+    XrSpatialComponentRoomLocationListEXTX* locations = nullptr;
     const xr::ChainedList lists[] = {
         described[0], described[1], described[2], described[3], described[4],
         xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_PLACEMENT_AREA_LIST_EXTX, XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX,
                          areas, &XrSpatialComponentPlacementAreaListEXTX::placementAreaCount,
                          &XrSpatialComponentPlacementAreaListEXTX::placementAreas),
         xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_MESH_3D_LIST_EXT, XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT, rooms,
-                         &XrSpatialComponentMesh3DListEXT::meshCount, &XrSpatialComponentMesh3DListEXT::meshes)};
+                         &XrSpatialComponentMesh3DListEXT::meshCount, &XrSpatialComponentMesh3DListEXT::meshes),
+        xr::chained_list(result->next, XR_TYPE_SPATIAL_COMPONENT_ROOM_LOCATION_LIST_EXTX,
+                         XR_SPATIAL_COMPONENT_TYPE_ROOM_LOCATION_EXTX, locations,
+                         &XrSpatialComponentRoomLocationListEXTX::locationCount,
+                         &XrSpatialComponentRoomLocationListEXTX::locations)};
     if (const XrResult r = xr::lists_named(lists, wanted, result->next,
                                            {XR_TYPE_SPATIAL_COMPONENT_BOUNDED_3D_LIST_EXT, XR_TYPE_SPATIAL_COMPONENT_PARENT_LIST_EXT});
         r != XR_SUCCESS)
@@ -538,6 +544,7 @@ XrResult XRAPI_CALL xrQuerySpatialComponentDataEXT(XrSpatialSnapshotEXT snapshot
                              {e ? buffer_id(id, kMeshIndices) : no_buffer, XR_SPATIAL_BUFFER_TYPE_UINT16_EXT}};
       if (labels) labels->semanticLabels[i] = entity.label;
       if (areas) areas->placementAreas[i] = entity.area;
+      if (locations) locations->locations[i] = entity.location;
       if (rooms)
         rooms->meshes[i] = {pose, {e ? buffer_id(id, kMeshVertices) : no_buffer, XR_SPATIAL_BUFFER_TYPE_VECTOR3F_EXT},
                             {e ? buffer_id(id, kMeshIndices) : no_buffer, XR_SPATIAL_BUFFER_TYPE_UINT32_EXT}};

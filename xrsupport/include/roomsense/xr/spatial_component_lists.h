@@ -26,6 +26,7 @@ struct SpatialComponentData {
   std::vector<XrSpatialMeshDataEXT> meshes2d;
   std::vector<XrSpatialMeshDataEXT> meshes3d;
   std::vector<XrSpatialPlacementAreaDataEXTX> areas;
+  std::vector<XrSpatialRoomLocationDataEXTX> locations;
 };
 
 // Sizes `data` for `n` entities and points `result` at it: its id and state arrays, and a chain of one list
@@ -55,6 +56,7 @@ class SpatialComponentLists {
     link(XR_SPATIAL_COMPONENT_TYPE_MESH_2D_EXT, data.meshes2d, meshes2d_);
     link(XR_SPATIAL_COMPONENT_TYPE_MESH_3D_EXT, data.meshes3d, meshes3d_);
     link(XR_SPATIAL_COMPONENT_TYPE_PLACEMENT_AREA_EXTX, data.areas, areas_);
+    link(XR_SPATIAL_COMPONENT_TYPE_ROOM_LOCATION_EXTX, data.locations, locations_);
     result.next = chain;
     result.entityIdCapacityInput = n;
     result.entityIds = data.ids.data();
@@ -72,6 +74,7 @@ class SpatialComponentLists {
   XrSpatialComponentMesh2DListEXT meshes2d_{XR_TYPE_SPATIAL_COMPONENT_MESH_2D_LIST_EXT};
   XrSpatialComponentMesh3DListEXT meshes3d_{XR_TYPE_SPATIAL_COMPONENT_MESH_3D_LIST_EXT};
   XrSpatialComponentPlacementAreaListEXTX areas_{XR_TYPE_SPATIAL_COMPONENT_PLACEMENT_AREA_LIST_EXTX};
+  XrSpatialComponentRoomLocationListEXTX locations_{XR_TYPE_SPATIAL_COMPONENT_ROOM_LOCATION_LIST_EXTX};
 };
 
 }  // namespace roomsense::xr

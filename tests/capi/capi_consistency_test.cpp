@@ -29,15 +29,28 @@ std::vector<float> flat_vertices(const Scan& scan) {
   return flat;
 }
 
-std::vector<float> thesis_understanding(const std::vector<float>& flat) {
+// What the understanding job computes on `flat`: analyze() of the point cloud, without bounds.
+AnalysisResult thesis_expectation(const std::vector<float>& flat) {
+  AnalysisOptions options;
+  options.build_bounds = false;
+  return analyze(scan_from_flat_array(flat.data(), static_cast<long long>(flat.size())), options);
+}
+
+// Starts the understanding job on `flat` and polls it until it is done (or two minutes passed); the code.
+float* finished_understanding(const std::vector<float>& flat, int& code, int& size) {
   EXPECT_EQ(RoomCreator::StartRoomUnderstanding(flat.data(), static_cast<int>(flat.size())), 0);
-  int code = -1, size = 0;
   float* data = nullptr;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
   while ((data = RoomCreator::RetrieveRoomUnderstanding(&code, &size)), code == -1) {
     if (std::chrono::steady_clock::now() > deadline) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
+  return data;
+}
+
+std::vector<float> thesis_understanding(const std::vector<float>& flat) {
+  int code = -1, size = 0;
+  float* const data = finished_understanding(flat, code, size);
   EXPECT_EQ(code, 0);
   std::vector<float> out;
   if (code == 0 && data != nullptr) out.assign(data, data + size);
@@ -92,10 +105,7 @@ class CapiConsistency : public ::testing::TestWithParam<const char*> {
 TEST_P(CapiConsistency, ThesisAreasAreAnalyzeAreas) {
   const Scan scan = synth::generate(spec(GetParam()));
   const std::vector<float> flat = flat_vertices(scan);
-  AnalysisOptions options;
-  options.build_bounds = false;
-  const AnalysisResult expected = analyze(scan_from_flat_array(flat.data(), static_cast<long long>(flat.size())),
-                                          options);
+  const AnalysisResult expected = thesis_expectation(flat);
   ASSERT_TRUE(expected.ok()) << expected.status_message;
   ASSERT_GT(expected.areas.size(), 0u) << "analyze() found no areas";
 
@@ -357,16 +367,10 @@ std::vector<Scan> whole_home_scans() {
 TEST(CapiWholeHomes, ThesisPlacesAreAnalyzePlaces) {
   for (const Scan& scan : whole_home_scans()) {
     const std::vector<float> flat = flat_vertices(scan);
-    AnalysisOptions options;
-    options.build_bounds = false;
-    const AnalysisResult expected = analyze(scan_from_flat_array(flat.data(), static_cast<long long>(flat.size())),
-                                            options);
+    const AnalysisResult expected = thesis_expectation(flat);
     ASSERT_TRUE(expected.ok()) << expected.status_message;
-    ASSERT_EQ(RoomCreator::StartRoomUnderstanding(flat.data(), static_cast<int>(flat.size())), 0);
     int code = -1, size = 0, places_size = -1;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
-    while (RoomCreator::RetrieveRoomUnderstanding(&code, &size), code == -1 && std::chrono::steady_clock::now() < deadline)
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    finished_understanding(flat, code, size);
     ASSERT_EQ(code, 0);
     const float* places = RoomCreator::RetrieveRoomUnderstandingPlaces(&code, &places_size);
     ASSERT_EQ(code, 0);

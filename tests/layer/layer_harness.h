@@ -212,6 +212,20 @@ struct Result {
   std::string json;
 };
 
+// The bounds mesh with the two-call idiom; `next` chains to its XrRoomBoundsMeshEXTX (one room's bounds).
+inline void read_bounds(const Extx& extx, XrRoomAnalyzerEXTX a, void* next, std::vector<XrVector3f>& vertices,
+                        std::vector<uint32_t>& indices) {
+  XrRoomBoundsMeshEXTX bounds{XR_TYPE_ROOM_BOUNDS_MESH_EXTX, next};
+  LT_CHECK(extx.bounds(a, &bounds));
+  vertices.resize(bounds.vertexCountOutput);
+  indices.resize(bounds.indexCountOutput);
+  bounds.vertexCapacityInput = bounds.vertexCountOutput;
+  bounds.vertices = vertices.data();
+  bounds.indexCapacityInput = bounds.indexCountOutput;
+  bounds.indices = indices.data();
+  LT_CHECK(extx.bounds(a, &bounds));
+}
+
 inline Result read_result(const Extx& extx, XrRoomAnalyzerEXTX a) {
   Result r;
   XrRoomHomeLayoutEXTX home{XR_TYPE_ROOM_HOME_LAYOUT_EXTX, nullptr};
@@ -237,15 +251,7 @@ inline Result read_result(const Extx& extx, XrRoomAnalyzerEXTX a) {
   for (uint32_t i = 0; i < count; ++i) r.areas[i].next = &r.area_locations[i];
   LT_CHECK(extx.areas(a, count, &count, r.areas.data()));
   for (XrRoomAreaEXTX& area : r.areas) area.next = nullptr;
-  XrRoomBoundsMeshEXTX bounds{XR_TYPE_ROOM_BOUNDS_MESH_EXTX, nullptr};
-  LT_CHECK(extx.bounds(a, &bounds));
-  r.vertices.resize(bounds.vertexCountOutput);
-  r.indices.resize(bounds.indexCountOutput);
-  bounds.vertexCapacityInput = bounds.vertexCountOutput;
-  bounds.vertices = r.vertices.data();
-  bounds.indexCapacityInput = bounds.indexCountOutput;
-  bounds.indices = r.indices.data();
-  LT_CHECK(extx.bounds(a, &bounds));
+  read_bounds(extx, a, nullptr, r.vertices, r.indices);
   return r;
 }
 

@@ -33,6 +33,28 @@ const AnalysedHouse& house() {
   return h;
 }
 
+// Free space as a bounds volume sees it: the voxels outside the volume reached from `seed` through voxels
+// outside it, 6-connected, within the grid (a window leads out of it, as in the thesis).
+std::vector<std::uint8_t> free_space_from(const GridSpec& s, const std::vector<std::uint8_t>& volume, glm::ivec3 seed) {
+  std::vector<std::uint8_t> reached(volume.size(), 0);
+  std::vector<glm::ivec3> stack{seed};
+  reached[s.index(seed.x, seed.y, seed.z)] = 1;
+  while (!stack.empty()) {
+    const glm::ivec3 v = stack.back();
+    stack.pop_back();
+    for (const glm::ivec3 d : {glm::ivec3(1, 0, 0), glm::ivec3(-1, 0, 0), glm::ivec3(0, 1, 0), glm::ivec3(0, -1, 0),
+                               glm::ivec3(0, 0, 1), glm::ivec3(0, 0, -1)}) {
+      const glm::ivec3 n = v + d;
+      if (!s.contains(n.x, n.y, n.z)) continue;
+      const std::size_t i = s.index(n.x, n.y, n.z);
+      if (volume[i] || reached[i]) continue;
+      reached[i] = 1;
+      stack.push_back(n);
+    }
+  }
+  return reached;
+}
+
 // The storey of the result whose floor is nearest the spec's.
 std::size_t storey_index(const AnalysisResult& r, const synth::RoomSpec& spec) {
   std::size_t best = 0;
@@ -124,25 +146,10 @@ TEST(Storeys, OneClosedBoundsMeshKeepsEveryStoreysFreeSpaceAndEnclosesTheFurnitu
   const GridSpec& s = r.voxels.grid.spec;
   const auto voxel_of = [&](glm::vec3 p) { return glm::ivec3(glm::floor((p - s.origin) / s.voxel_size)); };
   for (const synth::RoomSpec& spec : h.spec.storeys) {
-    // The storey's free space as the bounds see it: what is reached from the middle of the room through voxels
-    // outside the volume, within the grid (a window leads out of it, as in the thesis).
-    std::vector<std::uint8_t> reached(volume.size(), 0);
-    std::vector<glm::ivec3> stack{voxel_of({0.0f, spec.floor_y + 1.7f, 0.3f})};
-    ASSERT_EQ(volume[s.index(stack[0].x, stack[0].y, stack[0].z)], 0);
-    reached[s.index(stack[0].x, stack[0].y, stack[0].z)] = 1;
-    while (!stack.empty()) {
-      const glm::ivec3 v = stack.back();
-      stack.pop_back();
-      for (const glm::ivec3 d : {glm::ivec3(1, 0, 0), glm::ivec3(-1, 0, 0), glm::ivec3(0, 1, 0), glm::ivec3(0, -1, 0),
-                                 glm::ivec3(0, 0, 1), glm::ivec3(0, 0, -1)}) {
-        const glm::ivec3 n = v + d;
-        if (!s.contains(n.x, n.y, n.z)) continue;
-        const std::size_t i = s.index(n.x, n.y, n.z);
-        if (volume[i] || reached[i]) continue;
-        reached[i] = 1;
-        stack.push_back(n);
-      }
-    }
+    // The storey's free space as the bounds see it, from the middle of the room.
+    const glm::ivec3 seed = voxel_of({0.0f, spec.floor_y + 1.7f, 0.3f});
+    ASSERT_EQ(volume[s.index(seed.x, seed.y, seed.z)], 0);
+    const std::vector<std::uint8_t> reached = free_space_from(s, volume, seed);
     const auto free_in_bounds = [&](glm::vec3 p) {
       const glm::ivec3 v = voxel_of(p);
       return s.contains(v.x, v.y, v.z) && reached[s.index(v.x, v.y, v.z)] != 0;
@@ -201,6 +208,13 @@ int true_room(glm::vec2 p, float margin) {
   return -1;
 }
 
+// Per room of the result, the flat's true room its centre lies in (-1: none).
+std::vector<int> true_rooms(const AnalysisResult& r) {
+  std::vector<int> out;
+  for (const Room& room : r.rooms) out.push_back(true_room({room.center.x, room.center.z}, 0.0f));
+  return out;
+}
+
 const AnalysisResult& flat() {
   static const AnalysisResult r = analyze(synth::generate(synth::three_room_flat()));
   return r;
@@ -237,9 +251,7 @@ TEST(Rooms, EveryAreaOfTheFlatLiesInTheRoomItNamesAndTheFloorIsCovered) {
   const AnalysisResult& r = flat();
   ASSERT_TRUE(r.ok());
   const std::vector<synth::Rect> truth = synth::three_room_flat_rooms();
-  std::vector<int> truth_of_room(r.rooms.size(), -1);
-  for (std::size_t k = 0; k < r.rooms.size(); ++k)
-    truth_of_room[k] = true_room({r.rooms[k].center.x, r.rooms[k].center.z}, 0.0f);
+  const std::vector<int> truth_of_room = true_rooms(r);
   std::vector<std::array<int, 4>> by_type(r.rooms.size());
   for (const Area& a : r.areas) {
     ASSERT_NE(a.room, kNoRoom) << to_string(a.type) << " area at " << a.center.x << ", " << a.center.z;
@@ -315,23 +327,9 @@ TEST(Rooms, EachRoomHasAClosedBoundsMeshAroundItsOwnFreeSpace) {
     std::vector<std::uint8_t> volume = room_bounds_volume(r.voxels.grid, storey, mask);
     fill_edge_contacts(s, volume);
     EXPECT_EQ(mesh.indices, build_room_bounds(r.voxels.grid, storey, mask).indices);
-    std::vector<std::uint8_t> reached(volume.size(), 0);
-    std::vector<glm::ivec3> stack{voxel_of({r.rooms[k].center.x, 1.2f, r.rooms[k].center.z})};
-    ASSERT_EQ(volume[s.index(stack[0].x, stack[0].y, stack[0].z)], 0) << "room " << k << "'s centre is solid";
-    reached[s.index(stack[0].x, stack[0].y, stack[0].z)] = 1;
-    while (!stack.empty()) {
-      const glm::ivec3 v = stack.back();
-      stack.pop_back();
-      for (const glm::ivec3 d : {glm::ivec3(1, 0, 0), glm::ivec3(-1, 0, 0), glm::ivec3(0, 1, 0), glm::ivec3(0, -1, 0),
-                                 glm::ivec3(0, 0, 1), glm::ivec3(0, 0, -1)}) {
-        const glm::ivec3 n = v + d;
-        if (!s.contains(n.x, n.y, n.z)) continue;
-        const std::size_t i = s.index(n.x, n.y, n.z);
-        if (volume[i] || reached[i]) continue;
-        reached[i] = 1;
-        stack.push_back(n);
-      }
-    }
+    const glm::ivec3 seed = voxel_of({r.rooms[k].center.x, 1.2f, r.rooms[k].center.z});
+    ASSERT_EQ(volume[s.index(seed.x, seed.y, seed.z)], 0) << "room " << k << "'s centre is solid";
+    const std::vector<std::uint8_t> reached = free_space_from(s, volume, seed);
     std::array<std::size_t, 3> free{}, kept{};
     for (float y = 0.23f; y < spec.ceiling_y - 0.2f; y += 0.1f)
       for (float z = -3.0f; z < 3.0f; z += 0.1f)
@@ -395,9 +393,7 @@ TEST(Rooms, EveryPlaneOfTheFlatSaysItsRoom) {
   const AnalysisResult& r = flat();
   ASSERT_TRUE(r.ok());
   const std::vector<synth::Rect> truth = synth::three_room_flat_rooms();
-  std::vector<int> truth_of_room(r.rooms.size(), -1);
-  for (std::size_t k = 0; k < r.rooms.size(); ++k)
-    truth_of_room[k] = true_room({r.rooms[k].center.x, r.rooms[k].center.z}, 0.0f);
+  const std::vector<int> truth_of_room = true_rooms(r);
   std::array<std::vector<int>, 2> horizontal_rooms;  // floors, ceilings
   std::size_t walls = 0, tops = 0;
   for (const Surface& s : extract_surfaces(r)) {

@@ -22,6 +22,9 @@ namespace RoomCreator
         extern static public IntPtr RetrieveRoomUnderstanding(ref int errorCode, ref int arraySize);
         [DllImport(Library, EntryPoint = "CleanUpRoomUnderstanding")]
         extern static public int CleanUpRoomUnderstanding();
+        // Beyond the thesis: each area's storey and room, 2 floats per area (room -1: none).
+        [DllImport(Library, EntryPoint = "RetrieveRoomUnderstandingPlaces")]
+        extern static public IntPtr RetrieveRoomUnderstandingPlaces(ref int errorCode, ref int arraySize);
 
         [DllImport(Library, EntryPoint = "StartRoomBounds")]
         extern static public int StartRoomBounds(float[] vertexPositions, int arraySize);
@@ -48,6 +51,25 @@ namespace RoomCreator
             int code = -1, size = 0;
             IntPtr data = RetrieveRoomUnderstanding(ref code, ref size);
             areas = code == 0 ? Copy(data, size) : null;
+            return code;
+        }
+
+        // Polls RetrieveRoomUnderstandingPlaces once, as TryRetrieveAreas: on 0, each area's storey and room.
+        public static int TryRetrievePlaces(out int[] storeys, out int[] rooms)
+        {
+            int code = -1, size = 0;
+            IntPtr data = RetrieveRoomUnderstandingPlaces(ref code, ref size);
+            storeys = null;
+            rooms = null;
+            if (code != 0) return code;
+            float[] places = Copy(data, size);
+            storeys = new int[size / 2];
+            rooms = new int[size / 2];
+            for (int i = 0; i < size / 2; ++i)
+            {
+                storeys[i] = (int)places[2 * i];
+                rooms[i] = (int)places[2 * i + 1];
+            }
             return code;
         }
 
@@ -126,6 +148,23 @@ namespace RoomCreator
 
     [StructLayout(LayoutKind.Sequential)] public struct Storey { public float FloorY, CeilingY; }
 
+    // API 1.2: a room of a storey, and where an area lies (Room: an index into Rooms(), or NoRoom).
+    [StructLayout(LayoutKind.Sequential)]
+    public struct Room
+    {
+        public uint Storey;
+        public float FloorArea;          // m² of free floor
+        public Vec3 Center;             // the centroid of its free floor, at its floor's height
+        public float FloorY, CeilingY;
+    }
+    [StructLayout(LayoutKind.Sequential)]
+    public struct AreaPlace
+    {
+        public const int NoRoom = -1;
+        public uint Storey;
+        public int Room;
+    }
+
     [StructLayout(LayoutKind.Sequential)]
     public struct Area
     {
@@ -196,6 +235,10 @@ namespace RoomCreator
         [DllImport(L)] public static extern Result rs_analyzer_get_areas(IntPtr analyzer, uint capacity, out uint count, [Out] Area[] areas);
         [DllImport(L)] public static extern Result rs_analyzer_get_bounds(IntPtr analyzer, uint vertexCapacity, out uint vertexCount, [Out] float[] xyz,
                                                                          uint indexCapacity, out uint indexCount, [Out] uint[] indices);
+        [DllImport(L)] public static extern Result rs_analyzer_get_rooms(IntPtr analyzer, uint capacity, out uint count, [Out] Room[] rooms);
+        [DllImport(L)] public static extern Result rs_analyzer_get_area_places(IntPtr analyzer, uint capacity, out uint count, [Out] AreaPlace[] places);
+        [DllImport(L)] public static extern Result rs_analyzer_get_room_bounds(IntPtr analyzer, uint room, uint vertexCapacity, out uint vertexCount, [Out] float[] xyz,
+                                                                              uint indexCapacity, out uint indexCount, [Out] uint[] indices);
         [DllImport(L)] public static extern Result rs_analyzer_get_message(IntPtr analyzer, uint capacity, out uint count, [Out] byte[] buffer);
         [DllImport(L)] public static extern void rs_placement_query_init(out PlacementQuery query);
         [DllImport(L)] public static extern Result rs_analyzer_find_placements(IntPtr analyzer, ref PlacementQuery query, uint capacity, out uint count,
@@ -271,6 +314,31 @@ namespace RoomCreator
             xyz = new float[3 * nv];
             indices = new uint[ni];
             Check(Native.rs_analyzer_get_bounds(handle, nv, out nv, xyz, ni, out ni, indices), "rs_analyzer_get_bounds");
+        }
+
+        public Room[] Rooms()
+        {
+            Check(Native.rs_analyzer_get_rooms(handle, 0, out uint n, null), "rs_analyzer_get_rooms");
+            var rooms = new Room[n];
+            Check(Native.rs_analyzer_get_rooms(handle, n, out n, rooms), "rs_analyzer_get_rooms");
+            return rooms;
+        }
+
+        // Element i says where Areas()[i] lies.
+        public AreaPlace[] AreaPlaces()
+        {
+            Check(Native.rs_analyzer_get_area_places(handle, 0, out uint n, null), "rs_analyzer_get_area_places");
+            var places = new AreaPlace[n];
+            Check(Native.rs_analyzer_get_area_places(handle, n, out n, places), "rs_analyzer_get_area_places");
+            return places;
+        }
+
+        public void RoomBounds(uint room, out float[] xyz, out uint[] indices)
+        {
+            Check(Native.rs_analyzer_get_room_bounds(handle, room, 0, out uint nv, null, 0, out uint ni, null), "rs_analyzer_get_room_bounds");
+            xyz = new float[3 * nv];
+            indices = new uint[ni];
+            Check(Native.rs_analyzer_get_room_bounds(handle, room, nv, out nv, xyz, ni, out ni, indices), "rs_analyzer_get_room_bounds");
         }
 
         public string Message()

@@ -73,6 +73,9 @@ static class BindingTest
         int code;
         while ((code = RoomCreatorLibrary.TryRetrieveAreas(out areas)) == -1) System.Threading.Thread.Sleep(5);
         Check(code == 0 && SameBits(areas, Floats("thesis_areas.bin")), "RetrieveRoomUnderstanding differs from C's");
+        Check(RoomCreatorLibrary.TryRetrievePlaces(out int[] placeStoreys, out int[] placeRooms) == 0 &&
+              placeStoreys.Length == areas.Length / RoomCreatorLibrary.FloatsPerArea && placeRooms.All(r => r >= -1),
+              "RetrieveRoomUnderstandingPlaces: a storey and a room per area");
         Check(RoomCreatorLibrary.StartRoomUnderstanding(xyz, xyz.Length) == 4, "a second Start before CleanUp is busy (4)");
         Check(RoomCreatorLibrary.CleanUpRoomUnderstanding() == 0, "CleanUpRoomUnderstanding");
         Check(RoomCreatorLibrary.StartRoomBounds(xyz, xyz.Length) == 0, "StartRoomBounds");
@@ -106,6 +109,14 @@ static class BindingTest
             Storey[] storeys = analyzer.Storeys();
             storeyCount = storeys.Length;
             Check(Bytes(storeys).SequenceEqual(File.ReadAllBytes(Path.Combine(dir, "handle_storeys.bin"))), "rs_analyzer_get_storeys differs from C's");
+            Check(Bytes(analyzer.Rooms()).SequenceEqual(File.ReadAllBytes(Path.Combine(dir, "handle_rooms.bin"))), "rs_analyzer_get_rooms differs from C's");
+            AreaPlace[] places = analyzer.AreaPlaces();
+            Check(places.Length == analyzer.Areas().Length && Bytes(places).SequenceEqual(File.ReadAllBytes(Path.Combine(dir, "handle_area_places.bin"))),
+                  "rs_analyzer_get_area_places differs from C's");
+            analyzer.RoomBounds(0, out float[] rxyz, out uint[] ridx);
+            Check(ridx.SequenceEqual(Uints("handle_room0_indices.bin")) && rxyz.Length > 0, "rs_analyzer_get_room_bounds differs from C's");
+            try { analyzer.RoomBounds((uint)analyzer.Rooms().Length, out rxyz, out ridx); Check(false, "a room past the last throws"); }
+            catch (RoomSenseException e) { Check(e.Result == Result.ErrorInvalidArgument, "a room past the last: " + e.Message); }
             Layout layout = analyzer.Layout;
             Check(layout.AreaCount == analyzer.Areas().Length && layout.InputVertexCount == xyz.Length / 3, "the layout's counts");
             PlacementQuery q = Analyzer.DefaultQuery();
@@ -141,9 +152,10 @@ static class BindingTest
         try { disposed.Compute(xyz); Check(false, "a disposed analyzer throws"); }
         catch (RoomSenseException e) { Check(e.Result == Result.ErrorHandleInvalid, "disposed: " + e.Message); }
         if (failures > 0) return 1;
-        Console.WriteLine("BindingTest: ok: layouts of 12 structs as C's; thesis API " + areas.Length / 11 + " areas, bounds " +
+        Console.WriteLine("BindingTest: ok: layouts of " + File.ReadAllLines(Path.Combine(dir, "layouts.txt")).Length +
+                          " structs as C's; thesis API " + areas.Length / 11 + " areas and their places, bounds " +
                           boundsXyz.Length / 3 + " vertices; handle API (" + (version >> 22) + "." + ((version >> 12) & 0x3FF) + ") areas, bounds, " +
-                          storeyCount + " storeys, " + placementCount + " placements, " + hitCount + "/16 rays, equal to the C API's");
+                          storeyCount + " storeys, rooms, area places, room bounds, " + placementCount + " placements, " + hitCount + "/16 rays, equal to the C API's");
         return 0;
     }
 }

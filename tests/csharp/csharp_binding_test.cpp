@@ -44,6 +44,9 @@ void write_layouts(const fs::path& path) {
       OFF(rs_timings, areas) OFF(rs_timings, reduce) OFF(rs_timings, classify) OFF(rs_timings, bounds)
       OFF(rs_timings, total) << '\n';
   out << "Storey " << sizeof(rs_storey) OFF(rs_storey, floor_y) OFF(rs_storey, ceiling_y) << '\n';
+  out << "Room " << sizeof(rs_room) OFF(rs_room, storey) OFF(rs_room, floor_area) OFF(rs_room, center)
+      OFF(rs_room, floor_y) OFF(rs_room, ceiling_y) << '\n';
+  out << "AreaPlace " << sizeof(rs_area_place) OFF(rs_area_place, storey) OFF(rs_area_place, room) << '\n';
   out << "Area " << sizeof(rs_area) OFF(rs_area, type) OFF(rs_area, size) OFF(rs_area, reach) OFF(rs_area, flags)
       OFF(rs_area, center) OFF(rs_area, normal) OFF(rs_area, orientation) OFF(rs_area, corners[0])
       OFF(rs_area, corners[1]) OFF(rs_area, corners[2]) OFF(rs_area, corners[3]) OFF(rs_area, half_width)
@@ -137,6 +140,19 @@ TEST(CSharpBinding, EqualsTheCApiOnASharedRoomUnderMono) {
   std::vector<rs_storey> storeys(n);
   ASSERT_EQ(rs_analyzer_get_storeys(a, n, &n, storeys.data()), RS_SUCCESS);
   write_bytes(dir / "handle_storeys.bin", storeys.data(), storeys.size());
+  ASSERT_EQ(rs_analyzer_get_rooms(a, 0, &n, nullptr), RS_SUCCESS);
+  std::vector<rs_room> rooms(n);
+  ASSERT_EQ(rs_analyzer_get_rooms(a, n, &n, rooms.data()), RS_SUCCESS);
+  write_bytes(dir / "handle_rooms.bin", rooms.data(), rooms.size());
+  ASSERT_EQ(rs_analyzer_get_area_places(a, 0, &n, nullptr), RS_SUCCESS);
+  std::vector<rs_area_place> places(n);
+  ASSERT_EQ(rs_analyzer_get_area_places(a, n, &n, places.data()), RS_SUCCESS);
+  write_bytes(dir / "handle_area_places.bin", places.data(), places.size());
+  ASSERT_EQ(rs_analyzer_get_room_bounds(a, 0, 0, &nv, nullptr, 0, &ni, nullptr), RS_SUCCESS);
+  std::vector<std::uint32_t> room_idx(ni);
+  std::vector<float> room_xyz(3 * nv);
+  ASSERT_EQ(rs_analyzer_get_room_bounds(a, 0, nv, &nv, room_xyz.data(), ni, &ni, room_idx.data()), RS_SUCCESS);
+  write_bytes(dir / "handle_room0_indices.bin", room_idx.data(), room_idx.size());
   rs_placement_query q;
   rs_placement_query_init(&q);
   q.surfaces = RS_SURFACE_FURNITURE | RS_SURFACE_FLOOR;

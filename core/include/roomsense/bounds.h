@@ -73,7 +73,8 @@ std::vector<std::uint8_t> room_bounds_volume(const VoxelGrid& grid, const Bounds
                                              const std::vector<std::uint8_t>& room_columns,
                                              const BoundsParams& params = {}, unsigned threads = 0,
                                              const std::stop_token& stop = {});
-// That volume, fill_edge_contacts and mesh_volume.
+// That volume, fill_edge_contacts and mesh_volume, on the room's columns and two more around them: where the
+// free space leaves the room past them (through a window), the shell closes there rather than at the grid's edge.
 BoundsMesh build_room_bounds(const VoxelGrid& grid, const BoundsStorey& storey,
                              const std::vector<std::uint8_t>& room_columns, const BoundsParams& params = {},
                              unsigned threads = 0, std::stop_token stop = {});

@@ -231,9 +231,39 @@ std::vector<std::uint8_t> room_bounds_volume(const VoxelGrid& grid, const Bounds
 BoundsMesh build_room_bounds(const VoxelGrid& grid, const BoundsStorey& storey,
                              const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
                              unsigned threads, std::stop_token stop) {
-  std::vector<std::uint8_t> volume = room_bounds_volume(grid, storey, room_columns, params, threads, stop);
-  fill_edge_contacts(grid.spec, volume);
-  return mesh_volume(grid.spec, volume, threads, stop);
+  // On the room's columns and a margin only: a room of a large home costs what its own size does. The margin
+  // holds the solid around the room (its walls, the next rooms' columns); where the room's free space runs on
+  // past it (a window, an unscanned gap), the shell closes at the margin instead of the grid's edge.
+  constexpr int kMargin = 2;
+  const GridSpec& s = grid.spec;
+  int x0 = s.nx, z0 = s.nz, x1 = -1, z1 = -1;
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x)
+      if (room_columns[s.column(x, z)]) {
+        x0 = std::min(x0, x), x1 = std::max(x1, x);
+        z0 = std::min(z0, z), z1 = std::max(z1, z);
+      }
+  if (x1 < 0) return {};
+  x0 = std::max(x0 - kMargin, 0), z0 = std::max(z0 - kMargin, 0);
+  x1 = std::min(x1 + kMargin, s.nx - 1), z1 = std::min(z1 + kMargin, s.nz - 1);
+  GridSpec crop = s;
+  crop.nx = x1 - x0 + 1;
+  crop.nz = z1 - z0 + 1;
+  crop.origin = s.lattice_to_world(float(x0), 0.0f, float(z0));
+  VoxelGrid part(crop);
+  std::vector<std::uint8_t> part_room(crop.column_count()), part_storey(crop.column_count());
+  for (int z = 0; z < crop.nz; ++z)
+    for (int x = 0; x < crop.nx; ++x) {
+      const std::size_t from = s.column(x + x0, z + z0), to = crop.column(x, z);
+      std::copy_n(grid.column_data(x + x0, z + z0), s.ny, part.cells.begin() + std::ptrdiff_t(to * std::size_t(s.ny)));
+      part_room[to] = room_columns[from];
+      part_storey[to] = (*storey.room)[from];
+    }
+  BoundsStorey cropped = storey;
+  cropped.room = &part_storey;
+  std::vector<std::uint8_t> volume = room_bounds_volume(part, cropped, part_room, params, threads, stop);
+  fill_edge_contacts(crop, volume);
+  return mesh_volume(crop, volume, threads, stop);
 }
 
 BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys, const BoundsParams& params,

@@ -34,19 +34,22 @@ inline std::string temp_path(const std::string& name) {
   return testing::TempDir() + "/" + std::to_string(pid) + "_" + name;
 }
 
-// Runs `program args` with stdout discarded and stderr written to `stderr_path`; returns its exit status, or
-// -1 when it did not exit (a signal). `shell_prefix` runs first in the same POSIX shell, e.g. a ulimit.
+// Runs `program args` with stderr written to `stderr_path` and stdout to `stdout_path` (empty: discarded);
+// returns its exit status, or -1 when it did not exit (a signal). `shell_prefix` runs first in the same POSIX
+// shell, e.g. a ulimit.
 inline int run_program(const std::string& program, const std::string& args, const std::string& stderr_path,
-                       const std::string& shell_prefix = "") {
+                       const std::string& shell_prefix = "", const std::string& stdout_path = "") {
 #if defined(_WIN32)
   std::string exe = program;
   std::replace(exe.begin(), exe.end(), '/', '\\');  // cmd.exe takes /x for a switch
   // cmd /c drops the first and last quote of a line that starts with one: hence the outer pair.
-  const std::string line = "\"\"" + exe + "\" " + args + " >NUL 2>\"" + stderr_path + "\"\"";
+  const std::string out = stdout_path.empty() ? std::string("NUL") : "\"" + stdout_path + "\"";
+  const std::string line = "\"\"" + exe + "\" " + args + " >" + out + " 2>\"" + stderr_path + "\"\"";
   (void)shell_prefix;
   return std::system(line.c_str());
 #else
-  const std::string line = shell_prefix + program + " " + args + " >/dev/null 2>" + stderr_path;
+  const std::string out = stdout_path.empty() ? std::string("/dev/null") : stdout_path;
+  const std::string line = shell_prefix + program + " " + args + " >" + out + " 2>" + stderr_path;
   const int raw = std::system(line.c_str());
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 #endif

@@ -25,17 +25,19 @@ namespace {
 struct CliRun {
   int status = -1;
   std::string err;
+  std::string out;
 };
 
 using roomsense::test::temp_path;
 
 // `shell_prefix` runs first in the same shell, e.g. a ulimit.
 CliRun run_cli(const std::string& args, const std::string& shell_prefix = "") {
-  const std::string err_path = temp_path("cli_stderr.txt");
+  const std::string err_path = temp_path("cli_stderr.txt"), out_path = temp_path("cli_stdout.txt");
   CliRun r;
-  r.status = roomsense::test::run_program(ROOMSENSE_CLI, args, err_path, shell_prefix);
-  std::ifstream in(err_path);
-  r.err.assign(std::istreambuf_iterator<char>(in), {});
+  r.status = roomsense::test::run_program(ROOMSENSE_CLI, args, err_path, shell_prefix, out_path);
+  std::ifstream err(err_path), out(out_path);
+  r.err.assign(std::istreambuf_iterator<char>(err), {});
+  r.out.assign(std::istreambuf_iterator<char>(out), {});
   return r;
 }
 
@@ -79,6 +81,20 @@ TEST(Cli, WritesEachRoomsBoundsOfTheFlat) {
   }
   EXPECT_FALSE(std::filesystem::exists(dir + "/room_3.obj"));
   std::filesystem::remove_all(dir);
+}
+
+// Issue 15: the summary has a line per room, numbered as the JSON's rooms, with its areas by type.
+TEST(Cli, SummarisesEachRoomOfTheFlat) {
+  const CliRun r = run_cli("analyze synthetic:flat");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("rooms     3 (split at passages up to 1.20 m wide"), std::string::npos) << r.out;
+  for (const char* room : {"room 0 ", "room 1 ", "room 2 "}) {
+    const std::size_t at = r.out.find(room);
+    ASSERT_NE(at, std::string::npos) << room << " missing:\n" << r.out;
+    const std::string line = r.out.substr(at, r.out.find('\n', at) - at);
+    EXPECT_NE(line.find(" wall, "), std::string::npos) << line;
+    EXPECT_NE(line.find(" furniture areas"), std::string::npos) << line;
+  }
 }
 
 TEST(Cli, BadInputGetsOneClearLineAndAnErrorStatus) {

@@ -37,16 +37,16 @@ std::string areas_summary(const std::vector<Area>& areas, const std::string& ind
 std::string rooms_summary(const AnalysisResult& r, std::size_t storey, const std::string& indent) {
   std::size_t count = 0;
   for (const Room& room : r.rooms) count += room.storey == storey ? 1 : 0;
-  std::string out = indent + format("  rooms     %zu (split at passages up to %s m wide)\n", count,
-                                    fixed_or_g(FeatureParams{}.min_passage, 2).c_str());
-  for (std::size_t k = 0, n = 0; k < r.rooms.size(); ++k) {
+  std::string out = indent + format("  rooms     %zu (split at passages up to %s m wide; numbered as in the JSON)\n",
+                                    count, fixed_or_g(FeatureParams{}.min_passage, 2).c_str());
+  for (std::size_t k = 0; k < r.rooms.size(); ++k) {
     const Room& room = r.rooms[k];
     if (room.storey != storey) continue;
     std::array<int, 4> by_type{};
     for (const Area& a : r.areas)
       if (a.room == int(k)) ++by_type[std::size_t(a.type) - 1];
     out += indent + format("            room %-3zu %6s m2 at (%s, %s): %d wall, %d floor, %d ceiling, %d furniture areas\n",
-                           ++n, fixed_or_g(room.floor_area, 1).c_str(), fixed_or_g(room.center.x, 1).c_str(),
+                           k, fixed_or_g(room.floor_area, 1).c_str(), fixed_or_g(room.center.x, 1).c_str(),
                            fixed_or_g(room.center.z, 1).c_str(), by_type[0], by_type[1], by_type[2], by_type[3]);
   }
   return out;

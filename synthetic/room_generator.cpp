@@ -61,6 +61,27 @@ class MeshBuilder {
     for (std::uint32_t i = 1; i + 1 < ring.size(); ++i) scan_.indices.insert(scan_.indices.end(), {base, base + i, base + i + 1});
   }
 
+  std::size_t vertex_count() const { return scan_.vertices.size(); }
+  // Vertices [from, end) above the ceiling's surface are moved down onto it (walls under a pitched roof), or
+  // all of them onto it (the roof itself).
+  void onto_ceiling(std::size_t from, bool all) {
+    for (std::size_t i = from; i < scan_.vertices.size(); ++i) {
+      glm::vec3& p = scan_.vertices[i];
+      const float y = ceiling_at(spec_, {p.x, p.z});
+      if (all || p.y > y) p.y = y;
+    }
+  }
+
+  // A box hanging from the ceiling (a soffit, a beam): its underside facing down and its sides outwards.
+  void hanging_box(glm::vec2 centre, glm::vec2 size, float yaw, float y0, float y1) {
+    const glm::vec2 ax = rotate({size.x, 0.0f}, yaw), az = rotate({0.0f, size.y}, yaw);
+    const glm::vec2 c0 = centre - 0.5f * ax - 0.5f * az;
+    const glm::vec3 X(ax.x, 0.0f, ax.y), Z(az.x, 0.0f, az.y), Y(0.0f, y1 - y0, 0.0f);
+    const glm::vec3 o(c0.x, y0, c0.y);
+    rectangle(o, X, Z);                 // X x Z = -Y: the underside
+    sides(o, X, Y, Z);
+  }
+
   // An upright box without a bottom, faces outwards.
   void box(glm::vec2 centre, glm::vec2 size, float yaw, float y0, float y1) {
     const glm::vec2 ax = rotate({size.x, 0.0f}, yaw), az = rotate({0.0f, size.y}, yaw);
@@ -68,6 +89,11 @@ class MeshBuilder {
     const glm::vec3 X(ax.x, 0.0f, ax.y), Z(az.x, 0.0f, az.y), Y(0.0f, y1 - y0, 0.0f);
     const glm::vec3 o(c0.x, y0, c0.y);
     rectangle(o + Y, Z, X);             // top, facing +Y
+    sides(o, X, Y, Z);
+  }
+
+  // The four sides of a box at o spanned by X, Y (up) and Z, facing outwards.
+  void sides(glm::vec3 o, glm::vec3 X, glm::vec3 Y, glm::vec3 Z) {
     rectangle(o, Y, X);                 // Y x X = -Z: the side at the footprint's start
     rectangle(o + Z, X, Y);             // X x Y = +Z
     rectangle(o, Z, Y);                 // Z x Y = -X
@@ -166,8 +192,10 @@ void add_floor_or_ceiling(MeshBuilder& mesh, const RoomSpec& spec, float y, bool
              return p.x > r.lo.x && p.x < r.hi.x && p.y > r.lo.y && p.y < r.hi.y;
            });
   };
+  const std::size_t first = mesh.vertex_count();
   if (ceiling) mesh.rectangle(o, X, Z, [&](float s, float t) { return inside(s, t); });  // X x Z = -Y
   else mesh.rectangle(o, Z, X, [&](float s, float t) { return inside(t, s); });          // Z x X = +Y
+  if (ceiling && spec.pitch) mesh.onto_ceiling(first, true);  // the flat grid bent onto the roof
 }
 
 void add_wall(MeshBuilder& mesh, const RoomSpec& spec, int wall) {
@@ -194,12 +222,19 @@ void add_wall(MeshBuilder& mesh, const RoomSpec& spec, int wall) {
   };
   // Mesh each piece between window edges on its own, so even two-triangle pieces follow the openings.
   const std::vector<float> su = breakpoints(us), sv = breakpoints(vs);
+  const std::size_t first = mesh.vertex_count();
   for (std::size_t i = 0; i + 1 < su.size(); ++i)
     for (std::size_t j = 0; j + 1 < sv.size(); ++j) {
       const float s0 = su[i], s1 = su[i + 1], t0 = sv[j], t1 = sv[j + 1];
       if (open(0.5f * (s0 + s1), 0.5f * (t0 + t1))) continue;
-      mesh.rectangle(o + U * s0 + V * t0, U * (s1 - s0), V * (t1 - t0));
+      const glm::vec3 po = o + U * s0 + V * t0, pu = U * (s1 - s0), pv = V * (t1 - t0);
+      // Under a pitched roof: cells wholly above it are left out, the rest end at it (onto_ceiling).
+      mesh.rectangle(po, pu, pv, [&](float s, float t) {
+        const glm::vec3 p = po + pu * s + pv * t;
+        return !spec.pitch || p.y - 0.5f * spec.cell <= ceiling_at(spec, {p.x, p.z});
+      });
     }
+  if (spec.pitch) mesh.onto_ceiling(first, false);
 }
 
 float cross2(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
@@ -255,6 +290,7 @@ Scan generate(const RoomSpec& spec) {
   }
   for (const Stair& st : spec.stairs) mesh.stair(st, spec.floor_y);
   for (const Partition& w : spec.partitions) mesh.partition(w, spec.floor_y, spec.ceiling_y);
+  for (const Box& b : spec.hanging) mesh.hanging_box(b.centre, b.size, b.yaw, spec.ceiling_y - b.height, spec.ceiling_y);
   return mesh.finish();
 }
 
@@ -280,6 +316,24 @@ float distance_to_walls(const RoomSpec& spec, glm::vec2 p) {
   float d = distance_to_polygon_edges(spec.outline, p);
   for (const Partition& w : spec.partitions) d = std::min(d, std::max(0.0f, distance_to_segment(p, w.a, w.b) - 0.5f * w.thickness));
   return d;
+}
+
+float ceiling_at(const RoomSpec& spec, glm::vec2 p) {
+  float y = spec.ceiling_y;
+  if (spec.pitch) {
+    glm::vec2 lo = spec.outline.front(), hi = lo;
+    for (glm::vec2 q : spec.outline) {
+      lo = glm::min(lo, q);
+      hi = glm::max(hi, q);
+    }
+    // The distance from the ridge, 0 there and 1 at the eaves.
+    const float t = spec.pitch->ridge_along_x ? std::fabs(p.y - 0.5f * (lo.y + hi.y)) / (0.5f * (hi.y - lo.y))
+                                              : std::fabs(p.x - 0.5f * (lo.x + hi.x)) / (0.5f * (hi.x - lo.x));
+    y = spec.ceiling_y - std::clamp(t, 0.0f, 1.0f) * (spec.ceiling_y - spec.pitch->eave_y);
+  }
+  for (const Box& b : spec.hanging)
+    if (inside_convex(footprint(b.centre, b.size, b.yaw), p)) y = std::min(y, spec.ceiling_y - b.height);
+  return y;
 }
 
 std::optional<float> furniture_top_at(const RoomSpec& spec, glm::vec2 p) {
@@ -438,6 +492,33 @@ RoomSpec three_room_flat() {
   r.windows.push_back({0, 1.0f, 3.0f, 0.9f, 2.1f});
   r.noise = 0.005f;
   r.seed = 23;
+  return r;
+}
+
+RoomSpec pitched_loft() {
+  RoomSpec r;
+  r.name = "loft";
+  r.outline = rectangle(6.0f, 5.0f);
+  r.ceiling_y = 3.2f;
+  r.pitch = Pitch{1.2f, true};
+  r.boxes.push_back({{-1.5f, 0.0f}, {2.0f, 1.6f}, 0.5f, 0.0f});  // a bed under the ridge
+  r.tables.push_back({{1.8f, -0.2f}, {1.2f, 0.7f}, 0.75f, 0.0f});
+  r.noise = 0.005f;
+  r.seed = 31;
+  return r;
+}
+
+RoomSpec soffit_room() {
+  RoomSpec r = default_room();
+  r.name = "soffit";
+  r.hanging.push_back({{0.0f, -1.4f}, {5.0f, 1.2f}, 0.35f, 0.0f});  // along the -Z wall, 2.25 m above the floor
+  return r;
+}
+
+RoomSpec beam_room() {
+  RoomSpec r = default_room();
+  r.name = "beam";
+  r.hanging.push_back({{0.3f, 0.0f}, {0.25f, 4.0f}, 0.3f, 0.0f});  // across the room, from wall to wall
   return r;
 }
 

@@ -432,3 +432,85 @@ TEST(Rooms, EveryPlaneOfTheFlatSaysItsRoom) {
 
 }  // namespace
 }  // namespace roomsense
+
+namespace roomsense {
+namespace {
+
+// Issue 15, ceilings that step: a soffit along a wall and a beam across the room. The floor and the main
+// ceiling are found; ceiling areas lie on the ceiling's surface (not inside the soffit or the beam); the closed
+// bounds keep the free space under the true ceiling and hold the soffit and the beam solid. Not yet asserted,
+// because not yet so: wall areas behind a soffit end at its underside (they reach into the hollow soffit), and
+// the pitched loft (synth::pitched_loft), whose ceiling is taken at one level of the slope.
+TEST(Ceilings, ASoffitAndABeamKeepTheirRoomsAreasOnTheSurfacesAndTheBoundsAroundTheFreeSpace) {
+  for (const synth::RoomSpec& spec : {synth::soffit_room(), synth::beam_room()}) {
+    SCOPED_TRACE(spec.name);
+    const AnalysisResult r = analyze(synth::generate(spec));
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.storeys.size(), 1u);
+    EXPECT_NEAR(r.floor_y, spec.floor_y, 0.05f);
+    EXPECT_NEAR(r.ceiling_y, spec.ceiling_y, 0.05f);
+    std::size_t ceilings = 0;
+    for (const Area& a : r.areas) {
+      if (a.type == AreaType::Ceiling) {
+        ++ceilings;
+        for (const glm::vec3& c : a.corners)
+          EXPECT_NEAR(c.y, synth::ceiling_at(spec, {c.x, c.z}), 0.06f) << "ceiling area corner at " << c.x << ", " << c.z;
+      }
+    }
+    EXPECT_GT(ceilings, 5u);
+    EXPECT_TRUE(check_closure(r.bounds).closed());
+    std::vector<std::uint8_t> volume = bounds_volume(r.voxels.grid, bounds_storeys(r));
+    const GridSpec& s = r.voxels.grid.spec;
+    fill_edge_contacts(s, volume);
+    const auto voxel_of = [&](glm::vec3 p) { return glm::ivec3(glm::floor((p - s.origin) / s.voxel_size)); };
+    const glm::ivec3 seed = voxel_of({0.3f, 1.2f, 0.5f});
+    ASSERT_EQ(volume[s.index(seed.x, seed.y, seed.z)], 0);
+    const std::vector<std::uint8_t> reached = free_space_from(s, volume, seed);
+    std::size_t free = 0, kept = 0;
+    for (float y = spec.floor_y + 0.23f; y < spec.ceiling_y; y += 0.1f)
+      for (float z = -2.0f; z < 2.0f; z += 0.1f)
+        for (float x = -2.5f; x < 2.5f; x += 0.1f) {
+          const glm::vec2 p{x + 0.033f, z + 0.027f};
+          if (synth::distance_to_walls(spec, p) < 0.15f || synth::distance_to_furniture(spec, p) < 0.15f) continue;
+          if (const auto top = synth::furniture_top_at(spec, p); top && y < *top + 0.15f) continue;
+          if (y > synth::ceiling_at(spec, p) - 0.2f) continue;
+          ++free;
+          const glm::ivec3 v = voxel_of({p.x, y, p.y});
+          kept += s.contains(v.x, v.y, v.z) && reached[s.index(v.x, v.y, v.z)] ? 1 : 0;
+        }
+    const double share = double(kept) / double(std::max<std::size_t>(free, 1));
+    std::printf("[ figures  ] %s: %zu ceiling areas; bounds keep %.2f %% of %zu free points under the ceiling\n",
+                spec.name.c_str(), ceilings, 100.0 * share, free);
+    EXPECT_GE(share, 0.99);
+    // The soffit and the beam are solid in the bounds: no free space inside them.
+    for (const synth::Box& b : spec.hanging) {
+      const glm::ivec3 v = voxel_of({b.centre.x, spec.ceiling_y - 0.5f * b.height, b.centre.y});
+      EXPECT_FALSE(s.contains(v.x, v.y, v.z) && reached[s.index(v.x, v.y, v.z)]) << "inside the hanging box";
+    }
+  }
+}
+
+// The loft's generator (the ground truth of the next step): every vertex lies on or under the roof, the walls
+// reach it, and the roof's own vertices follow it from the eaves to the ridge.
+TEST(Ceilings, ThePitchedLoftIsMeshedUnderItsRoof) {
+  synth::RoomSpec spec = synth::pitched_loft();
+  spec.noise = 0.0f;
+  const Scan scan = synth::generate(spec);
+  float lowest_roof = INFINITY, highest_roof = -INFINITY;
+  std::size_t on_roof = 0;
+  for (const glm::vec3& v : scan.vertices) {
+    const float roof = synth::ceiling_at(spec, {v.x, v.z});
+    ASSERT_LE(v.y, roof + 1e-4f) << v.x << ", " << v.y << ", " << v.z;
+    if (v.y > roof - 1e-4f && v.y > spec.floor_y + 0.5f) {
+      ++on_roof;
+      lowest_roof = std::min(lowest_roof, v.y);
+      highest_roof = std::max(highest_roof, v.y);
+    }
+  }
+  EXPECT_GT(on_roof, 1000u);
+  EXPECT_NEAR(lowest_roof, spec.pitch->eave_y, 1e-3f);
+  EXPECT_NEAR(highest_roof, spec.ceiling_y, 0.05f);
+}
+
+}  // namespace
+}  // namespace roomsense

@@ -73,6 +73,13 @@ struct Partition {
   std::vector<Doorway> doorways;
 };
 
+// A pitched roof as the ceiling: it rises from `eave_y` at two opposite sides of the outline's bounding box
+// to RoomSpec::ceiling_y at a ridge along its middle, running along x (or z). The walls end at the roof.
+struct Pitch {
+  float eave_y = 1.2f;
+  bool ridge_along_x = true;
+};
+
 struct RoomSpec {
   std::string name = "room";
   std::vector<glm::vec2> outline;  // convex floor polygon in (x, z), counter-clockwise seen from above (+Y)
@@ -86,6 +93,8 @@ struct RoomSpec {
   std::vector<Rect> ceiling_openings;  // cut out of the ceiling (only where cell > 0)
   std::vector<Stair> stairs;
   std::vector<Partition> partitions;   // interior walls dividing it into rooms
+  std::optional<Pitch> pitch;          // a pitched ceiling instead of a flat one (needs cell > 0)
+  std::vector<Box> hanging;            // soffits and beams: boxes whose top is the ceiling, `height` deep
   float cell = 0.05f;    // triangle size; 0: every planar piece is two large triangles
   float noise = 0.0f;    // standard deviation of the vertex jitter, metres
   std::uint32_t seed = 1;
@@ -113,6 +122,9 @@ float distance_to_walls(const RoomSpec& spec, glm::vec2 p);  // the outline's an
 std::optional<float> furniture_top_at(const RoomSpec& spec, glm::vec2 p);
 // Distance from p to the nearest furniture footprint edge (0 inside one).
 float distance_to_furniture(const RoomSpec& spec, glm::vec2 p);
+// The height (y) of the ceiling's surface above p: the roof of a pitched ceiling, the underside of a soffit
+// or beam, else ceiling_y.
+float ceiling_at(const RoomSpec& spec, glm::vec2 p);
 
 // Built-in rooms.
 RoomSpec default_room();                 // 5 x 4 m, table, sofa, cabinet, window, light noise
@@ -126,6 +138,12 @@ RoomSpec thesis_room1();                 // about 78k vertices, the size of the 
 RoomSpec three_room_flat();
 // The rectangles (x, z) of three_room_flat's rooms inside their walls, largest first.
 std::vector<Rect> three_room_flat_rooms();
+// Ceilings that are not flat (issue 15): a 6 x 5 m loft under a roof pitched from 1.2 m eaves to a 3.2 m ridge
+// along x; a 5 x 4 m room whose ceiling steps down 0.35 m over a 1.2 m soffit along one wall; a 5 x 4 m room
+// crossed by a 0.25 m wide, 0.3 m deep beam.
+RoomSpec pitched_loft();
+RoomSpec soffit_room();
+RoomSpec beam_room();
 std::optional<RoomSpec> builtin(const std::string& name);
 std::vector<std::string> builtin_names();
 // Built-in buildings of several storeys.

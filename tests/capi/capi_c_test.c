@@ -304,6 +304,9 @@ static int test_thesis_errors(void) {
   CHECK(RetrieveRoomBounds(&code, &vsize, &tsize) == NULL && code == 1 && vsize == 0 && tsize == 0);
   CHECK(RetrieveRoomUnderstanding(NULL, NULL) == NULL);
   CHECK(RetrieveRoomBounds(NULL, NULL, NULL) == NULL);
+  size = 99;
+  CHECK(RetrieveRoomUnderstandingPlaces(&code, &size) == NULL && code == 1 && size == 0);
+  CHECK(RetrieveRoomUnderstandingPlaces(NULL, NULL) == NULL);
   CHECK(CleanUpRoomUnderstanding() == 0 && CleanUpRoomBounds() == 0);
 
   /* Code 1: no array or a size below 1; code 2: a size not divisible by 3. */
@@ -564,6 +567,9 @@ static int test_handle_errors(void) {
   CHECK_RS(rs_analyzer_get_areas(NULL, 0, &count, NULL), RS_ERROR_HANDLE_INVALID);
   CHECK_RS(rs_analyzer_get_storeys(NULL, 0, &count, NULL), RS_ERROR_HANDLE_INVALID);
   CHECK_RS(rs_analyzer_get_bounds(NULL, 0, &count, NULL, 0, &count, NULL), RS_ERROR_HANDLE_INVALID);
+  CHECK_RS(rs_analyzer_get_rooms(NULL, 0, &count, NULL), RS_ERROR_HANDLE_INVALID);
+  CHECK_RS(rs_analyzer_get_area_places(NULL, 0, &count, NULL), RS_ERROR_HANDLE_INVALID);
+  CHECK_RS(rs_analyzer_get_room_bounds(NULL, 0, 0, &count, NULL, 0, &count, NULL), RS_ERROR_HANDLE_INVALID);
   CHECK_RS(rs_analyzer_get_message(NULL, 0, &count, NULL), RS_ERROR_HANDLE_INVALID);
   rs_analyzer_destroy(NULL);
   rs_analyzer_options_init(NULL);

@@ -104,12 +104,15 @@ bool valid_mesh(const BoundsMesh* m) {
   return !m->indices.empty();
 }
 
-bool valid_features(const ReportFeatures& v) {
-  if (v.grid == nullptr || v.features == nullptr) return false;
-  const std::size_t columns = v.grid->column_count();
-  const RoomFeatures& f = *v.features;
+// Features whose sizes match the grid (an app can hand over any).
+bool valid_storey_features(const GridSpec& g, const RoomFeatures& f) {
+  const std::size_t columns = g.column_count();
   return columns > 0 && f.walls.size() == columns && f.room.size() == columns && f.furniture.size() == columns &&
-         (f.normals.empty() || f.normals.size() == v.grid->voxel_count());
+         (f.normals.empty() || f.normals.size() == g.voxel_count());
+}
+
+bool valid_features(const ReportFeatures& v) {
+  return v.grid != nullptr && v.features != nullptr && valid_storey_features(*v.grid, *v.features);
 }
 
 // One <path> of axis-aligned cells, merged into runs along x per row.
@@ -278,12 +281,6 @@ struct StoreyView {
   std::size_t first_room = 0;              // index into ReportInput::rooms of its room 0
 };
 
-bool valid_storey_features(const GridSpec& g, const RoomFeatures& f) {
-  const std::size_t columns = g.column_count();
-  return f.walls.size() == columns && f.room.size() == columns && f.furniture.size() == columns &&
-         (f.normals.empty() || f.normals.size() == g.voxel_count());
-}
-
 // Each room's border, with walls, the outside and other rooms: the cell edges between a column of the room
 // and one that is not, as one path per room.
 std::vector<std::string> room_borders(const GridSpec& g, const RoomSplit& split, const Mapper& map) {
@@ -331,7 +328,7 @@ std::vector<std::size_t> drawing_order(std::span<const Area> areas) {
 // normals, the bounds cut above its floor, room borders, its areas and placements. Returns whether it drew
 // raised surfaces from the bounds (for the legend).
 bool draw_storey(Page& p, const ReportInput& input, const StoreyView& v, const Mapper& map, const BoundsMesh* bounds,
-                 bool& drew_rooms) {
+                 std::span<const std::size_t> order, bool& drew_rooms) {
   const Extent& world = map.world;
   const std::string& sfx = v.suffix;
   const float draw_w = map.width(), draw_h = map.height();
@@ -414,7 +411,7 @@ bool draw_storey(Page& p, const ReportInput& input, const StoreyView& v, const M
 
   const auto on_plan = [&](const Area& a) { return report_detail::drawable(a) && a.storey == v.index; };
   p.line("<g id=\"areas" + sfx + "\" stroke-linejoin=\"round\">");
-  for (const std::size_t i : drawing_order(input.areas)) {
+  for (const std::size_t i : order) {
     const Area& a = input.areas[i];
     if (!on_plan(a)) continue;
     std::string pts;
@@ -601,10 +598,11 @@ std::string plan_svg(const ReportInput& input) {
   for (std::size_t i = 0; i < heading.size(); ++i) p.text(kMargin, 30.0f + 20.0f * float(i + 1), heading[i], 13);
 
   bool raised = false, drew_rooms = false;
+  const std::vector<std::size_t> order = drawing_order(input.areas);
   for (std::size_t i = 0; i < views.size(); ++i) {
     map.top = first_top + float(i) * panel_h;
     p.text(kMargin, map.top - kAxisLabelRoom - 6.0f, storey_line(views[i]), 14, " font-weight=\"bold\"");
-    raised = draw_storey(p, input, views[i], map, bounds, drew_rooms) || raised;
+    raised = draw_storey(p, input, views[i], map, bounds, order, drew_rooms) || raised;
   }
   map.top = first_top;
 

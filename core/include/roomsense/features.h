@@ -128,8 +128,13 @@ RoomSplit split_rooms(const GridSpec& spec, const std::vector<std::uint8_t>& ins
                       const std::vector<std::uint8_t>& walls, float min_passage, float min_room_area);
 // The room of column (x, z), or of the nearest column with one within `reach` columns; kNoRoom if none.
 int room_at(const GridSpec& spec, const RoomSplit& rooms, int x, int z, int reach);
-// The columns of `mask` (e.g. B) whose room_at is `room`: its free columns and the walls and doorway columns
-// nearest it. Every column of `mask` within `reach` of a room belongs to exactly one room's mask.
+// Per column of `mask` (e.g. B), its room_at: the room of its free columns, and for the walls and doorway
+// columns the room nearest them; kNoRoom off the mask and beyond `reach` of every room.
+std::vector<int> rooms_of_mask(const GridSpec& spec, const std::vector<std::uint8_t>& mask, const RoomSplit& rooms,
+                               int reach);
+// One room's columns of such a map (1), the others 0.
+std::vector<std::uint8_t> room_mask(const std::vector<int>& rooms_of, int room);
+// room_mask of rooms_of_mask, for one room.
 std::vector<std::uint8_t> room_mask(const GridSpec& spec, const std::vector<std::uint8_t>& mask, const RoomSplit& rooms,
                                     int room, int reach);
 

@@ -124,15 +124,24 @@ int room_at(const GridSpec& spec, const RoomSplit& rooms, int x, int z, int reac
   return kNoRoom;
 }
 
+std::vector<int> rooms_of_mask(const GridSpec& spec, const std::vector<std::uint8_t>& mask, const RoomSplit& rooms,
+                               int reach) {
+  std::vector<int> out(spec.column_count(), kNoRoom);
+  for (int z = 0; z < spec.nz; ++z)
+    for (int x = 0; x < spec.nx; ++x)
+      if (const std::size_t c = spec.column(x, z); mask[c]) out[c] = room_at(spec, rooms, x, z, reach);
+  return out;
+}
+
+std::vector<std::uint8_t> room_mask(const std::vector<int>& rooms_of, int room) {
+  std::vector<std::uint8_t> out(rooms_of.size(), 0);
+  for (std::size_t c = 0; c < rooms_of.size(); ++c) out[c] = rooms_of[c] == room ? 1 : 0;
+  return out;
+}
+
 std::vector<std::uint8_t> room_mask(const GridSpec& spec, const std::vector<std::uint8_t>& mask, const RoomSplit& rooms,
                                     int room, int reach) {
-  std::vector<std::uint8_t> out(spec.column_count(), 0);
-  for (int z = 0; z < spec.nz; ++z)
-    for (int x = 0; x < spec.nx; ++x) {
-      const std::size_t c = spec.column(x, z);
-      if (mask[c] && room_at(spec, rooms, x, z, reach) == room) out[c] = 1;
-    }
-  return out;
+  return room_mask(rooms_of_mask(spec, mask, rooms, reach), room);
 }
 
 }  // namespace roomsense

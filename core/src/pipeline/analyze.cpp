@@ -59,7 +59,7 @@ void assign_rooms(AnalysisResult& r) {
 
 // Issue 15: each room's bounds (build_room_bounds) over its room_mask of its storey's B (its free columns and
 // the walls within 0.3 m of them). A scan of one room has its bounds.
-std::vector<BoundsMesh> build_room_bounds(const AnalysisResult& r, const AnalysisOptions& options) {
+std::vector<BoundsMesh> bounds_of_rooms(const AnalysisResult& r, const AnalysisOptions& options) {
   if (r.rooms.size() <= 1) return std::vector<BoundsMesh>(r.rooms.size(), r.bounds);
   const GridSpec& s = r.voxels.grid.spec;
   const int reach = room_reach_columns(s);
@@ -67,9 +67,10 @@ std::vector<BoundsMesh> build_room_bounds(const AnalysisResult& r, const Analysi
   std::vector<BoundsMesh> out;
   for (std::size_t i = 0; i < storeys.size(); ++i) {
     const RoomSplit& split = r.storey_features(i).rooms;
+    const std::vector<int> rooms_of = rooms_of_mask(s, *storeys[i].room, split, reach);
     for (int k = 0; k < split.count; ++k) {
       stop_point(options.stop);
-      const std::vector<std::uint8_t> mask = room_mask(s, *storeys[i].room, split, k, reach);
+      const std::vector<std::uint8_t> mask = room_mask(rooms_of, k);
       out.push_back(build_room_bounds(r.voxels.grid, storeys[i], mask, options.bounds, options.threads, options.stop));
     }
   }
@@ -206,7 +207,7 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
   stop_point(options.stop);
   if (options.build_bounds) {
     r.bounds = build_bounds(r.voxels.grid, bounds_storeys(r), options.bounds, options.threads, options.stop);
-    r.room_bounds = build_room_bounds(r, options);
+    r.room_bounds = bounds_of_rooms(r, options);
     r.timings.bounds = clock.lap();
   }
   r.timings.total = r.timings.prepare + r.timings.voxelize + r.timings.features + r.timings.areas +

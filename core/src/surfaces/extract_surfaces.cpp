@@ -161,8 +161,9 @@ void storey_surfaces(const AnalysisResult& analysis, std::uint32_t index, const 
   std::vector<std::uint8_t> cells(s.column_count(), 0);  // the region on the whole grid (it is cropped)
   for (int z = 0; z < s.nz; ++z)
     for (int x = 0; x < s.nx; ++x) cells[s.column(x, z)] = region.at(x - region.x0, z - region.z0) ? 1 : 0;
+  const std::vector<int> rooms_of = rooms_of_mask(s, cells, split, room_reach_columns(s));
   for (int k = 0; k < split.count; ++k) {
-    const ColumnMask part = main_region(mask_of(s, room_mask(s, cells, split, k, room_reach_columns(s))));
+    const ColumnMask part = main_region(mask_of(s, room_mask(rooms_of, k)));
     if (double(part.count()) >= min_cells) outline_surfaces(part, first + k);
   }
 }

@@ -61,7 +61,7 @@ std::shared_ptr<Prepared> prepare(const Scan& scan) {
   p->features = detect_features(p->voxels, {});
   const float s = p->spec.voxel_size;
   p->surfaces = {p->spec.origin.y + float(p->features.levels.floor + 1) * s,
-                 p->spec.origin.y + float(p->features.levels.ceiling) * s};
+                 p->spec.origin.y + float(p->features.levels.ceiling) * s, {}};
   return p;
 }
 

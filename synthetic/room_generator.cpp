@@ -534,6 +534,9 @@ std::optional<RoomSpec> builtin(const std::string& name) {
   if (name == "hall") return hall_room();
   if (name == "thesis-room1") return thesis_room1();
   if (name == "flat") return three_room_flat();
+  if (name == "loft") return pitched_loft();
+  if (name == "soffit") return soffit_room();
+  if (name == "beam") return beam_room();
   return std::nullopt;
 }
 
@@ -550,7 +553,7 @@ Scan generate_builtin_source(const std::string& source) {
 }
 
 std::vector<std::string> builtin_names() {
-  return {"default", "large-triangles", "rotated", "pentagon", "hall", "thesis-room1", "flat"};
+  return {"default", "large-triangles", "rotated", "pentagon", "hall", "thesis-room1", "flat", "loft", "soffit", "beam"};
 }
 
 }  // namespace roomsense::synth

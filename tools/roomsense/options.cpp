@@ -18,7 +18,7 @@ simplified room-bounds mesh (the voxel pipeline of the thesis, chapter 3).
 SCAN                  an OBJ, PLY, glTF or GLB file, a Quest scene capture or a Meta MRUK
                       room (.json), or synthetic:NAME for a built-in room
                       (NAME: default, large-triangles, rotated, pentagon, hall, thesis-room1,
-                      flat, house)
+                      flat, loft, soffit, beam, house)
 options:
   --json OUT.json     write the analysis (schema roomsense.analysis/1); without it, print a summary
   --bounds OUT.obj    write the room-bounds mesh (.obj or .glb)

@@ -39,9 +39,12 @@ enum class AnalysisStatus {
 // A floor/ceiling pair of the scan (Eq. 3.9/3.10 for the main storey; beyond the thesis, the pairs above and
 // below it). Each storey has its own features, areas and bounds.
 struct Storey {
-  float floor_y = 0.0f;    // metres, the measured surfaces
+  float floor_y = 0.0f;    // metres, the measured surfaces; a pitched roof's ceiling_y is its ridge
   float ceiling_y = 0.0f;
   FloorCeiling levels{};   // voxel levels
+  // Beyond the thesis (issue 15): the planes of the facets of its ceiling that slope or step
+  // (SurfaceLevels::ceiling_planes), empty where the ceiling is one level.
+  std::vector<glm::vec3> ceiling_planes;
 };
 
 // Beyond the thesis (issue 15): a room of a storey, its free space bounded by walls and passages at most

@@ -122,6 +122,9 @@ inline constexpr double kAreaSearchBudget = 1.0e8;
 struct SurfaceLevels {
   float floor_y = 0.0f;
   float ceiling_y = 0.0f;
+  // Beyond the thesis (issue 15): per facet of RoomFeatures::facets but the first, its ceiling's plane in metres,
+  // y = p.x * x + p.y * z + p.z. Ceiling areas on a facet without one lie at ceiling_y.
+  std::vector<glm::vec3> ceiling_planes;
 };
 
 // §3.3-3.5 on the features of one grid. The 12 searches run in parallel unless threads == 1; the result

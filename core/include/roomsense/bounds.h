@@ -56,6 +56,9 @@ struct BoundsStorey {
   FloorCeiling levels;
   int y_end = 0;
   const std::vector<std::uint8_t>* room = nullptr;  // B of the storey; not owned
+  // Beyond the thesis (issue 15): RoomFeatures::ceiling, each column's own ceiling, below which the free space
+  // ends (a roof's slope, a soffit); not owned. Null: I_Ceiling everywhere.
+  const std::vector<int>* ceiling = nullptr;
 };
 // Beyond the thesis: the union of the storeys' bounds volumes. Storeys lie in disjoint levels, so each keeps
 // its own shell unless their volumes touch.

@@ -6,6 +6,7 @@
 #include "roomsense/voxelize.h"
 
 #include <cstdint>
+#include <optional>
 #include <stop_token>
 #include <vector>
 
@@ -37,6 +38,9 @@ struct FeatureParams {
   // a storey's free space into rooms of at least min_room_area (smaller ones join a neighbour).
   float min_passage = 1.2f;
   float min_room_area = 1.5f;
+  // Ceilings that are not one level (issue 15): a facet of free ceiling below I_Ceiling (a slope, a soffit's
+  // underside) holds areas from this size up; smaller ones (a lamp, a fitting) are no free ceiling.
+  float min_ceiling_facet = 1.0f;
 };
 
 // ⌊metres / S_Voxel⌋, robust to the float error of e.g. 1.5 / 0.1.
@@ -52,6 +56,16 @@ enum WallNormalBits : std::uint8_t {
 
 inline constexpr int kNoFurniture = -1;
 inline constexpr int kNoRoom = -1;
+inline constexpr int kNoFacet = -1;
+
+// Beyond the thesis (issue 15): one plane of a ceiling that is not one level (a roof's slope, a soffit's
+// underside). Facet 0 is the ceiling at I_Ceiling.
+struct CeilingFacet {
+  int level = 0;            // the level its squares are searched at: the one below its mean ceiling level
+  std::size_t columns = 0;  // its free ceiling tiles
+  // Its ceiling levels fitted (least squares): level = slope_x * (x + 0.5) + slope_z * (z + 0.5) + offset.
+  float slope_x = 0.0f, slope_z = 0.0f, offset = 0.0f;
+};
 
 // Beyond the thesis (issue 15): per column, the room (0 the largest, then by size) or kNoRoom.
 struct RoomSplit {
@@ -74,15 +88,24 @@ struct RoomFeatures {
   // gap) or a surface the runtime labels a window, door or screen; no wall area may cover it.
   std::vector<std::uint8_t> wall_blocked;
   RoomSplit rooms;                       // the inside's free columns (not walls) by room
+  // Per column, the level of the ceiling above it: the first scanned voxel above the free space the floor
+  // reaches (column_ceilings), at most I_Ceiling. I_Ceiling where the ceiling is flat.
+  std::vector<int> ceiling;
+  std::vector<int> ceiling_facet;        // per column: the facet its free ceiling tile lies on, or kNoFacet
+  std::vector<CeilingFacet> facets;      // facet 0: I_Ceiling
 };
 
+// Eq. 3.11 against the ceiling over each column (RoomFeatures::ceiling, the highest of the column's and its
+// neighbours' in B) rather than I_Ceiling: a knee wall under a roof is a wall though it fills less than half
+// of the room's full height.
 std::vector<std::uint8_t> detect_walls(const GridSpec& spec, const std::vector<std::uint32_t>& column_counts,
-                                       const FloorCeiling& levels, float wall_fill);
+                                       const FloorCeiling& levels, const std::vector<int>& ceiling,
+                                       const std::vector<std::uint8_t>& room, float wall_fill);
 std::vector<std::uint8_t> detect_room(const GridSpec& spec, const std::vector<std::uint8_t>& column_any);
 // Clears the wall columns whose scan ends more than `gap_levels` below the ceiling (or below where most wall
 // columns end): sides of free-standing furniture.
-void drop_free_standing(const VoxelGrid& grid, const FloorCeiling& levels, int gap_levels,
-                        std::vector<std::uint8_t>& walls);
+void drop_free_standing(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<int>& ceiling,
+                        int gap_levels, std::vector<std::uint8_t>& walls);
 // Columns the walls enclose: not reachable from the grid's edge once openings up to `max_opening_voxels` wide
 // are closed. All 1 when that leaves less than half of the room inside (walls that do not close).
 std::vector<std::uint8_t> detect_enclosed(const GridSpec& spec, const std::vector<std::uint8_t>& walls,
@@ -106,19 +129,45 @@ std::vector<std::uint8_t> detect_wall_openings(const VoxelGrid& grid, const Floo
 void apply_furniture_labels(const GridSpec& spec, const FloorCeiling& levels, const LabelGrid& labels,
                             std::vector<std::uint8_t>& free_floor, std::vector<int>& furniture);
 // `rough_levels`: levels above I_Floor that still count as floor (FeatureParams::floor_roughness).
-std::vector<int> detect_furniture(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
-                                  const std::vector<std::uint8_t>& walls, int clear_levels, int rough_levels);
-// D: beyond the thesis, a column without floor but with scanned surface below it (a stairwell) is not free.
-std::vector<std::uint8_t> detect_free_floor(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
+// C, D, E and F read each column's ceiling (RoomFeatures::ceiling) where the thesis reads I_Ceiling.
+std::vector<int> detect_furniture(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<int>& ceiling,
+                                  int y_end, const std::vector<std::uint8_t>& walls, int clear_levels, int rough_levels);
+// D: beyond the thesis, a column without floor but with scanned surface below it (a stairwell) is not free,
+// nor is one whose ceiling is less than `headroom_levels` above the floor (under a roof's eaves).
+std::vector<std::uint8_t> detect_free_floor(const VoxelGrid& grid, const FloorCeiling& levels,
+                                            const std::vector<int>& ceiling, int y_end,
                                             const std::vector<std::uint8_t>& walls,
-                                            const std::vector<std::uint8_t>& room, int rough_levels);
-std::vector<std::uint8_t> detect_free_ceiling(const VoxelGrid& grid, const FloorCeiling& levels, int clear_levels,
-                                              const std::vector<std::uint8_t>& walls,
+                                            const std::vector<std::uint8_t>& room, int rough_levels,
+                                            int headroom_levels);
+std::vector<std::uint8_t> detect_free_ceiling(const VoxelGrid& grid, const std::vector<int>& ceiling,
+                                              int clear_levels, const std::vector<std::uint8_t>& walls,
                                               const std::vector<std::uint8_t>& room);
-std::vector<std::uint8_t> detect_wall_normals(const VoxelGrid& grid, const FloorCeiling& levels, int reach,
+std::vector<std::uint8_t> detect_wall_normals(const VoxelGrid& grid, const FloorCeiling& levels,
+                                              const std::vector<int>& ceiling, int reach,
                                               const std::vector<std::uint8_t>& walls,
                                               const std::vector<std::uint8_t>& room,
                                               const std::vector<int>& furniture);
+
+// Beyond the thesis (issue 15): ceilings that are not one level. The free space is flooded (6-connected empty
+// voxels of `room`'s columns, from the level above I_Floor up to below `cap`, its parts that rise to the level
+// below `cap`: not the inside of a hollow box); a column's ceiling is the level above the highest voxel the
+// flood reaches in it, so a soffit, a beam or a roof lowers it and furniture does not (the flood passes over
+// it). A column the flood does not reach (a wall) takes the highest ceiling of its four neighbours', else `cap`.
+std::vector<int> column_ceilings(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<std::uint8_t>& room,
+                                 int cap);
+// A ceiling above I_Ceiling: Eq. 3.9/3.10 take a pitched roof's fullest level, part way up its slope. The
+// free space is flooded up to `upper` (the next storey's floor, or the grid's top); when at least a quarter of
+// the columns it reaches have a ceiling 0.3 m or more above I_Ceiling, and at most 5 % of them reach `upper`
+// (the flood did not leak through a hole), I_Ceiling becomes the highest ceiling found. Nothing otherwise.
+std::optional<FloorCeiling> raised_ceiling(const VoxelGrid& grid, const FloorCeiling& levels,
+                                           const std::vector<std::uint8_t>& room, int upper);
+// The facets of E: facet 0 holds the tiles under I_Ceiling; the others are 4-connected tiles under a ceiling
+// of one slope (level steps of at most 2 between neighbours, the same direction of slope over 2 columns either
+// side), of at least `min_columns` tiles; a level one at least 2 levels below I_Ceiling (a step, not the
+// ceiling's unevenness). Tiles on no facet are kNoFacet.
+void find_ceiling_facets(const GridSpec& spec, const FloorCeiling& levels, const std::vector<int>& ceiling,
+                         const std::vector<std::uint8_t>& free_ceiling, std::size_t min_columns,
+                         std::vector<int>& facet_of, std::vector<CeilingFacet>& facets);
 
 // The rooms of a storey: its inside columns that are not walls, split where a passage is at most
 // `min_passage` wide. Cores (columns more than half of it from the nearest blocked column) make the rooms;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace roomsense::detail {
 namespace {
@@ -33,6 +34,31 @@ glm::vec3 wall_normal(const Candidate& c, const PlacementContext& ctx) {
     return x >= 0 && z >= 0 && x < s.nx && z < s.nz && ctx.features.walls[s.column(x, z)] != 0;
   };
   return wall_at(1.0f) && !wall_at(-1.0f) ? -perp : perp;
+}
+
+// Beyond the thesis (issue 15): the plane of the ceiling facet under a ceiling square's centre, when it has
+// one (a roof's slope, a soffit's underside).
+std::optional<glm::vec3> ceiling_plane(const Candidate& c, AreaType type, const PlacementContext& ctx) {
+  if (type != AreaType::Ceiling || ctx.features.ceiling_facet.empty()) return std::nullopt;
+  const GridSpec& s = ctx.spec;
+  const glm::ivec3 sum = corner_sum(c);
+  const int x = std::clamp((sum.x + 2) / 4, 0, s.nx - 1), z = std::clamp((sum.z + 2) / 4, 0, s.nz - 1);
+  const int facet = ctx.features.ceiling_facet[s.column(x, z)];
+  if (facet <= 0 || std::size_t(facet) > ctx.surfaces.ceiling_planes.size()) return std::nullopt;
+  return ctx.surfaces.ceiling_planes[std::size_t(facet - 1)];
+}
+
+// The ceiling square `a` (its footprint seen from above) lifted onto the plane y = p.x x + p.y z + p.z: a
+// rectangle on the plane around the footprint's lifted centre, its first edge the lifted first edge, its
+// normal the plane's, downwards into the room.
+void place_on_plane(const glm::vec3& p, Area& a) {
+  const auto lift = [&](const glm::vec3& q) { return glm::vec3(q.x, p.x * q.x + p.y * q.z + p.z, q.z); };
+  const glm::vec3 centre = lift(0.25f * (a.corners[0] + a.corners[1] + a.corners[2] + a.corners[3]));
+  a.normal = glm::normalize(glm::vec3(p.x, -1.0f, p.y));
+  const glm::vec3 e1 = lift(a.corners[1]) - lift(a.corners[0]), e2 = lift(a.corners[2]) - lift(a.corners[1]);
+  const glm::vec3 x = glm::normalize(e1 - glm::dot(e1, a.normal) * a.normal), y = glm::cross(a.normal, x);
+  const float hw = 0.5f * glm::length(e1), hh = 0.5f * std::fabs(glm::dot(e2, y));
+  a.corners = {centre - hw * x - hh * y, centre + hw * x - hh * y, centre + hw * x + hh * y, centre - hw * x + hh * y};
 }
 
 }  // namespace
@@ -88,6 +114,7 @@ Area to_area(const Sized& found, AreaType type, const PlacementContext& ctx) {
       a.corners[k] = p;
     }
     const glm::vec3 e = a.corners[1] - a.corners[0];
+    if (const auto plane = ceiling_plane(c, type, ctx)) place_on_plane(*plane, a);
     // Eq. 3.57 as a signed angle about the normal: about -Y for ceilings, so the thesis's "negative rotation".
     a.rotation_deg = float(std::atan2(up ? -e.z : e.z, e.x) * 180.0 / std::numbers::pi);
     const FeatureParams& fp = ctx.feature_params;

@@ -44,6 +44,8 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
       const std::size_t col = spec.column(v.x, v.z), i = spec.index(v.x, v.y, v.z);
       if (features.walls[col] || (!features.wall_blocked.empty() && features.wall_blocked[i]))
         return SurfaceCell::Forbidden;
+      // Beyond the thesis: a wall ends at the ceiling in front of it (a roof's slope, a soffit), as F does.
+      if (features.ceiling[col] < features.levels.ceiling && v.y >= features.ceiling[col]) return SurfaceCell::Forbidden;
       return glm::dot(detail::normal_bits_direction(features.normals[i]), a.normal) > 0.0f ? SurfaceCell::Usable
                                                                                              : SurfaceCell::Unusable;
     };
@@ -63,7 +65,14 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
     if (features.walls[col]) return SurfaceCell::Forbidden;
     bool usable = false;
     if (type == 1) usable = features.free_floor[col] != 0;
-    if (type == 2) usable = features.free_ceiling[col] != 0;
+    if (type == 2) {  // on the facet under the area's centre (find_ceiling_facets)
+      usable = features.free_ceiling[col] != 0;
+      if (usable && !features.ceiling_facet.empty()) {
+        const glm::ivec3 c = voxel_of(a.center);
+        const bool inside = c.x >= 0 && c.z >= 0 && c.x < spec.nx && c.z < spec.nz;
+        usable = inside && features.ceiling_facet[col] == features.ceiling_facet[spec.column(c.x, c.z)];
+      }
+    }
     if (type == 3) {  // C holds the level above a top (Eq. 3.13); y_Actual may be one higher (Eq. 3.41)
       const int level = int(std::lround((a.center.y - spec.origin.y) / voxel));
       usable = features.furniture[col] == level || features.furniture[col] == level + 1;

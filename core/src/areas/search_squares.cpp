@@ -64,11 +64,14 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
   std::array<std::vector<RingOffset>, 2> by_parity;
   for (RingOffset& o : ring) by_parity[std::size_t((o.dx - o.dz) & 1)].push_back(std::move(o));
   const FloorCeiling& levels = features.levels;
-  // The levels searched: one for floors (I_Floor + 1) and ceilings (I_Ceiling - 1), (I_Floor, I_yEnd] for
-  // furniture (Eq. 3.40), whose tops C holds as the level above the top voxel (Eq. 3.13).
+  // The levels searched: one for floors (I_Floor + 1), (I_Floor, I_yEnd] for furniture (Eq. 3.40), whose tops
+  // C holds as the level above the top voxel (Eq. 3.13). Ceilings: beyond the thesis, each facet of E
+  // (RoomFeatures::facets) on its own, facet 0 at I_Ceiling - 1 as Eq. 3.39.
+  const bool by_facet = surface == Surface::Ceiling && !features.facets.empty();
   int y_from = levels.floor + 1, y_to = levels.floor + 1;
   if (surface == Surface::Ceiling) y_from = y_to = levels.ceiling - 1;
   if (surface == Surface::Furniture) y_to = features.y_end;
+  const int layers = by_facet ? int(features.facets.size()) : y_to - y_from + 1;
 
   Candidates out;
   BoxCounts box_unsuitable(spec), box_raised(spec), box_first(spec), box_walls(spec);
@@ -83,14 +86,16 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
       most_missing = std::max(most_missing, double(o.cells) - double(fill) * (o.d + 1.0) * (o.d + 1.0));
   // A centre is at most d / √2 from each corner, so corner 1 lies in this box around it (in voxels).
   const int corner_reach = int(std::ceil(size.max_d * 0.7072)) + 1;
-  // Centres found so far, per level of the squares' corners (y_actual for furniture, Eq. 3.41).
-  std::vector<CentreSet> centres(std::size_t(y_to - y_from + 2), CentreSet(spec));
-  for (int y1 = y_from; y1 <= y_to; ++y1) {
+  // Centres found so far, per level of the squares' corners (y_actual for furniture, Eq. 3.41) or facet.
+  std::vector<CentreSet> centres(std::size_t(layers + 1), CentreSet(spec));
+  for (int layer = 0; layer < layers; ++layer) {
+    const int y1 = by_facet ? features.facets[std::size_t(layer)].level : y_from + layer;
     // Corner 1 must be a tile of this level; the other cells may also be one level higher (§3.3.4).
     std::vector<std::uint8_t> tile(spec.column_count(), 0), first(spec.column_count(), 0);
     for (std::size_t col = 0; col < tile.size(); ++col) {
       if (surface == Surface::Floor) tile[col] = first[col] = features.free_floor[col];
-      if (surface == Surface::Ceiling) tile[col] = first[col] = features.free_ceiling[col];
+      if (surface == Surface::Ceiling)
+        tile[col] = first[col] = features.free_ceiling[col] && (!by_facet || features.ceiling_facet[col] == layer);
       if (surface == Surface::Furniture) {
         first[col] = features.furniture[col] == y1;
         tile[col] = first[col] || features.furniture[col] == y1 + 1;
@@ -102,8 +107,8 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
     if (surface == Surface::Furniture) {
       box_raised.fill(spec, [&](std::size_t col) { return features.furniture[col] == y1 + 1; });
     }
-    CentreSet& here = centres[std::size_t(y1 - y_from)];
-    CentreSet& above = centres[std::size_t(y1 - y_from + 1)];
+    CentreSet& here = centres[std::size_t(layer)];
+    CentreSet& above = centres[std::size_t(layer + 1)];
     const bool may_rise = surface == Surface::Furniture;
     const auto is_tile = [&](int x, int z) {
       return x >= 0 && z >= 0 && x < spec.nx && z < spec.nz && tile[spec.column(x, z)] != 0;

@@ -99,20 +99,27 @@ void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& 
   }
 }
 
-}  // namespace
 
-std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
+// The volume of one storey over `room`'s columns (the storey's B, or a room's part of it).
+std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStorey& storey,
                                         const std::vector<std::uint8_t>& room, const BoundsParams& params,
                                         unsigned threads, const std::stop_token& stop) {
   const GridSpec& s = grid.spec;
-  y_end = std::clamp(y_end, levels.floor + 1, levels.ceiling - 1);
+  const FloorCeiling& levels = storey.levels;
+  const int y_end = std::clamp(storey.y_end, levels.floor + 1, levels.ceiling - 1);
+  // Beyond the thesis: under a ceiling lower than I_Ceiling (a roof's slope, a soffit) the column's free space
+  // ends at it; G looks no higher, and H is at most it.
+  const auto ceiling_of = [&](std::size_t col) {
+    return storey.ceiling != nullptr ? std::min((*storey.ceiling)[col], levels.ceiling) : levels.ceiling;
+  };
   std::vector<int> g(s.column_count()), h(s.column_count());
   detail::parallel_for(s.column_count(), threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
     for (std::size_t col = begin; col < end; ++col) {
       const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
       // G (Eq. 3.60): the highest active level in (I_Floor, I_yEnd]; else I_Floor inside the room; else -1.
       g[col] = room[col] ? levels.floor : -1;
-      for (int y = y_end; y > levels.floor; --y)
+      const int ceiling = ceiling_of(col);
+      for (int y = std::min(y_end, ceiling - 1); y > levels.floor; --y)
         if (v[y]) {
           g[col] = y;
           break;
@@ -125,6 +132,7 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeilin
           h[col] = y;
           break;
         }
+      if (room[col] && ceiling < levels.ceiling) h[col] = std::min(h[col], std::max(ceiling, levels.floor + 1));
     }
   });
   stop_point(stop);
@@ -147,6 +155,14 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeilin
   stop_point(stop);
   fill_plane_holes(s, levels, volume, threads);
   return volume;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
+                                        const std::vector<std::uint8_t>& room, const BoundsParams& params,
+                                        unsigned threads, const std::stop_token& stop) {
+  return storey_volume(grid, BoundsStorey{levels, y_end, &room}, room, params, threads, stop);
 }
 
 void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
@@ -206,8 +222,7 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, std::span<const B
                                         const BoundsParams& params, unsigned threads, const std::stop_token& stop) {
   std::vector<std::uint8_t> volume(grid.spec.voxel_count(), 0);
   for (const BoundsStorey& storey : storeys) {
-    const std::vector<std::uint8_t> part =
-        bounds_volume(grid, storey.levels, storey.y_end, *storey.room, params, threads, stop);
+    const std::vector<std::uint8_t> part = storey_volume(grid, storey, *storey.room, params, threads, stop);
     for (std::size_t i = 0; i < volume.size(); ++i) volume[i] |= part[i];
     stop_point(stop);
   }
@@ -218,7 +233,7 @@ std::vector<std::uint8_t> room_bounds_volume(const VoxelGrid& grid, const Bounds
                                              const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
                                              unsigned threads, const std::stop_token& stop) {
   const GridSpec& s = grid.spec;
-  std::vector<std::uint8_t> volume = bounds_volume(grid, storey.levels, storey.y_end, room_columns, params, threads, stop);
+  std::vector<std::uint8_t> volume = storey_volume(grid, storey, room_columns, params, threads, stop);
   const int lo = std::max(storey.levels.floor, 0), hi = std::min(storey.levels.ceiling, s.ny - 1);
   for (std::size_t col = 0; col < s.column_count(); ++col) {
     if (!(*storey.room)[col] || room_columns[col]) continue;
@@ -252,15 +267,18 @@ BoundsMesh build_room_bounds(const VoxelGrid& grid, const BoundsStorey& storey,
   crop.origin = s.lattice_to_world(float(x0), 0.0f, float(z0));
   VoxelGrid part(crop);
   std::vector<std::uint8_t> part_room(crop.column_count()), part_storey(crop.column_count());
+  std::vector<int> part_ceiling(crop.column_count(), storey.levels.ceiling);
   for (int z = 0; z < crop.nz; ++z)
     for (int x = 0; x < crop.nx; ++x) {
       const std::size_t from = s.column(x + x0, z + z0), to = crop.column(x, z);
       std::copy_n(grid.column_data(x + x0, z + z0), s.ny, part.cells.begin() + std::ptrdiff_t(to * std::size_t(s.ny)));
       part_room[to] = room_columns[from];
       part_storey[to] = (*storey.room)[from];
+      if (storey.ceiling != nullptr) part_ceiling[to] = (*storey.ceiling)[from];
     }
   BoundsStorey cropped = storey;
   cropped.room = &part_storey;
+  cropped.ceiling = &part_ceiling;
   std::vector<std::uint8_t> volume = room_bounds_volume(part, cropped, part_room, params, threads, stop);
   fill_edge_contacts(crop, volume);
   return mesh_volume(crop, volume, threads, stop);

@@ -23,8 +23,6 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
   RoomFeatures f;
   f.levels = levels;
   f.y_end = f.levels.floor + voxels_for(params.furniture_top, s);
-  f.walls = detect_walls(grid.spec, column_counts, f.levels, params.wall_fill);
-  drop_free_standing(grid, f.levels, voxels_for(params.wall_top_gap, s), f.walls);
   f.room = detect_room(grid.spec, column_any);
   // B counts voxels from I_Floor up; a floor that spans two levels (select_floor_ceiling) has part of its scan
   // in the level below, and those columns are room too.
@@ -32,6 +30,9 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
     const std::uint8_t* v = grid.cells.data() + c * std::size_t(grid.spec.ny);
     if (!f.room[c]) f.room[c] = std::any_of(v + f.levels.floor_peak, v + f.levels.floor, [](std::uint8_t x) { return x != 0; });
   }
+  f.ceiling = column_ceilings(grid, f.levels, f.room, f.levels.ceiling);
+  f.walls = detect_walls(grid.spec, column_counts, f.levels, f.ceiling, f.room, params.wall_fill);
+  drop_free_standing(grid, f.levels, f.ceiling, voxels_for(params.wall_top_gap, s), f.walls);
   const int max_opening = voxels_for(params.max_opening, s);
   f.enclosed = detect_enclosed(grid.spec, f.walls, f.room, max_opening);
   cut_at_labelled_walls(grid.spec, f.levels, f.y_end, labels, f.room, f.enclosed);
@@ -42,27 +43,39 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
   const int furniture_clear = voxels_for(params.furniture_clear, s);
   const int ceiling_clear = voxels_for(params.ceiling_clear, s);
   const int rough = voxels_for(params.floor_roughness, s);
+  // Free floor needs the headroom a furniture top needs (Eq. 3.13's clear space).
+  const auto floor = [&] {
+    return detect_free_floor(grid, f.levels, f.ceiling, f.y_end, f.walls, inside, rough, furniture_clear);
+  };
+  const auto ceiling = [&] {
+    std::vector<std::uint8_t> tiles = detect_free_ceiling(grid, f.ceiling, ceiling_clear, f.walls, inside);
+    const float cell = s * s;
+    find_ceiling_facets(grid.spec, f.levels, f.ceiling, tiles,
+                        std::size_t(std::max(1.0f, std::ceil(params.min_ceiling_facet / cell - 1e-3f))), f.ceiling_facet,
+                        f.facets);
+    for (std::size_t c = 0; c < tiles.size(); ++c)
+      if (f.ceiling_facet[c] == kNoFacet) tiles[c] = 0;
+    return tiles;
+  };
   if (threads == 1) {
-    f.furniture = detect_furniture(grid, f.levels, f.y_end, f.walls, furniture_clear, rough);
-    f.free_floor = detect_free_floor(grid, f.levels, f.y_end, f.walls, inside, rough);
-    f.free_ceiling = detect_free_ceiling(grid, f.levels, ceiling_clear, f.walls, inside);
+    f.furniture = detect_furniture(grid, f.levels, f.ceiling, f.y_end, f.walls, furniture_clear, rough);
+    f.free_floor = floor();
+    f.free_ceiling = ceiling();
   } else {
     auto furniture = std::async(std::launch::async, [&] {
-      return detect_furniture(grid, f.levels, f.y_end, f.walls, furniture_clear, rough);
+      return detect_furniture(grid, f.levels, f.ceiling, f.y_end, f.walls, furniture_clear, rough);
     });
-    auto ceiling = std::async(std::launch::async, [&] {
-      return detect_free_ceiling(grid, f.levels, ceiling_clear, f.walls, inside);
-    });
-    f.free_floor = detect_free_floor(grid, f.levels, f.y_end, f.walls, inside, rough);
+    auto free_ceiling = std::async(std::launch::async, ceiling);
+    f.free_floor = floor();
     f.furniture = furniture.get();
-    f.free_ceiling = ceiling.get();
+    f.free_ceiling = free_ceiling.get();
   }
   for (std::size_t c = 0; c < inside.size(); ++c)
     if (!inside[c]) f.furniture[c] = kNoFurniture;
   apply_furniture_labels(grid.spec, f.levels, labels, f.free_floor, f.furniture);
   stop_point(stop);
-  f.normals = detect_wall_normals(grid, f.levels, voxels_for(params.wall_normal_reach, s), f.walls, inside,
-                                  f.furniture);
+  f.normals = detect_wall_normals(grid, f.levels, f.ceiling, voxels_for(params.wall_normal_reach, s), f.walls,
+                                  inside, f.furniture);
   f.rooms = split_rooms(grid.spec, inside, f.walls, params.min_passage, params.min_room_area);
   f.wall_blocked = detect_wall_openings(grid, f.levels, f.walls, inside, voxels_for(params.wall_recess, s),
                                         max_opening, labels);

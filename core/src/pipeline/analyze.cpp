@@ -83,7 +83,7 @@ std::vector<BoundsStorey> bounds_storeys(const AnalysisResult& result) {
   std::vector<BoundsStorey> out;
   for (std::size_t i = 0; i < result.storeys.size(); ++i) {
     const RoomFeatures& f = result.storey_features(i);
-    out.push_back({f.levels, f.y_end, &f.room});
+    out.push_back({f.levels, f.y_end, &f.room, &f.ceiling});
   }
   return out;
 }
@@ -149,25 +149,48 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
     return no_room("no floor and ceiling found: no two horizontal levels are at least " + metres(min_height) +
                    " apart (" + std::to_string(spec.ny) + " levels scanned)");
   // Beyond the thesis: the stage's pair may span several storeys (storeys.h); the main one gets its own counts.
-  const detail::StoreyLevels storeys =
+  detail::StoreyLevels storeys =
       detail::find_storeys(r.voxels.level_counts, detail::horizontal_counts(r.voxels.grid), *r.voxels.levels,
                            min_separation);
+  // Beyond the thesis (issue 15): a storey under a pitched roof reaches up to its ridge (raised_ceiling), below
+  // the next storey's floor.
+  std::vector<bool> raised;
+  {
+    std::vector<FloorCeiling*> all{&storeys.main};
+    for (FloorCeiling& other : storeys.others) all.push_back(&other);
+    std::vector<std::uint32_t> counts;
+    std::vector<std::uint8_t> any;
+    for (FloorCeiling* fc : all) {
+      int upper = spec.ny;
+      for (const FloorCeiling* other : all)
+        if (other->floor_peak > fc->ceiling_peak) upper = std::min(upper, other->floor_peak);
+      count_columns(r.voxels.grid, *fc, counts, any);
+      const auto up = raised_ceiling(r.voxels.grid, *fc, detect_room(spec, any), upper);
+      if (up) *fc = *up;
+      raised.push_back(up.has_value());
+    }
+  }
   if (storeys.main != *r.voxels.levels) {
     r.voxels.levels = storeys.main;
     count_columns(r.voxels.grid, r.voxels.levels, r.voxels.column_counts, r.voxels.column_any);
   }
   const FloorCeiling& levels = *r.voxels.levels;
   const auto height = [&](int lower, int upper) { return detail::surface_height(spec, in.vertices, in.indices, lower, upper); };
+  // A raised storey's ceiling is its ridge: the highest point of the roof.
+  const auto ceiling_height = [&](const FloorCeiling& fc, bool up) {
+    return up ? detail::surface_top(spec, in.vertices, fc.ceiling, fc.ceiling_peak) : height(fc.ceiling, fc.ceiling_peak);
+  };
   r.floor_y = height(levels.floor_peak, levels.floor);
-  r.ceiling_y = height(levels.ceiling, levels.ceiling_peak);
+  r.ceiling_y = ceiling_height(levels, raised[0]);
   // Eq. 3.9/3.10 keep levels 1.5 m apart, but the surfaces inside them may be closer (a lone wall's two
   // ends): what is less than 1.5 m high is no room, as the thesis and DESIGN.md state.
   if (r.ceiling_y - r.floor_y < min_height)
     return no_room("no floor and ceiling found: the fullest levels, at " + metres(r.floor_y) + " and " +
                    metres(r.ceiling_y) + ", are less than " + metres(min_height) + " apart");
-  r.storeys.push_back({r.floor_y, r.ceiling_y, levels});
-  for (const FloorCeiling& other : storeys.others) {
-    const Storey storey{height(other.floor_peak, other.floor), height(other.ceiling, other.ceiling_peak), other};
+  r.storeys.push_back({r.floor_y, r.ceiling_y, levels, {}});
+  for (std::size_t i = 0; i < storeys.others.size(); ++i) {
+    const FloorCeiling& other = storeys.others[i];
+    const Storey storey{height(other.floor_peak, other.floor), ceiling_height(other, raised[i + 1]), other, {}};
     if (storey.ceiling_y - storey.floor_y >= min_height) r.storeys.push_back(storey);
   }
   // Beyond the thesis: §3.2-3.6 for each storey on its own levels and column counts.
@@ -185,9 +208,12 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
   r.timings.features = clock.lap();
   stop_point(options.stop);
 
+  for (std::uint32_t i = 0; i < r.storeys.size(); ++i)
+    r.storeys[i].ceiling_planes = detail::ceiling_planes(spec, in.vertices, in.indices, r.storey_features(i));
   for (std::uint32_t i = 0; options.find_areas && i < r.storeys.size(); ++i) {
     const Storey& storey = r.storeys[i];
-    AreaResult found = find_areas(r.voxels.grid, r.storey_features(i), {storey.floor_y, storey.ceiling_y},
+    AreaResult found = find_areas(r.voxels.grid, r.storey_features(i),
+                                  {storey.floor_y, storey.ceiling_y, storey.ceiling_planes},
                                   options.areas, options.features, options.threads, options.stop);
     for (Area& area : found.areas) area.storey = i;
     r.areas.insert(r.areas.end(), found.areas.begin(), found.areas.end());

@@ -1,6 +1,7 @@
 #include "surface_heights.h"
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -42,6 +43,57 @@ float surface_height(const GridSpec& spec, std::span<const glm::vec3> vertices,
   }
   if (weight > 0.0) return float(weighted / weight);
   return 0.5f * (y_lo + y_hi);
+}
+
+float surface_top(const GridSpec& spec, std::span<const glm::vec3> vertices, int lo, int hi) {
+  const float y_lo = spec.origin.y + (float(lo) - kVoxelTestEpsilon) * spec.voxel_size;
+  const float y_hi = spec.origin.y + (float(hi + 1) - kVoxelTestEpsilon) * spec.voxel_size;
+  float top = -INFINITY;
+  for (const glm::vec3& v : vertices)
+    if (v.y >= y_lo && v.y < y_hi) top = std::max(top, v.y);
+  return std::isfinite(top) ? top : 0.5f * (y_lo + y_hi);
+}
+
+std::vector<glm::vec3> ceiling_planes(const GridSpec& spec, std::span<const glm::vec3> vertices,
+                                      std::span<const std::uint32_t> indices, const RoomFeatures& features) {
+  const std::size_t n = features.facets.size() > 1 ? features.facets.size() - 1 : 0;
+  std::vector<glm::dmat3> m(n, glm::dmat3(0.0));
+  std::vector<glm::dvec3> r(n, glm::dvec3(0.0));
+  const float s = spec.voxel_size;
+  const auto add = [&](const glm::vec3& p, double weight) {
+    const float fx = std::floor((p.x - spec.origin.x) / s), fz = std::floor((p.z - spec.origin.z) / s);
+    if (!(fx >= 0.0f && fz >= 0.0f && fx < float(spec.nx) && fz < float(spec.nz))) return;
+    const std::size_t col = spec.column(int(fx), int(fz));
+    const int facet = features.ceiling_facet[col];
+    const float level = (p.y - spec.origin.y) / s - float(features.ceiling[col]);
+    if (facet <= 0 || level < -1.0f || level > 2.0f) return;
+    const glm::dvec3 q(p.x, p.z, 1.0);
+    m[std::size_t(facet - 1)] += weight * glm::outerProduct(q, q);
+    r[std::size_t(facet - 1)] += weight * double(p.y) * q;
+  };
+  if (n > 0 && !indices.empty()) {
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+      const glm::vec3 &a = vertices[indices[t]], &b = vertices[indices[t + 1]], &c = vertices[indices[t + 2]];
+      const glm::vec3 normal = glm::cross(b - a, c - a);
+      const float area2 = glm::length(normal);
+      if (area2 > 0.0f && std::fabs(normal.y) >= 0.3f * area2) add((a + b + c) / 3.0f, double(area2));
+    }
+  } else if (n > 0) {
+    for (const glm::vec3& v : vertices) add(v, 1.0);
+  }
+  std::vector<glm::vec3> out;
+  for (std::size_t k = 0; k < n; ++k) {
+    const CeilingFacet& f = features.facets[k + 1];
+    // The fitted levels, in metres: the level's lower face, where the surface enters the voxel.
+    glm::vec3 plane(f.slope_x, f.slope_z,
+                    spec.origin.y + s * f.offset - f.slope_x * spec.origin.x - f.slope_z * spec.origin.z);
+    if (std::fabs(glm::determinant(m[k])) > 1e-12) {
+      const glm::dvec3 fit = glm::inverse(m[k]) * r[k];
+      if (std::isfinite(fit.x) && std::isfinite(fit.y) && std::isfinite(fit.z)) plane = glm::vec3(fit);
+    }
+    out.push_back(plane);
+  }
+  return out;
 }
 
 }  // namespace roomsense::detail

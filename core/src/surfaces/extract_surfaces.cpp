@@ -29,6 +29,32 @@ struct StoreyRaster {
   float floor_y = 0.0f, ceiling_y = 0.0f;
   ColumnMask floor_region;                 // the room region: B (Eq. 3.12); the ceiling has its outline
   ColumnMask walls;                        // A (Eq. 3.11)
+  const RoomFeatures* features = nullptr;  // the ceiling per column and its facets (issue 15)
+  const std::vector<glm::vec3>* planes = nullptr;  // Storey::ceiling_planes
+  // The height of the ceiling over the point (x, z) of column `col` of a stepped storey: the plane of the
+  // facet it lies under (a roof's slope, a soffit); elsewhere, where the column's ceiling level lies lower,
+  // the sloping plane nearest the middle of that level within two voxels of it (the eaves, too low for free
+  // ceiling tiles), or that middle; else I_Ceiling's surface or the lowest sloping plane that comes within a
+  // level of it there (the ridge between two slopes).
+  float ceiling_over(const GridSpec& s, std::size_t col, double x, double z) const {
+    const auto at = [&](const glm::vec3& p) { return float(double(p.x) * x + double(p.y) * z + double(p.z)); };
+    const auto sloping = [](const glm::vec3& p) { return p.x * p.x + p.y * p.y > 0.01f; };
+    const int facet = features->ceiling_facet[col], c = features->ceiling[col];
+    if (facet > 0 && std::size_t(facet) <= planes->size()) return std::min(ceiling_y, at((*planes)[std::size_t(facet - 1)]));
+    if (c < ceiling_level - 1) {
+      const float middle = s.origin.y + (float(c) + 0.5f) * s.voxel_size;
+      float best = middle, off = 2.0f * s.voxel_size;
+      for (const glm::vec3& p : *planes)
+        if (sloping(p) && std::fabs(at(p) - middle) <= off) best = at(p), off = std::fabs(at(p) - middle);
+      return best;
+    }
+    float y = ceiling_y;
+    const float near = s.origin.y + float(ceiling_level - 2) * s.voxel_size;
+    for (const glm::vec3& p : *planes)
+      if (sloping(p) && at(p) >= near) y = std::min(y, at(p));
+    return y;
+  }
+  bool stepped() const { return features->facets.size() > 1; }  // a ceiling of several facets
 };
 
 ColumnMask mask_of(const GridSpec& s, const std::vector<std::uint8_t>& cells) {
@@ -42,7 +68,8 @@ StoreyRaster storey_raster(const AnalysisResult& analysis, std::size_t index) {
   const GridSpec& s = analysis.voxels.grid.spec;
   const RoomFeatures& f = analysis.storey_features(index);
   const Storey& storey = analysis.storeys[index];
-  return {f.levels.floor, f.levels.ceiling, storey.floor_y, storey.ceiling_y, mask_of(s, f.room), mask_of(s, f.walls)};
+  return {f.levels.floor,     f.levels.ceiling, storey.floor_y, storey.ceiling_y, mask_of(s, f.room), mask_of(s, f.walls),
+          &f, &storey.ceiling_planes};
 }
 
 // A column holding wall both in the lower and in the upper half of the storey: under a window, a sill, over
@@ -105,20 +132,110 @@ Surface horizontal(SurfaceKind kind, std::uint32_t storey, const GridSpec& s, co
   return out;
 }
 
-// A wall plane: the rectangle over a segment from the storey's floor to its ceiling.
+// Beyond the thesis (issue 15): a ceiling facet that slopes or steps, on its plane y = p.x x + p.y z + p.z
+// over a lattice polygon, facing down. Its x_axis runs level along the slope (+X on a level facet).
+Surface sloped_ceiling(std::uint32_t storey, const GridSpec& s, const Polygon2& lattice, const glm::vec3& p) {
+  const glm::dvec3 normal = glm::normalize(glm::dvec3(p.x, -1.0, p.y));
+  const glm::dvec2 level(p.y, -p.x);
+  const glm::dvec3 x_axis = glm::length(level) > 1e-6 ? glm::normalize(glm::dvec3(level.x, 0.0, level.y)) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 y_axis = glm::cross(normal, x_axis);
+  glm::dvec2 lo(INFINITY), hi(-INFINITY);
+  Polygon2 plane;
+  double offset = 0.0;
+  for (const glm::dvec2& l : lattice) {
+    const glm::dvec2 w = to_world(s, l);
+    const glm::dvec3 q(w.x, double(p.x) * w.x + double(p.y) * w.y + double(p.z), w.y);
+    plane.emplace_back(glm::dot(q, x_axis), glm::dot(q, y_axis));
+    offset = glm::dot(q, normal);
+    lo = glm::min(lo, plane.back());
+    hi = glm::max(hi, plane.back());
+  }
+  const glm::dvec2 mid = 0.5 * (lo + hi);
+  if (detail::signed_area(plane) < 0.0) std::reverse(plane.begin(), plane.end());
+  Surface out;
+  out.kind = SurfaceKind::Ceiling;
+  out.storey = storey;
+  out.center = glm::vec3(x_axis * mid.x + y_axis * mid.y + normal * offset);
+  out.normal = glm::vec3(normal);
+  out.x_axis = glm::vec3(x_axis);
+  out.extents = glm::vec2(hi - lo);
+  for (const glm::dvec2& q : plane) out.polygon.emplace_back(q - mid);
+  return out;
+}
+
+// Douglas-Peucker on an open polyline: the points that keep every dropped one within `tolerance` of it.
+std::vector<glm::vec2> simplify_polyline(const std::vector<glm::vec2>& points, float tolerance) {
+  if (points.size() <= 2) return points;
+  std::vector<std::uint8_t> keep(points.size(), 0);
+  keep.front() = keep.back() = 1;
+  std::vector<std::pair<std::size_t, std::size_t>> spans{{0, points.size() - 1}};
+  while (!spans.empty()) {
+    const auto [i, j] = spans.back();
+    spans.pop_back();
+    const glm::vec2 d = points[j] - points[i];
+    const float length = glm::length(d);
+    float worst = 0.0f;
+    std::size_t at = i;
+    for (std::size_t k = i + 1; k < j; ++k) {
+      const glm::vec2 e = points[k] - points[i];
+      const float off = length > 0.0f ? std::fabs(d.x * e.y - d.y * e.x) / length : glm::length(e);
+      if (off > worst) worst = off, at = k;
+    }
+    if (worst <= tolerance) continue;
+    keep[at] = 1;
+    spans.push_back({i, at});
+    spans.push_back({at, j});
+  }
+  std::vector<glm::vec2> out;
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (keep[k]) out.push_back(points[k]);
+  return out;
+}
+
+// A wall plane over a segment from the storey's floor to its ceiling: a rectangle, or beyond the thesis
+// (issue 15) a polygon whose top follows the ceiling in front of the wall (a gable under a pitched roof, a wall
+// under a soffit), simplified to within 5 cm.
 Surface wall(std::uint32_t storey, const GridSpec& s, const detail::WallSegment& segment, const StoreyRaster& r) {
   const glm::dvec2 a = to_world(s, segment.a), b = to_world(s, segment.b);
   const glm::dvec2 n = detail::inward_normal(glm::normalize(b - a)), mid = 0.5 * (a + b);
-  const float width = float(glm::distance(a, b)), height = r.ceiling_y - r.floor_y;
+  const float width = float(glm::distance(a, b));
   Surface out;
   out.kind = SurfaceKind::Wall;
   out.storey = storey;
-  out.center = glm::vec3(float(mid.x), 0.5f * (r.floor_y + r.ceiling_y), float(mid.y));
   out.normal = glm::vec3(float(n.x), 0.0f, float(n.y));
   out.x_axis = glm::vec3(float(n.y), 0.0f, float(-n.x));  // up × normal, so that normal × x_axis is up
+  const float w = 0.5f * width;
+  // The ceiling over the first column in front of the wall that is no wall (within 3 voxels), every half voxel
+  // along it, right to left; the ends take the nearest sample's height.
+  std::vector<glm::vec2> top;
+  const double step = 0.5 * double(s.voxel_size);
+  for (double t = double(width); r.stepped() && t >= -1e-9; t -= step)
+    for (int d = 1; d <= 3; ++d) {
+      const glm::dvec2 q = a + glm::normalize(b - a) * std::max(t, 0.0) + n * (double(d) * double(s.voxel_size));
+      const double fx = std::floor((q.x - double(s.origin.x)) / double(s.voxel_size));
+      const double fz = std::floor((q.y - double(s.origin.z)) / double(s.voxel_size));
+      if (!(fx >= 0.0 && fz >= 0.0 && fx < double(s.nx) && fz < double(s.nz))) break;
+      const std::size_t col = s.column(int(fx), int(fz));
+      if (r.walls.cells[col]) continue;
+      top.emplace_back(float(std::max(t, 0.0)) - w, std::max(r.ceiling_over(s, col, q.x, q.y), r.floor_y + s.voxel_size));
+      break;
+    }
+  const bool level = std::all_of(top.begin(), top.end(), [&](const glm::vec2& p) { return p.y == r.ceiling_y; });
+  if (!level) {
+    top.front().x = w, top.back().x = -w;
+    top = simplify_polyline(top, 0.05f);
+  }
+  float high = level ? r.ceiling_y : r.floor_y;
+  for (const glm::vec2& p : top) high = std::max(high, p.y);
+  const float height = high - r.floor_y, centre_y = 0.5f * (r.floor_y + high), h = 0.5f * height;
+  out.center = glm::vec3(float(mid.x), centre_y, float(mid.y));
   out.extents = {width, height};
-  const float w = 0.5f * width, h = 0.5f * height;
-  out.polygon = {{-w, -h}, {w, -h}, {w, h}, {-w, h}};
+  if (level) {
+    out.polygon = {{-w, -h}, {w, -h}, {w, h}, {-w, h}};
+    return out;
+  }
+  out.polygon = {{-w, -h}, {w, -h}};
+  for (const glm::vec2& p : top) out.polygon.emplace_back(p.x, p.y - centre_y);
   return out;
 }
 
@@ -143,13 +260,44 @@ void storey_surfaces(const AnalysisResult& analysis, std::uint32_t index, const 
     stop_point(stop);
     const detail::StoreyOutline fitted = detail::fit_walls(outline, search);
     floors.push_back(horizontal(SurfaceKind::Floor, index, s, fitted.polygon, r.floor_y, true));
-    ceilings.push_back(horizontal(SurfaceKind::Ceiling, index, s, fitted.polygon, r.ceiling_y, false));
-    floors.back().room = ceilings.back().room = room;
+    floors.back().room = room;
+    if (!r.stepped()) {
+      ceilings.push_back(horizontal(SurfaceKind::Ceiling, index, s, fitted.polygon, r.ceiling_y, false));
+      ceilings.back().room = room;
+    } else {
+      // Beyond the thesis (issue 15): where the ceiling slopes or steps, the level ceiling covers the part's
+      // columns under I_Ceiling (within a level), and each facet below it is a plane of its own.
+      ColumnMask high(s.nx, s.nz);
+      for (int z = 0; z < s.nz; ++z)
+        for (int x = 0; x < s.nx; ++x) {
+          const std::size_t col = s.column(x, z);
+          high.cells[col] = part.at(x - part.x0, z - part.z0) && r.features->ceiling[col] >= r.ceiling_level - 1;
+        }
+      // Not a strip along a ridge, as furniture tops leave out sills.
+      const ColumnMask level = main_region(high);
+      if (double(level.count()) >= min_cells) {
+        const Polygon2 under = detail::simplify_outline(detail::trace_outline(level), params.outline_tolerance);
+        Surface ceiling = horizontal(SurfaceKind::Ceiling, index, s, under, r.ceiling_y, false);
+        ceiling.room = room;
+        if (std::min(ceiling.extents.x, ceiling.extents.y) >= 2.0f * params.min_top_width) ceilings.push_back(std::move(ceiling));
+      }
+    }
     for (const detail::WallSegment& segment : fitted.walls) {
       walls.push_back(wall(index, s, segment, r));
       walls.back().room = room;
     }
   };
+  // Beyond the thesis (issue 15): each facet of the ceiling that slopes or steps, on its plane.
+  const std::vector<glm::vec3>& planes = analysis.storeys[index].ceiling_planes;
+  for (std::size_t k = 1; k < r.features->facets.size() && k <= planes.size(); ++k) {
+    ColumnMask tiles(s.nx, s.nz);
+    for (std::size_t col = 0; col < tiles.cells.size(); ++col) tiles.cells[col] = r.features->ceiling_facet[col] == int(k);
+    const ColumnMask facet = main_region(tiles);
+    if (double(facet.count()) < min_cells) continue;
+    const Polygon2 outline = detail::simplify_outline(detail::trace_outline(facet), params.outline_tolerance);
+    ceilings.push_back(sloped_ceiling(index, s, outline, planes[k - 1]));
+    ceilings.back().room = room_at_point(analysis, index, ceilings.back().center);
+  }
   const RoomSplit& split = analysis.storey_features(index).rooms;
   const int first = first_room_of(analysis, index);
   if (split.count <= 1) {

@@ -486,6 +486,37 @@ TEST(Ceilings, PitchedSteppedAndBeamedCeilingsKeepAreasOnTheSurfacesAndTheBounds
       EXPECT_GE(rising_z, 3u);
       EXPECT_GE(falling_z, 3u);
     }
+    // Coverage, on a 5 cm raster clear of walls and furniture by 0.1 m: of the floor with at least 1.1 m of
+    // headroom by floor areas, and of the ceiling with at least 1.1 m clear below it by ceiling areas (each
+    // point of the true surface within a voxel of an area's plane and inside its rectangle).
+    glm::vec2 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec2& v : spec.outline) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    const auto covered_by = [&](AreaType type, const glm::vec3& p) {
+      return std::any_of(r.areas.begin(), r.areas.end(), [&](const Area& a) {
+        const glm::vec3 d = p - a.center;
+        return a.type == type && std::fabs(glm::dot(d, a.normal)) <= 0.1f &&
+               std::fabs(glm::dot(d, a.x_axis())) <= a.half_width && std::fabs(glm::dot(d, a.y_axis())) <= a.half_height;
+      });
+    };
+    std::array<int, 2> surface{}, covered{};
+    for (float z = lo.y + 0.025f; z < hi.y; z += 0.05f)
+      for (float x = lo.x + 0.025f; x < hi.x; x += 0.05f) {
+        const glm::vec2 p{x, z};
+        if (!synth::inside_outline(spec, p) || synth::distance_to_walls(spec, p) <= 0.1f ||
+            synth::distance_to_furniture(spec, p) <= 0.1f)
+          continue;
+        const float ceiling = synth::ceiling_at(spec, p);
+        if (ceiling - spec.floor_y < 1.1f) continue;
+        ++surface[0];
+        covered[0] += covered_by(AreaType::Floor, {x, spec.floor_y, z}) ? 1 : 0;
+        ++surface[1];
+        covered[1] += covered_by(AreaType::Ceiling, {x, ceiling, z}) ? 1 : 0;
+      }
+    const double floor_share = double(covered[0]) / std::max(surface[0], 1), ceiling_share = double(covered[1]) / std::max(surface[1], 1);
+    std::printf("[ figures  ] %s: floor areas cover %.1f %%, ceiling areas %.1f %% of the surface with 1.1 m clear\n",
+                spec.name.c_str(), 100.0 * floor_share, 100.0 * ceiling_share);
+    EXPECT_GE(floor_share, 0.8);
+    EXPECT_GE(ceiling_share, 0.8);
     EXPECT_TRUE(check_closure(r.bounds).closed());
     std::vector<std::uint8_t> volume = bounds_volume(r.voxels.grid, bounds_storeys(r));
     const GridSpec& s = r.voxels.grid.spec;
@@ -494,8 +525,6 @@ TEST(Ceilings, PitchedSteppedAndBeamedCeilingsKeepAreasOnTheSurfacesAndTheBounds
     const glm::ivec3 seed = voxel_of({0.3f, 1.2f, 0.5f});
     ASSERT_EQ(volume[s.index(seed.x, seed.y, seed.z)], 0);
     const std::vector<std::uint8_t> reached = free_space_from(s, volume, seed);
-    glm::vec2 lo(INFINITY), hi(-INFINITY);
-    for (const glm::vec2& v : spec.outline) lo = glm::min(lo, v), hi = glm::max(hi, v);
     std::size_t free = 0, kept = 0;
     for (float y = spec.floor_y + 0.23f; y < spec.ceiling_y; y += 0.1f)
       for (float z = lo.y; z < hi.y; z += 0.1f)

@@ -95,16 +95,19 @@ struct RoomFeatures {
   std::vector<CeilingFacet> facets;      // facet 0: I_Ceiling
 };
 
-// Eq. 3.11 against the ceiling over each column (RoomFeatures::ceiling, the highest of the column's and its
-// neighbours' in B) rather than I_Ceiling: a knee wall under a roof is a wall though it fills less than half
-// of the room's full height.
+// Beyond the thesis (issue 15): per column, the ceiling over a wall there: the highest of RoomFeatures::ceiling
+// over the column and its 8 neighbours in `room` (B), I_Ceiling where none is. A ceiling counts as lower only
+// where it lies `step_levels` or more below I_Ceiling over at least `min_columns` 4-connected columns.
+std::vector<int> wall_ceilings(const GridSpec& spec, const FloorCeiling& levels, const std::vector<int>& ceiling,
+                               const std::vector<std::uint8_t>& room, int step_levels, std::size_t min_columns);
+// Eq. 3.11 against the ceiling over each column (`over_walls`, wall_ceilings) rather than I_Ceiling: a knee
+// wall under a roof is a wall though it fills less than half of the room's full height.
 std::vector<std::uint8_t> detect_walls(const GridSpec& spec, const std::vector<std::uint32_t>& column_counts,
-                                       const FloorCeiling& levels, const std::vector<int>& ceiling,
-                                       const std::vector<std::uint8_t>& room, float wall_fill);
+                                       const FloorCeiling& levels, const std::vector<int>& over_walls, float wall_fill);
 std::vector<std::uint8_t> detect_room(const GridSpec& spec, const std::vector<std::uint8_t>& column_any);
-// Clears the wall columns whose scan ends more than `gap_levels` below the ceiling (or below where most wall
-// columns end): sides of free-standing furniture.
-void drop_free_standing(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<int>& ceiling,
+// Clears the wall columns whose scan ends more than `gap_levels` below the ceiling over them (`over_walls`), or
+// below where most wall columns end: sides of free-standing furniture.
+void drop_free_standing(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<int>& over_walls,
                         int gap_levels, std::vector<std::uint8_t>& walls);
 // Columns the walls enclose: not reachable from the grid's edge once openings up to `max_opening_voxels` wide
 // are closed. All 1 when that leaves less than half of the room inside (walls that do not close).

@@ -45,7 +45,8 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
       if (features.walls[col] || (!features.wall_blocked.empty() && features.wall_blocked[i]))
         return SurfaceCell::Forbidden;
       // Beyond the thesis: a wall ends at the ceiling in front of it (a roof's slope, a soffit), as F does.
-      if (features.ceiling[col] < features.levels.ceiling && v.y >= features.ceiling[col]) return SurfaceCell::Forbidden;
+      if (!features.ceiling.empty() && features.ceiling[col] < features.levels.ceiling && v.y >= features.ceiling[col])
+        return SurfaceCell::Forbidden;
       return glm::dot(detail::normal_bits_direction(features.normals[i]), a.normal) > 0.0f ? SurfaceCell::Usable
                                                                                              : SurfaceCell::Unusable;
     };

@@ -99,7 +99,6 @@ void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& 
   }
 }
 
-
 // The volume of one storey over `room`'s columns (the storey's B, or a room's part of it).
 std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStorey& storey,
                                         const std::vector<std::uint8_t>& room, const BoundsParams& params,

@@ -1,6 +1,7 @@
 // Beyond the thesis (issue 15): the ceiling per column (a roof's slope, a soffit, a beam), the storey's
 // ceiling raised to a pitched roof's ridge, and the facets of free ceiling the areas lie on.
 #include "roomsense/features.h"
+#include "surfaces/regions.h"
 
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
@@ -15,45 +16,64 @@ namespace {
 // The highest level the flood reaches in each column, or -1: 6-connected empty voxels of `room`'s columns in
 // levels (floor, top), seeded at every empty voxel just above the floor. Only the parts of the flood that rise
 // to `reach` count: a part that stays lower is shut in (the inside of a hollow box, a cupboard under a stair),
-// not the room's free space.
+// not the room's free space. The flood walks runs of empty voxels in a column, not voxels: two runs of
+// neighbouring columns that share a level touch, as their voxels would.
 std::vector<int> flood_tops(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<std::uint8_t>& room,
                             int top, int reach) {
   const GridSpec& s = grid.spec;
   std::vector<int> highest(s.column_count(), -1);
   const int lo = std::max(levels.floor + 1, 0), hi = std::min(top, s.ny) - 1;
   if (hi < lo) return highest;
-  std::vector<std::uint8_t> seen(s.voxel_count(), 0);
-  std::vector<std::size_t> stack, part;
-  const auto push = [&](int x, int y, int z) {
-    if (x < 0 || z < 0 || x >= s.nx || z >= s.nz || y < lo || y > hi) return;
-    const std::size_t col = s.column(x, z), i = s.index(x, y, z);
-    if (!room[col] || seen[i] || grid.cells[i]) return;
-    seen[i] = 1;
-    stack.push_back(i);
+  struct Run {
+    int y0, y1;
+    std::size_t col;
   };
-  const std::size_t ny = std::size_t(s.ny);
-  for (int z0 = 0; z0 < s.nz; ++z0)
-    for (int x0 = 0; x0 < s.nx; ++x0) {
-      push(x0, lo, z0);
-      part.clear();
-      int part_top = -1;
-      while (!stack.empty()) {
-        const std::size_t i = stack.back();
-        stack.pop_back();
-        part.push_back(i);
-        const std::size_t col = i / ny;
-        const int y = int(i % ny), x = int(col % std::size_t(s.nx)), z = int(col / std::size_t(s.nx));
-        part_top = std::max(part_top, y);
-        push(x, y + 1, z);
-        push(x, y - 1, z);
-        push(x + 1, y, z);
-        push(x - 1, y, z);
-        push(x, y, z + 1);
-        push(x, y, z - 1);
-      }
-      if (part_top < reach) continue;
-      for (const std::size_t i : part) highest[i / ny] = std::max(highest[i / ny], int(i % ny));
+  std::vector<Run> runs;
+  std::vector<std::size_t> first(s.column_count() + 1, 0);  // runs of column c: [first[c], first[c + 1])
+  for (std::size_t col = 0; col < s.column_count(); ++col) {
+    first[col] = runs.size();
+    if (!room[col]) continue;
+    const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
+    for (int y = lo; y <= hi; ++y) {
+      if (v[y]) continue;
+      const int y0 = y;
+      while (y + 1 <= hi && !v[y + 1]) ++y;
+      runs.push_back({y0, y, col});
     }
+  }
+  first[s.column_count()] = runs.size();
+  std::vector<int> part(runs.size(), -1);
+  std::vector<int> part_top;
+  std::vector<std::size_t> stack;
+  for (std::size_t col = 0; col < s.column_count(); ++col) {
+    for (std::size_t seed = first[col]; seed < first[col + 1]; ++seed) {
+      if (runs[seed].y0 != lo || part[seed] >= 0) continue;
+      const int id = int(part_top.size());
+      part_top.push_back(runs[seed].y1);
+      part[seed] = id;
+      stack.assign(1, seed);
+      while (!stack.empty()) {
+        const std::size_t r = stack.back();
+        stack.pop_back();
+        const std::size_t c = runs[r].col;
+        const int x = int(c % std::size_t(s.nx)), z = int(c / std::size_t(s.nx));
+        const int nbr[4][2] = {{x - 1, z}, {x + 1, z}, {x, z - 1}, {x, z + 1}};
+        for (const auto& n : nbr) {
+          if (n[0] < 0 || n[1] < 0 || n[0] >= s.nx || n[1] >= s.nz) continue;
+          const std::size_t nc = s.column(n[0], n[1]);
+          for (std::size_t q = first[nc]; q < first[nc + 1]; ++q)
+            if (part[q] < 0 && runs[q].y0 <= runs[r].y1 && runs[r].y0 <= runs[q].y1) {
+              part[q] = id;
+              part_top[std::size_t(id)] = std::max(part_top[std::size_t(id)], runs[q].y1);
+              stack.push_back(q);
+            }
+        }
+      }
+    }
+  }
+  for (std::size_t col = 0; col < s.column_count(); ++col)
+    for (std::size_t r = first[col]; r < first[col + 1]; ++r)
+      if (part[r] >= 0 && part_top[std::size_t(part[r])] >= reach) highest[col] = std::max(highest[col], runs[r].y1);
   return highest;
 }
 
@@ -144,58 +164,42 @@ void find_ceiling_facets(const GridSpec& s, const FloorCeiling& levels, const st
       const double sector = std::atan2(double(gz), double(gx)) / (std::numbers::pi / 4.0);
       direction[col] = 1 + int(std::lround(sector) + 8) % 8;
     }
-  std::vector<std::size_t> stack, part;
-  for (std::size_t seed = 0; seed < facet_of.size(); ++seed) {
-    if (direction[seed] < 0 || facet_of[seed] != kNoFacet) continue;
-    const int id = int(facets.size());
-    part.clear();
-    stack.assign(1, seed);
-    facet_of[seed] = id;
-    const int steep = direction[seed] == 0 ? 1 : 2;
-    while (!stack.empty()) {
-      const std::size_t c = stack.back();
-      stack.pop_back();
-      part.push_back(c);
-      const int x = int(c % std::size_t(s.nx)), z = int(c / std::size_t(s.nx));
-      const int nbr[4][2] = {{x - 1, z}, {x + 1, z}, {x, z - 1}, {x, z + 1}};
-      for (const auto& n : nbr) {
-        if (n[0] < 0 || n[1] < 0 || n[0] >= s.nx || n[1] >= s.nz) continue;
-        const std::size_t nc = s.column(n[0], n[1]);
-        if (facet_of[nc] != kNoFacet || direction[nc] != direction[seed] || std::abs(ceiling[nc] - ceiling[c]) > steep)
-          continue;
-        facet_of[nc] = id;
-        stack.push_back(nc);
-      }
-    }
+  // 4-connected tiles of one direction whose levels step by at most 1 (level) or 2 (sloping) are one facet.
+  const detail::Components parts = detail::label_components(
+      s.nx, s.nz, [&](std::size_t c) { return direction[c] >= 0; },
+      [&](std::size_t a, std::size_t b) {
+        return direction[a] == direction[b] && std::abs(ceiling[a] - ceiling[b]) <= (direction[a] == 0 ? 1 : 2);
+      });
+  // Per part, the least squares of level = a x + b z + d over its tiles (column centres), and its mean level.
+  std::vector<glm::dmat3> m(parts.sizes.size(), glm::dmat3(0.0));
+  std::vector<glm::dvec3> r(parts.sizes.size(), glm::dvec3(0.0));
+  std::vector<double> sum(parts.sizes.size(), 0.0);
+  std::vector<int> direction_of(parts.sizes.size(), 0);
+  for (std::size_t c = 0; c < facet_of.size(); ++c) {
+    if (parts.label[c] < 0) continue;
+    const std::size_t k = std::size_t(parts.label[c]);
+    direction_of[k] = direction[c];
+    const glm::dvec3 p(double(c % std::size_t(s.nx)) + 0.5, double(c / std::size_t(s.nx)) + 0.5, 1.0);
+    m[k] += glm::outerProduct(p, p);
+    r[k] += p * double(ceiling[c]);
+    sum[k] += double(ceiling[c]);
+  }
+  std::vector<int> facet_of_part(parts.sizes.size(), kNoFacet);
+  for (std::size_t k = 0; k < parts.sizes.size(); ++k) {
+    const double mean = sum[k] / double(parts.sizes[k]);
     // A level ceiling a voxel below I_Ceiling is the ceiling's own unevenness (a scan's jitter), no step.
-    double sum = 0.0;
-    for (const std::size_t c : part) sum += double(ceiling[c]);
-    const bool step = direction[seed] != 0 || sum <= double(part.size()) * double(levels.ceiling - 2);
-    if (part.size() < min_columns || !step) {
-      for (const std::size_t c : part) facet_of[c] = -2;  // seen, on no facet
-      continue;
+    const bool step = direction_of[k] != 0 || mean <= double(levels.ceiling - 2);
+    if (parts.sizes[k] < min_columns || !step) continue;
+    CeilingFacet f{int(std::lround(mean)) - 1, parts.sizes[k], 0.0f, 0.0f, float(mean)};
+    if (std::fabs(glm::determinant(m[k])) > 1e-9) {
+      const glm::dvec3 fit = glm::inverse(m[k]) * r[k];
+      f.slope_x = float(fit.x), f.slope_z = float(fit.y), f.offset = float(fit.z);
     }
-    // Least squares of level = a x + b z + d over the facet's tiles (column centres).
-    glm::dmat3 m(0.0);
-    glm::dvec3 r(0.0);
-    double mean = 0.0;
-    for (const std::size_t c : part) {
-      const glm::dvec3 p(double(c % std::size_t(s.nx)) + 0.5, double(c / std::size_t(s.nx)) + 0.5, 1.0);
-      const double level = double(ceiling[c]);
-      m += glm::outerProduct(p, p);
-      r += p * level;
-      mean += level;
-    }
-    mean /= double(part.size());
-    CeilingFacet f{int(std::lround(mean)) - 1, part.size(), 0.0f, 0.0f, float(mean)};
-    if (std::fabs(glm::determinant(m)) > 1e-9) {
-      const glm::dvec3 k = glm::inverse(m) * r;
-      f.slope_x = float(k.x), f.slope_z = float(k.y), f.offset = float(k.z);
-    }
+    facet_of_part[k] = int(facets.size());
     facets.push_back(f);
   }
-  for (int& f : facet_of)
-    if (f == -2) f = kNoFacet;
+  for (std::size_t c = 0; c < facet_of.size(); ++c)
+    if (parts.label[c] >= 0) facet_of[c] = facet_of_part[std::size_t(parts.label[c])];
 }
 
 }  // namespace roomsense

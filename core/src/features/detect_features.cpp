@@ -5,6 +5,7 @@
 #include "roomsense/cancel.h"
 
 #include <algorithm>
+#include <cmath>
 #include <future>
 
 namespace roomsense {
@@ -31,8 +32,10 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
     if (!f.room[c]) f.room[c] = std::any_of(v + f.levels.floor_peak, v + f.levels.floor, [](std::uint8_t x) { return x != 0; });
   }
   f.ceiling = column_ceilings(grid, f.levels, f.room, f.levels.ceiling);
-  f.walls = detect_walls(grid.spec, column_counts, f.levels, f.ceiling, f.room, params.wall_fill);
-  drop_free_standing(grid, f.levels, f.ceiling, voxels_for(params.wall_top_gap, s), f.walls);
+  const std::size_t facet_columns = std::size_t(std::max(1.0f, std::ceil(params.min_ceiling_facet / (s * s) - 1e-3f)));
+  const std::vector<int> over_walls = wall_ceilings(grid.spec, f.levels, f.ceiling, f.room, 2, facet_columns);
+  f.walls = detect_walls(grid.spec, column_counts, f.levels, over_walls, params.wall_fill);
+  drop_free_standing(grid, f.levels, over_walls, voxels_for(params.wall_top_gap, s), f.walls);
   const int max_opening = voxels_for(params.max_opening, s);
   f.enclosed = detect_enclosed(grid.spec, f.walls, f.room, max_opening);
   cut_at_labelled_walls(grid.spec, f.levels, f.y_end, labels, f.room, f.enclosed);
@@ -49,10 +52,7 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
   };
   const auto ceiling = [&] {
     std::vector<std::uint8_t> tiles = detect_free_ceiling(grid, f.ceiling, ceiling_clear, f.walls, inside);
-    const float cell = s * s;
-    find_ceiling_facets(grid.spec, f.levels, f.ceiling, tiles,
-                        std::size_t(std::max(1.0f, std::ceil(params.min_ceiling_facet / cell - 1e-3f))), f.ceiling_facet,
-                        f.facets);
+    find_ceiling_facets(grid.spec, f.levels, f.ceiling, tiles, facet_columns, f.ceiling_facet, f.facets);
     for (std::size_t c = 0; c < tiles.size(); ++c)
       if (f.ceiling_facet[c] == kNoFacet) tiles[c] = 0;
     return tiles;

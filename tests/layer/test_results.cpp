@@ -94,6 +94,29 @@ TEST(LayerResults, SubmittedWholeHomesSayEachAreasStoreyAndRoom) {
   }
 }
 
+// Issue 15, ceilings that are not one level, through the extension: the loft's ceiling areas come with
+// analyze()'s poses, on both slopes of the roof (their +Z, the normal, tilted along the slope), and the home
+// layout's storey reaches the ridge.
+TEST(LayerResults, SubmittedLoftServesCeilingAreasOnItsSlopes) {
+  const roomsense::Scan scan = roomsense::synth::generate_builtin_source("synthetic:loft");
+  const Result got = analyse_submitted(scan);
+  const roomsense::AnalysisResult want = roomsense::analyze(scan);
+  ASSERT_TRUE(want.ok());
+  expect_identical(got, want);
+  std::size_t toward_plus_z = 0, toward_minus_z = 0;
+  for (const XrRoomAreaEXTX& a : got.areas) {
+    if (a.areaType != XR_ROOM_AREA_TYPE_CEILING_EXTX) continue;
+    const XrQuaternionf& q = a.pose.orientation;  // +Z rotated: the area's normal
+    const float nz = 1.0f - 2.0f * (q.x * q.x + q.y * q.y), ny = 2.0f * (q.y * q.z - q.w * q.x);
+    EXPECT_LT(ny, -0.5f) << "a ceiling area faces down";
+    if (ny > -0.95f) (nz > 0.0f ? toward_plus_z : toward_minus_z) += 1;
+  }
+  EXPECT_GE(toward_plus_z, 3u);
+  EXPECT_GE(toward_minus_z, 3u);
+  ASSERT_EQ(got.storeys.size(), 1u);
+  EXPECT_NEAR(got.storeys[0].ceilingHeight, 3.2f, 0.05f);
+}
+
 // The two-call idiom on the home layout: counts alone, a too-small array, a null array with a capacity.
 TEST(LayerResults, HomeLayoutFollowsTheTwoCallIdiom) {
   App app;

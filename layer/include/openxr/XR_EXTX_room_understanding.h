@@ -199,7 +199,7 @@ typedef struct XrRoomBoundsMeshEXTX {
 
 typedef struct XrRoomStoreyEXTX {
     float floorHeight;   /* y of the storey's scanned floor surface */
-    float ceilingHeight; /* y of its ceiling surface */
+    float ceilingHeight; /* y of its ceiling surface (under a pitched roof, its ridge) */
 } XrRoomStoreyEXTX;
 
 /* A room: a storey's free space up to doorways and passages at most 1.2 m wide between walls. */

@@ -291,5 +291,75 @@ TEST(LabelledWalls, FurnitureSidesAndOpenLabelsCloseNothing) {
   }
 }
 
+// Ceilings per column (issue 15) on hand-made grids: a room of 20 x 20 columns, floor at level 0, ceiling at
+// level 20, walls round it.
+struct BoxRoom {
+  VoxelGrid grid;
+  FloorCeiling levels{0, 20, 0, 20};
+  std::vector<std::uint8_t> room;
+  explicit BoxRoom(int ny = 21) : grid(GridSpec{glm::vec3(0.0f), 0.1f, 20, ny, 20}), room(grid.spec.column_count(), 1) {
+    for (int z = 0; z < 20; ++z)
+      for (int x = 0; x < 20; ++x) {
+        grid.set(x, 0, z);
+        grid.set(x, 20, z);
+        if (x == 0 || z == 0 || x == 19 || z == 19)
+          for (int y = 0; y <= 20; ++y) grid.set(x, y, z);
+      }
+  }
+  // The shell of a box of voxels [x0, x1] x [y0, y1] x [z0, z1], hollow inside.
+  void box(int x0, int x1, int y0, int y1, int z0, int z1) {
+    for (int z = z0; z <= z1; ++z)
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x)
+          if (x == x0 || x == x1 || y == y0 || y == y1 || z == z0 || z == z1) grid.set(x, y, z);
+  }
+  int at(const std::vector<int>& c, int x, int z) const { return c[grid.spec.column(x, z)]; }
+};
+
+TEST(Ceilings, AColumnsCeilingIsTheFirstSurfaceAboveTheFreeSpace) {
+  BoxRoom r;
+  r.box(3, 8, 0, 6, 3, 8);      // a hollow chest on the floor, its inside shut in
+  r.box(1, 18, 15, 20, 1, 4);   // a soffit along one wall, hollow, from level 15 up to the ceiling
+  r.box(10, 14, 8, 8, 10, 14);  // a shelf board in the air at level 8
+  const std::vector<int> c = column_ceilings(r.grid, r.levels, r.room, r.levels.ceiling);
+  EXPECT_EQ(r.at(c, 5, 5), 20) << "over the chest: the flood passes above it";
+  EXPECT_EQ(r.at(c, 12, 12), 20) << "over the shelf board";
+  EXPECT_EQ(r.at(c, 10, 2), 15) << "under the soffit: its underside";
+  EXPECT_EQ(r.at(c, 10, 10), 20);
+  EXPECT_EQ(r.at(c, 0, 10), 20) << "a wall column takes its neighbours'";
+  // Nothing lies above I_Ceiling here: the storey is not raised.
+  EXPECT_FALSE(raised_ceiling(r.grid, r.levels, r.room, r.grid.spec.ny).has_value());
+  // A room filled by one hollow chest: the floor's flood is shut inside it, which is no ceiling at its lid.
+  BoxRoom crammed;
+  crammed.box(1, 18, 0, 6, 1, 18);
+  const std::vector<int> shut = column_ceilings(crammed.grid, crammed.levels, crammed.room, crammed.levels.ceiling);
+  EXPECT_EQ(crammed.at(shut, 10, 10), 20);
+}
+
+TEST(Ceilings, AStoreyIsRaisedToAHigherCeilingButNotThroughAHole) {
+  // Half the room (z >= 10) rises to level 30: I_Ceiling at 20 is part way up; the storey reaches 30.
+  BoxRoom high(32);
+  for (int z = 10; z < 20; ++z)
+    for (int x = 0; x < 20; ++x) {
+      high.grid.cells[high.grid.spec.index(x, 20, z)] = x == 0 || x == 19 || z == 19 ? 1 : 0;
+      for (int y = 20; y <= 30; ++y)
+        if (x == 0 || x == 19 || z == 19 || z == 10) high.grid.set(x, y, z);
+      high.grid.set(x, 30, z);
+    }
+  for (int x = 1; x < 19; ++x)
+    for (int y = 20; y <= 30; ++y) high.grid.cells[high.grid.spec.index(x, y, 10)] = y >= 21 ? 1 : 0;  // the step's face
+  const auto raised = raised_ceiling(high.grid, high.levels, high.room, high.grid.spec.ny);
+  ASSERT_TRUE(raised.has_value());
+  EXPECT_EQ(raised->ceiling, 30);
+  const std::vector<int> c = column_ceilings(high.grid, *raised, high.room, raised->ceiling);
+  EXPECT_EQ(high.at(c, 10, 5), 20);
+  EXPECT_EQ(high.at(c, 10, 15), 30);
+  // A flat ceiling with a hole and empty levels above it: the flood leaks through the hole to the grid's top
+  // everywhere, which is no higher ceiling.
+  BoxRoom holed(32);
+  holed.grid.cells[holed.grid.spec.index(10, 20, 10)] = 0;
+  EXPECT_FALSE(raised_ceiling(holed.grid, holed.levels, holed.room, holed.grid.spec.ny).has_value());
+}
+
 }  // namespace
 }  // namespace roomsense

@@ -2,13 +2,13 @@
 #include "grow.h"
 
 #include "candidate.h"
+#include "key_table.h"
 #include "roomsense/cancel.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 namespace roomsense::detail {
 namespace {
@@ -76,8 +76,8 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
   }
 
   // Which area holds each sample cell. Opposite faces of a thin wall lie a voxel apart and never conflict.
-  std::unordered_map<std::uint64_t, std::uint32_t> owner;
-  const auto mark = [&](std::uint32_t k, const glm::vec3& p) { owner.emplace(sample_key(p, h), k); };
+  KeyTable owner;
+  const auto mark = [&](std::uint32_t k, const glm::vec3& p) { owner.insert(sample_key(p, h), k); };
   for (std::uint32_t k = 0; k < extents.size(); ++k) {
     const Extent& e = extents[k];
     for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
@@ -86,8 +86,8 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
   }
   const auto conflicts = [&](std::uint32_t k, const glm::vec3& p) {
     for (const float depth : rule.conflict_depths) {
-      const auto it = owner.find(sample_key(p + depth * areas[k].normal, h));
-      if (it != owner.end() && it->second != k && glm::dot(areas[it->second].normal, areas[k].normal) > 0.0f)
+      const std::uint32_t other = owner.find(sample_key(p + depth * areas[k].normal, h));
+      if (other != KeyTable::kAbsent && other != k && glm::dot(areas[other].normal, areas[k].normal) > 0.0f)
         return true;
     }
     return false;

@@ -4,6 +4,8 @@
 #include "reduce.h"
 
 #include "../floor_int.h"
+#include "key_table.h"
+#include "sample_raster.h"
 
 #include <glm/geometric.hpp>
 
@@ -12,8 +14,7 @@
 #include <cmath>
 #include <numbers>
 #include <tuple>
-#include <unordered_map>
-#include <unordered_set>
+#include <climits>
 
 namespace roomsense::detail {
 namespace {
@@ -22,29 +23,33 @@ namespace {
 // edge share none, two that overlap by a strip of half a voxel or more share some.
 constexpr double kSample = 0.5;  // voxels
 
-std::uint64_t sample_key(long x, long y, long z) { return pack_key(int(x), int(y), int(z)); }
-
-// Calls f(sx, sy, sz) for each sample cell (half-voxel index) of a wall rectangle, at `layer` voxels off its
-// plane along its horizontal normal, until f returns false. The rectangle runs between voxel centres
-// (Eq. 3.54). Returns whether every sample was visited.
+// Calls f(sx, sz, sy0, sy1) for each run of sample cells (half-voxel indices) sy0..sy1 of a wall rectangle at
+// one (sx, sz), at `layer` voxels off its plane along its horizontal normal, until f returns false. The
+// rectangle runs between voxel centres (Eq. 3.54). Returns whether every run was visited.
 template <class F>
 bool wall_samples(const Candidate& c, int layer, F f) {
   const glm::dvec2 p1(c.corners[0].x + 0.5, c.corners[0].z + 0.5), p2(c.corners[1].x + 0.5, c.corners[1].z + 0.5);
   const double length = glm::distance(p1, p2);
   if (length <= 0.0) return true;
   const glm::dvec2 dir = (p2 - p1) / length, normal(-dir.y, dir.x);
+  // The samples up the wall, (y_lo + 1/4, y_lo + 3/4, ...) below y_hi, are the same run at every step along it.
   const double y_lo = c.corners[2].y + 0.5, y_hi = c.corners[0].y + 0.5;
+  long sy0 = 0, sy1 = -1;
+  for (double y = y_lo + 0.5 * kSample; y < y_hi; y += kSample) {
+    const long sy = long(floor_int(y / kSample));
+    if (sy1 < sy0) sy0 = sy;
+    sy1 = sy;
+  }
+  if (sy1 < sy0) return true;
   for (double t = 0.5 * kSample; t < length; t += kSample) {
     const glm::dvec2 p = p1 + t * dir + double(layer) * normal;
-    for (double y = y_lo + 0.5 * kSample; y < y_hi; y += kSample)
-      if (!f(long(floor_int(p.x / kSample)), long(floor_int(y / kSample)), long(floor_int(p.y / kSample))))
-        return false;
+    if (!f(long(floor_int(p.x / kSample)), long(floor_int(p.y / kSample)), sy0, sy1)) return false;
   }
   return true;
 }
 
-// Calls f(sx, sz) for each half-voxel sample cell whose centre lies strictly inside the square, until f returns
-// false. Returns whether every sample was visited.
+// Calls f(sz, sx0, sx1) for each run of half-voxel sample cells sx0..sx1 in row sz whose centres lie strictly
+// inside the square, until f returns false. Returns whether every run was visited.
 template <class F>
 bool square_samples(const Candidate& c, F f) {
   const glm::ivec3 e = c.corners[1] - c.corners[0];
@@ -56,9 +61,9 @@ bool square_samples(const Candidate& c, F f) {
       lo_x = std::min(lo_x, k.x), hi_x = std::max(hi_x, k.x);
       lo_z = std::min(lo_z, k.z), hi_z = std::max(hi_z, k.z);
     }
+    if (hi_x <= lo_x) return true;
     for (long sz = 2L * lo_z + 1; sz <= 2L * hi_z; ++sz)
-      for (long sx = 2L * lo_x + 1; sx <= 2L * hi_x; ++sx)
-        if (!f(sx, sz)) return false;
+      if (!f(sz, 2L * lo_x + 1, 2L * hi_x)) return false;
     return true;
   }
   std::array<glm::dvec2, 4> v;
@@ -74,14 +79,36 @@ bool square_samples(const Candidate& c, F f) {
     return e.x * q.y - e.y * q.x;
   };
   const double sign = side(0, 0.25 * (v[0] + v[1] + v[2] + v[3])) > 0.0 ? 1.0 : -1.0;
-  for (long sz = long(floor_int(lo.y / kSample)); sz <= long(floor_int(hi.y / kSample)); ++sz)
-    for (long sx = long(floor_int(lo.x / kSample)); sx <= long(floor_int(hi.x / kSample)); ++sx) {
+  for (long sz = long(floor_int(lo.y / kSample)); sz <= long(floor_int(hi.y / kSample)); ++sz) {
+    long run = 0;  // the first sample of the run of inside samples the row is in, when `in`
+    bool in = false;
+    for (long sx = long(floor_int(lo.x / kSample)); sx <= long(floor_int(hi.x / kSample)) + 1; ++sx) {
       const glm::dvec2 p((double(sx) + 0.5) * kSample, (double(sz) + 0.5) * kSample);
-      bool inside = true;
+      bool inside = sx <= long(floor_int(hi.x / kSample));
       for (std::size_t i = 0; i < 4 && inside; ++i) inside = sign * side(i, p) > 1e-9;
-      if (inside && !f(sx, sz)) return false;
+      if (inside && !in) run = sx;
+      if (!inside && in && !f(sz, run, sx - 1)) return false;
+      in = inside;
     }
+  }
   return true;
+}
+
+// The box of half-voxel sample cells that the samples of `rects` (and wall samples a voxel off their plane)
+// fall in: corners are voxel indices, samples lie within a voxel and a half of them.
+struct SampleBox {
+  long x_lo = 0, x_hi = -1, y_lo = 0, y_hi = -1, z_lo = 0, z_hi = -1;
+};
+SampleBox sample_box(const std::vector<Sized>& rects) {
+  if (rects.empty()) return {};
+  SampleBox b{LONG_MAX, LONG_MIN, LONG_MAX, LONG_MIN, LONG_MAX, LONG_MIN};
+  for (const Sized& r : rects)
+    for (const glm::ivec3& k : r.c.corners) {
+      b.x_lo = std::min(b.x_lo, 2L * k.x - 4), b.x_hi = std::max(b.x_hi, 2L * k.x + 4);
+      b.y_lo = std::min(b.y_lo, 2L * k.y - 4), b.y_hi = std::max(b.y_hi, 2L * k.y + 4);
+      b.z_lo = std::min(b.z_lo, 2L * k.z - 4), b.z_hi = std::max(b.z_hi, 2L * k.z + 4);
+    }
+  return b;
 }
 
 double angle_mod_90(int dx, int dz) {
@@ -93,7 +120,7 @@ double angle_mod_90(int dx, int dz) {
 
 std::vector<Sized> deduplicate_centres(const std::array<Candidates, 3>& by_size) {
   std::vector<Sized> out;
-  std::unordered_set<std::uint64_t> marked;
+  KeyTable marked;
   for (std::size_t s = 0; s < by_size.size(); ++s)
     for (const Candidate& c : by_size[s]) {
       const glm::ivec3 sum = corner_sum(c);
@@ -105,7 +132,7 @@ std::vector<Sized> deduplicate_centres(const std::array<Candidates, 3>& by_size)
         for (int j = 0; j < ny; ++j)
           for (int k = 0; k < nz; ++k) keys[n++] = pack_key(xs[i], ys[j], zs[k]);
       if (std::any_of(keys, keys + n, [&](std::uint64_t key) { return marked.contains(key); })) continue;
-      marked.insert(keys, keys + n);
+      for (int i = 0; i < n; ++i) marked.insert(keys[i]);
       out.push_back({c, kAreaSizes[s]});
     }
   return out;
@@ -133,16 +160,17 @@ double misalignment_deg(const Candidate& square, double dominant_deg) {
 }
 
 std::vector<std::size_t> pack_walls(const std::vector<Sized>& walls) {
-  std::unordered_set<std::uint64_t> taken;
+  const SampleBox box = sample_box(walls);
+  SampleRaster taken(box.x_lo, box.x_hi, box.z_lo, box.z_hi, box.y_lo, box.y_hi);
   std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const bool free =
-        wall_samples(walls[i].c, 0, [&](long x, long y, long z) { return !taken.contains(sample_key(x, y, z)); });
+        wall_samples(walls[i].c, 0, [&](long x, long z, long y0, long y1) { return !taken.any(x, z, y0, y1); });
     if (!free) continue;
     // Marked a voxel thick either side: a rectangle one voxel in front of another on a wall off the axes
     // (the staircase of its voxels) covers the same wall.
     for (int layer = -1; layer <= 1; ++layer)
-      wall_samples(walls[i].c, layer, [&](long x, long y, long z) { return taken.insert(sample_key(x, y, z)), true; });
+      wall_samples(walls[i].c, layer, [&](long x, long z, long y0, long y1) { return taken.set(x, z, y0, y1), true; });
     kept.push_back(i);
   }
   return kept;
@@ -197,19 +225,16 @@ std::vector<std::size_t> pack_squares(const std::vector<Sized>& squares, int lev
                -contact(squares[i].c)};
   }
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank[a] < rank[b]; });
-  std::unordered_map<int, std::unordered_set<std::uint64_t>> taken;  // per level
+  const SampleBox box = sample_box(squares);  // per level: rows of samples along x
+  SampleRaster taken(box.y_lo / 2, box.y_hi / 2, box.z_lo, box.z_hi, box.x_lo, box.x_hi);
   std::vector<std::size_t> kept;
   for (const std::size_t i : order) {
     const int level = squares[i].c.corners[0].y;
     bool free = true;
-    for (int y = level - level_tolerance; y <= level + level_tolerance && free; ++y) {
-      const auto it = taken.find(y);
-      if (it != taken.end())
-        free = square_samples(squares[i].c, [&](long x, long z) { return !it->second.contains(sample_key(x, 0, z)); });
-    }
+    for (int y = level - level_tolerance; y <= level + level_tolerance && free; ++y)
+      free = square_samples(squares[i].c, [&](long z, long x0, long x1) { return !taken.any(y, z, x0, x1); });
     if (!free) continue;
-    auto& here = taken[level];
-    square_samples(squares[i].c, [&](long x, long z) { return here.insert(sample_key(x, 0, z)), true; });
+    square_samples(squares[i].c, [&](long z, long x0, long x1) { return taken.set(level, z, x0, x1), true; });
     kept.push_back(i);
   }
   std::sort(kept.begin(), kept.end());  // the output keeps the search's order

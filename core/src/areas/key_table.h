@@ -1,0 +1,72 @@
+// A hash table from packed cell keys (candidate.h's pack_key) to a 32-bit value, for the sample cells that
+// reduction and growth mark: open addressing with linear probing in one array, so a lookup is a multiply and a
+// probe or two, and an insert allocates only when the table doubles (std::unordered_set allocated a node per
+// cell, and its lookups were the reduction's largest cost).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+namespace roomsense::detail {
+
+class KeyTable {
+ public:
+  static constexpr std::uint32_t kAbsent = ~std::uint32_t{0};
+
+  // The value stored for key, or kAbsent.
+  std::uint32_t find(std::uint64_t key) const {
+    if (slots_.empty()) return kAbsent;
+    for (std::size_t i = home(key);; i = (i + 1) & mask_) {
+      if (slots_[i].key == key) return slots_[i].value;
+      if (slots_[i].key == kEmpty) return kAbsent;
+    }
+  }
+  bool contains(std::uint64_t key) const { return find(key) != kAbsent; }
+
+  // Stores value for key unless key is there already (as std::unordered_map::emplace). Returns whether it
+  // stored.
+  bool insert(std::uint64_t key, std::uint32_t value = 0) {
+    if (2 * (size_ + 1) > slots_.size()) grow();
+    for (std::size_t i = home(key);; i = (i + 1) & mask_) {
+      if (slots_[i].key == key) return false;
+      if (slots_[i].key == kEmpty) {
+        slots_[i] = {key, value};
+        ++size_;
+        return true;
+      }
+    }
+  }
+
+  std::size_t size() const { return size_; }
+
+ private:
+  // pack_key uses 63 bits, so no cell has this key.
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  struct Slot {
+    std::uint64_t key = kEmpty;
+    std::uint32_t value = 0;
+  };
+
+  std::size_t home(std::uint64_t key) const {
+    // The finaliser of splitmix64: neighbouring cells' keys differ in their low bits of each axis.
+    key ^= key >> 30;
+    key *= 0xbf58476d1ce4e5b9ull;
+    key ^= key >> 27;
+    key *= 0x94d049bb133111ebull;
+    key ^= key >> 31;
+    return std::size_t(key) & mask_;
+  }
+
+  void grow() {
+    std::vector<Slot> old = std::move(slots_);
+    slots_.assign(old.empty() ? 1024 : 2 * old.size(), Slot{});
+    mask_ = slots_.size() - 1;
+    size_ = 0;
+    for (const Slot& s : old)
+      if (s.key != kEmpty) insert(s.key, s.value);
+  }
+
+  std::vector<Slot> slots_;
+  std::size_t mask_ = 0, size_ = 0;
+};
+
+}  // namespace roomsense::detail

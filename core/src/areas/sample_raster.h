@@ -1,0 +1,62 @@
+// The half-voxel sample cells packing marks (reduce.cpp), as bits: a row of bits per (a, b) cell of a box, so
+// that a rectangle's run of samples along a row is tested and marked a 64-bit word at a time. The box is the
+// candidates' own, so memory follows the searched surface, not the room's extent beyond it.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+namespace roomsense::detail {
+
+class SampleRaster {
+ public:
+  // Rows for a in [a_lo, a_hi] and b in [b_lo, b_hi], each with bits c in [c_lo, c_hi] (inclusive bounds).
+  SampleRaster(long a_lo, long a_hi, long b_lo, long b_hi, long c_lo, long c_hi)
+      : a_lo_(a_lo), b_lo_(b_lo), c_lo_(c_lo),
+        na_(std::max(0L, a_hi - a_lo + 1)), nb_(std::max(0L, b_hi - b_lo + 1)),
+        words_per_row_(std::max(1L, (c_hi - c_lo + 64) / 64)),
+        bits_(std::size_t(na_) * std::size_t(nb_) * std::size_t(words_per_row_), 0) {}
+
+  // Whether any bit c in [c0, c1] of row (a, b) is set; outside the box nothing is.
+  bool any(long a, long b, long c0, long c1) const {
+    c0 = std::max(c0, c_lo_);
+    c1 = std::min(c1, c_lo_ + 64 * words_per_row_ - 1);
+    if (a < a_lo_ || b < b_lo_ || a >= a_lo_ + na_ || b >= b_lo_ + nb_ || c0 > c1) return false;
+    const std::uint64_t* row = &bits_[row_index(a, b)];
+    bool found = false;
+    for_words(c0 - c_lo_, c1 - c_lo_, [&](std::size_t w, std::uint64_t mask) { found = found || (row[w] & mask); });
+    return found;
+  }
+
+  // Sets bits c in [c0, c1] of row (a, b). The box covers every sample of the candidates it was made for;
+  // a sample outside it is a bug in that bound, not something to drop silently.
+  void set(long a, long b, long c0, long c1) {
+    if (c0 > c1) return;
+    if (a < a_lo_ || b < b_lo_ || a >= a_lo_ + na_ || b >= b_lo_ + nb_ || c0 < c_lo_ ||
+        c1 >= c_lo_ + 64 * words_per_row_)
+      throw std::logic_error("packing sample outside its raster");
+    std::uint64_t* row = &bits_[row_index(a, b)];
+    for_words(c0 - c_lo_, c1 - c_lo_, [&](std::size_t w, std::uint64_t mask) { row[w] |= mask; });
+  }
+
+ private:
+  std::size_t row_index(long a, long b) const {
+    return (std::size_t(a - a_lo_) * std::size_t(nb_) + std::size_t(b - b_lo_)) * std::size_t(words_per_row_);
+  }
+  // Calls f(word, mask) for the words holding bits [i0, i1] of a row (0 <= i0 <= i1).
+  template <class F>
+  static void for_words(long i0, long i1, F f) {
+    for (long w = i0 / 64; w <= i1 / 64; ++w) {
+      const long lo = std::max(i0, 64 * w) - 64 * w, hi = std::min(i1, 64 * w + 63) - 64 * w;
+      const std::uint64_t mask = (hi == 63 ? ~std::uint64_t{0} : (std::uint64_t{1} << (hi + 1)) - 1) &
+                                 ~((std::uint64_t{1} << lo) - 1);
+      f(std::size_t(w), mask);
+    }
+  }
+
+  long a_lo_, b_lo_, c_lo_, na_, nb_, words_per_row_;
+  std::vector<std::uint64_t> bits_;
+};
+
+}  // namespace roomsense::detail

@@ -110,23 +110,23 @@ void scan_triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, c
     return;
   }
   const int d = scan.d, u = scan.u, v = scan.v;
-  const glm::dvec3& normal = scan.normal;
+  // The plane as d = a[d] - su (u - a[u]) - sv (v - a[v]): over a column's unit square its extremes are at the
+  // corners, base + min/max(0, -su) + min/max(0, -sv). One division per triangle, not four per column.
+  const double su = scan.planar() ? scan.normal[u] / scan.normal[d] : 0.0;
+  const double sv = scan.planar() ? scan.normal[v] / scan.normal[d] : 0.0;
+  const double rise_lo = std::min(0.0, -su) + std::min(0.0, -sv), rise_hi = std::max(0.0, -su) + std::max(0.0, -sv);
   int cell[3];
   for (cell[v] = first[v]; cell[v] <= last[v]; ++cell[v]) {
+    const double along_v = sv * (cell[v] - double(kVoxelTestEpsilon) - a[v]);
     for (cell[u] = first[u]; cell[u] <= last[u]; ++cell[u]) {
       int from = first[d], to = last[d];
       if (scan.planar()) {
-        // The plane's d over the square [i - eps, i + 1 - eps] of this column: extremes at its corners.
-        double d_lo = HUGE_VAL, d_hi = -HUGE_VAL;
-        for (int corner = 0; corner < 4; ++corner) {
-          const double pu = cell[u] - double(kVoxelTestEpsilon) + (corner & 1);
-          const double pv = cell[v] - double(kVoxelTestEpsilon) + (corner >> 1);
-          const double pd = a[d] - (normal[u] * (pu - a[u]) + normal[v] * (pv - a[v])) / normal[d];
-          d_lo = std::min(d_lo, pd);
-          d_hi = std::max(d_hi, pd);
-        }
+        // The plane's d over the square [i - eps, i + 1 - eps] of this column.
+        const double base = a[d] - su * (cell[u] - double(kVoxelTestEpsilon) - a[u]) - along_v;
+        const double d_lo = base + rise_lo, d_hi = base + rise_hi;
         // from = max(from, floor(lo) - 1), to = min(to, floor(hi) + 1), without libm's floor; a bound past
-        // the box's far side empties the column as the plain formula would.
+        // the box's far side empties the column as the plain formula would. The voxel of margin each way
+        // also covers the rounding of d_lo and d_hi: the triangle-box test decides.
         const double lo = d_lo + double(kVoxelTestEpsilon), hi = d_hi + double(kVoxelTestEpsilon);
         if (lo >= double(last[d]) + 2.0) from = last[d] + 1;
         else if (lo >= double(from) + 1.0) from = detail::floor_int(lo) - 1;
@@ -205,17 +205,32 @@ VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads, std::ui
     return std::array<const glm::vec3*, 3>{&p[request.indices[3 * t]], &p[request.indices[3 * t + 1]],
                                            &p[request.indices[3 * t + 2]]};
   };
-  std::atomic<std::uint64_t> bound{0};
-  detail::parallel_for(triangles, threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
-    std::uint64_t sum = 0;
-    for (std::size_t t = begin; t < end; ++t) {
-      const auto [a, b, c] = corners(t);
-      sum += TriangleScan(*a, *b, *c, s).tests_bound();
-      if ((t & 0xffff) == 0) stop_point(request.stop);
-    }
-    bound.fetch_add(sum, std::memory_order_relaxed);
+  // Hopeless input is refused before any scan: when the triangles' boxes (at most the tests a scan does) could
+  // exceed the budget, the sum of TriangleScan's lower bounds decides. A room's small triangles stop at the
+  // boxes, which cost a few comparisons each rather than a plane in double.
+  const auto sum_over_triangles = [&](auto per_triangle) {
+    std::atomic<std::uint64_t> total{0};
+    detail::parallel_for(triangles, threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
+      std::uint64_t sum = 0;
+      for (std::size_t t = begin; t < end; ++t) {
+        const auto [a, b, c] = corners(t);
+        sum += per_triangle(*a, *b, *c);
+        if ((t & 0xffff) == 0) stop_point(request.stop);
+      }
+      total.fetch_add(sum, std::memory_order_relaxed);
+    });
+    return total.load();
+  };
+  const std::uint64_t box_bound = sum_over_triangles([&](const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::vec3 lo = glm::min(glm::min(a, b), c), hi = glm::max(glm::max(a, b), c);
+    const auto extent = [](float l, float h, int n) { return std::uint64_t(box_index(h, n) - box_index(l, n) + 1); };
+    return extent(lo.x, hi.x, s.nx) * extent(lo.y, hi.y, s.ny) * extent(lo.z, hi.z, s.nz);
   });
-  if (bound.load() > request.test_budget) throw Error(ErrorCode::TooMuchWork, too_much_work_message(request.test_budget));
+  if (box_bound > request.test_budget &&
+      sum_over_triangles([&](const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+        return TriangleScan(a, b, c, s).tests_bound();
+      }) > request.test_budget)
+    throw Error(ErrorCode::TooMuchWork, too_much_work_message(request.test_budget));
   TestCounter counter(request);
   detail::parallel_for(triangles, threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t) {
     std::uint64_t tests = 0;

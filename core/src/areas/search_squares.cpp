@@ -88,6 +88,24 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
   const int corner_reach = int(std::ceil(size.max_d * 0.7072)) + 1;
   // Centres found so far, per level of the squares' corners (y_actual for furniture, Eq. 3.41) or facet.
   std::vector<CentreSet> centres(std::size_t(layers + 1), CentreSet(spec));
+  // The corner test, the loop's most frequent, reads a copy of the tiles padded by corner_reach on every side
+  // (bit 0: a tile, bit 1: a first corner), so that each orientation's four corners are constant offsets from
+  // the centre's cell: no bounds checks, no index arithmetic. A centre (cx, cz) on the half-voxel lattice has
+  // cx and cz of one parity p; with cx = 2 hx + p, corner 1 is at hx + (p - dx + dz) / 2, an exact division.
+  const int pad = corner_reach + 1;
+  const std::ptrdiff_t row = spec.nx + 2 * pad;
+  std::vector<std::uint8_t> padded(std::size_t(row) * std::size_t(spec.nz + 2 * pad), 0);
+  struct CornerOffsets {
+    std::ptrdiff_t c1, c2, c3, c4;
+  };
+  std::array<std::vector<CornerOffsets>, 2> corner_offsets;
+  for (int p = 0; p < 2; ++p)
+    for (const RingOffset& o : by_parity[std::size_t(p)]) {
+      const int x1 = (p - o.dx + o.dz) / 2, z1 = (p - o.dx - o.dz) / 2;
+      const auto at = [&](int x, int z) { return std::ptrdiff_t(z) * row + x; };
+      corner_offsets[std::size_t(p)].push_back({at(x1, z1), at(x1 + o.dx, z1 + o.dz),
+                                                at(x1 + o.dx - o.dz, z1 + o.dz + o.dx), at(x1 - o.dz, z1 + o.dx)});
+    }
   for (int layer = 0; layer < layers; ++layer) {
     const int y1 = by_facet ? features.facets[std::size_t(layer)].level : y_from + layer;
     // Corner 1 must be a tile of this level; the other cells may also be one level higher (§3.3.4).
@@ -102,6 +120,11 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
       }
     }
     if (std::none_of(first.begin(), first.end(), [](std::uint8_t t) { return t != 0; })) continue;
+    for (int z = 0; z < spec.nz; ++z)
+      for (int x = 0; x < spec.nx; ++x) {
+        const std::size_t col = spec.column(x, z);
+        padded[std::size_t((z + pad) * row + x + pad)] = std::uint8_t((tile[col] != 0 ? 1 : 0) | (first[col] != 0 ? 2 : 0));
+      }
     box_unsuitable.fill(spec, [&](std::size_t col) { return tile[col] == 0; });  // walls are never tiles
     box_first.fill(spec, [&](std::size_t col) { return first[col] != 0; });
     if (surface == Surface::Furniture) {
@@ -110,9 +133,6 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
     CentreSet& here = centres[std::size_t(layer)];
     CentreSet& above = centres[std::size_t(layer + 1)];
     const bool may_rise = surface == Surface::Furniture;
-    const auto is_tile = [&](int x, int z) {
-      return x >= 0 && z >= 0 && x < spec.nx && z < spec.nz && tile[spec.column(x, z)] != 0;
-    };
 
     // Eq. 3.30-3.38 for the square with first corner (x1, z1) and offset o: every cell it reaches into; none a
     // wall, 95 % of (d + 1)² suitable. Where the square's bounding box holds only tiles, all its cells are
@@ -160,14 +180,18 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
             continue;
         }
         bool need_here = !here.contains(sum), need_above = may_rise && !above.contains(sum);
-        for (const RingOffset& o : by_parity[std::size_t(cx & 1)]) {
+        const std::vector<RingOffset>& orientations = by_parity[std::size_t(cx & 1)];
+        const std::vector<CornerOffsets>& offsets = corner_offsets[std::size_t(cx & 1)];
+        const std::uint8_t* centre = padded.data() + (cz / 2 + pad) * row + (cx / 2 + pad);
+        for (std::size_t i = 0; i < orientations.size(); ++i) {
           if (!need_here && !need_above) break;
+          const CornerOffsets& k = offsets[i];
+          if (!(centre[k.c1] & 2) || !(centre[k.c2] & centre[k.c3] & centre[k.c4] & 1)) continue;
+          const RingOffset& o = orientations[i];
           const int x1 = (cx - (o.dx - o.dz)) / 2, z1 = (cz - (o.dx + o.dz)) / 2;
           const int x2 = x1 + o.dx, z2 = z1 + o.dz;
           const int x3 = x2 - o.dz, z3 = z2 + o.dx;  // Eq. 3.28
           const int x4 = x1 - o.dz, z4 = z1 + o.dx;
-          if (x1 < 0 || z1 < 0 || x1 >= spec.nx || z1 >= spec.nz || !first[spec.column(x1, z1)]) continue;
-          if (!is_tile(x2, z2) || !is_tile(x3, z3) || !is_tile(x4, z4)) continue;
           bool rises = false;
           if (!valid(x1, z1, o, rises)) continue;
           bool& needed = rises ? need_above : need_here;

@@ -13,7 +13,9 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <tuple>
+#include <stdexcept>
+#include <optional>
+#include <unordered_map>
 #include <climits>
 
 namespace roomsense::detail {
@@ -79,17 +81,34 @@ bool square_samples(const Candidate& c, F f) {
     return e.x * q.y - e.y * q.x;
   };
   const double sign = side(0, 0.25 * (v[0] + v[1] + v[2] + v[3])) > 0.0 ? 1.0 : -1.0;
+  // Corners and sample centres are multiples of 1/4 well below 2^20: every product in `side` is exact, so
+  // `inside` is an exact half-plane test and a row's inside samples are one run. Its ends come from the
+  // edges' crossings of the row and are then settled by `inside` itself, sample by sample.
+  const auto inside = [&](long sx, long sz) {
+    const glm::dvec2 p((double(sx) + 0.5) * kSample, (double(sz) + 0.5) * kSample);
+    for (std::size_t i = 0; i < 4; ++i)
+      if (!(sign * side(i, p) > 1e-9)) return false;
+    return true;
+  };
+  const long x_first = long(floor_int(lo.x / kSample)), x_last = long(floor_int(hi.x / kSample));
   for (long sz = long(floor_int(lo.y / kSample)); sz <= long(floor_int(hi.y / kSample)); ++sz) {
-    long run = 0;  // the first sample of the run of inside samples the row is in, when `in`
-    bool in = false;
-    for (long sx = long(floor_int(lo.x / kSample)); sx <= long(floor_int(hi.x / kSample)) + 1; ++sx) {
-      const glm::dvec2 p((double(sx) + 0.5) * kSample, (double(sz) + 0.5) * kSample);
-      bool inside = sx <= long(floor_int(hi.x / kSample));
-      for (std::size_t i = 0; i < 4 && inside; ++i) inside = sign * side(i, p) > 1e-9;
-      if (inside && !in) run = sx;
-      if (!inside && in && !f(sz, run, sx - 1)) return false;
-      in = inside;
+    const double z = (double(sz) + 0.5) * kSample;
+    double x_lo = INFINITY, x_hi = -INFINITY;  // where the row's line crosses the square's edges
+    for (std::size_t i = 0; i < 4; ++i) {
+      const glm::dvec2 a = v[i], b = v[(i + 1) % 4];
+      if ((a.y - z) * (b.y - z) > 0.0 || a.y == b.y) continue;
+      const double x = a.x + (b.x - a.x) * (z - a.y) / (b.y - a.y);
+      x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x);
     }
+    // Two samples of slack each way cover the crossings' rounding; the run lies within and is then trimmed.
+    long s0 = x_first, s1 = x_last;
+    if (x_lo <= x_hi) {
+      s0 = std::max(x_first, long(floor_int(x_lo / kSample)) - 2);
+      s1 = std::min(x_last, long(floor_int(x_hi / kSample)) + 2);
+    }
+    while (s0 <= s1 && !inside(s0, sz)) ++s0;
+    while (s1 >= s0 && !inside(s1, sz)) --s1;
+    if (s0 <= s1 && !f(sz, s0, s1)) return false;
   }
   return true;
 }
@@ -176,38 +195,86 @@ std::vector<std::size_t> pack_walls(const std::vector<Sized>& walls) {
   return kept;
 }
 
+namespace {
+
+// For a level-free TileMap (floor or ceiling): how many cells of a run along a row or a column are not tiles,
+// from prefix counts, cells outside the grid included (TileMap says they are no tiles).
+class NonTileCounts {
+ public:
+  explicit NonTileCounts(const TileMap& is_tile) : nx_(is_tile.spec.nx), nz_(is_tile.spec.nz) {
+    along_x_.assign(std::size_t(nz_) * std::size_t(nx_ + 1), 0);
+    along_z_.assign(std::size_t(nx_) * std::size_t(nz_ + 1), 0);
+    for (int z = 0; z < nz_; ++z)
+      for (int x = 0; x < nx_; ++x) {
+        const int not_tile = is_tile(x, z, 0) ? 0 : 1;
+        along_x_[x_at(x + 1, z)] = along_x_[x_at(x, z)] + not_tile;
+        along_z_[z_at(x, z + 1)] = along_z_[z_at(x, z)] + not_tile;
+      }
+  }
+  // Cells (x0..x1, z) or (x, z0..z1), inclusive, lo <= hi.
+  int row(int x0, int x1, int z) const {
+    if (z < 0 || z >= nz_) return x1 - x0 + 1;
+    const int a = std::clamp(x0, 0, nx_), b = std::clamp(x1 + 1, 0, nx_);
+    return (x1 - x0 + 1) - (b - a) + along_x_[x_at(b, z)] - along_x_[x_at(a, z)];
+  }
+  int column(int x, int z0, int z1) const {
+    if (x < 0 || x >= nx_) return z1 - z0 + 1;
+    const int a = std::clamp(z0, 0, nz_), b = std::clamp(z1 + 1, 0, nz_);
+    return (z1 - z0 + 1) - (b - a) + along_z_[z_at(x, b)] - along_z_[z_at(x, a)];
+  }
+
+ private:
+  std::size_t x_at(int x, int z) const { return std::size_t(z) * std::size_t(nx_ + 1) + std::size_t(x); }
+  std::size_t z_at(int x, int z) const { return std::size_t(x) * std::size_t(nz_ + 1) + std::size_t(z); }
+  int nx_, nz_;
+  std::vector<int> along_x_, along_z_;
+};
+
+}  // namespace
+
 std::vector<std::size_t> pack_squares(const std::vector<Sized>& squares, int level_tolerance, double dominant_deg,
                                       const TileMap& is_tile) {
+  std::optional<NonTileCounts> runs;  // floor and ceiling: contact along the axes by run, not by cell
+  if (!is_tile.mask.empty()) runs.emplace(is_tile);
   // Contact: unusable cells just outside the square's edges, sampled every half voxel.
   const auto contact = [&](const Candidate& c) {
     int n = 0;
-    glm::dvec2 mid(0.0);
-    for (const glm::ivec3& k : c.corners) mid += glm::dvec2(k.x + 0.5, k.z + 0.5) * 0.25;
+    const glm::ivec3 sum = corner_sum(c);  // 4 x the middle
     for (std::size_t i = 0; i < 4; ++i) {
-      const glm::dvec2 a(c.corners[i].x + 0.5, c.corners[i].z + 0.5);
-      const glm::dvec2 b(c.corners[(i + 1) % 4].x + 0.5, c.corners[(i + 1) % 4].z + 0.5);
-      const double length = glm::distance(a, b);
-      if (length <= 0.0) continue;
-      const glm::dvec2 dir = (b - a) / length;
-      glm::dvec2 out(-dir.y, dir.x);
-      if (glm::dot(out, 0.5 * (a + b) - mid) < 0.0) out = -out;
       const glm::ivec3 e = c.corners[(i + 1) % 4] - c.corners[i];
+      if (e.x == 0 && e.z == 0) continue;
       if (e.x == 0 || e.z == 0) {
         // Along a grid axis every sample below is exact: the 2L + 1 samples of an edge of L voxels fall
         // on its L + 1 cells twice each, but for the cell at the far end of the direction of travel
         // (x + 0.5 + t rounds down to x + floor((1 + 2t) / 2); x + 0.5 - t to x - floor(2t / 2)), and
-        // 0.75 voxels out is the neighbouring row. Counted by cell, without the doubles.
+        // 0.75 voxels out (away from the middle) is the neighbouring row. Counted by cell, without the doubles.
         const bool along_x = e.z == 0;
         const int steps = std::abs(along_x ? e.x : e.z), step = (along_x ? e.x : e.z) > 0 ? 1 : -1;
-        const int side = (along_x ? out.y : out.x) > 0.0 ? 1 : -1;
+        const int side = (along_x ? 4 * c.corners[i].z - sum.z : 4 * c.corners[i].x - sum.x) > 0 ? 1 : -1;
         const int once = step > 0 ? 0 : steps;  // the cell one sample meets
-        for (int j = 0; j <= steps; ++j) {
-          const int x = along_x ? c.corners[i].x + step * j : c.corners[i].x + side;
-          const int z = along_x ? c.corners[i].z + side : c.corners[i].z + step * j;
-          n += is_tile(x, z, c.corners[0].y) ? 0 : (j == once ? 1 : 2);
+        const int x = c.corners[i].x, z = c.corners[i].z;
+        if (runs) {
+          const int far_x = x + step * steps, far_z = z + step * steps;
+          const int all = along_x ? runs->row(std::min(x, far_x), std::max(x, far_x), z + side)
+                                  : runs->column(x + side, std::min(z, far_z), std::max(z, far_z));
+          const int at_once = along_x ? runs->row(x + step * once, x + step * once, z + side)
+                                      : runs->column(x + side, z + step * once, z + step * once);
+          n += 2 * all - at_once;
+          continue;
         }
+        for (int j = 0; j <= steps; ++j)
+          n += is_tile(along_x ? x + step * j : x + side, along_x ? z + side : z + step * j, c.corners[0].y)
+                   ? 0
+                   : (j == once ? 1 : 2);
         continue;
       }
+      const glm::dvec2 mid = glm::dvec2(sum.x, sum.z) * 0.25 + 0.5;
+      const glm::dvec2 a(c.corners[i].x + 0.5, c.corners[i].z + 0.5);
+      const glm::dvec2 b(c.corners[(i + 1) % 4].x + 0.5, c.corners[(i + 1) % 4].z + 0.5);
+      const double length = glm::distance(a, b);
+      const glm::dvec2 dir = (b - a) / length;
+      glm::dvec2 out(-dir.y, dir.x);
+      if (glm::dot(out, 0.5 * (a + b) - mid) < 0.0) out = -out;
       for (double t = 0.0; t <= length; t += kSample) {
         const glm::dvec2 p = a + t * dir + 0.75 * out;
         n += is_tile(floor_int(p.x), floor_int(p.y), c.corners[0].y) ? 0 : 1;
@@ -217,14 +284,26 @@ std::vector<std::size_t> pack_squares(const std::vector<Sized>& squares, int lev
   };
   // Within a size, aligned with the room first (in steps of 5°), then by contact, then in search order. Each
   // square's rank is computed once: the sort compares it O(n log n) times (an atan2 each, before).
-  std::vector<std::size_t> order(squares.size());
-  std::vector<std::tuple<int, int, int>> rank(squares.size());
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    order[i] = i;
-    rank[i] = {int(squares[i].size), int(std::lround(misalignment_deg(squares[i].c, dominant_deg) / 5.0)),
-               -contact(squares[i].c)};
+  // Squares of a size share a few hundred edge directions: each direction's 5° step is computed once.
+  std::unordered_map<std::uint64_t, int> steps_of_direction;
+  const auto misalignment_step = [&](const Candidate& c) {
+    const glm::ivec3 e = c.corners[1] - c.corners[0];
+    const auto [it, added] = steps_of_direction.try_emplace(pack_key(e.x, 0, e.z), 0);
+    if (added) it->second = int(std::lround(misalignment_deg(c, dominant_deg) / 5.0));
+    return it->second;
+  };
+  // The rank packed into one key, the square's index last: sorting the keys is the stable sort by rank.
+  constexpr int kContactBits = 24;
+  if (squares.size() > 0xffffffffu) throw std::length_error("more squares than packing can rank");
+  std::vector<std::uint64_t> keys(squares.size());
+  for (std::size_t i = 0; i < squares.size(); ++i) {
+    const std::uint64_t away = std::uint64_t((1 << kContactBits) - 1 - std::min(contact(squares[i].c), (1 << kContactBits) - 1));
+    keys[i] = (std::uint64_t(squares[i].size) << 62) | (std::uint64_t(misalignment_step(squares[i].c)) << 56) |
+              (away << 32) | std::uint64_t(i);
   }
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank[a] < rank[b]; });
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::size_t> order(squares.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = std::size_t(keys[i] & 0xffffffffu);
   const SampleBox box = sample_box(squares);  // per level: rows of samples along x
   SampleRaster taken(box.y_lo / 2, box.y_hi / 2, box.z_lo, box.z_hi, box.x_lo, box.x_hi);
   std::vector<std::size_t> kept;

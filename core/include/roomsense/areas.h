@@ -102,6 +102,7 @@ struct AreaCounts {
 };
 
 struct AreaTimings {  // milliseconds
+  // search: §3.3 and, beside the square searches, the walls' reduction; reduce: the squares' (§3.4, growth).
   double search = 0, reduce = 0, classify = 0;
 };
 

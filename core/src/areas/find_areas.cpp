@@ -132,15 +132,6 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   parallel_tasks(3, threads, search);
   std::vector<Sized> deduplicated_walls = deduplicate_centres(found[0]);
   dominant_deg = dominant_direction_deg(deduplicated_walls);
-  parallel_tasks(9, threads, [&](std::size_t t) { search(t + 3); });
-  for (std::size_t t = 0; t < skipped.size(); ++t)
-    if (skipped[t])
-      result.warnings.push_back(std::string(to_string(kAreaSizes[t % 3])) + " " + std::string(to_string(kAreaTypes[t / 3])) +
-                                " areas not searched: too many corner pairs for this room at " +
-                                std::to_string(voxel).substr(0, 5) + " m voxels (a coarser --voxel searches them)");
-  stop_point(stop);
-  result.timings.search = elapsed_ms(clock);
-  clock = std::chrono::steady_clock::now();
 
   // §3.4, independent per type: V_Wall, V_Floor, ... (Eq. 3.44), for reach; packing (reduce.h) picks from all
   // the rectangles found: Eq. 3.44 would drop a medium square whose centre a large one has, though packing
@@ -148,8 +139,13 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   std::array<std::vector<Sized>, 4> deduplicated, all;
   std::array<std::vector<std::size_t>, 4> kept;
   deduplicated[0] = std::move(deduplicated_walls);
-  parallel_tasks(4, threads, [&](std::size_t type) {
+  // Eq. 3.54-3.57 for the kept rectangles, which then grow into the surface packing left free (grow.h): per
+  // type, in the same task as its packing, so that no type waits for the others'.
+  const PlacementContext context{spec, features, surfaces, feature_params};
+  std::array<std::vector<Area>, 4> kept_areas;
+  const auto reduce = [&](std::size_t type) {
     if (type != 0) deduplicated[type] = deduplicate_centres(found[type]);
+    all[type].reserve(found[type][0].size() + found[type][1].size() + found[type][2].size());
     for (std::size_t size = 0; size < 3; ++size)
       for (const Candidate& c : found[type][size]) all[type].push_back({c, kAreaSizes[size]});
     // Eq. 3.49: furniture squares less than reduction_offset levels apart are on one top.
@@ -159,20 +155,25 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
                           type == 3 ? std::span<const int>(features.furniture) : std::span<const int>()};
     kept[type] = type == 0 ? pack_walls(all[type])
                            : pack_squares(all[type], type == 3 ? params.reduction_offset - 1 : 0, dominant_deg, is_tile);
-  });
+    for (std::size_t i : kept[type]) kept_areas[type].push_back(to_area(all[type][i], kAreaTypes[type], context));
+    if (params.grow) grow_areas(kept_areas[type], growth_rule(spec, features, params, type), params, stop);
+  };
+  // The walls' reduction needs only the wall searches: it runs beside the nine square searches.
+  parallel_tasks(10, threads, [&](std::size_t t) { t == 0 ? reduce(0) : search(t + 2); });
+  for (std::size_t t = 0; t < skipped.size(); ++t)
+    if (skipped[t])
+      result.warnings.push_back(std::string(to_string(kAreaSizes[t % 3])) + " " + std::string(to_string(kAreaTypes[t / 3])) +
+                                " areas not searched: too many corner pairs for this room at " +
+                                std::to_string(voxel).substr(0, 5) + " m voxels (a coarser --voxel searches them)");
+  stop_point(stop);
+  result.timings.search = elapsed_ms(clock);  // the square searches, and the walls' reduction beside them
+  clock = std::chrono::steady_clock::now();
+  parallel_tasks(3, threads, [&](std::size_t type) { reduce(type + 1); });
   for (std::size_t type = 0; type < 4; ++type) {
     for (const Candidates& c : found[type]) result.counts.found[type] += c.size();
     result.counts.deduplicated[type] = deduplicated[type].size();
     result.counts.reduced[type] = kept[type].size();
   }
-
-  // Eq. 3.54-3.57 for the kept rectangles, which then grow into the surface packing left free (grow.h).
-  const PlacementContext context{spec, features, surfaces, feature_params};
-  std::array<std::vector<Area>, 4> kept_areas;
-  parallel_tasks(4, threads, [&](std::size_t type) {
-    for (std::size_t i : kept[type]) kept_areas[type].push_back(to_area(all[type][i], kAreaTypes[type], context));
-    if (params.grow) grow_areas(kept_areas[type], growth_rule(spec, features, params, type), params, stop);
-  });
   stop_point(stop);
   result.timings.reduce = elapsed_ms(clock);
   clock = std::chrono::steady_clock::now();

@@ -78,6 +78,7 @@ struct TriangleScan {
       first[k] = box_index(lo[k], n[k]);
       last[k] = box_index(hi[k], n[k]);
     }
+    if (one_voxel()) return;  // no plane needed: most of a fine scan's triangles
     normal = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
     const glm::dvec3 m = glm::abs(normal);
     if (m.x >= m.y && m.x >= m.z && m.x != 0.0) d = 0;

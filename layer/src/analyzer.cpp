@@ -89,17 +89,13 @@ XrResult Analyzer::submit(MeshPiece mesh) {
   return XR_SUCCESS;
 }
 
-XrResult Analyzer::compute(const XrRoomComputeInfoEXTX& info) { return start(info, false); }
-
-XrResult Analyzer::compute_if_changed(const XrRoomComputeInfoEXTX& info) { return start(info, true); }
-
 XrRoomComputeStateEXTX Analyzer::wait(std::stop_token stop) {
   std::unique_lock lock(mutex_);
   done_.wait(lock, stop, [&] { return state_ != XR_ROOM_COMPUTE_STATE_RUNNING_EXTX; });
   return state_;
 }
 
-XrResult Analyzer::start(const XrRoomComputeInfoEXTX& info, bool if_changed) {
+XrResult Analyzer::compute(const XrRoomComputeInfoEXTX& info) {
   Job job;
   job.include_runtime = info.includeRuntimeMeshes != XR_FALSE;
   job.time = info.time;
@@ -113,7 +109,7 @@ XrResult Analyzer::start(const XrRoomComputeInfoEXTX& info, bool if_changed) {
   if (shut_) return XR_ERROR_HANDLE_INVALID;
   if (state_ == XR_ROOM_COMPUTE_STATE_RUNNING_EXTX) return XR_ERROR_CALL_ORDER_INVALID;
   job.submitted = submitted_;
-  if (if_changed && latest_) job.skip_hash = latest_->input_hash;
+  if (latest_) job.skip_hash = latest_->input_hash;
   // The previous worker published its result (the state is not RUNNING) and touches nothing of ours any
   // more, so joining it here, under the lock, cannot wait on us.
   if (worker_.joinable()) worker_.join();
@@ -200,10 +196,16 @@ void Analyzer::run(std::stop_token stop, Job job) {
     if (pieces.empty())
       throw std::runtime_error(job.include_runtime ? "no meshes to analyse: the runtime served none and none were submitted"
                                                    : "no meshes to analyse: none were submitted");
+    // FNV-1a over the pieces' content hashes and the runtime's labels, in the order the analysis reads them.
     std::uint64_t input_hash = 0xcbf29ce484222325ull;
-    for (const MeshPiece* piece : pieces) input_hash = (input_hash ^ content_hash(*piece)) * 0x100000001b3ull;
+    const auto mix = [&](std::uint64_t v) { input_hash = (input_hash ^ v) * 0x100000001b3ull; };
+    for (const MeshPiece* piece : pieces) mix(content_hash(*piece));
+    for (const SourceChunk& m : runtime) {
+      mix(m.labels.size());
+      for (const SurfaceLabel label : m.labels) mix(std::uint64_t(label));
+    }
     if (job.skip_hash == input_hash) {
-      log_debug([] { return std::string("the runtime's meshes are unchanged: no new analysis"); });
+      log_debug([] { return std::string("the meshes and labels are unchanged: the latest result stands"); });
       std::lock_guard lock(mutex_);
       state_ = XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX;
       done_.notify_all();

@@ -37,10 +37,10 @@ class Analyzer {
 
   // Both return XR_ERROR_HANDLE_INVALID once the analyzer is shut down. Arguments are already validated.
   XrResult submit(MeshPiece mesh);
+  // When the meshes and the runtime's labels are those of the latest result (RoomResult::input_hash), the
+  // compute ends COMPLETED without an analysis and keeps that result: an application computing every few
+  // frames, and the layer's own periodic analyses (spatial/), then cost the runtime's query and a hash.
   XrResult compute(const XrRoomComputeInfoEXTX& info);
-  // The same, but when the meshes are those of the latest result (RoomResult::input_hash), the compute ends
-  // COMPLETED at once and keeps that result: the layer's own periodic analyses (spatial/) cost a query then.
-  XrResult compute_if_changed(const XrRoomComputeInfoEXTX& info);
 
   // Waits until no compute runs (or `stop` is requested); the state it ends in.
   XrRoomComputeStateEXTX wait(std::stop_token stop);
@@ -60,9 +60,8 @@ class Analyzer {
     std::vector<std::shared_ptr<const CapturedMesh>> captured;
     XrSpace capture_space = XR_NULL_HANDLE;
     std::chrono::steady_clock::time_point started;
-    std::optional<std::uint64_t> skip_hash;  // compute_if_changed: the latest result's input_hash
+    std::optional<std::uint64_t> skip_hash;  // the latest result's input_hash
   };
-  XrResult start(const XrRoomComputeInfoEXTX& info, bool if_changed);
   void run(std::stop_token stop, Job job);
 
   std::shared_ptr<SessionState> session_;

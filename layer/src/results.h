@@ -37,7 +37,7 @@ struct RoomResult {
   XrDuration duration = 0;
   std::vector<Surface> surfaces;  // the planes the standard spatial-entity API serves (spatial/)
   RoomQueries queries;            // placement queries, raycasts, random points (queries.cpp)
-  std::uint64_t input_hash = 0;   // of the meshes analysed (Analyzer::compute_if_changed)
+  std::uint64_t input_hash = 0;   // of the meshes and labels analysed (Analyzer::compute)
   std::string json;  // roomsense.analysis/1, with an "openxr" member saying where the meshes came from
 };
 

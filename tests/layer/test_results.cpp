@@ -117,6 +117,34 @@ TEST(LayerResults, SubmittedLoftServesCeilingAreasOnItsSlopes) {
   EXPECT_NEAR(got.storeys[0].ceilingHeight, 3.2f, 0.05f);
 }
 
+// Issue 19, item 2: a compute over the meshes of the latest result keeps that result (its computeDuration
+// is the analysis's, not a new one's); a new mesh gets a new analysis. With the runtime's meshes too.
+TEST(LayerResults, ComputingAnUnchangedRoomKeepsTheLatestResult) {
+  for (const bool include_runtime : {false, true}) {
+    SCOPED_TRACE(include_runtime ? "runtime and submitted meshes" : "submitted meshes");
+    App app;
+    const XrRoomAnalyzerEXTX a = app.analyzer();
+    const roomsense::Scan scan = roomsense::synth::generate_builtin_source("synthetic:default");
+    app.submit(a, xr_vertices(scan), scan.indices);
+    ASSERT_EQ(app.compute(a, include_runtime), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+    const Result first = read_result(app.extx, a);
+    ASSERT_GT(first.layout.computeDuration, 0);
+    for (int again = 0; again < 2; ++again) {
+      ASSERT_EQ(app.compute(a, include_runtime), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+      const Result same = read_result(app.extx, a);
+      EXPECT_EQ(same.layout.computeDuration, first.layout.computeDuration) << "the room was analysed again";
+      EXPECT_EQ(same.json, first.json);
+      EXPECT_EQ(same.areas.size(), first.areas.size());
+    }
+    // A 1 m table top in the middle of the room: new meshes, a new analysis.
+    app.submit(a, {{-0.5f, 0.7f, -0.5f}, {0.5f, 0.7f, -0.5f}, {0.5f, 0.7f, 0.5f}, {-0.5f, 0.7f, 0.5f}}, {0, 2, 1, 0, 3, 2});
+    ASSERT_EQ(app.compute(a, include_runtime), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+    const Result changed = read_result(app.extx, a);
+    EXPECT_EQ(changed.layout.inputVertexCount, first.layout.inputVertexCount + 4);
+    EXPECT_NE(changed.json, first.json);
+  }
+}
+
 // The two-call idiom on the home layout: counts alone, a too-small array, a null array with a capacity.
 TEST(LayerResults, HomeLayoutFollowsTheTwoCallIdiom) {
   App app;

@@ -14,7 +14,9 @@
 **   2. Optionally xrSubmitRoomMeshEXTX(analyzer, mesh) for meshes the application has itself.
 **   3. xrComputeRoomEXTX(analyzer, {time, includeRuntimeMeshes}) starts an asynchronous analysis. With
 **      includeRuntimeMeshes the layer queries the runtime's scene meshes (XR_MSFT_scene_understanding) itself
-**      and adds the scene meshes the application has read; it always adds the submitted meshes.
+**      and adds the scene meshes the application has read; it always adds the submitted meshes. When those
+**      meshes (and the runtime's labels) are the ones the latest result was computed from, the compute
+**      completes without a new analysis and that result stands, computeDuration included.
 **   4. Poll xrGetRoomComputeStateEXTX until COMPLETED (or FAILED). Computing again while RUNNING returns
 **      XR_ERROR_CALL_ORDER_INVALID.
 **   5. xrGetRoomLayoutEXTX, xrGetRoomAreasEXTX (two-call idiom) and xrGetRoomBoundsMeshEXTX (two-call idiom on

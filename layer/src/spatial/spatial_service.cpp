@@ -113,7 +113,7 @@ void SpatialService::run(std::stop_token stop) {
     info.time = time;
     info.includeRuntimeMeshes = XR_TRUE;
     XrRoomComputeStateEXTX state = XR_ROOM_COMPUTE_STATE_FAILED_EXTX;
-    if (XR_SUCCEEDED(analyzer_->compute_if_changed(info))) state = analyzer_->wait(stop);
+    if (XR_SUCCEEDED(analyzer_->compute(info))) state = analyzer_->wait(stop);
     if (stop.stop_requested()) return;
     const std::shared_ptr<const RoomResult> latest = analyzer_->latest();
     {

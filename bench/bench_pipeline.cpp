@@ -29,7 +29,7 @@ struct BenchRoom {
 
 std::vector<BenchRoom> load_rooms() {
   std::vector<BenchRoom> rooms;
-  for (const char* name : {"thesis-room1", "hall", "default"}) rooms.push_back({std::string("synthetic:") + name, synth::generate(*synth::builtin(name))});
+  for (const char* name : {"thesis-room1", "hall", "default", "house", "flat"}) rooms.push_back({std::string("synthetic:") + name, synth::generate(*synth::builtin(name))});
   const std::filesystem::path dir = ROOMSENSE_BENCH_ROOMS_DIR;
   for (const char* file : {"hololens1/holotoolkit_fake_spatial_mapping.obj", "hololens1/mrtk_example_spatial_mesh.obj",
                            "hololens2-su/SU_Kitchen_world_mesh.obj", "hololens2-su/SU_Apartment_world_mesh.obj",
@@ -106,6 +106,11 @@ void register_case(const std::string& name, Body body) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const std::string filter = [&] {  // read before Initialize, which takes the flags out of argv
+    for (int i = 1; i < argc; ++i)
+      if (std::string(argv[i]).rfind("--benchmark_filter=", 0) == 0) return std::string(argv[i]).substr(19);
+    return std::string();
+  }();
   benchmark::Initialize(&argc, argv);
   std::printf(
       "Thesis figures (6-core i7-5820K, rooms 1-2 of about 78k vertices): room understanding 55-180 ms,\n"
@@ -163,6 +168,26 @@ int main(int argc, char** argv) {
     const std::string name = "area_growth/hall_" + std::to_string(int(20 * scale)) + "x" + std::to_string(int(14 * scale));
     const auto p = prepare(synth::generate(synth::hall_room(20.0f * scale, 14.0f * scale)));
     register_case(name, [p](benchmark::State& state) { time_areas(state, *p); });
+  }
+  // How the whole analysis (understanding and bounds) grows with room size, up to a 50 x 50 m open floor: the
+  // hall's furniture rows over ever larger floors. Generated only when the filter asks for them.
+  if (filter.find("growth") != std::string::npos) {
+    for (const auto& [w, d] : std::vector<std::pair<float, float>>{{10, 7}, {20, 14}, {30, 21}, {40, 28}, {50, 50}}) {
+      const std::string name = "analyze_growth/hall_" + std::to_string(int(w)) + "x" + std::to_string(int(d));
+      auto scan = std::make_shared<const Scan>(synth::generate(synth::hall_room(w, d)));
+      register_case(name, [scan](benchmark::State& state) {
+        AnalysisResult r;
+        for (auto _ : state) {
+          r = analyze(*scan);
+          benchmark::DoNotOptimize(r);
+        }
+        const GridSpec& g = r.voxels.grid.spec;
+        state.counters["grid_m2"] = double(g.nx) * double(g.nz) * double(g.voxel_size) * double(g.voxel_size);
+        state.counters["grid_MB"] = double(r.voxels.grid.cells.size()) / 1e6;
+        state.counters["areas"] = double(r.areas.size());
+        state.counters["triangles"] = double(scan->indices.size() / 3);
+      });
+    }
   }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

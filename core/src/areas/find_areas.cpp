@@ -136,7 +136,9 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   // §3.4, independent per type: V_Wall, V_Floor, ... (Eq. 3.44), for reach; packing (reduce.h) picks from all
   // the rectangles found: Eq. 3.44 would drop a medium square whose centre a large one has, though packing
   // may then refuse that large one.
-  std::array<std::vector<Sized>, 4> deduplicated, all;
+  // Reach reads the deduplicated walls and floors; of ceilings and furniture only the count is kept.
+  std::array<std::vector<Sized>, 2> deduplicated;
+  std::array<std::size_t, 4> deduplicated_count{deduplicated_walls.size()};
   std::array<std::vector<std::size_t>, 4> kept;
   deduplicated[0] = std::move(deduplicated_walls);
   // Eq. 3.54-3.57 for the kept rectangles, which then grow into the surface packing left free (grow.h): per
@@ -144,18 +146,20 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   const PlacementContext context{spec, features, surfaces, feature_params};
   std::array<std::vector<Area>, 4> kept_areas;
   const auto reduce = [&](std::size_t type) {
-    if (type != 0) deduplicated[type] = deduplicate_centres(found[type]);
-    all[type].reserve(found[type][0].size() + found[type][1].size() + found[type][2].size());
-    for (std::size_t size = 0; size < 3; ++size)
-      for (const Candidate& c : found[type][size]) all[type].push_back({c, kAreaSizes[size]});
+    if (type != 0) {
+      std::vector<Sized> unique = deduplicate_centres(found[type]);
+      deduplicated_count[type] = unique.size();
+      if (type < deduplicated.size()) deduplicated[type] = std::move(unique);
+    }
+    const SizedList all(found[type]);
     // Eq. 3.49: furniture squares less than reduction_offset levels apart are on one top.
     const TileMap is_tile{spec, type == 1 ? std::span<const std::uint8_t>(features.free_floor)
                                 : type == 2 ? std::span<const std::uint8_t>(features.free_ceiling)
                                             : std::span<const std::uint8_t>(),
                           type == 3 ? std::span<const int>(features.furniture) : std::span<const int>()};
-    kept[type] = type == 0 ? pack_walls(all[type])
-                           : pack_squares(all[type], type == 3 ? params.reduction_offset - 1 : 0, dominant_deg, is_tile);
-    for (std::size_t i : kept[type]) kept_areas[type].push_back(to_area(all[type][i], kAreaTypes[type], context));
+    kept[type] = type == 0 ? pack_walls(all)
+                           : pack_squares(all, type == 3 ? params.reduction_offset - 1 : 0, dominant_deg, is_tile);
+    for (std::size_t i : kept[type]) kept_areas[type].push_back(to_area(all[i], kAreaTypes[type], context));
     if (params.grow) grow_areas(kept_areas[type], growth_rule(spec, features, params, type), params, stop);
   };
   // The walls' reduction needs only the wall searches: it runs beside the nine square searches.
@@ -171,7 +175,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   parallel_tasks(3, threads, [&](std::size_t type) { reduce(type + 1); });
   for (std::size_t type = 0; type < 4; ++type) {
     for (const Candidates& c : found[type]) result.counts.found[type] += c.size();
-    result.counts.deduplicated[type] = deduplicated[type].size();
+    result.counts.deduplicated[type] = deduplicated_count[type];
     result.counts.reduced[type] = kept[type].size();
   }
   stop_point(stop);

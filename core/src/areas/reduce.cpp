@@ -4,7 +4,6 @@
 #include "reduce.h"
 
 #include "../floor_int.h"
-#include "key_table.h"
 #include "sample_raster.h"
 
 #include <glm/geometric.hpp>
@@ -118,11 +117,11 @@ bool square_samples(const Candidate& c, F f) {
 struct SampleBox {
   long x_lo = 0, x_hi = -1, y_lo = 0, y_hi = -1, z_lo = 0, z_hi = -1;
 };
-SampleBox sample_box(const std::vector<Sized>& rects) {
-  if (rects.empty()) return {};
+SampleBox sample_box(const SizedList& rects) {
+  if (rects.size() == 0) return {};
   SampleBox b{LONG_MAX, LONG_MIN, LONG_MAX, LONG_MIN, LONG_MAX, LONG_MIN};
-  for (const Sized& r : rects)
-    for (const glm::ivec3& k : r.c.corners) {
+  for (std::size_t i = 0; i < rects.size(); ++i)
+    for (const glm::ivec3& k : rects[i].c.corners) {
       b.x_lo = std::min(b.x_lo, 2L * k.x - 4), b.x_hi = std::max(b.x_hi, 2L * k.x + 4);
       b.y_lo = std::min(b.y_lo, 2L * k.y - 4), b.y_hi = std::max(b.y_hi, 2L * k.y + 4);
       b.z_lo = std::min(b.z_lo, 2L * k.z - 4), b.z_hi = std::max(b.z_hi, 2L * k.z + 4);
@@ -138,20 +137,27 @@ double angle_mod_90(int dx, int dz) {
 }  // namespace
 
 std::vector<Sized> deduplicate_centres(const std::array<Candidates, 3>& by_size) {
+  // Centre voxels lie within the corners' box: a bit per voxel of it, rows along y.
+  glm::ivec3 lo(INT_MAX), hi(INT_MIN);
+  for (const Candidates& size : by_size)
+    for (const Candidate& c : size)
+      for (const glm::ivec3& k : c.corners) lo = glm::min(lo, k), hi = glm::max(hi, k);
+  SampleRaster marked(lo.x, hi.x, lo.z, hi.z, lo.y, hi.y);
   std::vector<Sized> out;
-  KeyTable marked;
   for (std::size_t s = 0; s < by_size.size(); ++s)
     for (const Candidate& c : by_size[s]) {
       const glm::ivec3 sum = corner_sum(c);
       int xs[2], ys[2], zs[2];
       const int nx = centre_voxels(sum.x, xs), ny = centre_voxels(sum.y, ys), nz = centre_voxels(sum.z, zs);
-      std::uint64_t keys[8];
-      int n = 0;
+      const auto any_marked = [&] {
+        for (int i = 0; i < nx; ++i)
+          for (int k = 0; k < nz; ++k)
+            if (marked.any(xs[i], zs[k], ys[0], ys[ny - 1])) return true;
+        return false;
+      };
+      if (any_marked()) continue;
       for (int i = 0; i < nx; ++i)
-        for (int j = 0; j < ny; ++j)
-          for (int k = 0; k < nz; ++k) keys[n++] = pack_key(xs[i], ys[j], zs[k]);
-      if (std::any_of(keys, keys + n, [&](std::uint64_t key) { return marked.contains(key); })) continue;
-      for (int i = 0; i < n; ++i) marked.insert(keys[i]);
+        for (int k = 0; k < nz; ++k) marked.set(xs[i], zs[k], ys[0], ys[ny - 1]);
       out.push_back({c, kAreaSizes[s]});
     }
   return out;
@@ -178,18 +184,19 @@ double misalignment_deg(const Candidate& square, double dominant_deg) {
   return std::min(d, 90.0 - d);
 }
 
-std::vector<std::size_t> pack_walls(const std::vector<Sized>& walls) {
+std::vector<std::size_t> pack_walls(const SizedList& walls) {
   const SampleBox box = sample_box(walls);
   SampleRaster taken(box.x_lo, box.x_hi, box.z_lo, box.z_hi, box.y_lo, box.y_hi);
   std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < walls.size(); ++i) {
+    const Candidate c = walls[i].c;
     const bool free =
-        wall_samples(walls[i].c, 0, [&](long x, long z, long y0, long y1) { return !taken.any(x, z, y0, y1); });
+        wall_samples(c, 0, [&](long x, long z, long y0, long y1) { return !taken.any(x, z, y0, y1); });
     if (!free) continue;
     // Marked a voxel thick either side: a rectangle one voxel in front of another on a wall off the axes
     // (the staircase of its voxels) covers the same wall.
     for (int layer = -1; layer <= 1; ++layer)
-      wall_samples(walls[i].c, layer, [&](long x, long z, long y0, long y1) { return taken.set(x, z, y0, y1), true; });
+      wall_samples(c, layer, [&](long x, long z, long y0, long y1) { return taken.set(x, z, y0, y1), true; });
     kept.push_back(i);
   }
   return kept;
@@ -232,7 +239,7 @@ class NonTileCounts {
 
 }  // namespace
 
-std::vector<std::size_t> pack_squares(const std::vector<Sized>& squares, int level_tolerance, double dominant_deg,
+std::vector<std::size_t> pack_squares(const SizedList& squares, int level_tolerance, double dominant_deg,
                                       const TileMap& is_tile) {
   std::optional<NonTileCounts> runs;  // floor and ceiling: contact along the axes by run, not by cell
   if (!is_tile.mask.empty()) runs.emplace(is_tile);
@@ -297,23 +304,24 @@ std::vector<std::size_t> pack_squares(const std::vector<Sized>& squares, int lev
   if (squares.size() > 0xffffffffu) throw std::length_error("more squares than packing can rank");
   std::vector<std::uint64_t> keys(squares.size());
   for (std::size_t i = 0; i < squares.size(); ++i) {
-    const std::uint64_t away = std::uint64_t((1 << kContactBits) - 1 - std::min(contact(squares[i].c), (1 << kContactBits) - 1));
-    keys[i] = (std::uint64_t(squares[i].size) << 62) | (std::uint64_t(misalignment_step(squares[i].c)) << 56) |
-              (away << 32) | std::uint64_t(i);
+    const Sized q = squares[i];
+    const std::uint64_t away = std::uint64_t((1 << kContactBits) - 1 - std::min(contact(q.c), (1 << kContactBits) - 1));
+    keys[i] = (std::uint64_t(q.size) << 62) | (std::uint64_t(misalignment_step(q.c)) << 56) | (away << 32) |
+              std::uint64_t(i);
   }
   std::sort(keys.begin(), keys.end());
-  std::vector<std::size_t> order(squares.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = std::size_t(keys[i] & 0xffffffffu);
   const SampleBox box = sample_box(squares);  // per level: rows of samples along x
   SampleRaster taken(box.y_lo / 2, box.y_hi / 2, box.z_lo, box.z_hi, box.x_lo, box.x_hi);
   std::vector<std::size_t> kept;
-  for (const std::size_t i : order) {
-    const int level = squares[i].c.corners[0].y;
+  for (const std::uint64_t key : keys) {
+    const std::size_t i = std::size_t(key & 0xffffffffu);
+    const Candidate c = squares[i].c;
+    const int level = c.corners[0].y;
     bool free = true;
     for (int y = level - level_tolerance; y <= level + level_tolerance && free; ++y)
-      free = square_samples(squares[i].c, [&](long z, long x0, long x1) { return !taken.any(y, z, x0, x1); });
+      free = square_samples(c, [&](long z, long x0, long x1) { return !taken.any(y, z, x0, x1); });
     if (!free) continue;
-    square_samples(squares[i].c, [&](long z, long x0, long x1) { return taken.set(level, z, x0, x1), true; });
+    square_samples(c, [&](long z, long x0, long x1) { return taken.set(level, z, x0, x1), true; });
     kept.push_back(i);
   }
   std::sort(kept.begin(), kept.end());  // the output keeps the search's order

@@ -191,6 +191,9 @@ class SliceMesher {
  public:
   SliceMesher(int na, int nb) : na_(na), nb_(nb), mask_(std::size_t(na) * std::size_t(nb)) {}
   signed char* row(int b) { return &mask_[std::size_t(b) * std::size_t(na_)]; }
+  // The slice's non-zero cells, in row order (b, then a), as the caller filled them: labelling and tracing
+  // visit only these, not the whole slice, most of which a room's surface never crosses.
+  std::vector<std::size_t>& filled() { return filled_; }
 
   // `to_point` maps mask lattice point (a, b) to the 3D lattice.
   template <class ToPoint>
@@ -198,15 +201,13 @@ class SliceMesher {
     label_regions();
     loops_.clear();
     visited_.assign(mask_.size(), 0);
-    for (int b = 0; b < nb_; ++b)
-      for (int a = 0; a < na_; ++a) {
-        const signed char m = value(a, b);
-        if (m == 0) continue;
-        for (int side = 0; side < 4; ++side)
-          if (value(a + kNeighbour[side][0], b + kNeighbour[side][1]) != m &&
-              !(visited_[cell(a, b)] & (1 << side)))
-            trace(a, b, side, corners, to_point, out);
-      }
+    for (const std::size_t c : filled_) {
+      const int a = int(c % std::size_t(na_)), b = int(c / std::size_t(na_));
+      const signed char m = mask_[c];
+      for (int side = 0; side < 4; ++side)
+        if (value(a + kNeighbour[side][0], b + kNeighbour[side][1]) != m && !(visited_[c] & (1 << side)))
+          trace(a, b, side, corners, to_point, out);
+    }
     // Each region: its outer loop (positive area) and its holes.
     std::sort(loops_.begin(), loops_.end(), [](const Traced& x, const Traced& y) {
       return x.region != y.region ? x.region < y.region : x.outer > y.outer;
@@ -248,8 +249,8 @@ class SliceMesher {
   void label_regions() {
     label_.assign(mask_.size(), -1);
     int next = 0;
-    for (std::size_t seed = 0; seed < mask_.size(); ++seed) {
-      if (mask_[seed] == 0 || label_[seed] >= 0) continue;
+    for (const std::size_t seed : filled_) {
+      if (label_[seed] >= 0) continue;
       label_[seed] = next;
       stack_.assign(1, seed);
       while (!stack_.empty()) {
@@ -302,6 +303,7 @@ class SliceMesher {
 
   int na_, nb_;
   std::vector<signed char> mask_;
+  std::vector<std::size_t> filled_;
   std::vector<int> label_;
   std::vector<std::uint8_t> visited_;
   std::vector<std::size_t> stack_;
@@ -323,16 +325,17 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
     stop_point(stop);
     const std::uint8_t* below = c >= c0 ? base + c * sc : nullptr;
     const std::uint8_t* above = c + 1 <= c_end ? base + (c + 1) * sc : nullptr;
-    bool any = false;
+    std::vector<std::size_t>& filled = slice.filled();
+    filled.clear();
     for (int b = 0; b < nb; ++b) {
       signed char* row = slice.row(b);
       for (int a = 0; a < na; ++a) {
         const std::ptrdiff_t off = a * sa + b * sb;
         row[a] = static_cast<signed char>((below ? below[off] : 0) - (above ? above[off] : 0));
-        any = any || row[a] != 0;
+        if (row[a] != 0) filled.push_back(std::size_t(b) * std::size_t(na) + std::size_t(a));
       }
     }
-    if (!any) continue;
+    if (filled.empty()) continue;
     slice.mesh(
         corners,
         [&](int a, int b) {

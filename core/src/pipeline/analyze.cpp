@@ -3,6 +3,7 @@
 #include "roomsense/cancel.h"
 #include "roomsense/error.h"
 #include "roomsense/number_text.h"
+#include "../parallel.h"
 #include "storeys.h"
 #include "surface_heights.h"
 
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 namespace roomsense {
 namespace {
@@ -59,22 +61,40 @@ void assign_rooms(AnalysisResult& r) {
 
 // Issue 15: each room's bounds (build_room_bounds) over its room_mask of its storey's B (its free columns and
 // the walls within 0.3 m of them). A scan of one room has its bounds.
-std::vector<BoundsMesh> bounds_of_rooms(const AnalysisResult& r, const AnalysisOptions& options) {
-  if (r.rooms.size() <= 1) return std::vector<BoundsMesh>(r.rooms.size(), r.bounds);
+// The home's bounds and each room's (index as r.rooms). Every mesh is its own task, on one thread each: a
+// home's rooms are independent, so two cores build two at a time (one after another, five rooms of
+// SU_Apartment cost as much as the rest of its analysis).
+void build_all_bounds(AnalysisResult& r, const AnalysisOptions& options) {
+  const std::vector<BoundsStorey> storeys = bounds_storeys(r);
+  if (r.rooms.size() <= 1) {
+    r.bounds = build_bounds(r.voxels.grid, storeys, options.bounds, options.threads, options.stop);
+    r.room_bounds.assign(r.rooms.size(), r.bounds);
+    return;
+  }
   const GridSpec& s = r.voxels.grid.spec;
   const int reach = room_reach_columns(s);
-  const std::vector<BoundsStorey> storeys = bounds_storeys(r);
-  std::vector<BoundsMesh> out;
+  struct RoomJob {
+    std::size_t storey;
+    std::shared_ptr<const std::vector<int>> rooms_of;
+    int room;
+  };
+  std::vector<RoomJob> jobs;
   for (std::size_t i = 0; i < storeys.size(); ++i) {
     const RoomSplit& split = r.storey_features(i).rooms;
-    const std::vector<int> rooms_of = rooms_of_mask(s, *storeys[i].room, split, reach);
-    for (int k = 0; k < split.count; ++k) {
-      stop_point(options.stop);
-      const std::vector<std::uint8_t> mask = room_mask(rooms_of, k);
-      out.push_back(build_room_bounds(r.voxels.grid, storeys[i], mask, options.bounds, options.threads, options.stop));
-    }
+    const auto rooms_of = std::make_shared<const std::vector<int>>(rooms_of_mask(s, *storeys[i].room, split, reach));
+    for (int k = 0; k < split.count; ++k) jobs.push_back({i, rooms_of, k});
   }
-  return out;
+  r.room_bounds.assign(jobs.size(), {});
+  detail::parallel_tasks(jobs.size() + 1, options.threads, [&](std::size_t t) {
+    stop_point(options.stop);
+    if (t == 0) {
+      r.bounds = build_bounds(r.voxels.grid, storeys, options.bounds, 1, options.stop);
+      return;
+    }
+    const RoomJob& job = jobs[t - 1];
+    r.room_bounds[t - 1] = build_room_bounds(r.voxels.grid, storeys[job.storey], room_mask(*job.rooms_of, job.room),
+                                             options.bounds, 1, options.stop);
+  });
 }
 
 }  // namespace
@@ -232,8 +252,7 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
   clock.lap();
   stop_point(options.stop);
   if (options.build_bounds) {
-    r.bounds = build_bounds(r.voxels.grid, bounds_storeys(r), options.bounds, options.threads, options.stop);
-    r.room_bounds = bounds_of_rooms(r, options);
+    build_all_bounds(r, options);
     r.timings.bounds = clock.lap();
   }
   r.timings.total = r.timings.prepare + r.timings.voxelize + r.timings.features + r.timings.areas +

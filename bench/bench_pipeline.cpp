@@ -6,12 +6,15 @@
 #include "roomsense/areas.h"
 #include "roomsense/bounds.h"
 #include "roomsense/features.h"
+#include "roomsense/incremental.h"
 #include "roomsense/scanio.h"
 #include "roomsense/synthetic.h"
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -160,6 +163,33 @@ int main(int argc, char** argv) {
     });
     register_case("analyze/" + room.name, [&room](benchmark::State& state) {
       for (auto _ : state) benchmark::DoNotOptimize(analyze(room.scan));
+      counters(state, room);
+    });
+    // Issue 19: one 2 x 2 m block of the room re-sent (refined: every fifth triangle gone, or back as it was),
+    // then the new result, on an IncrementalAnalysis that holds every block. Blocks in turn.
+    register_case("update/" + room.name, [&room](benchmark::State& state) {
+      const std::map<std::uint64_t, Scan> blocks = split_into_blocks(room.scan);
+      std::vector<std::pair<std::uint64_t, std::array<Scan, 2>>> versions;
+      for (const auto& [id, block] : blocks) {
+        Scan refined = block;
+        refined.indices.clear();
+        for (std::size_t t = 0; t + 2 < block.indices.size(); t += 3)
+          if ((t / 3) % 5 != 4) refined.indices.insert(refined.indices.end(), &block.indices[t], &block.indices[t] + 3);
+        versions.push_back({id, {std::move(refined), block}});
+      }
+      IncrementalAnalysis inc;
+      for (const auto& [id, block] : blocks) inc.set_chunk(id, block);
+      inc.result();
+      std::size_t turn = 0, revoxelized = 0;
+      for (auto _ : state) {
+        const auto& [id, two] = versions[turn % versions.size()];
+        inc.set_chunk(id, two[(turn / versions.size()) % 2]);
+        benchmark::DoNotOptimize(inc.result());
+        revoxelized += inc.revoxelized_chunks();
+        ++turn;
+      }
+      state.counters["blocks"] = double(blocks.size());
+      state.counters["revoxelized"] = double(revoxelized) / double(std::max<std::size_t>(1, turn));
       counters(state, room);
     });
   }

@@ -1,0 +1,66 @@
+// Beyond the thesis (issue 19): a room that arrives in chunks, as headsets deliver it while the user looks
+// around, and re-sends chunks as they refine them.
+//
+// An IncrementalAnalysis holds chunks by id (added, replaced, removed) and answers result(): the analysis of
+// all its chunks, in id order, as one scan. That result equals analyze(combined_scan(), options) exactly,
+// timings aside. What it reuses between results today: each chunk's voxels (its triangles' marks on the grid,
+// kept per chunk while the grid and the chunk are unchanged), so a change voxelizes only the chunks it
+// touched; everything after the voxel stage (levels, features, areas, bounds) is derived again in full.
+// An unchanged set of chunks returns the previous result at once.
+#pragma once
+#include "roomsense/analysis.h"
+#include "roomsense/scan.h"
+
+#include <cstdint>
+#include <map>
+#include <memory>
+
+namespace roomsense {
+
+class IncrementalAnalysis {
+ public:
+  // options.voxel_stage is not used: the chunks' voxels come from the CPU stage (the reference).
+  explicit IncrementalAnalysis(AnalysisOptions options = {});
+  ~IncrementalAnalysis();
+  IncrementalAnalysis(IncrementalAnalysis&&) noexcept;
+  IncrementalAnalysis& operator=(IncrementalAnalysis&&) noexcept;
+
+  // Adds the chunk, or replaces the chunk of that id. Indices are checked when the result is computed, as
+  // analyze() checks them.
+  void set_chunk(std::uint64_t id, Scan chunk);
+  // Returns false when there is no chunk of that id.
+  bool remove_chunk(std::uint64_t id);
+  std::size_t chunk_count() const { return chunks_.size(); }
+
+  // The analysis of every chunk. Throws as analyze() does (Error for bad input, Cancelled on a stop request);
+  // an empty set of chunks is EmptyInput. The reference stays valid until the next call that changes chunks.
+  const AnalysisResult& result();
+
+  // The chunks in id order as one scan: what result() analyses.
+  Scan combined_scan() const;
+
+  // How many chunks the latest result() voxelized (the others' voxels were kept), and whether it reused the
+  // previous result whole (no chunk changed).
+  std::size_t revoxelized_chunks() const;
+  bool reused_result() const { return reused_; }
+
+ private:
+  struct Chunk {
+    Scan scan;
+    std::uint64_t hash = 0;  // of its vertices, indices and labels
+  };
+  class ChunkVoxelStage;
+
+  AnalysisOptions options_;
+  std::map<std::uint64_t, Chunk> chunks_;
+  std::unique_ptr<ChunkVoxelStage> stage_;
+  std::optional<AnalysisResult> result_;
+  bool dirty_ = true, reused_ = false;
+};
+
+// The scan cut into square tiles of the floor plan (`tile` metres, by each triangle's centroid), as a
+// headset's mesh blocks: each tile's triangles with their own vertices, and its labelled triangles likewise;
+// the key orders tiles by x, then z. For replaying a recorded room chunk by chunk (tests, benchmarks).
+std::map<std::uint64_t, Scan> split_into_blocks(const Scan& scan, float tile = 2.0f);
+
+}  // namespace roomsense

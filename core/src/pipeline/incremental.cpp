@@ -1,0 +1,265 @@
+// IncrementalAnalysis (incremental.h): chunks by id, and a voxel stage that keeps each chunk's voxels.
+//
+// Why the kept voxels are exact: triangle mode marks, per triangle, the voxels its test cube touches, from the
+// triangle's grid-unit corners alone (voxelize.h). The combined scan's grid-unit vertices are its world
+// vertices mapped one by one (to_grid_units), so with the same GridSpec a chunk's triangles mark the same
+// voxels whether alone or among the others, and the grid of the combined scan is the union of the chunks'.
+// A chunk's marks are reused only under the GridSpec they were made with, and only while prepare_input kept
+// every vertex and triangle (otherwise the combined indices are renumbered and the stage runs in full).
+#include "roomsense/incremental.h"
+
+#include "roomsense/error.h"
+#include "roomsense/voxelize.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <span>
+
+namespace roomsense {
+namespace {
+
+// FNV-1a over the bytes of each array, with the arrays' sizes between them.
+class Fnv {
+ public:
+  template <class T>
+  void add(std::span<const T> values) {
+    add_value(values.size());
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+    for (std::size_t i = 0; i < values.size_bytes(); ++i) hash_ = (hash_ ^ bytes[i]) * 0x100000001b3ull;
+  }
+  std::uint64_t value() const { return hash_; }
+
+ private:
+  void add_value(std::uint64_t v) {
+    for (int i = 0; i < 8; ++i) hash_ = (hash_ ^ ((v >> (8 * i)) & 0xff)) * 0x100000001b3ull;
+  }
+  std::uint64_t hash_ = 0xcbf29ce484222325ull;
+};
+
+std::uint64_t content_hash(const Scan& scan) {
+  Fnv h;
+  h.add(std::span<const glm::vec3>(scan.vertices));
+  h.add(std::span<const std::uint32_t>(scan.indices));
+  h.add(std::span<const glm::vec3>(scan.labels.vertices));
+  h.add(std::span<const std::uint32_t>(scan.labels.indices));
+  h.add(std::span<const SurfaceLabel>(scan.labels.labels));
+  return h.value();
+}
+
+bool same_spec(const GridSpec& a, const GridSpec& b) {
+  return a.origin == b.origin && a.voxel_size == b.voxel_size && a.nx == b.nx && a.ny == b.ny && a.nz == b.nz;
+}
+
+}  // namespace
+
+// Serves the voxel stage of analyze() from the chunks' kept voxels. Before each analysis the owner says where
+// each chunk's triangles lie in the combined scan (set_layout).
+class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
+ public:
+  struct Layout {
+    std::uint64_t id = 0, hash = 0;
+    std::size_t first_vertex = 0, vertex_count = 0, first_index = 0, index_count = 0;
+  };
+
+  explicit ChunkVoxelStage(unsigned threads) : threads_(threads) {}
+  std::string name() const override { return CpuVoxelStage().name(); }
+
+  void set_layout(std::vector<Layout> layout, std::size_t vertices, std::size_t indices) {
+    layout_ = std::move(layout);
+    combined_vertices_ = vertices;
+    combined_indices_ = indices;
+  }
+  std::size_t revoxelized() const { return revoxelized_; }
+
+  VoxelStageResult run(const VoxelizeRequest& request) override {
+    revoxelized_ = 0;
+    // prepare_input dropped or renumbered something, or there are no triangles: the stage in full.
+    if (request.mode != VoxelMode::Triangles || request.grid_vertices.size() != combined_vertices_ ||
+        request.indices.size() != combined_indices_) {
+      kept_.clear();
+      revoxelized_ = layout_.size();
+      return CpuVoxelStage(threads_).run(request);
+    }
+    if (!same_spec(request.spec, spec_)) kept_.clear(), spec_ = request.spec;
+    std::map<std::uint64_t, Kept> now;
+    try {
+      for (const Layout& chunk : layout_) {
+        const auto it = kept_.find(chunk.id);
+        if (it != kept_.end() && it->second.hash == chunk.hash) {
+          now.emplace(chunk.id, std::move(it->second));
+          continue;
+        }
+        now.emplace(chunk.id, voxelize_chunk(request, chunk));
+        ++revoxelized_;
+      }
+    } catch (...) {
+      kept_.clear();  // some were moved into `now`: keep nothing rather than an emptied entry
+      throw;
+    }
+    kept_ = std::move(now);
+
+    VoxelStageResult r;
+    r.grid = VoxelGrid(request.spec);
+    for (const auto& [id, kept] : kept_) {
+      for (const std::uint32_t v : kept.voxels) r.grid.cells[v] = 1;
+      r.voxel_tests += kept.tests;
+    }
+    // The whole stage's budget, as voxelize_cpu counts it over all triangles.
+    if (r.voxel_tests > request.test_budget)
+      throw Error(ErrorCode::TooMuchWork, too_much_work_message(request.test_budget));
+    r.level_counts = count_levels(r.grid);
+    r.levels = select_floor_ceiling(r.level_counts, request.min_separation_levels);
+    count_columns(r.grid, r.levels, r.column_counts, r.column_any);
+    return r;
+  }
+
+ private:
+  struct Kept {
+    std::uint64_t hash = 0;
+    std::vector<std::uint32_t> voxels;  // GridSpec::index of each marked voxel
+    std::uint64_t tests = 0;
+  };
+
+  // The chunk's triangles alone on the grid; its marks lie within its vertices' box (box_index per axis).
+  Kept voxelize_chunk(const VoxelizeRequest& request, const Layout& chunk) const {
+    Kept k;
+    k.hash = chunk.hash;
+    if (chunk.index_count == 0) return k;
+    VoxelizeRequest part = request;
+    part.indices = request.indices.subspan(chunk.first_index, chunk.index_count);
+    const VoxelGrid grid = voxelize_cpu(part, threads_, &k.tests);
+    const GridSpec& s = request.spec;
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const std::uint32_t i : part.indices) lo = glm::min(lo, request.grid_vertices[i]), hi = glm::max(hi, request.grid_vertices[i]);
+    const int x0 = box_index(lo.x, s.nx), x1 = box_index(hi.x, s.nx), y0 = box_index(lo.y, s.ny),
+              y1 = box_index(hi.y, s.ny), z0 = box_index(lo.z, s.nz), z1 = box_index(hi.z, s.nz);
+    for (int z = z0; z <= z1; ++z)
+      for (int x = x0; x <= x1; ++x)
+        for (int y = y0; y <= y1; ++y) {
+          const std::size_t v = s.index(x, y, z);
+          if (grid.cells[v] != 0) k.voxels.push_back(std::uint32_t(v));
+        }
+    return k;
+  }
+
+  unsigned threads_;
+  std::vector<Layout> layout_;
+  std::size_t combined_vertices_ = 0, combined_indices_ = 0;
+  GridSpec spec_{};
+  std::map<std::uint64_t, Kept> kept_;
+  std::size_t revoxelized_ = 0;
+};
+
+IncrementalAnalysis::IncrementalAnalysis(AnalysisOptions options)
+    : options_(std::move(options)), stage_(std::make_unique<ChunkVoxelStage>(options_.threads)) {
+  options_.voxel_stage = stage_.get();
+}
+IncrementalAnalysis::~IncrementalAnalysis() = default;
+IncrementalAnalysis::IncrementalAnalysis(IncrementalAnalysis&&) noexcept = default;
+IncrementalAnalysis& IncrementalAnalysis::operator=(IncrementalAnalysis&&) noexcept = default;
+
+void IncrementalAnalysis::set_chunk(std::uint64_t id, Scan chunk) {
+  const std::uint64_t hash = content_hash(chunk);
+  const auto it = chunks_.find(id);
+  if (it != chunks_.end() && it->second.hash == hash) return;  // re-sent unchanged
+  chunks_[id] = {std::move(chunk), hash};
+  dirty_ = true;
+}
+
+bool IncrementalAnalysis::remove_chunk(std::uint64_t id) {
+  if (chunks_.erase(id) == 0) return false;
+  dirty_ = true;
+  return true;
+}
+
+Scan IncrementalAnalysis::combined_scan() const {
+  Scan out;
+  for (const auto& [id, chunk] : chunks_) {
+    const Scan& s = chunk.scan;
+    const auto base = std::uint32_t(out.vertices.size());
+    out.vertices.insert(out.vertices.end(), s.vertices.begin(), s.vertices.end());
+    // An index past the chunk's own vertices stays past them (+ the chunks before), so analyze() refuses it
+    // as it would the chunk alone, unless it lands in a later chunk: checked here instead.
+    for (const std::uint32_t i : s.indices) {
+      if (i >= s.vertices.size())
+        throw Error(ErrorCode::BadIndices, "chunk " + std::to_string(id) + ": index " + std::to_string(i) +
+                                               " is out of range (" + std::to_string(s.vertices.size()) + " vertices)");
+      out.indices.push_back(base + i);
+    }
+    const auto label_base = std::uint32_t(out.labels.vertices.size());
+    out.labels.vertices.insert(out.labels.vertices.end(), s.labels.vertices.begin(), s.labels.vertices.end());
+    for (const std::uint32_t i : s.labels.indices) out.labels.indices.push_back(label_base + i);
+    out.labels.labels.insert(out.labels.labels.end(), s.labels.labels.begin(), s.labels.labels.end());
+  }
+  return out;
+}
+
+const AnalysisResult& IncrementalAnalysis::result() {
+  reused_ = !dirty_ && result_.has_value();
+  if (reused_) return *result_;
+  const Scan combined = combined_scan();
+  std::vector<ChunkVoxelStage::Layout> layout;
+  std::size_t vertex = 0, index = 0;
+  for (const auto& [id, chunk] : chunks_) {
+    layout.push_back({id, chunk.hash, vertex, chunk.scan.vertices.size(), index, chunk.scan.indices.size()});
+    vertex += chunk.scan.vertices.size();
+    index += chunk.scan.indices.size();
+  }
+  stage_->set_layout(std::move(layout), combined.vertices.size(), combined.indices.size());
+  result_.reset();
+  result_ = analyze(combined, options_);
+  dirty_ = false;
+  return *result_;
+}
+
+std::map<std::uint64_t, Scan> split_into_blocks(const Scan& scan, float tile) {
+  if (!(tile > 0.0f)) throw Error(ErrorCode::BadParameter, "the tile size must be positive");
+  const auto check = [](const std::vector<glm::vec3>& vertices, const std::vector<std::uint32_t>& indices) {
+    for (const std::uint32_t i : indices)
+      if (i >= vertices.size())
+        throw Error(ErrorCode::BadIndices, "index " + std::to_string(i) + " is out of range (" +
+                                               std::to_string(vertices.size()) + " vertices)");
+  };
+  check(scan.vertices, scan.indices);
+  check(scan.labels.vertices, scan.labels.indices);
+  if (scan.labels.labels.size() < scan.labels.indices.size() / 3)
+    throw Error(ErrorCode::BadIndices, "fewer labels than labelled triangles");
+  std::map<std::uint64_t, Scan> out;
+  // A NaN centroid goes to tile 0; absurd coordinates to the outermost tiles.
+  const auto cell = [&](float v) {
+    const double q = std::floor(double(v) / double(tile));
+    return std::uint64_t(std::int64_t(std::isfinite(q) ? std::clamp(q, -1e9, 1e9) : 0.0) + (std::int64_t{1} << 31));
+  };
+  const auto key = [&](const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::vec3 m = (a + b + c) / 3.0f;
+    return (cell(m.x) << 32) | cell(m.z);
+  };
+  const auto add = [&](std::vector<glm::vec3>& vertices, std::vector<std::uint32_t>& indices,
+                       std::map<std::uint32_t, std::uint32_t>& remap, const std::vector<glm::vec3>& from,
+                       const std::uint32_t* t) {
+    for (int k = 0; k < 3; ++k) {
+      const auto [it, added] = remap.try_emplace(t[k], std::uint32_t(vertices.size()));
+      if (added) vertices.push_back(from[t[k]]);
+      indices.push_back(it->second);
+    }
+  };
+  std::map<std::uint64_t, std::map<std::uint32_t, std::uint32_t>> mesh_remap, label_remap;
+  for (std::size_t t = 0; t + 2 < scan.indices.size(); t += 3) {
+    const std::uint32_t* i = &scan.indices[t];
+    const std::uint64_t k = key(scan.vertices[i[0]], scan.vertices[i[1]], scan.vertices[i[2]]);
+    add(out[k].vertices, out[k].indices, mesh_remap[k], scan.vertices, i);
+  }
+  const LabelledTriangles& l = scan.labels;
+  for (std::size_t t = 0; t + 2 < l.indices.size(); t += 3) {
+    const std::uint32_t* i = &l.indices[t];
+    const std::uint64_t k = key(l.vertices[i[0]], l.vertices[i[1]], l.vertices[i[2]]);
+    add(out[k].labels.vertices, out[k].labels.indices, label_remap[k], l.vertices, i);
+    out[k].labels.labels.push_back(l.labels[t / 3]);
+  }
+  return out;
+}
+
+std::size_t IncrementalAnalysis::revoxelized_chunks() const { return reused_ ? 0 : stage_->revoxelized(); }
+
+}  // namespace roomsense

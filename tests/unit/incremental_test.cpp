@@ -1,0 +1,178 @@
+// IncrementalAnalysis (issue 19, item 1): rooms replayed chunk by chunk, in random order, with replacements
+// and removals; after every step the result must equal a full analysis of the same chunks, bit for bit.
+#include "rooms.h"
+#include "roomsense/error.h"
+#include "roomsense/export.h"
+#include "roomsense/incremental.h"
+#include "roomsense/mruk_room.h"
+#include "roomsense/quest_capture.h"
+#include "roomsense/scanio.h"
+#include "roomsense/synthetic.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <random>
+
+namespace {
+
+using namespace roomsense;
+
+// A chunk as a headset re-sends it, refined: every fifth triangle gone.
+Scan refined(const Scan& chunk) {
+  Scan out = chunk;
+  out.indices.clear();
+  for (std::size_t t = 0; t + 2 < chunk.indices.size(); t += 3)
+    if ((t / 3) % 5 != 4) out.indices.insert(out.indices.end(), &chunk.indices[t], &chunk.indices[t] + 3);
+  return out;
+}
+
+void expect_same(const AnalysisResult& got, const AnalysisResult& want, const std::string& step) {
+  SCOPED_TRACE(step);
+  ASSERT_EQ(got.status, want.status) << got.status_message << " / " << want.status_message;
+  nlohmann::json a = nlohmann::json::parse(analysis_json(got, {})), b = nlohmann::json::parse(analysis_json(want, {}));
+  a.erase("timings_ms");
+  b.erase("timings_ms");
+  EXPECT_TRUE(a == b) << "the JSON differs";
+  EXPECT_EQ(got.voxels.grid.cells, want.voxels.grid.cells);
+  EXPECT_EQ(got.voxels.voxel_tests, want.voxels.voxel_tests);
+  EXPECT_EQ(got.bounds.vertices, want.bounds.vertices);
+  EXPECT_EQ(got.bounds.indices, want.bounds.indices);
+  ASSERT_EQ(got.room_bounds.size(), want.room_bounds.size());
+  for (std::size_t i = 0; i < got.room_bounds.size(); ++i) EXPECT_EQ(got.room_bounds[i].indices, want.room_bounds[i].indices);
+}
+
+// Adds the tiles in a random order; after a third of them, and then every few steps, replaces one with its
+// refined version or removes one (and adds it back later). Compares with analyze() after every step.
+void replay(const Scan& scan, unsigned seed) {
+  const std::map<std::uint64_t, Scan> tiles = split_into_blocks(scan, 2.0f);
+  ASSERT_GE(tiles.size(), 2u);
+  std::vector<std::uint64_t> order;
+  for (const auto& [id, chunk] : tiles) order.push_back(id);
+  std::mt19937 rng(seed);
+  std::shuffle(order.begin(), order.end(), rng);
+  IncrementalAnalysis inc;
+  std::vector<std::uint64_t> added, removed;
+  std::size_t steps = 0, same_grid_steps = 0;
+  std::optional<GridSpec> previous_grid;
+  const auto check = [&](const std::string& what) {
+    ++steps;
+    const Scan combined = inc.combined_scan();
+    const AnalysisResult want = [&] {
+      try {
+        return analyze(combined);
+      } catch (const Error& e) {
+        AnalysisResult failed;
+        failed.status_message = e.what();
+        failed.status = AnalysisStatus::NoFloorCeiling;
+        return failed;
+      }
+    }();
+    try {
+      const AnalysisResult& got = inc.result();
+      expect_same(got, want, what);
+      // Under the grid of the previous step every step changes one chunk: at most that one is voxelized.
+      const GridSpec& grid = got.voxels.grid.spec;
+      if (previous_grid && previous_grid->origin == grid.origin && previous_grid->nx == grid.nx &&
+          previous_grid->ny == grid.ny && previous_grid->nz == grid.nz) {
+        ++same_grid_steps;
+        EXPECT_LE(inc.revoxelized_chunks(), 1u) << what << ": of " << inc.chunk_count() << " chunks";
+      }
+      previous_grid = grid;
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), want.status_message) << what;
+    }
+  };
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    inc.set_chunk(order[i], tiles.at(order[i]));
+    added.push_back(order[i]);
+    check("add " + std::to_string(i));
+    if (i < order.size() / 3 || i % 3 != 0) continue;
+    const std::uint64_t victim = added[rng() % added.size()];
+    if (rng() % 2 == 0) {
+      inc.set_chunk(victim, refined(tiles.at(victim)));
+      check("replace after add " + std::to_string(i));
+    } else if (inc.remove_chunk(victim)) {
+      added.erase(std::find(added.begin(), added.end(), victim));
+      removed.push_back(victim);
+      check("remove after add " + std::to_string(i));
+    }
+  }
+  for (const std::uint64_t id : removed) {
+    inc.set_chunk(id, tiles.at(id));
+    check("add back");
+  }
+  // Nothing changed: the previous result, at once.
+  inc.result();
+  EXPECT_TRUE(inc.reused_result());
+  // Steps that leave the grid's extent as it was keep the other chunks' voxels (a step that moves it
+  // voxelizes every chunk again); there are such steps in every room.
+  EXPECT_GT(same_grid_steps, 0u) << "of " << steps << " steps";
+}
+
+TEST(Incremental, SyntheticRoomsReplayedChunkByChunkEqualTheFullAnalysis) {
+  for (const char* name : {"synthetic:default", "synthetic:thesis-room1", "synthetic:flat", "synthetic:house", "synthetic:loft"}) {
+    SCOPED_TRACE(name);
+    replay(synth::generate_builtin_source(name), 19);
+  }
+}
+
+class IncrementalRealRoom : public testing::TestWithParam<const char*> {};
+
+TEST_P(IncrementalRealRoom, ReplayedChunkByChunkEqualsTheFullAnalysis) {
+  ROOMSENSE_REQUIRE_ROOM(path, GetParam());
+  Scan scan;
+  if (scanio::is_quest_capture_path(path.string())) {
+    const scanio::QuestCapture capture = scanio::load_scene_capture(path.string());
+    scan = capture.mesh;
+    scan.labels = scanio::scene_labels(capture);
+  } else {
+    scan = scanio::load_mesh_file(path.string());
+  }
+  replay(scan, 7);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Rooms, IncrementalRealRoom,
+    testing::Values("hololens1/holotoolkit_fake_spatial_mapping.obj", "hololens1/mrtk_example_spatial_mesh.obj",
+                    "hololens2-su/SU_Kitchen_world_mesh.obj", "hololens2-su/SU_Apartment_world_mesh.obj",
+                    "quest-iwer/living_room.json", "quest-iwer/meeting_room.json", "quest-iwer/music_room.json",
+                    "quest-iwer/office_large.json", "quest-iwer/office_small.json",
+                    "quest-iwer/living_room_global_mesh.obj", "quest-iwer/office_large_global_mesh.obj"),
+    [](const testing::TestParamInfo<const char*>& info) {
+      std::string name = std::filesystem::path(info.param).stem().string();
+      std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+      return name;
+    });
+
+// Bad chunks: an index past the chunk's own vertices is refused even where the combined scan would have a
+// vertex there; removing what is not there says so; an empty analyzer is EmptyInput.
+TEST(Incremental, BadChunksAreRefusedAndNothingIsLost) {
+  IncrementalAnalysis inc;
+  EXPECT_FALSE(inc.remove_chunk(3));
+  EXPECT_THROW(inc.result(), Error);
+  const Scan room = synth::generate_builtin_source("synthetic:default");
+  inc.set_chunk(1, room);
+  const std::size_t areas = inc.result().areas.size();
+  ASSERT_GT(areas, 0u);
+  Scan bad;
+  bad.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+  bad.indices = {0, 1, 5};
+  inc.set_chunk(2, bad);
+  try {
+    inc.result();
+    ADD_FAILURE() << "a chunk index past its own vertices was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::BadIndices);
+    EXPECT_NE(std::string(e.what()).find("chunk 2"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(inc.remove_chunk(2));
+  EXPECT_EQ(inc.result().areas.size(), areas);  // the room as before: chunk 1 kept its voxels
+  EXPECT_EQ(inc.revoxelized_chunks(), 0u);
+}
+
+}  // namespace

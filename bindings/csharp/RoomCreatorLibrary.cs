@@ -228,6 +228,9 @@ namespace RoomCreator
         [DllImport(L)] public static extern Result rs_analyzer_create(ref AnalyzerOptions options, out IntPtr analyzer);
         [DllImport(L)] public static extern void rs_analyzer_destroy(IntPtr analyzer);
         [DllImport(L)] public static extern Result rs_analyzer_compute(IntPtr analyzer, float[] xyz, uint vertexCount, uint[] indices, uint indexCount);
+        [DllImport(L)] public static extern Result rs_analyzer_set_chunk(IntPtr analyzer, ulong chunkId, float[] xyz, uint vertexCount, uint[] indices, uint indexCount);
+        [DllImport(L)] public static extern Result rs_analyzer_remove_chunk(IntPtr analyzer, ulong chunkId);
+        [DllImport(L)] public static extern Result rs_analyzer_compute_chunks(IntPtr analyzer);
         [DllImport(L)] public static extern Result rs_analyzer_state(IntPtr analyzer, out State state);
         [DllImport(L)] public static extern Result rs_analyzer_wait(IntPtr analyzer, uint timeoutMs, out State state);
         [DllImport(L)] public static extern Result rs_analyzer_get_layout(IntPtr analyzer, out Layout layout);
@@ -281,6 +284,20 @@ namespace RoomCreator
             Check(Native.rs_analyzer_compute(handle, xyz, (uint)(xyz.Length / 3), indices, indices == null ? 0u : (uint)indices.Length),
                   "rs_analyzer_compute");
         }
+
+        // API 1.3: a room in chunks by id (roomsense.h). SetChunk adds or replaces one, RemoveChunk removes one,
+        // ComputeChunks analyses all held, voxelizing only those changed since the last.
+        public void SetChunk(ulong id, float[] xyz, uint[] indices = null)
+        {
+            if (xyz == null) throw new ArgumentNullException("xyz");
+            if (xyz.Length % 3 != 0) throw new ArgumentException("xyz must hold 3 floats per vertex, got " + xyz.Length, "xyz");
+            Check(Native.rs_analyzer_set_chunk(handle, id, xyz, (uint)(xyz.Length / 3), indices, indices == null ? 0u : (uint)indices.Length),
+                  "rs_analyzer_set_chunk");
+        }
+
+        public void RemoveChunk(ulong id) { Check(Native.rs_analyzer_remove_chunk(handle, id), "rs_analyzer_remove_chunk"); }
+
+        public void ComputeChunks() { Check(Native.rs_analyzer_compute_chunks(handle), "rs_analyzer_compute_chunks"); }
 
         public State State { get { Check(Native.rs_analyzer_state(handle, out State s), "rs_analyzer_state"); return s; } }
 

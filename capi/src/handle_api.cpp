@@ -6,6 +6,7 @@
 #include "job.h"
 #include "roomsense/analysis.h"
 #include "roomsense/error.h"
+#include "roomsense/incremental.h"
 #include "roomsense/queries.h"
 #include "roomsense/scan.h"
 
@@ -16,7 +17,9 @@
 #include <cstring>
 #include <limits>
 #include <new>
+#include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -187,10 +190,11 @@ HandleOutput convert(const AnalysisResult& r) {
   return out;
 }
 
-HandleOutput run(Scan& scan, const SourceFrame& frame, const AnalysisOptions& options) {
+// Runs analysis() and converts its result; errors become the output's status and message.
+template <class Analysis>
+HandleOutput run_guarded(Analysis&& analysis) {
   try {
-    convert_to_roomsense_frame(scan, frame);
-    return convert(analyze(scan, options));
+    return convert(analysis());
   } catch (const Error& e) {
     HandleOutput out;
     out.status = to_result(e.code());
@@ -208,13 +212,30 @@ HandleOutput run(Scan& scan, const SourceFrame& frame, const AnalysisOptions& op
   }
 }
 
+HandleOutput run(Scan& scan, const SourceFrame& frame, const AnalysisOptions& options) {
+  return run_guarded([&] {
+    convert_to_roomsense_frame(scan, frame);
+    return analyze(scan, options);
+  });
+}
+
+// The chunks of API 1.3: changes wait in `pending` (any thread, under the mutex) until a compute applies them
+// to `analysis`, which only the job's worker touches (one compute at a time).
+struct Chunks {
+  std::mutex mutex;
+  std::vector<std::pair<std::uint64_t, std::optional<Scan>>> pending;  // nullopt: remove
+  std::set<std::uint64_t> ids;  // held once the pending changes apply
+  std::optional<IncrementalAnalysis> analysis;
+};
+
 }  // namespace
 }  // namespace roomsense::capi
 
 struct rs_analyzer {
   roomsense::AnalysisOptions options;
   roomsense::SourceFrame frame;
-  roomsense::capi::Job<roomsense::capi::HandleOutput> job;
+  roomsense::capi::Chunks chunks;
+  roomsense::capi::Job<roomsense::capi::HandleOutput> job;  // last: its worker stops before the rest goes
 };
 
 namespace roomsense::capi {
@@ -476,6 +497,70 @@ rs_result rs_analyzer_compute(rs_analyzer* analyzer, const float* xyz, uint32_t 
       return started ? RS_SUCCESS : RS_ERROR_BUSY;
     } catch (const std::system_error&) {
       return RS_ERROR_INTERNAL;  // no thread could be started
+    }
+  });
+}
+
+rs_result rs_analyzer_set_chunk(rs_analyzer* analyzer, uint64_t chunk_id, const float* xyz, uint32_t vertex_count,
+                                const uint32_t* indices, uint32_t index_count) {
+  if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
+  if (xyz == nullptr || vertex_count == 0) return RS_ERROR_EMPTY_INPUT;
+  if (index_count % 3 != 0 || (indices == nullptr && index_count != 0)) return RS_ERROR_BAD_INDICES;
+  for (uint32_t i = 0; i < index_count; ++i)
+    if (indices[i] >= vertex_count) return RS_ERROR_BAD_INDICES;
+  return guarded([&] {
+    roomsense::Scan chunk;
+    chunk.vertices.resize(vertex_count);
+    for (std::size_t i = 0; i < vertex_count; ++i) chunk.vertices[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+    chunk.indices.assign(indices, indices + index_count);
+    roomsense::convert_to_roomsense_frame(chunk, analyzer->frame);
+    const std::lock_guard lock(analyzer->chunks.mutex);
+    analyzer->chunks.pending.emplace_back(chunk_id, std::move(chunk));
+    analyzer->chunks.ids.insert(chunk_id);
+    return RS_SUCCESS;
+  });
+}
+
+rs_result rs_analyzer_remove_chunk(rs_analyzer* analyzer, uint64_t chunk_id) {
+  if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
+  return guarded([&] {
+    const std::lock_guard lock(analyzer->chunks.mutex);
+    if (analyzer->chunks.ids.erase(chunk_id) == 0) return RS_ERROR_INVALID_ARGUMENT;
+    analyzer->chunks.pending.emplace_back(chunk_id, std::nullopt);
+    return RS_SUCCESS;
+  });
+}
+
+rs_result rs_analyzer_compute_chunks(rs_analyzer* analyzer) {
+  if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
+  {
+    const std::lock_guard lock(analyzer->chunks.mutex);
+    if (analyzer->chunks.ids.empty()) return RS_ERROR_EMPTY_INPUT;
+  }
+  return guarded([&] {
+    try {
+      const bool started = analyzer->job.start(
+          [analyzer](std::stop_token stop) {
+            roomsense::capi::Chunks& chunks = analyzer->chunks;
+            std::vector<std::pair<std::uint64_t, std::optional<roomsense::Scan>>> changes;
+            {
+              const std::lock_guard lock(chunks.mutex);
+              changes.swap(chunks.pending);
+            }
+            if (!chunks.analysis) chunks.analysis.emplace(analyzer->options);
+            for (auto& [id, chunk] : changes) {
+              if (chunk) chunks.analysis->set_chunk(id, std::move(*chunk));
+              else chunks.analysis->remove_chunk(id);
+            }
+            return roomsense::capi::run_guarded([&] {
+              chunks.analysis->set_stop(std::move(stop));
+              return chunks.analysis->result();
+            });
+          },
+          /*replace_result=*/true);
+      return started ? RS_SUCCESS : RS_ERROR_BUSY;
+    } catch (const std::system_error&) {
+      return RS_ERROR_INTERNAL;
     }
   });
 }

@@ -5,6 +5,7 @@
 #include "roomsense/roomsense.h"
 
 #include "roomsense/analysis.h"
+#include "roomsense/incremental.h"
 #include "roomsense/queries.h"
 #include "roomsense/synthetic.h"
 
@@ -14,6 +15,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstring>
+#include <map>
 #include <set>
 #include <thread>
 #include <vector>
@@ -505,6 +508,84 @@ TEST(CapiCancellation, TooMuchWorkIsItsOwnResult) {
   EXPECT_EQ(rs_analyzer_get_layout(analyzer, &layout), RS_ERROR_TOO_MUCH_WORK);
   EXPECT_STREQ(rs_result_string(RS_ERROR_TOO_MUCH_WORK), "RS_ERROR_TOO_MUCH_WORK");
   rs_analyzer_destroy(analyzer);
+}
+
+}  // namespace
+}  // namespace roomsense
+
+namespace roomsense {
+namespace {
+
+// The areas a finished analyzer holds, for comparing two analyzers value for value.
+std::vector<rs_area> areas_of(rs_analyzer* analyzer) {
+  uint32_t count = 0;
+  EXPECT_EQ(rs_analyzer_get_areas(analyzer, 0, &count, nullptr), RS_SUCCESS);
+  std::vector<rs_area> areas(count);
+  EXPECT_EQ(rs_analyzer_get_areas(analyzer, count, &count, areas.data()), RS_SUCCESS);
+  return areas;
+}
+
+void expect_same_areas(const std::vector<rs_area>& got, const std::vector<rs_area>& want) {
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < got.size(); ++i)
+    EXPECT_EQ(std::memcmp(&got[i], &want[i], sizeof(rs_area)), 0) << "area " << i;
+}
+
+rs_state computed_chunks(rs_analyzer* analyzer) {
+  rs_state state = RS_STATE_IDLE;
+  EXPECT_EQ(rs_analyzer_compute_chunks(analyzer), RS_SUCCESS);
+  EXPECT_EQ(rs_analyzer_wait(analyzer, RS_WAIT_INFINITE, &state), RS_SUCCESS);
+  return state;
+}
+
+// API 1.3: a room given chunk by chunk is the room given whole; a replaced chunk and a removed one are what
+// the whole scan without them gives; bad chunks are refused without losing the ones held.
+TEST(CapiChunks, ARoomInChunksIsTheRoomWhole) {
+  const Scan scan = synth::generate(synth::default_room());
+  const std::map<std::uint64_t, Scan> blocks = split_into_blocks(scan);
+  ASSERT_GE(blocks.size(), 4u);
+  rs_analyzer* chunked = nullptr;
+  ASSERT_EQ(rs_analyzer_create(nullptr, &chunked), RS_SUCCESS);
+  EXPECT_EQ(rs_analyzer_compute_chunks(chunked), RS_ERROR_EMPTY_INPUT);
+  EXPECT_EQ(rs_analyzer_remove_chunk(chunked, 1), RS_ERROR_INVALID_ARGUMENT);
+  const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 0, 1};
+  const uint32_t bad[3] = {0, 1, 3};
+  EXPECT_EQ(rs_analyzer_set_chunk(chunked, 1, xyz, 3, bad, 3), RS_ERROR_BAD_INDICES);
+  EXPECT_EQ(rs_analyzer_set_chunk(chunked, 1, nullptr, 3, nullptr, 0), RS_ERROR_EMPTY_INPUT);
+  EXPECT_EQ(rs_analyzer_set_chunk(nullptr, 1, xyz, 3, nullptr, 0), RS_ERROR_HANDLE_INVALID);
+  EXPECT_EQ(rs_analyzer_compute_chunks(nullptr), RS_ERROR_HANDLE_INVALID);
+
+  const auto set = [&](std::uint64_t id, const Scan& chunk) {
+    EXPECT_EQ(rs_analyzer_set_chunk(chunked, id, &chunk.vertices[0].x, uint32_t(chunk.vertices.size()),
+                                    chunk.indices.data(), uint32_t(chunk.indices.size())),
+              RS_SUCCESS);
+  };
+  const auto whole = [&](const std::map<std::uint64_t, Scan>& held) {
+    IncrementalAnalysis combiner;
+    for (const auto& [id, chunk] : held) combiner.set_chunk(id, chunk);
+    rs_analyzer* analyzer = computed(combiner.combined_scan());
+    std::vector<rs_area> areas = analyzer != nullptr ? areas_of(analyzer) : std::vector<rs_area>{};
+    rs_analyzer_destroy(analyzer);
+    return areas;
+  };
+  std::map<std::uint64_t, Scan> held = blocks;
+  for (const auto& [id, chunk] : held) set(id, chunk);
+  ASSERT_EQ(computed_chunks(chunked), RS_STATE_READY);
+  expect_same_areas(areas_of(chunked), whole(held));
+  ASSERT_EQ(computed_chunks(chunked), RS_STATE_READY);  // nothing changed: the same result
+  expect_same_areas(areas_of(chunked), whole(held));
+
+  // One block re-sent without half its triangles; another removed.
+  const std::uint64_t replaced = std::next(held.begin(), 1)->first, removed = std::next(held.begin(), 2)->first;
+  Scan& half = held[replaced];
+  half.indices.resize(half.indices.size() / 6 * 3);
+  set(replaced, half);
+  EXPECT_EQ(rs_analyzer_remove_chunk(chunked, removed), RS_SUCCESS);
+  EXPECT_EQ(rs_analyzer_remove_chunk(chunked, removed), RS_ERROR_INVALID_ARGUMENT);
+  held.erase(removed);
+  ASSERT_EQ(computed_chunks(chunked), RS_STATE_READY);
+  expect_same_areas(areas_of(chunked), whole(held));
+  rs_analyzer_destroy(chunked);
 }
 
 }  // namespace

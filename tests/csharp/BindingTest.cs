@@ -93,6 +93,18 @@ static class BindingTest
         Check(RoomCreatorLibrary.StartRoomUnderstanding(null) == 1 && RoomCreatorLibrary.StartRoomBounds(new float[5]) == 2,
               "the length-taking overloads' input errors (1, 2)");
 
+        // API 1.3: the room as one chunk is the room given whole.
+        using (var chunked = new Analyzer())
+        {
+            chunked.SetChunk(7, xyz, indices);
+            chunked.ComputeChunks();
+            Check(chunked.Wait() == State.Ready, "the chunked analysis is ready: " + chunked.Message());
+            Check(Bytes(chunked.Areas()).SequenceEqual(File.ReadAllBytes(Path.Combine(dir, "handle_areas.bin"))),
+                  "the room as one chunk differs from C's rs_analyzer_compute");
+            try { chunked.RemoveChunk(8); Check(false, "removing a chunk never set throws"); }
+            catch (RoomSenseException e) { Check(e.Result == Result.ErrorInvalidArgument, "removing an unknown chunk: " + e.Message); }
+        }
+
         // The handle API.
         uint version = Native.rs_api_version();
         int storeyCount, placementCount, hitCount = 0;

@@ -56,7 +56,7 @@ extern "C" {
  * a library with the same major version as the header is compatible. */
 #define RS_MAKE_VERSION(major, minor, patch) \
   ((((uint32_t)(major)) << 22) | (((uint32_t)(minor)) << 12) | ((uint32_t)(patch)))
-#define RS_API_VERSION RS_MAKE_VERSION(1, 2, 0)  /* 1.1: placement queries; 1.2: rooms */
+#define RS_API_VERSION RS_MAKE_VERSION(1, 3, 0)  /* 1.1: placement queries; 1.2: rooms; 1.3: chunks */
 
 /* Every enum has a _MAX_ENUM member, as in OpenXR: it makes the enum 32 bits wide in every compiler and
  * lets C++ hold any 32-bit value a caller passes (options are checked, not trusted).
@@ -129,6 +129,22 @@ ROOMSENSE_CAPI_EXPORT void rs_analyzer_destroy(rs_analyzer* analyzer);
  * (RS_ERROR_NO_ROOM, ...) make the state RS_STATE_FAILED and are returned by the getters. */
 ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_compute(rs_analyzer* analyzer, const float* xyz, uint32_t vertex_count,
                                                     const uint32_t* indices, uint32_t index_count);
+
+/* ---- A room in chunks (API 1.3) ----
+ * As headsets deliver a room: mesh blocks by id, added, re-sent and removed while the user looks around.
+ * rs_analyzer_set_chunk adds the chunk of that id or replaces it (vertices and indices as for
+ * rs_analyzer_compute, indices into the chunk's own vertices; copied, converted to roomsense's frame);
+ * rs_analyzer_remove_chunk removes it (RS_ERROR_INVALID_ARGUMENT when there is none). Both may be called while a
+ * compute runs: the change waits for the next rs_analyzer_compute_chunks, which analyses every chunk held,
+ * in id order, as one scan, and gives the same result as rs_analyzer_compute on that scan. It voxelizes only
+ * the chunks changed since the last one (while the grid's extent stays), and when nothing changed it keeps
+ * the previous result at once. rs_analyzer_compute does not touch the chunks. */
+ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_set_chunk(rs_analyzer* analyzer, uint64_t chunk_id, const float* xyz,
+                                                      uint32_t vertex_count, const uint32_t* indices,
+                                                      uint32_t index_count);
+ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_remove_chunk(rs_analyzer* analyzer, uint64_t chunk_id);
+/* Returns as rs_analyzer_compute does; RS_ERROR_EMPTY_INPUT when no chunk is held. */
+ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_compute_chunks(rs_analyzer* analyzer);
 
 typedef enum rs_state {
   RS_STATE_IDLE = 0,     /* no compute yet */

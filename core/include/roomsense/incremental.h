@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <stop_token>
 
 namespace roomsense {
 
@@ -31,6 +32,9 @@ class IncrementalAnalysis {
   // Returns false when there is no chunk of that id.
   bool remove_chunk(std::uint64_t id);
   std::size_t chunk_count() const { return chunks_.size(); }
+  // The stop token of the next result() (AnalysisOptions::stop): a stop request cancels it, and changes nothing
+  // but the result, which the next call computes again.
+  void set_stop(std::stop_token stop) { options_.stop = std::move(stop); }
 
   // The analysis of every chunk. Throws as analyze() does (Error for bad input, Cancelled on a stop request);
   // an empty set of chunks is EmptyInput. The reference stays valid until the next call that changes chunks.

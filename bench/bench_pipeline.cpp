@@ -32,7 +32,8 @@ struct BenchRoom {
 
 std::vector<BenchRoom> load_rooms() {
   std::vector<BenchRoom> rooms;
-  for (const char* name : {"thesis-room1", "hall", "default", "house", "flat"}) rooms.push_back({std::string("synthetic:") + name, synth::generate(*synth::builtin(name))});
+  for (const char* name : {"thesis-room1", "hall", "default", "house", "flat"})
+    rooms.push_back({std::string("synthetic:") + name, synth::generate_builtin_source(std::string("synthetic:") + name)});
   const std::filesystem::path dir = ROOMSENSE_BENCH_ROOMS_DIR;
   for (const char* file : {"hololens1/holotoolkit_fake_spatial_mapping.obj", "hololens1/mrtk_example_spatial_mesh.obj",
                            "hololens2-su/SU_Kitchen_world_mesh.obj", "hololens2-su/SU_Apartment_world_mesh.obj",

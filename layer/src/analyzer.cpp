@@ -49,6 +49,26 @@ std::vector<SourceChunk> query_best_source(const InstanceState& instance, const 
 
 }  // namespace
 
+namespace {
+
+// The voxel stage `backend` asks for on this scan, with its line in the log; null for the CPU stage.
+std::unique_ptr<VoxelStage> chosen_stage(const Scan& scan, float voxel_size, Backend backend) {
+#if ROOMSENSE_HAVE_COMPUTE
+  std::string note;
+  std::unique_ptr<VoxelStage> stage = make_voxel_stage(backend, estimated_voxel_count(scan, voxel_size), &note);
+  if (backend == Backend::Vulkan && stage->name() != "vulkan") log_warn("backend: " + note);
+  else log_info("backend: " + note);
+  if (stage->name() == CpuVoxelStage().name()) return nullptr;
+  return stage;
+#else
+  (void)scan, (void)voxel_size;
+  if (backend == Backend::Vulkan) log_warn("backend: this build has no Vulkan backend; cpu used");
+  return nullptr;
+#endif
+}
+
+}  // namespace
+
 AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const LabelledTriangles& labels,
                               float voxel_size, Backend backend, std::stop_token stop) {
   Scan scan = merge(pieces);
@@ -56,17 +76,48 @@ AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const
   AnalysisOptions options;
   options.voxel_size = voxel_size;
   options.stop = std::move(stop);
-  std::unique_ptr<VoxelStage> stage;
-#if ROOMSENSE_HAVE_COMPUTE
-  std::string note;
-  stage = make_voxel_stage(backend, estimated_voxel_count(scan, voxel_size), &note);
-  if (backend == Backend::Vulkan && stage->name() != "vulkan") log_warn("backend: " + note);
-  else log_info("backend: " + note);
-#else
-  if (backend == Backend::Vulkan) log_warn("backend: this build has no Vulkan backend; cpu used");
-#endif
+  const std::unique_ptr<VoxelStage> stage = chosen_stage(scan, voxel_size, backend);
   options.voxel_stage = stage.get();
   return analyze(scan, options);
+}
+
+AnalysisResult analyze_pieces(IncrementalAnalysis& incremental, const std::vector<const MeshPiece*>& pieces,
+                              const std::vector<const LabelledTriangles*>& labels, float voxel_size, Backend backend,
+                              std::stop_token stop) {
+  Scan merged = merge(pieces);
+  if (const std::unique_ptr<VoxelStage> stage = chosen_stage(merged, voxel_size, backend)) {  // the scan whole
+    for (const LabelledTriangles* l : labels)
+      if (l != nullptr) merged.labels.add(l->vertices, l->indices, l->labels);
+    AnalysisOptions options;
+    options.voxel_size = voxel_size;
+    options.stop = std::move(stop);
+    options.voxel_stage = stage.get();
+    return analyze(merged, options);
+  }
+  // Piece i is chunk i: the chunks combined in id order are merge(pieces), their labels in the same order, so
+  // the result is analyze_pieces()'s; a piece unchanged since the last analysis keeps its voxels.
+  std::uint32_t next_vertex = 0, next_index = 0;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    Scan chunk;
+    const std::uint32_t vertices = std::uint32_t(pieces[i]->vertices.size());
+    chunk.vertices.assign(merged.vertices.begin() + next_vertex, merged.vertices.begin() + next_vertex + vertices);
+    const std::size_t index_count = merged.indices.empty() ? 0
+                                    : pieces[i]->indices.empty() ? 3 * std::size_t(vertices)
+                                                                 : pieces[i]->indices.size();
+    for (std::size_t k = 0; k < index_count; ++k) chunk.indices.push_back(merged.indices[next_index + k] - next_vertex);
+    if (i < labels.size() && labels[i] != nullptr) chunk.labels = *labels[i];
+    next_vertex += vertices;
+    next_index += std::uint32_t(index_count);
+    incremental.set_chunk(i, std::move(chunk));
+  }
+  for (std::size_t i = pieces.size(); incremental.chunk_count() > pieces.size(); ++i) incremental.remove_chunk(i);
+  incremental.set_stop(std::move(stop));
+  const AnalysisResult& result = incremental.result();
+  log_debug([&] {
+    return std::to_string(incremental.revoxelized_chunks()) + " of " + std::to_string(pieces.size()) +
+           " meshes voxelized again; the others' voxels kept";
+  });
+  return result;
 }
 
 Analyzer::Analyzer(std::shared_ptr<SessionState> session, Settings settings)
@@ -211,9 +262,20 @@ void Analyzer::run(std::stop_token stop, Job job) {
       done_.notify_all();
       return;
     }
-    LabelledTriangles labels;  // the runtime's semantics, where its source gives any
-    for (const SourceChunk& m : runtime) add_labelled(labels, m.mesh, m.labels);
-    const AnalysisResult analysis = analyze_pieces(pieces, labels, settings_.voxel_size, settings_.backend, stop);
+    // The runtime's semantics, where its source gives any: each runtime chunk's own (pieces start with them).
+    std::vector<LabelledTriangles> runtime_labels(runtime.size());
+    std::vector<const LabelledTriangles*> labels;
+    for (std::size_t i = 0; i < runtime.size(); ++i) {
+      add_labelled(runtime_labels[i], runtime[i].mesh, runtime[i].labels);
+      labels.push_back(&runtime_labels[i]);
+    }
+    if (!incremental_) {
+      AnalysisOptions options;
+      options.voxel_size = settings_.voxel_size;
+      incremental_.emplace(options);
+    }
+    const AnalysisResult analysis =
+        analyze_pieces(*incremental_, pieces, labels, settings_.voxel_size, settings_.backend, stop);
     if (!analysis.ok()) throw std::runtime_error(analysis.status_message);
     if (stop.stop_requested()) return;
     const auto elapsed = std::chrono::steady_clock::now() - job.started;

@@ -5,6 +5,7 @@
 #include "config.h"
 #include "results.h"
 #include "state.h"
+#include "roomsense/incremental.h"
 
 #include <openxr/XR_EXTX_room_understanding.h>
 
@@ -73,6 +74,9 @@ class Analyzer {
   XrRoomComputeStateEXTX state_ = XR_ROOM_COMPUTE_STATE_NONE_EXTX;
   std::vector<std::shared_ptr<const MeshPiece>> submitted_;
   std::shared_ptr<const RoomResult> latest_;
+  // The analyses' chunks (the pieces of each compute by position), touched only by the worker: one runs at a
+  // time, and start() joins the previous one first.
+  std::optional<IncrementalAnalysis> incremental_;
   std::jthread worker_;
 };
 
@@ -83,5 +87,10 @@ std::shared_ptr<Analyzer> find_analyzer(XrRoomAnalyzerEXTX handle);
 // (which backend) goes to the log. A stop request ends it with Error(Cancelled) within about 100 ms.
 AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const LabelledTriangles& labels,
                               float voxel_size, Backend backend, std::stop_token stop = {});
+// The same analysis (labels[i]: piece i's, or null), on the CPU backend through `incremental`, whose chunks
+// become the pieces: a piece unchanged since its last call keeps its voxels. Other backends analyse whole.
+AnalysisResult analyze_pieces(IncrementalAnalysis& incremental, const std::vector<const MeshPiece*>& pieces,
+                              const std::vector<const LabelledTriangles*>& labels, float voxel_size, Backend backend,
+                              std::stop_token stop = {});
 
 }  // namespace roomsense::layer

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <new>
 #include <mutex>
 #include <optional>
@@ -223,7 +224,7 @@ HandleOutput run(Scan& scan, const SourceFrame& frame, const AnalysisOptions& op
 // to `analysis`, which only the job's worker touches (one compute at a time).
 struct Chunks {
   std::mutex mutex;
-  std::vector<std::pair<std::uint64_t, std::optional<Scan>>> pending;  // nullopt: remove
+  std::map<std::uint64_t, std::optional<Scan>> pending;  // the latest change per id (nullopt: remove)
   std::set<std::uint64_t> ids;  // held once the pending changes apply
   std::optional<IncrementalAnalysis> analysis;
 };
@@ -515,7 +516,7 @@ rs_result rs_analyzer_set_chunk(rs_analyzer* analyzer, uint64_t chunk_id, const 
     chunk.indices.assign(indices, indices + index_count);
     roomsense::convert_to_roomsense_frame(chunk, analyzer->frame);
     const std::lock_guard lock(analyzer->chunks.mutex);
-    analyzer->chunks.pending.emplace_back(chunk_id, std::move(chunk));
+    analyzer->chunks.pending.insert_or_assign(chunk_id, std::move(chunk));
     analyzer->chunks.ids.insert(chunk_id);
     return RS_SUCCESS;
   });
@@ -526,7 +527,7 @@ rs_result rs_analyzer_remove_chunk(rs_analyzer* analyzer, uint64_t chunk_id) {
   return guarded([&] {
     const std::lock_guard lock(analyzer->chunks.mutex);
     if (analyzer->chunks.ids.erase(chunk_id) == 0) return RS_ERROR_INVALID_ARGUMENT;
-    analyzer->chunks.pending.emplace_back(chunk_id, std::nullopt);
+    analyzer->chunks.pending.insert_or_assign(chunk_id, std::nullopt);
     return RS_SUCCESS;
   });
 }
@@ -542,7 +543,7 @@ rs_result rs_analyzer_compute_chunks(rs_analyzer* analyzer) {
       const bool started = analyzer->job.start(
           [analyzer](std::stop_token stop) {
             roomsense::capi::Chunks& chunks = analyzer->chunks;
-            std::vector<std::pair<std::uint64_t, std::optional<roomsense::Scan>>> changes;
+            std::map<std::uint64_t, std::optional<roomsense::Scan>> changes;
             {
               const std::lock_guard lock(chunks.mutex);
               changes.swap(chunks.pending);

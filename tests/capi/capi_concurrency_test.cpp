@@ -190,6 +190,39 @@ TEST(CapiConcurrency, HandleDestroyedWhileComputingOnEightThreads) {
   EXPECT_EQ(failures.load(), 0);
 }
 
+// API 1.3: chunks set and removed on four threads while four others compute the chunks and read the result:
+// every compute that starts ends READY (the box room's halves are each a room), and the chunks a compute
+// applies never race the ones being set. Then destroyed while a compute of chunks runs.
+TEST(CapiConcurrency, HandleChunksSetOnFourThreadsWhileFourCompute) {
+  Analyzer an;
+  // Chunk 0: the whole box room; chunks 1..4: copies of it, set and removed.
+  ASSERT_EQ(rs_analyzer_set_chunk(an.a, 0, room().xyz.data(), room().count, nullptr, 0), RS_SUCCESS);
+  std::vector<std::thread> threads;
+  std::atomic<int> failures{0};
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      for (int round = 0; round < 6; ++round) {
+        if (t < kThreads / 2) {
+          const uint64_t id = 1 + uint64_t(t);
+          if (rs_analyzer_set_chunk(an.a, id, room().xyz.data(), room().count, nullptr, 0) != RS_SUCCESS) ++failures;
+          const rs_result removed = rs_analyzer_remove_chunk(an.a, id);
+          if (removed != RS_SUCCESS) ++failures;
+          continue;
+        }
+        const rs_result started = rs_analyzer_compute_chunks(an.a);
+        if (started != RS_SUCCESS && started != RS_ERROR_BUSY) ++failures;
+        rs_state state = RS_STATE_IDLE;
+        if (rs_analyzer_wait(an.a, RS_WAIT_INFINITE, &state) != RS_SUCCESS || state != RS_STATE_READY) ++failures;
+        uint32_t count = 0;
+        const rs_result got = rs_analyzer_get_areas(an.a, 0, &count, nullptr);
+        if (got != RS_SUCCESS && got != RS_ERROR_NOT_READY) ++failures;
+      }
+    });
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(failures.load(), 0);
+  EXPECT_EQ(rs_analyzer_compute_chunks(an.a), RS_SUCCESS);  // ~Analyzer destroys it while it may still run
+}
+
 // Queries copy the result's RoomQueries out under the job's lock and run outside it: a compute that replaces the
 // result meanwhile must neither race them nor change an answer (the same room, so the same placements).
 TEST(CapiConcurrency, HandleQueriesOnEightThreadsDuringComputes) {

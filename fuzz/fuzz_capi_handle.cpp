@@ -64,23 +64,53 @@ void create(FuzzInput& in, rs_analyzer*& slot) {
   slot = out;
 }
 
-void compute(FuzzInput& in, rs_analyzer* a) {
-  const std::uint8_t how = in.u8();
-  const std::uint32_t vertex_count = in.u16() % 1025;
-  const std::vector<float> xyz = roomsense::fuzz::floats(in, 3 * std::size_t{vertex_count});
+// A scan as a caller passes it: up to 1024 vertices, maybe triangles (some indices out of range), maybe NULLs.
+struct CallerMesh {
+  std::vector<float> xyz;
   std::vector<std::uint32_t> indices;
+  const float* xyz_ptr = nullptr;
+  const std::uint32_t* index_ptr = nullptr;
+  std::uint32_t vertex_count = 0, index_count = 0;
+};
+CallerMesh caller_mesh(FuzzInput& in) {
+  CallerMesh m;
+  const std::uint8_t how = in.u8();
+  m.vertex_count = in.u16() % 1025;
+  m.xyz = roomsense::fuzz::floats(in, 3 * std::size_t{m.vertex_count});
   if (how & 2) {
     const std::uint32_t index_count = in.u16() % 901;
-    for (std::uint32_t i = 0; i < index_count; ++i) indices.push_back(in.u16() % (vertex_count + 1));
+    for (std::uint32_t i = 0; i < index_count; ++i) m.indices.push_back(in.u16() % (m.vertex_count + 1));
   }
-  const float* xyz_ptr = (how & 1) ? nullptr : xyz.data();
-  const std::uint32_t* index_ptr = (how & 4) ? nullptr : indices.data();
-  const std::uint32_t index_count = (how & 4) ? 0 : static_cast<std::uint32_t>(indices.size());
-  const rs_result r = rs_analyzer_compute(a, xyz_ptr, vertex_count, index_ptr, index_count);
+  m.xyz_ptr = (how & 1) ? nullptr : m.xyz.data();
+  m.index_ptr = (how & 4) ? nullptr : m.indices.data();
+  m.index_count = (how & 4) ? 0 : static_cast<std::uint32_t>(m.indices.size());
+  return m;
+}
+
+// What rs_analyzer_compute and rs_analyzer_set_chunk both check before anything else.
+void check_mesh_result(rs_result r, const rs_analyzer* a, const CallerMesh& m) {
   check(known(r), "a known result");
   if (a == nullptr) check(r == RS_ERROR_HANDLE_INVALID, "NULL analyzer");
-  else if (xyz_ptr == nullptr || vertex_count == 0) check(r == RS_ERROR_EMPTY_INPUT || r == RS_ERROR_BUSY, "empty input");
-  else if (index_count % 3 != 0) check(r == RS_ERROR_BAD_INDICES || r == RS_ERROR_BUSY, "bad index count");
+  else if (m.xyz_ptr == nullptr || m.vertex_count == 0) check(r == RS_ERROR_EMPTY_INPUT || r == RS_ERROR_BUSY, "empty input");
+  else if (m.index_count % 3 != 0) check(r == RS_ERROR_BAD_INDICES || r == RS_ERROR_BUSY, "bad index count");
+}
+
+void compute(FuzzInput& in, rs_analyzer* a) {
+  const CallerMesh m = caller_mesh(in);
+  check_mesh_result(rs_analyzer_compute(a, m.xyz_ptr, m.vertex_count, m.index_ptr, m.index_count), a, m);
+}
+
+// API 1.3: a chunk of id 0-3 set (or replaced), removed, or the chunks computed.
+void chunks(FuzzInput& in, rs_analyzer* a, int op) {
+  const std::uint64_t id = in.u8() % 4;
+  if (op == 0) {
+    const CallerMesh m = caller_mesh(in);
+    check_mesh_result(rs_analyzer_set_chunk(a, id, m.xyz_ptr, m.vertex_count, m.index_ptr, m.index_count), a, m);
+    return;
+  }
+  const rs_result r = op == 1 ? rs_analyzer_remove_chunk(a, id) : rs_analyzer_compute_chunks(a);
+  check(known(r), "a known result");
+  if (a == nullptr) check(r == RS_ERROR_HANDLE_INVALID, "NULL analyzer");
 }
 
 // A capacity for a two-call getter: 0, the count, one less, one more, or a small number.
@@ -233,7 +263,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   FuzzInput in(data, size);
   rs_analyzer* slots[2] = {nullptr, nullptr};
   for (int op = 0; op < 24 && !in.empty(); ++op) {
-    const std::uint8_t code = in.u8() % 13;
+    const std::uint8_t code = in.u8() % 16;
     rs_analyzer*& slot = slots[in.u8() % 2];
     switch (code) {
       case 0: create(in, slot); break;
@@ -281,6 +311,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       case 11: find_placements(in, slot); break;
       case 12: point_queries(in, slot); break;
+      case 13: case 14: case 15: chunks(in, slot, code - 13); break;
     }
   }
   rs_analyzer_destroy(slots[0]);

@@ -273,6 +273,28 @@ Bytes handle_seed(const Scan& s) {
   return out;
 }
 
+// fuzz_capi_handle, API 1.3: create, the scan as chunk 0, compute the chunks, wait, areas, chunk 0 removed,
+// compute the chunks (no chunk left), destroy.
+Bytes handle_chunks_seed(const Scan& s) {
+  Bytes out;
+  out.u8(0), out.u8(0);                                   // create, slot 0
+  out.u8(0), out.u8(0), out.u8(1), out.u8(1), out.u8(0), out.u8(0);  // how, struct_size, voxel, threads, flags, enums
+  out.u8(13), out.u8(0), out.u8(0);                       // set chunk, slot 0, id 0
+  out.u8(2);                                              // with indices
+  out.u16(static_cast<unsigned>(s.vertices.size()));
+  for (const glm::vec3& v : s.vertices)
+    for (int k = 0; k < 3; ++k) out.quantized(v[k]);
+  out.u16(static_cast<unsigned>(s.indices.size()));
+  for (const std::uint32_t i : s.indices) out.u16(i);
+  out.u8(15), out.u8(0), out.u8(0);                       // compute the chunks
+  out.u8(3), out.u8(0), out.u8(3);                        // wait, infinite
+  out.u8(6), out.u8(0), out.u8(0), out.u8(1);             // areas
+  out.u8(14), out.u8(0), out.u8(0);                       // remove chunk 0
+  out.u8(15), out.u8(0), out.u8(0);                       // compute the chunks: none left
+  out.u8(9), out.u8(0);                                   // destroy
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -298,7 +320,8 @@ int main(int argc, char** argv) {
     Scan s = capped(synth::generate(small_room(yaw, 0.0f)), 1024, 300);
     s.vertices = centred(s.vertices);
     write(root / "capi_handle" / ("small-" + std::to_string(static_cast<int>(yaw))), handle_seed(s));
-    ++files;
+    write(root / "capi_handle" / ("chunks-" + std::to_string(static_cast<int>(yaw))), handle_chunks_seed(s));
+    files += 2;
   }
   for (const Room& room : point_rooms()) {
     const std::vector<glm::vec3> points = centred(subsample(room.scan.vertices, 1024));

@@ -48,7 +48,7 @@ void expect_same(const AnalysisResult& got, const AnalysisResult& want, const st
 
 // Adds the tiles in a random order; after a third of them, and then every few steps, replaces one with its
 // refined version or removes one (and adds it back later). Compares with analyze() after every step.
-void replay(const Scan& scan, unsigned seed) {
+void replay(const Scan& scan, unsigned seed, bool keeps_voxels = true) {
   const std::map<std::uint64_t, Scan> tiles = split_into_blocks(scan, 2.0f);
   ASSERT_GE(tiles.size(), 2u);
   std::vector<std::uint64_t> order;
@@ -77,7 +77,7 @@ void replay(const Scan& scan, unsigned seed) {
       expect_same(got, want, what);
       // Under the grid of the previous step every step changes one chunk: at most that one is voxelized.
       const GridSpec& grid = got.voxels.grid.spec;
-      if (previous_grid && previous_grid->origin == grid.origin && previous_grid->nx == grid.nx &&
+      if (keeps_voxels && previous_grid && previous_grid->origin == grid.origin && previous_grid->nx == grid.nx &&
           previous_grid->ny == grid.ny && previous_grid->nz == grid.nz) {
         ++same_grid_steps;
         EXPECT_LE(inc.revoxelized_chunks(), 1u) << what << ": of " << inc.chunk_count() << " chunks";
@@ -111,7 +111,9 @@ void replay(const Scan& scan, unsigned seed) {
   EXPECT_TRUE(inc.reused_result());
   // Steps that leave the grid's extent as it was keep the other chunks' voxels (a step that moves it
   // voxelizes every chunk again); there are such steps in every room.
-  EXPECT_GT(same_grid_steps, 0u) << "of " << steps << " steps";
+  if (keeps_voxels) {
+    EXPECT_GT(same_grid_steps, 0u) << "of " << steps << " steps";
+  }
 }
 
 TEST(Incremental, SyntheticRoomsReplayedChunkByChunkEqualTheFullAnalysis) {
@@ -119,6 +121,10 @@ TEST(Incremental, SyntheticRoomsReplayedChunkByChunkEqualTheFullAnalysis) {
     SCOPED_TRACE(name);
     replay(synth::generate_builtin_source(name), 19);
   }
+  // A point cloud (vertex mode, Eq. 3.6): blocks of vertices; the voxel stage runs whole, the result is equal.
+  Scan cloud = synth::generate_builtin_source("synthetic:default");
+  cloud.indices.clear();
+  replay(cloud, 5, /*keeps_voxels=*/false);
 }
 
 class IncrementalRealRoom : public testing::TestWithParam<const char*> {};

@@ -63,8 +63,9 @@ class IncrementalAnalysis {
 };
 
 // The scan cut into square tiles of the floor plan (`tile` metres, by each triangle's centroid), as a
-// headset's mesh blocks: each tile's triangles with their own vertices, and its labelled triangles likewise;
-// the key orders tiles by x, then z. For replaying a recorded room chunk by chunk (tests, benchmarks).
+// headset's mesh blocks: each tile's triangles with their own vertices (a point cloud's vertices by position),
+// and its labelled triangles likewise; the key orders tiles by x, then z. For replaying a recorded room chunk
+// by chunk (tests, benchmarks).
 std::map<std::uint64_t, Scan> split_into_blocks(const Scan& scan, float tile = 2.0f);
 
 }  // namespace roomsense

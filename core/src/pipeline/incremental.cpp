@@ -250,6 +250,8 @@ std::map<std::uint64_t, Scan> split_into_blocks(const Scan& scan, float tile) {
     const std::uint64_t k = key(scan.vertices[i[0]], scan.vertices[i[1]], scan.vertices[i[2]]);
     add(out[k].vertices, out[k].indices, mesh_remap[k], scan.vertices, i);
   }
+  if (scan.indices.empty())  // a point cloud: each vertex to its own tile
+    for (const glm::vec3& v : scan.vertices) out[key(v, v, v)].vertices.push_back(v);
   const LabelledTriangles& l = scan.labels;
   for (std::size_t t = 0; t + 2 < l.indices.size(); t += 3) {
     const std::uint32_t* i = &l.indices[t];

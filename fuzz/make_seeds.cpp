@@ -237,18 +237,28 @@ Bytes thesis_seed(const std::vector<glm::vec3>& points) {
   return out;
 }
 
-// fuzz_capi_handle: create (defaults, 0.1 m), compute (triangles), wait, then every getter and query, destroy.
-Bytes handle_seed(const Scan& s) {
-  Bytes out;
+// fuzz_capi_handle's create of slot 0 with the defaults (0.1 m voxels).
+void handle_create(Bytes& out) {
   out.u8(0), out.u8(0);                                   // create, slot 0
   out.u8(0), out.u8(0), out.u8(1), out.u8(1), out.u8(0), out.u8(0);  // how, struct_size, voxel, threads, flags, enums
-  out.u8(1), out.u8(0);                                   // compute, slot 0
+}
+
+// fuzz_capi_handle's caller mesh (caller_mesh): the scan with its triangles.
+void handle_mesh(Bytes& out, const Scan& s) {
   out.u8(2);                                              // with indices
   out.u16(static_cast<unsigned>(s.vertices.size()));
   for (const glm::vec3& v : s.vertices)
     for (int k = 0; k < 3; ++k) out.quantized(v[k]);
   out.u16(static_cast<unsigned>(s.indices.size()));
   for (const std::uint32_t i : s.indices) out.u16(i);
+}
+
+// fuzz_capi_handle: create (defaults, 0.1 m), compute (triangles), wait, then every getter and query, destroy.
+Bytes handle_seed(const Scan& s) {
+  Bytes out;
+  handle_create(out);
+  out.u8(1), out.u8(0);                                   // compute, slot 0
+  handle_mesh(out, s);
   out.u8(3), out.u8(0), out.u8(3);                        // wait, infinite
   out.u8(4), out.u8(0), out.u8(0);                        // layout
   out.u8(5), out.u8(0), out.u8(0), out.u8(1);             // storeys, capacity = count
@@ -277,15 +287,9 @@ Bytes handle_seed(const Scan& s) {
 // compute the chunks (no chunk left), destroy.
 Bytes handle_chunks_seed(const Scan& s) {
   Bytes out;
-  out.u8(0), out.u8(0);                                   // create, slot 0
-  out.u8(0), out.u8(0), out.u8(1), out.u8(1), out.u8(0), out.u8(0);  // how, struct_size, voxel, threads, flags, enums
+  handle_create(out);
   out.u8(13), out.u8(0), out.u8(0);                       // set chunk, slot 0, id 0
-  out.u8(2);                                              // with indices
-  out.u16(static_cast<unsigned>(s.vertices.size()));
-  for (const glm::vec3& v : s.vertices)
-    for (int k = 0; k < 3; ++k) out.quantized(v[k]);
-  out.u16(static_cast<unsigned>(s.indices.size()));
-  for (const std::uint32_t i : s.indices) out.u16(i);
+  handle_mesh(out, s);
   out.u8(15), out.u8(0), out.u8(0);                       // compute the chunks
   out.u8(3), out.u8(0), out.u8(3);                        // wait, infinite
   out.u8(6), out.u8(0), out.u8(0), out.u8(1);             // areas

@@ -265,6 +265,24 @@ rs_result copy_out(const std::vector<T>& from, std::uint32_t capacity, std::uint
   return RS_SUCCESS;
 }
 
+// What rs_analyzer_compute and rs_analyzer_set_chunk take: 3 floats per vertex, indices into them.
+rs_result check_caller_mesh(const float* xyz, uint32_t vertex_count, const uint32_t* indices, uint32_t index_count) {
+  if (xyz == nullptr || vertex_count == 0) return RS_ERROR_EMPTY_INPUT;
+  if (index_count % 3 != 0 || (indices == nullptr && index_count != 0)) return RS_ERROR_BAD_INDICES;
+  for (uint32_t i = 0; i < index_count; ++i)
+    if (indices[i] >= vertex_count) return RS_ERROR_BAD_INDICES;
+  return RS_SUCCESS;
+}
+
+// The caller's mesh copied into a Scan (check_caller_mesh passed).
+Scan caller_scan(const float* xyz, uint32_t vertex_count, const uint32_t* indices, uint32_t index_count) {
+  Scan scan;
+  scan.vertices.resize(vertex_count);
+  for (std::size_t i = 0; i < vertex_count; ++i) scan.vertices[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  if (index_count != 0) scan.indices.assign(indices, indices + index_count);
+  return scan;
+}
+
 rs_result guarded(auto&& body) {
   try {
     return body();
@@ -475,17 +493,10 @@ void rs_analyzer_destroy(rs_analyzer* analyzer) {
 rs_result rs_analyzer_compute(rs_analyzer* analyzer, const float* xyz, uint32_t vertex_count, const uint32_t* indices,
                               uint32_t index_count) {
   if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
-  if (xyz == nullptr || vertex_count == 0) return RS_ERROR_EMPTY_INPUT;
-  if (index_count % 3 != 0 || (indices == nullptr && index_count != 0)) return RS_ERROR_BAD_INDICES;
-  for (uint32_t i = 0; i < index_count; ++i)
-    if (indices[i] >= vertex_count) return RS_ERROR_BAD_INDICES;
+  if (const rs_result bad = check_caller_mesh(xyz, vertex_count, indices, index_count); bad != RS_SUCCESS) return bad;
   if (analyzer->job.phase() == JobPhase::Running) return RS_ERROR_BUSY;  // before copying a large scan
   return guarded([&] {
-    roomsense::Scan scan;
-    scan.vertices.resize(vertex_count);
-    for (std::size_t i = 0; i < vertex_count; ++i)
-      scan.vertices[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
-    scan.indices.assign(indices, indices + index_count);
+    roomsense::Scan scan = caller_scan(xyz, vertex_count, indices, index_count);
     const roomsense::SourceFrame frame = analyzer->frame;
     roomsense::AnalysisOptions options = analyzer->options;
     try {
@@ -505,15 +516,9 @@ rs_result rs_analyzer_compute(rs_analyzer* analyzer, const float* xyz, uint32_t 
 rs_result rs_analyzer_set_chunk(rs_analyzer* analyzer, uint64_t chunk_id, const float* xyz, uint32_t vertex_count,
                                 const uint32_t* indices, uint32_t index_count) {
   if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
-  if (xyz == nullptr || vertex_count == 0) return RS_ERROR_EMPTY_INPUT;
-  if (index_count % 3 != 0 || (indices == nullptr && index_count != 0)) return RS_ERROR_BAD_INDICES;
-  for (uint32_t i = 0; i < index_count; ++i)
-    if (indices[i] >= vertex_count) return RS_ERROR_BAD_INDICES;
+  if (const rs_result bad = check_caller_mesh(xyz, vertex_count, indices, index_count); bad != RS_SUCCESS) return bad;
   return guarded([&] {
-    roomsense::Scan chunk;
-    chunk.vertices.resize(vertex_count);
-    for (std::size_t i = 0; i < vertex_count; ++i) chunk.vertices[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
-    chunk.indices.assign(indices, indices + index_count);
+    roomsense::Scan chunk = caller_scan(xyz, vertex_count, indices, index_count);
     roomsense::convert_to_roomsense_frame(chunk, analyzer->frame);
     const std::lock_guard lock(analyzer->chunks.mutex);
     analyzer->chunks.pending.insert_or_assign(chunk_id, std::move(chunk));

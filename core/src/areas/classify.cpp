@@ -74,7 +74,7 @@ glm::vec3 normal_bits_direction(std::uint8_t bits) {
 
 Area to_area(const Sized& found, AreaType type, const PlacementContext& ctx) {
   const GridSpec& s = ctx.spec;
-  const Candidate& c = found.c;
+  const Candidate c = found.c();
   const float voxel = s.voxel_size;
   Area a;
   a.type = type;

@@ -140,6 +140,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   std::array<std::vector<Sized>, 2> deduplicated;
   std::array<std::size_t, 4> deduplicated_count{deduplicated_walls.size()};
   std::array<std::vector<std::size_t>, 4> kept;
+  std::array<std::size_t, 4> found_count{};
   deduplicated[0] = std::move(deduplicated_walls);
   // Eq. 3.54-3.57 for the kept rectangles, which then grow into the surface packing left free (grow.h): per
   // type, in the same task as its packing, so that no type waits for the others'.
@@ -160,6 +161,11 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
     kept[type] = type == 0 ? pack_walls(all)
                            : pack_squares(all, type == 3 ? params.reduction_offset - 1 : 0, dominant_deg, is_tile);
     for (std::size_t i : kept[type]) kept_areas[type].push_back(to_area(all[i], kAreaTypes[type], context));
+    // Growth needs only the kept areas: the candidates go before it allocates its sample table.
+    for (std::size_t size = 0; size < found[type].size(); ++size) {
+      found_count[type] += found[type][size].size();
+      Candidates().swap(found[type][size]);
+    }
     if (params.grow) grow_areas(kept_areas[type], growth_rule(spec, features, params, type), params, stop);
   };
   // The walls' reduction needs only the wall searches: it runs beside the nine square searches.
@@ -174,7 +180,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   clock = std::chrono::steady_clock::now();
   parallel_tasks(3, threads, [&](std::size_t type) { reduce(type + 1); });
   for (std::size_t type = 0; type < 4; ++type) {
-    for (const Candidates& c : found[type]) result.counts.found[type] += c.size();
+    result.counts.found[type] = found_count[type];
     result.counts.deduplicated[type] = deduplicated_count[type];
     result.counts.reduced[type] = kept[type].size();
   }

@@ -14,10 +14,10 @@ class KeyTable {
 
   // The value stored for key, or kAbsent.
   std::uint32_t find(std::uint64_t key) const {
-    if (slots_.empty()) return kAbsent;
+    if (keys_.empty()) return kAbsent;
     for (std::size_t i = home(key);; i = (i + 1) & mask_) {
-      if (slots_[i].key == key) return slots_[i].value;
-      if (slots_[i].key == kEmpty) return kAbsent;
+      if (keys_[i] == key) return values_[i];
+      if (keys_[i] == kEmpty) return kAbsent;
     }
   }
   bool contains(std::uint64_t key) const { return find(key) != kAbsent; }
@@ -25,11 +25,12 @@ class KeyTable {
   // Stores value for key unless key is there already (as std::unordered_map::emplace). Returns whether it
   // stored.
   bool insert(std::uint64_t key, std::uint32_t value = 0) {
-    if (2 * (size_ + 1) > slots_.size()) grow();
+    if (4 * (size_ + 1) > 3 * keys_.size()) grow();  // at most three quarters full
     for (std::size_t i = home(key);; i = (i + 1) & mask_) {
-      if (slots_[i].key == key) return false;
-      if (slots_[i].key == kEmpty) {
-        slots_[i] = {key, value};
+      if (keys_[i] == key) return false;
+      if (keys_[i] == kEmpty) {
+        keys_[i] = key;
+        values_[i] = value;
         ++size_;
         return true;
       }
@@ -41,10 +42,6 @@ class KeyTable {
  private:
   // pack_key uses 63 bits, so no cell has this key.
   static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
-  struct Slot {
-    std::uint64_t key = kEmpty;
-    std::uint32_t value = 0;
-  };
 
   std::size_t home(std::uint64_t key) const {
     // The finaliser of splitmix64: neighbouring cells' keys differ in their low bits of each axis.
@@ -57,15 +54,19 @@ class KeyTable {
   }
 
   void grow() {
-    std::vector<Slot> old = std::move(slots_);
-    slots_.assign(old.empty() ? 1024 : 2 * old.size(), Slot{});
-    mask_ = slots_.size() - 1;
+    const std::vector<std::uint64_t> old_keys = std::move(keys_);
+    const std::vector<std::uint32_t> old_values = std::move(values_);
+    keys_.assign(old_keys.empty() ? 1024 : 2 * old_keys.size(), kEmpty);
+    values_.assign(keys_.size(), 0);
+    mask_ = keys_.size() - 1;
     size_ = 0;
-    for (const Slot& s : old)
-      if (s.key != kEmpty) insert(s.key, s.value);
+    for (std::size_t i = 0; i < old_keys.size(); ++i)
+      if (old_keys[i] != kEmpty) insert(old_keys[i], old_values[i]);
   }
 
-  std::vector<Slot> slots_;
+  // Keys and values apart: 12 bytes a slot, not a padded 16 (a 50 x 50 m floor has millions of samples).
+  std::vector<std::uint64_t> keys_;
+  std::vector<std::uint32_t> values_;
   std::size_t mask_ = 0, size_ = 0;
 };
 

@@ -121,7 +121,7 @@ SampleBox sample_box(const SizedList& rects) {
   if (rects.size() == 0) return {};
   SampleBox b{LONG_MAX, LONG_MIN, LONG_MAX, LONG_MIN, LONG_MAX, LONG_MIN};
   for (std::size_t i = 0; i < rects.size(); ++i)
-    for (const glm::ivec3& k : rects[i].c.corners) {
+    for (const glm::ivec3& k : rects[i].c().corners) {
       b.x_lo = std::min(b.x_lo, 2L * k.x - 4), b.x_hi = std::max(b.x_hi, 2L * k.x + 4);
       b.y_lo = std::min(b.y_lo, 2L * k.y - 4), b.y_hi = std::max(b.y_hi, 2L * k.y + 4);
       b.z_lo = std::min(b.z_lo, 2L * k.z - 4), b.z_hi = std::max(b.z_hi, 2L * k.z + 4);
@@ -140,12 +140,13 @@ std::vector<Sized> deduplicate_centres(const std::array<Candidates, 3>& by_size)
   // Centre voxels lie within the corners' box: a bit per voxel of it, rows along y.
   glm::ivec3 lo(INT_MAX), hi(INT_MIN);
   for (const Candidates& size : by_size)
-    for (const Candidate& c : size)
-      for (const glm::ivec3& k : c.corners) lo = glm::min(lo, k), hi = glm::max(hi, k);
+    for (const PackedCandidate& p : size)
+      for (const glm::ivec3& k : p.unpack().corners) lo = glm::min(lo, k), hi = glm::max(hi, k);
   SampleRaster marked(lo.x, hi.x, lo.z, hi.z, lo.y, hi.y);
   std::vector<Sized> out;
   for (std::size_t s = 0; s < by_size.size(); ++s)
-    for (const Candidate& c : by_size[s]) {
+    for (const PackedCandidate& p : by_size[s]) {
+      const Candidate c = p.unpack();
       const glm::ivec3 sum = corner_sum(c);
       int xs[2], ys[2], zs[2];
       const int nx = centre_voxels(sum.x, xs), ny = centre_voxels(sum.y, ys), nz = centre_voxels(sum.z, zs);
@@ -158,7 +159,7 @@ std::vector<Sized> deduplicate_centres(const std::array<Candidates, 3>& by_size)
       if (any_marked()) continue;
       for (int i = 0; i < nx; ++i)
         for (int k = 0; k < nz; ++k) marked.set(xs[i], zs[k], ys[0], ys[ny - 1]);
-      out.push_back({c, kAreaSizes[s]});
+      out.push_back({p, kAreaSizes[s]});
     }
   return out;
 }
@@ -166,7 +167,8 @@ std::vector<Sized> deduplicate_centres(const std::array<Candidates, 3>& by_size)
 double dominant_direction_deg(const std::vector<Sized>& walls) {
   std::array<double, 90> weight{};
   for (const Sized& w : walls) {
-    const glm::ivec3 e = w.c.corners[1] - w.c.corners[0];
+    const Candidate c = w.c();
+    const glm::ivec3 e = c.corners[1] - c.corners[0];
     weight[std::size_t(std::lround(angle_mod_90(e.x, e.z))) % 90] += std::hypot(double(e.x), double(e.z));
   }
   std::size_t best = 0;
@@ -189,7 +191,7 @@ std::vector<std::size_t> pack_walls(const SizedList& walls) {
   SampleRaster taken(box.x_lo, box.x_hi, box.z_lo, box.z_hi, box.y_lo, box.y_hi);
   std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < walls.size(); ++i) {
-    const Candidate c = walls[i].c;
+    const Candidate c = walls[i].c();
     const bool free =
         wall_samples(c, 0, [&](long x, long z, long y0, long y1) { return !taken.any(x, z, y0, y1); });
     if (!free) continue;
@@ -305,8 +307,8 @@ std::vector<std::size_t> pack_squares(const SizedList& squares, int level_tolera
   std::vector<std::uint64_t> keys(squares.size());
   for (std::size_t i = 0; i < squares.size(); ++i) {
     const Sized q = squares[i];
-    const std::uint64_t away = std::uint64_t((1 << kContactBits) - 1 - std::min(contact(q.c), (1 << kContactBits) - 1));
-    keys[i] = (std::uint64_t(q.size) << 62) | (std::uint64_t(misalignment_step(q.c)) << 56) | (away << 32) |
+    const std::uint64_t away = std::uint64_t((1 << kContactBits) - 1 - std::min(contact(q.c()), (1 << kContactBits) - 1));
+    keys[i] = (std::uint64_t(q.size) << 62) | (std::uint64_t(misalignment_step(q.c())) << 56) | (away << 32) |
               std::uint64_t(i);
   }
   std::sort(keys.begin(), keys.end());
@@ -315,7 +317,7 @@ std::vector<std::size_t> pack_squares(const SizedList& squares, int level_tolera
   std::vector<std::size_t> kept;
   for (const std::uint64_t key : keys) {
     const std::size_t i = std::size_t(key & 0xffffffffu);
-    const Candidate c = squares[i].c;
+    const Candidate c = squares[i].c();
     const int level = c.corners[0].y;
     bool free = true;
     for (int y = level - level_tolerance; y <= level + level_tolerance && free; ++y)

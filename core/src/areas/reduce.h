@@ -11,8 +11,9 @@
 namespace roomsense::detail {
 
 struct Sized {
-  Candidate c;
+  PackedCandidate packed;
   AreaSize size = AreaSize::Large;
+  Candidate c() const { return packed.unpack(); }
 };
 
 // The rectangles of one type, large, then medium, then small, indexed as one list: packing reads the searches'

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace roomsense::detail {
 namespace {
@@ -34,17 +35,22 @@ class BoxCounts {
   std::vector<int> sums_;
 };
 
-// One bit per possible centre of one level, indexed by 4 x the centre (Eq. 3.42).
+// One bit per possible centre of one level, indexed by 4 x the centre (Eq. 3.42). The bits exist from the first
+// insert until release(): of furniture's many levels, only those with tops and only two at a time need them.
 class CentreSet {
  public:
-  CentreSet(const GridSpec& spec) : width_(4 * std::size_t(spec.nx)), bits_(width_ * 4 * std::size_t(spec.nz)) {}
-  bool contains(glm::ivec3 sum) const { return bits_.test(bit(sum)); }
-  void insert(glm::ivec3 sum) { bits_.set(bit(sum)); }
+  CentreSet(const GridSpec& spec) : width_(4 * std::size_t(spec.nx)), height_(4 * std::size_t(spec.nz)) {}
+  bool contains(glm::ivec3 sum) const { return bits_ && bits_->test(bit(sum)); }
+  void insert(glm::ivec3 sum) {
+    if (!bits_) bits_.emplace(width_ * height_);
+    bits_->set(bit(sum));
+  }
+  void release() { bits_.reset(); }
 
  private:
   std::size_t bit(glm::ivec3 sum) const { return std::size_t(sum.z) * width_ + std::size_t(sum.x); }
-  std::size_t width_;
-  BitSet bits_;
+  std::size_t width_, height_;
+  std::optional<BitSet> bits_;
 };
 
 }  // namespace
@@ -106,7 +112,7 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
       corner_offsets[std::size_t(p)].push_back({at(x1, z1), at(x1 + o.dx, z1 + o.dz),
                                                 at(x1 + o.dx - o.dz, z1 + o.dz + o.dx), at(x1 - o.dz, z1 + o.dx)});
     }
-  for (int layer = 0; layer < layers; ++layer) {
+  for (int layer = 0; layer < layers; centres[std::size_t(layer++)].release()) {  // later layers never read it
     const int y1 = by_facet ? features.facets[std::size_t(layer)].level : y_from + layer;
     // Corner 1 must be a tile of this level; the other cells may also be one level higher (§3.3.4).
     std::vector<std::uint8_t> tile(spec.column_count(), 0), first(spec.column_count(), 0);
@@ -189,9 +195,6 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
           if (!(centre[k.c1] & 2) || !(centre[k.c2] & centre[k.c3] & centre[k.c4] & 1)) continue;
           const RingOffset& o = orientations[i];
           const int x1 = (cx - (o.dx - o.dz)) / 2, z1 = (cz - (o.dx + o.dz)) / 2;
-          const int x2 = x1 + o.dx, z2 = z1 + o.dz;
-          const int x3 = x2 - o.dz, z3 = z2 + o.dx;  // Eq. 3.28
-          const int x4 = x1 - o.dz, z4 = z1 + o.dx;
           bool rises = false;
           if (!valid(x1, z1, o, rises)) continue;
           bool& needed = rises ? need_above : need_here;
@@ -199,7 +202,7 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
           needed = false;
           (rises ? above : here).insert(sum);
           const int y = rises ? y1 + 1 : y1;  // y_Actual, Eq. 3.41
-          out.push_back({{glm::ivec3(x1, y, z1), glm::ivec3(x2, y, z2), glm::ivec3(x3, y, z3), glm::ivec3(x4, y, z4)}});
+          out.push_back(PackedCandidate::square(glm::ivec3(x1, y, z1), o.dx, o.dz));
         }
       }
   }

@@ -22,33 +22,50 @@ std::uint8_t compatible_normals(std::uint8_t first) {
 }  // namespace
 
 int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
-  const std::size_t base = column * std::size_t(levels + 1);
-  return int(prefix[base + std::size_t(y_to - y0 + 1)]) - int(prefix[base + std::size_t(y_from - y0)]);
+  const std::size_t base = column * std::size_t(levels + 1), hi = base + std::size_t(y_to - y0 + 1),
+                    lo = base + std::size_t(y_from - y0);
+  return prefix8.empty() ? int(prefix16[hi]) - int(prefix16[lo]) : int(prefix8[hi]) - int(prefix8[lo]);
 }
 
 bool NormalCounts::blocked(std::size_t column, int y_from, int y_to) const {
-  if (blocked_prefix.empty()) return false;
-  const std::size_t base = column * std::size_t(levels + 1);
-  return blocked_prefix[base + std::size_t(y_to - y0 + 1)] != blocked_prefix[base + std::size_t(y_from - y0)];
+  if (blocked_bits.empty()) return false;
+  const std::uint64_t* words = blocked_bits.data() + column * blocked_words;
+  for (int y = y_from - y0, last = y_to - y0; y <= last;) {  // a word at a time: one for most rooms
+    const int bit = y % 64, run = std::min(64 - bit, last - y + 1);
+    const std::uint64_t mask = (run == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << run) - 1) << bit;
+    if (words[y / 64] & mask) return true;
+    y += run;
+  }
+  return false;
 }
 
 NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   NormalCounts n;
   n.y0 = features.levels.floor;
-  // 16-bit counts: a room taller than 65535 voxels has no wall areas above that.
+  // 16-bit counts at most: a room taller than 65535 voxels has no wall areas above that.
   n.levels = std::min({features.levels.ceiling - n.y0 + 1, spec.ny - n.y0,
                        int(std::numeric_limits<std::uint16_t>::max())});
   const std::size_t stride = std::size_t(n.levels + 1);
-  const auto prefix_of = [&](const std::vector<std::uint8_t>& per_voxel, std::vector<std::uint16_t>& prefix) {
+  const auto prefix_of = [&]<class Count>(std::vector<Count>& prefix) {
     prefix.assign(spec.column_count() * stride, 0);
     for (std::size_t col = 0; col < spec.column_count(); ++col) {
-      const std::uint8_t* f = per_voxel.data() + col * std::size_t(spec.ny) + n.y0;
-      std::uint16_t* p = prefix.data() + col * stride;
-      for (int i = 0; i < n.levels; ++i) p[i + 1] = std::uint16_t(p[i] + (f[i] != 0 ? 1 : 0));
+      const std::uint8_t* f = features.normals.data() + col * std::size_t(spec.ny) + n.y0;
+      Count* p = prefix.data() + col * stride;
+      for (int i = 0; i < n.levels; ++i) p[i + 1] = Count(p[i] + (f[i] != 0 ? 1 : 0));
     }
   };
-  prefix_of(features.normals, n.prefix);
-  if (!features.wall_blocked.empty()) prefix_of(features.wall_blocked, n.blocked_prefix);
+  if (n.levels < 256) prefix_of(n.prefix8);
+  else prefix_of(n.prefix16);
+  if (!features.wall_blocked.empty()) {
+    n.blocked_words = std::size_t(n.levels + 63) / 64;
+    n.blocked_bits.assign(spec.column_count() * n.blocked_words, 0);
+    for (std::size_t col = 0; col < spec.column_count(); ++col) {
+      const std::uint8_t* b = features.wall_blocked.data() + col * std::size_t(spec.ny) + n.y0;
+      std::uint64_t* words = n.blocked_bits.data() + col * n.blocked_words;
+      for (int i = 0; i < n.levels; ++i)
+        if (b[i] != 0) words[i / 64] |= std::uint64_t{1} << (i % 64);
+    }
+  }
   return n;
 }
 
@@ -110,8 +127,7 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
           if (centres.test(bit)) continue;
           if (!valid(x1, z1, o, y1, h)) continue;
           centres.set(bit);
-          out.push_back({{glm::ivec3(x1, y1, z1), glm::ivec3(x2, y1, z2), glm::ivec3(x2, y1 - h, z2),
-                          glm::ivec3(x1, y1 - h, z1)}});
+          out.push_back(PackedCandidate::wall(glm::ivec3(x1, y1, z1), glm::ivec3(x2, y1, z2), h));
         }
       }
   return out;

@@ -2,12 +2,14 @@
 // that mark its centre (Eq. 3.42/3.43).
 #pragma once
 #include "roomsense/areas.h"
+#include "roomsense/grid.h"
 
 #include <glm/vec3.hpp>
 
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <stdexcept>
 #include <vector>
 
 namespace roomsense::detail {
@@ -19,17 +21,12 @@ struct Candidate {
   std::array<glm::ivec3, 4> corners{};
 };
 
-// A search's rectangle as it is stored until reduction: corner 1, the edge to corner 2 (level along y), and the
-// side to corner 4, which a wall has straight down and a square at a right angle in the plane. 24 bytes in place
-// of 48: a large floor's searches find millions (issue 19's memory bound).
+// A rectangle as reduction keeps it: corner 1, the edge to corner 2 (level along y), and the side to corner 4,
+// which a wall has straight down and a square at a right angle in the plane. 24 bytes in place of 48.
 class PackedCandidate {
  public:
-  // Eq. 3.26: p1, p2 on the top edge, h voxels high.
-  static PackedCandidate wall(glm::ivec3 p1, glm::ivec3 p2, int h) {
-    return {p1, p2.x - p1.x, p2.z - p1.z, h};
-  }
-  // Eq. 3.28: v1, then v2 = v1 + (dx, 0, dz).
-  static PackedCandidate square(glm::ivec3 v1, int dx, int dz) { return {v1, dx, dz, kSquare}; }
+  static constexpr std::int32_t kSquare = -1;  // as side: a wall's height is never negative
+  PackedCandidate(glm::ivec3 p1, int dx, int dz, int side) : x_(p1.x), y_(p1.y), z_(p1.z), dx_(dx), dz_(dz), side_(side) {}
 
   Candidate unpack() const {
     const glm::ivec3 p1(x_, y_, z_), p2 = p1 + glm::ivec3(dx_, 0, dz_);
@@ -38,13 +35,49 @@ class PackedCandidate {
   }
 
  private:
-  static constexpr std::int32_t kSquare = -1;  // a wall's height is never negative
-  PackedCandidate(glm::ivec3 p1, int dx, int dz, int side) : x_(p1.x), y_(p1.y), z_(p1.z), dx_(dx), dz_(dz), side_(side) {}
   std::int32_t x_, y_, z_, dx_, dz_, side_;
 };
 
-// In blocks: a search's list grows without the copy (and the twice-the-size buffer) of a vector's growth.
-using Candidates = std::deque<PackedCandidate>;
+// A search's rectangles until reduction, 12 bytes each: corner 1's cell, and which of the search's corner offsets
+// (its ring, with the wall height or square that goes with each) gives the rest. A large floor's searches find
+// millions (issue 19's memory bound). In blocks: the list grows without a vector's copies.
+class Candidates {
+ public:
+  struct Shape {
+    int dx = 0, dz = 0;                     // corner 2 - corner 1
+    int side = PackedCandidate::kSquare;    // a wall's height h (Eq. 3.20), or kSquare
+  };
+
+  Candidates() = default;
+  // Corner 1 lies in the grid's columns, at a level in [0, levels).
+  Candidates(const GridSpec& spec, int levels, std::vector<Shape> shapes)
+      : nx_(std::size_t(spec.nx)), levels_(std::size_t(levels)), shapes_(std::move(shapes)) {}
+
+  void push_back(glm::ivec3 first, std::uint32_t shape) {
+    if (first.x < 0 || first.y < 0 || first.z < 0 || std::size_t(first.x) >= nx_ || std::size_t(first.y) >= levels_ ||
+        shape >= shapes_.size())
+      throw std::logic_error("a candidate outside its search's grid");
+    cells_.push_back((std::uint64_t(first.z) * nx_ + std::uint64_t(first.x)) * levels_ + std::uint64_t(first.y));
+    shape_of_.push_back(shape);
+  }
+  std::size_t size() const { return cells_.size(); }
+  bool empty() const { return cells_.empty(); }
+  PackedCandidate operator[](std::size_t i) const {
+    const std::uint64_t cell = cells_[i], column = cell / levels_;
+    const Shape& s = shapes_[shape_of_[i]];
+    return {glm::ivec3(int(column % nx_), int(cell % levels_), int(column / nx_)), s.dx, s.dz, s.side};
+  }
+  PackedCandidate at(std::size_t i) const {
+    if (i >= size()) throw std::out_of_range("Candidates::at");
+    return (*this)[i];
+  }
+
+ private:
+  std::size_t nx_ = 1, levels_ = 1;
+  std::vector<Shape> shapes_;
+  std::deque<std::uint64_t> cells_;
+  std::deque<std::uint32_t> shape_of_;
+};
 
 // 4 x the centre of Eq. 3.42, exact in integers.
 inline glm::ivec3 corner_sum(const Candidate& c) {

@@ -164,7 +164,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
     // Growth needs only the kept areas: the candidates go before it allocates its sample table.
     for (std::size_t size = 0; size < found[type].size(); ++size) {
       found_count[type] += found[type][size].size();
-      Candidates().swap(found[type][size]);
+      found[type][size] = Candidates();
     }
     if (params.grow) grow_areas(kept_areas[type], growth_rule(spec, features, params, type), params, stop);
   };

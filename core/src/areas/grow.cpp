@@ -2,7 +2,7 @@
 #include "grow.h"
 
 #include "candidate.h"
-#include "key_table.h"
+#include "sample_owners.h"
 #include "roomsense/cancel.h"
 
 #include <glm/geometric.hpp>
@@ -13,11 +13,10 @@
 namespace roomsense::detail {
 namespace {
 
-std::uint64_t sample_key(const glm::vec3& p, float step) {
+glm::ivec3 sample_cell(const glm::vec3& p, float step) {
   // The bias keeps points that lie exactly on a cell border (walls' voxel centres, furniture levels) in one
   // cell whatever the rounding of the sum that gave them.
-  const glm::ivec3 q(glm::floor(p / step + 1e-4f));
-  return pack_key(q.x, q.y, q.z);
+  return glm::ivec3(glm::floor(p / step + 1e-4f));
 }
 
 // An area as a rectangle [u0, u1] x [v0, v1] on the axes of its first corner; samples lie at half a step
@@ -76,8 +75,9 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
   }
 
   // Which area holds each sample cell. Opposite faces of a thin wall lie a voxel apart and never conflict.
-  KeyTable owner;
-  const auto mark = [&](std::uint32_t k, const glm::vec3& p) { owner.insert(sample_key(p, h), k); };
+  const bool horizontal = std::all_of(areas.begin(), areas.end(), [](const Area& a) { return std::fabs(a.normal.y) > 0.5f; });
+  SampleOwners owner(horizontal ? glm::ivec3(3, 0, 3) : glm::ivec3(2, 2, 2));
+  const auto mark = [&](std::uint32_t k, const glm::vec3& p) { owner.insert(sample_cell(p, h), k); };
   for (std::uint32_t k = 0; k < extents.size(); ++k) {
     const Extent& e = extents[k];
     for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
@@ -86,8 +86,8 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
   }
   const auto conflicts = [&](std::uint32_t k, const glm::vec3& p) {
     for (const float depth : rule.conflict_depths) {
-      const std::uint32_t other = owner.find(sample_key(p + depth * areas[k].normal, h));
-      if (other != KeyTable::kAbsent && other != k && glm::dot(areas[other].normal, areas[k].normal) > 0.0f)
+      const std::uint32_t other = owner.find(sample_cell(p + depth * areas[k].normal, h));
+      if (other != SampleOwners::kAbsent && other != k && glm::dot(areas[other].normal, areas[k].normal) > 0.0f)
         return true;
     }
     return false;

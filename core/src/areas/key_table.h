@@ -1,7 +1,7 @@
-// A hash table from packed cell keys (candidate.h's pack_key) to a 32-bit value, for the sample cells growth
-// marks (world positions, unbounded: packing's bounded boxes use sample_raster.h): open addressing with linear
-// probing in one array, so a lookup is a multiply and a probe or two, and an insert allocates only when the
-// table doubles (std::unordered_map allocated a node per cell).
+// A hash table from packed cell keys (candidate.h's pack_key) to a 32-bit value, for the tiles of growth's
+// sample owners (sample_owners.h; world positions, unbounded: packing's bounded boxes use sample_raster.h): open
+// addressing with linear probing, so a lookup is a multiply and a probe or two, and an insert allocates only
+// when the table doubles (std::unordered_map allocated a node per cell).
 #pragma once
 #include <cstdint>
 #include <vector>

@@ -140,12 +140,13 @@ std::vector<Sized> deduplicate_centres(const std::array<Candidates, 3>& by_size)
   // Centre voxels lie within the corners' box: a bit per voxel of it, rows along y.
   glm::ivec3 lo(INT_MAX), hi(INT_MIN);
   for (const Candidates& size : by_size)
-    for (const PackedCandidate& p : size)
-      for (const glm::ivec3& k : p.unpack().corners) lo = glm::min(lo, k), hi = glm::max(hi, k);
+    for (std::size_t i = 0; i < size.size(); ++i)
+      for (const glm::ivec3& k : size[i].unpack().corners) lo = glm::min(lo, k), hi = glm::max(hi, k);
   SampleRaster marked(lo.x, hi.x, lo.z, hi.z, lo.y, hi.y);
   std::vector<Sized> out;
   for (std::size_t s = 0; s < by_size.size(); ++s)
-    for (const PackedCandidate& p : by_size[s]) {
+    for (std::size_t i = 0; i < by_size[s].size(); ++i) {
+      const PackedCandidate p = by_size[s][i];
       const Candidate c = p.unpack();
       const glm::ivec3 sum = corner_sum(c);
       int xs[2], ys[2], zs[2];

@@ -79,7 +79,16 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
   if (surface == Surface::Furniture) y_to = features.y_end;
   const int layers = by_facet ? int(features.facets.size()) : y_to - y_from + 1;
 
-  Candidates out;
+  // Corner 1 lies in the grid at y_Actual, at most one level above the highest level searched (Eq. 3.41); the
+  // offsets are both parities' in turn.
+  std::vector<Candidates::Shape> shapes;
+  for (const auto& parity : by_parity)
+    for (const RingOffset& o : parity) shapes.push_back({o.dx, o.dz, PackedCandidate::kSquare});
+  const std::array<std::uint32_t, 2> first_shape = {0, std::uint32_t(by_parity[0].size())};
+  int top = y_to;
+  if (by_facet)
+    for (const auto& facet : features.facets) top = std::max(top, facet.level);
+  Candidates out(spec, std::max(top, 0) + 2, std::move(shapes));
   BoxCounts box_unsuitable(spec), box_raised(spec), box_first(spec), box_walls(spec);
   box_walls.fill(spec, [&](std::size_t col) { return features.walls[col] != 0; });
   // Every orientation's square holds the disk of radius d_min / 2 around its centre, and so the cells inside
@@ -202,7 +211,7 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
           needed = false;
           (rises ? above : here).insert(sum);
           const int y = rises ? y1 + 1 : y1;  // y_Actual, Eq. 3.41
-          out.push_back(PackedCandidate::square(glm::ivec3(x1, y, z1), o.dx, o.dz));
+          out.push_back(glm::ivec3(x1, y, z1), first_shape[std::size_t(cx & 1)] + std::uint32_t(i));
         }
       }
   }

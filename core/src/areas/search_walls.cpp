@@ -103,7 +103,10 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
     return true;
   };
 
-  Candidates out;
+  // The rectangles' levels lie in [floor, ceiling]; their offsets are the ring's, each with its height.
+  std::vector<Candidates::Shape> shapes;
+  for (const RingOffset& o : ring) shapes.push_back({o.dx, o.dz, int(std::floor(o.d * size.height_ratio + 1e-9))});  // Eq. 3.20
+  Candidates out(spec, spec.ny, shapes);
   // One bit per possible centre of a valid rectangle found so far, indexed by 2 x centre: x1 + x2 in
   // [0, 2 nx), z1 + z2 in [0, 2 nz), 2 y1 - h in [2 floor - h_max, 2 ceiling].
   const int h_max = int(std::floor(size.max_d * size.height_ratio + 1e-9));
@@ -118,16 +121,17 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
         const std::uint8_t f1 = f[spec.index(x1, y1, z1)];
         if (f1 == 0) continue;
         const std::uint8_t compatible = compatible_normals(f1);
-        for (const RingOffset& o : ring) {
+        for (std::size_t r = 0; r < ring.size(); ++r) {
+          const RingOffset& o = ring[r];
           const int x2 = x1 + o.dx, z2 = z1 + o.dz;
           if (x2 >= spec.nx || z2 < 0 || z2 >= spec.nz) continue;
           if ((f[spec.index(x2, y1, z2)] & compatible) == 0) continue;
-          const int h = int(std::floor(o.d * size.height_ratio + 1e-9));  // Eq. 3.20
+          const int h = shapes[r].side;
           const std::size_t bit = centre_bit(x1 + x2, 2 * y1 - h, z1 + z2);
           if (centres.test(bit)) continue;
           if (!valid(x1, z1, o, y1, h)) continue;
           centres.set(bit);
-          out.push_back(PackedCandidate::wall(glm::ivec3(x1, y1, z1), glm::ivec3(x2, y1, z2), h));
+          out.push_back(glm::ivec3(x1, y1, z1), std::uint32_t(r));
         }
       }
   return out;

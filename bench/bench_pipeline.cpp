@@ -200,6 +200,17 @@ int main(int argc, char** argv) {
     const auto p = prepare(synth::generate(synth::hall_room(20.0f * scale, 14.0f * scale)));
     register_case(name, [p](benchmark::State& state) { time_areas(state, *p); });
   }
+  // The area search alone on open floors of 50 x 50 and 90 x 90 m (about the largest the default voxel budget
+  // takes at 0.1 m; issue 19 bounds its memory by the grid's): generated only when the filter asks for growth.
+  if (filter.find("growth") != std::string::npos)
+    for (const float side : {50.0f, 90.0f}) {
+      const std::string name = "area_growth/hall_" + std::to_string(int(side)) + "x" + std::to_string(int(side));
+      const auto p = prepare(synth::generate(synth::hall_room(side, side)));
+      register_case(name, [p](benchmark::State& state) {
+        time_areas(state, *p);
+        state.counters["grid_MB"] = double(p->voxels.grid.cells.size()) / 1e6;
+      });
+    }
   // How the whole analysis (understanding and bounds) grows with room size, up to a 50 x 50 m open floor: the
   // hall's furniture rows over ever larger floors. Generated only when the filter asks for them.
   if (filter.find("growth") != std::string::npos) {

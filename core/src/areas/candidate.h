@@ -5,10 +5,13 @@
 #include "roomsense/grid.h"
 
 #include <glm/vec3.hpp>
+#include <glm/vector_relational.hpp>
 
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
-#include <deque>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -40,7 +43,7 @@ class PackedCandidate {
 
 // A search's rectangles until reduction, 12 bytes each: corner 1's cell, and which of the search's corner offsets
 // (its ring, with the wall height or square that goes with each) gives the rest. A large floor's searches find
-// millions (issue 19's memory bound). In blocks: the list grows without a vector's copies.
+// millions (issue 19's memory bound). In blocks of 4096: the list grows without a vector's copies.
 class Candidates {
  public:
   struct Shape {
@@ -51,21 +54,32 @@ class Candidates {
   Candidates() = default;
   // Corner 1 lies in the grid's columns, at a level in [0, levels).
   Candidates(const GridSpec& spec, int levels, std::vector<Shape> shapes)
-      : nx_(std::size_t(spec.nx)), levels_(std::size_t(levels)), shapes_(std::move(shapes)) {}
+      : y_bits_(std::bit_width(unsigned(std::max(levels, 1)))),
+        z_bits_(std::bit_width(unsigned(std::max(spec.nz, 1)))),
+        limit_(std::max(spec.nx, 1), std::max(levels, 1), std::max(spec.nz, 1)),
+        shapes_(std::move(shapes)) {
+    if (y_bits_ + z_bits_ + std::bit_width(unsigned(limit_.x)) > 64)
+      throw std::logic_error("a grid too large for the candidates' cells");
+  }
 
   void push_back(glm::ivec3 first, std::uint32_t shape) {
-    if (first.x < 0 || first.y < 0 || first.z < 0 || std::size_t(first.x) >= nx_ || std::size_t(first.y) >= levels_ ||
+    if (glm::any(glm::lessThan(first, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(first, limit_)) ||
         shape >= shapes_.size())
       throw std::logic_error("a candidate outside its search's grid");
-    cells_.push_back((std::uint64_t(first.z) * nx_ + std::uint64_t(first.x)) * levels_ + std::uint64_t(first.y));
-    shape_of_.push_back(shape);
+    if (size_ % kBlock == 0) blocks_.push_back(std::make_unique<Item[]>(kBlock));
+    const std::uint64_t cell = (((std::uint64_t(first.x) << z_bits_) | std::uint64_t(first.z)) << y_bits_) | std::uint64_t(first.y);
+    blocks_.back()[size_ % kBlock] = {std::uint32_t(cell), std::uint32_t(cell >> 32), shape};
+    ++size_;
   }
-  std::size_t size() const { return cells_.size(); }
-  bool empty() const { return cells_.empty(); }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
   PackedCandidate operator[](std::size_t i) const {
-    const std::uint64_t cell = cells_[i], column = cell / levels_;
-    const Shape& s = shapes_[shape_of_[i]];
-    return {glm::ivec3(int(column % nx_), int(cell % levels_), int(column / nx_)), s.dx, s.dz, s.side};
+    const Item& item = blocks_[i / kBlock][i % kBlock];
+    const std::uint64_t cell = (std::uint64_t(item.cell_hi) << 32) | item.cell_lo;
+    const Shape& s = shapes_[item.shape];
+    const auto field = [](std::uint64_t v, int bits) { return int(v & ((std::uint64_t{1} << bits) - 1)); };
+    return {glm::ivec3(int(cell >> (y_bits_ + z_bits_)), field(cell, y_bits_), field(cell >> y_bits_, z_bits_)), s.dx,
+            s.dz, s.side};
   }
   PackedCandidate at(std::size_t i) const {
     if (i >= size()) throw std::out_of_range("Candidates::at");
@@ -73,10 +87,15 @@ class Candidates {
   }
 
  private:
-  std::size_t nx_ = 1, levels_ = 1;
+  int y_bits_ = 0, z_bits_ = 0;  // a cell is x, z, y in bit fields
+  glm::ivec3 limit_{0};
+  struct Item {
+    std::uint32_t cell_lo, cell_hi, shape;
+  };
+  static constexpr std::size_t kBlock = 4096;
   std::vector<Shape> shapes_;
-  std::deque<std::uint64_t> cells_;
-  std::deque<std::uint32_t> shape_of_;
+  std::vector<std::unique_ptr<Item[]>> blocks_;
+  std::size_t size_ = 0;
 };
 
 // 4 x the centre of Eq. 3.42, exact in integers.

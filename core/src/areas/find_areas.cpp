@@ -95,7 +95,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   auto clock = std::chrono::steady_clock::now();
 
   // §3.3: task t searches type t / 3 in size t % 3. Each writes only its own slot.
-  const NormalCounts normals = count_normals(spec, features);
+  NormalCounts normals = count_normals(spec, features);  // for the wall searches only: freed after them
   // The corners a search starts from, for its cost estimate: voxels with a normal, or tiles.
   const auto count_if = [](const auto& v, auto pred) { return double(std::count_if(v.begin(), v.end(), pred)); };
   double with_normal = 0;  // from the prefix counts, not another pass over F
@@ -130,6 +130,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   // The three wall searches first: their rectangles give the room's main direction, which the square
   // searches try first.
   parallel_tasks(3, threads, search);
+  normals = NormalCounts();
   std::vector<Sized> deduplicated_walls = deduplicate_centres(found[0]);
   dominant_deg = dominant_direction_deg(deduplicated_walls);
 

@@ -30,12 +30,13 @@ int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
 bool NormalCounts::blocked(std::size_t column, int y_from, int y_to) const {
   if (blocked_bits.empty()) return false;
   const std::uint64_t* words = blocked_bits.data() + column * blocked_words;
-  for (int y = y_from - y0, last = y_to - y0; y <= last;) {  // a word at a time: one for most rooms
-    const int bit = y % 64, run = std::min(64 - bit, last - y + 1);
-    const std::uint64_t mask = (run == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << run) - 1) << bit;
-    if (words[y / 64] & mask) return true;
-    y += run;
-  }
+  const int first = y_from - y0, last = y_to - y0;
+  // Bits [first % 64, 63] of the first word, [0, last % 64] of the last, whole words between.
+  const std::uint64_t head = ~std::uint64_t{0} << (first % 64), tail = ~std::uint64_t{0} >> (63 - last % 64);
+  if (first / 64 == last / 64) return (words[first / 64] & head & tail) != 0;
+  if (words[first / 64] & head || words[last / 64] & tail) return true;
+  for (int w = first / 64 + 1; w < last / 64; ++w)
+    if (words[w] != 0) return true;
   return false;
 }
 

@@ -131,28 +131,32 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   // searches try first.
   parallel_tasks(3, threads, search);
   normals = NormalCounts();
-  std::vector<Sized> deduplicated_walls = deduplicate_centres(found[0]);
+  std::vector<Sized> deduplicated_walls;
+  deduplicate_centres(found[0], [&](const Sized& s) { deduplicated_walls.push_back(s); });
   dominant_deg = dominant_direction_deg(deduplicated_walls);
 
   // §3.4, independent per type: V_Wall, V_Floor, ... (Eq. 3.44), for reach; packing (reduce.h) picks from all
   // the rectangles found: Eq. 3.44 would drop a medium square whose centre a large one has, though packing
   // may then refuse that large one.
   // Reach reads the deduplicated walls and floors; of ceilings and furniture only the count is kept.
-  std::array<std::vector<Sized>, 2> deduplicated;
+  const PlacementContext context{spec, features, surfaces, feature_params};
+  std::vector<ReachWall> wall_areas;
+  std::vector<ReachFloor> floor_areas;
   std::array<std::size_t, 4> deduplicated_count{deduplicated_walls.size()};
   std::array<std::vector<std::size_t>, 4> kept;
   std::array<std::size_t, 4> found_count{};
-  deduplicated[0] = std::move(deduplicated_walls);
   // Eq. 3.54-3.57 for the kept rectangles, which then grow into the surface packing left free (grow.h): per
   // type, in the same task as its packing, so that no type waits for the others'.
-  const PlacementContext context{spec, features, surfaces, feature_params};
   std::array<std::vector<Area>, 4> kept_areas;
   const auto reduce = [&](std::size_t type) {
-    if (type != 0) {
-      std::vector<Sized> unique = deduplicate_centres(found[type]);
-      deduplicated_count[type] = unique.size();
-      if (type < deduplicated.size()) deduplicated[type] = std::move(unique);
+    if (type == 0) {
+      for (const Sized& s : deduplicated_walls) wall_areas.emplace_back(to_area(s, AreaType::Wall, context));
+      deduplicated_walls = {};
     }
+    if (type == 1)
+      deduplicated_count[type] = deduplicate_centres(
+          found[type], [&](const Sized& s) { floor_areas.emplace_back(to_area(s, AreaType::Floor, context)); });
+    if (type > 1) deduplicated_count[type] = deduplicate_centres(found[type], [](const Sized&) {});
     const SizedList all(found[type]);
     // Eq. 3.49: furniture squares less than reduction_offset levels apart are on one top.
     const TileMap is_tile{spec, type == 1 ? std::span<const std::uint8_t>(features.free_floor)
@@ -190,13 +194,6 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   clock = std::chrono::steady_clock::now();
 
   // §3.5: reach against V_Floor and V_Wall (before packing).
-  const auto convert_all = [&](std::size_t type) {
-    std::vector<Area> out;
-    out.reserve(deduplicated[type].size());
-    for (const Sized& s : deduplicated[type]) out.push_back(to_area(s, kAreaTypes[type], context));
-    return out;
-  };
-  const std::vector<Area> wall_areas = convert_all(0), floor_areas = convert_all(1);
   for (std::vector<Area>& areas : kept_areas) result.areas.insert(result.areas.end(), areas.begin(), areas.end());
   assign_reach(result.areas, floor_areas, wall_areas, surfaces.floor_y, params, threads);
   result.timings.classify = elapsed_ms(clock);

@@ -47,10 +47,10 @@ struct Segment {
 // walls along it (a grid walk) instead of all of them.
 class WallSegments {
  public:
-  WallSegments(const std::vector<Area>& walls, double bucket) : size_(bucket) {
+  WallSegments(const std::vector<ReachWall>& walls, double bucket) : size_(bucket) {
     segments_.reserve(walls.size());
     for (std::size_t i = 0; i < walls.size(); ++i) {
-      const Segment s{xz(walls[i].corners[3]), xz(walls[i].corners[2])};  // top-left, top-right
+      const Segment s{P2(walls[i].top_left), P2(walls[i].top_right)};
       segments_.push_back(s);
       for (int bz = cell(std::min(s.a.y, s.b.y)); bz <= cell(std::max(s.a.y, s.b.y)); ++bz)
         for (int bx = cell(std::min(s.a.x, s.b.x)); bx <= cell(std::max(s.a.x, s.b.x)); ++bx)
@@ -117,18 +117,18 @@ class WallSegments {
 // the distance to every one of them from every area.
 class FloorIndex {
  public:
-  FloorIndex(const std::vector<Area>& floors, double bucket) : floors_(floors), size_(bucket) {
+  FloorIndex(const std::vector<ReachFloor>& floors, double bucket) : floors_(floors), size_(bucket) {
     if (floors.empty()) return;
     P2 lo(INFINITY), hi(-INFINITY);
-    for (const Area& f : floors) {
-      lo = glm::min(lo, xz(f.center)), hi = glm::max(hi, xz(f.center));
+    for (const ReachFloor& f : floors) {
+      lo = glm::min(lo, P2(f.center)), hi = glm::max(hi, P2(f.center));
       max_half_ = std::max(max_half_, double(f.half_width));
     }
     origin_ = lo;
     nx_ = int((hi.x - lo.x) / size_) + 1, nz_ = int((hi.y - lo.y) / size_) + 1;
     buckets_.resize(std::size_t(nx_) * std::size_t(nz_));
     for (std::size_t i = 0; i < floors.size(); ++i) {
-      const glm::ivec2 b = cell(xz(floors[i].center));
+      const glm::ivec2 b = cell(P2(floors[i].center));
       buckets_[std::size_t(b.y) * std::size_t(nx_) + std::size_t(b.x)].push_back(i);
     }
   }
@@ -167,7 +167,7 @@ class FloorIndex {
   glm::ivec2 cell(P2 p) const {
     return {int(std::floor((p.x - origin_.x) / size_)), int(std::floor((p.y - origin_.y) / size_))};
   }
-  const std::vector<Area>& floors_;
+  const std::vector<ReachFloor>& floors_;
   double size_;
   P2 origin_{0.0};
   int nx_ = 0, nz_ = 0;
@@ -177,7 +177,7 @@ class FloorIndex {
 
 }  // namespace
 
-void assign_reach(std::vector<Area>& areas, const std::vector<Area>& floors, const std::vector<Area>& walls,
+void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floors, const std::vector<ReachWall>& walls,
                   float floor_y, const AreaParams& params, unsigned threads) {
   const WallSegments segments(walls, 1.0);
   const FloorIndex floor_index(floors, 1.0);
@@ -186,8 +186,8 @@ void assign_reach(std::vector<Area>& areas, const std::vector<Area>& floors, con
 
   const auto reach_of = [&](const Area& area) {
     const P2 c = xz(area.center);
-    const auto sight = [&](const Area& floor, auto excluded) {
-      return !segments.blocked(c, xz(floor.center), excluded);
+    const auto sight = [&](const ReachFloor& floor, auto excluded) {
+      return !segments.blocked(c, P2(floor.center), excluded);
     };
     if (area.type == AreaType::Wall) {
       // §3.5.1: a floor area within 60° of the normal, seen past every wall area not on this same wall (those
@@ -197,27 +197,27 @@ void assign_reach(std::vector<Area>& areas, const std::vector<Area>& floors, con
       const auto same_wall = [&](std::size_t i) {
         const Segment& s = segments.segment(i);
         return segments_intersect(top_a, top_b, s.a, s.b) ||
-               glm::distance(c, xz(walls[i].center)) - area.half_width - walls[i].half_width < close;
+               glm::distance(c, P2(walls[i].center)) - area.half_width - walls[i].half_width < close;
       };
-      const auto gap = [&](const Area& floor) -> std::optional<double> {
-        const P2 u = xz(floor.center) - c;
+      const auto gap = [&](const ReachFloor& floor) -> std::optional<double> {
+        const P2 u = P2(floor.center) - c;
         const double len = glm::length(u);
         if (len == 0.0 || glm::dot(u, n) < cone_cos * len) return std::nullopt;
         return len - floor.half_width;
       };
       const auto found =
-          floor_index.nearest_visible(c, 0.0, gap, [&](const Area& f, double) { return sight(f, same_wall); });
+          floor_index.nearest_visible(c, 0.0, gap, [&](const ReachFloor& f, double) { return sight(f, same_wall); });
       if (!found) return Reach::None;
       const bool low = area.center.y - floor_y <= params.close_height;
       return low && *found < close ? Reach::Close : Reach::Distance;
     }
     // §3.5.2: the distance between centres less both half sizes; overlapping areas need no line of sight.
     const auto none = [](std::size_t) { return false; };
-    const auto gap = [&](const Area& floor) -> std::optional<double> {
-      return glm::distance(c, xz(floor.center)) - area.half_width - floor.half_width;
+    const auto gap = [&](const ReachFloor& floor) -> std::optional<double> {
+      return glm::distance(c, P2(floor.center)) - area.half_width - floor.half_width;
     };
     const auto found = floor_index.nearest_visible(c, area.half_width, gap,
-                                                   [&](const Area& f, double g) { return g <= 0.0 || sight(f, none); });
+                                                   [&](const ReachFloor& f, double g) { return g <= 0.0 || sight(f, none); });
     if (!found) return Reach::None;
     if (area.type == AreaType::Ceiling) return Reach::Distance;  // never within reach of a hand
     return *found < close ? Reach::Close : Reach::Distance;

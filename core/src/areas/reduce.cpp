@@ -136,14 +136,14 @@ double angle_mod_90(int dx, int dz) {
 
 }  // namespace
 
-std::vector<Sized> deduplicate_centres(const std::array<Candidates, 3>& by_size) {
+std::size_t deduplicate_centres(const std::array<Candidates, 3>& by_size, const std::function<void(const Sized&)>& keep) {
   // Centre voxels lie within the corners' box: a bit per voxel of it, rows along y.
   glm::ivec3 lo(INT_MAX), hi(INT_MIN);
   for (const Candidates& size : by_size)
     for (std::size_t i = 0; i < size.size(); ++i)
       for (const glm::ivec3& k : size[i].unpack().corners) lo = glm::min(lo, k), hi = glm::max(hi, k);
   SampleRaster marked(lo.x, hi.x, lo.z, hi.z, lo.y, hi.y);
-  std::vector<Sized> out;
+  std::size_t kept = 0;
   for (std::size_t s = 0; s < by_size.size(); ++s)
     for (std::size_t i = 0; i < by_size[s].size(); ++i) {
       const PackedCandidate p = by_size[s][i];
@@ -160,9 +160,10 @@ std::vector<Sized> deduplicate_centres(const std::array<Candidates, 3>& by_size)
       if (any_marked()) continue;
       for (int i = 0; i < nx; ++i)
         for (int k = 0; k < nz; ++k) marked.set(xs[i], zs[k], ys[0], ys[ny - 1]);
-      out.push_back({p, kAreaSizes[s]});
+      keep({p, kAreaSizes[s]});
+      ++kept;
     }
-  return out;
+  return kept;
 }
 
 double dominant_direction_deg(const std::vector<Sized>& walls) {
@@ -305,27 +306,32 @@ std::vector<std::size_t> pack_squares(const SizedList& squares, int level_tolera
   // The rank packed into one key, the square's index last: sorting the keys is the stable sort by rank.
   constexpr int kContactBits = 24;
   if (squares.size() > 0xffffffffu) throw std::length_error("more squares than packing can rank");
-  std::vector<std::uint64_t> keys(squares.size());
-  for (std::size_t i = 0; i < squares.size(); ++i) {
-    const Sized q = squares[i];
-    const std::uint64_t away = std::uint64_t((1 << kContactBits) - 1 - std::min(contact(q.c()), (1 << kContactBits) - 1));
-    keys[i] = (std::uint64_t(q.size) << 62) | (std::uint64_t(misalignment_step(q.c())) << 56) | (away << 32) |
-              std::uint64_t(i);
-  }
-  std::sort(keys.begin(), keys.end());
   const SampleBox box = sample_box(squares);  // per level: rows of samples along x
   SampleRaster taken(box.y_lo / 2, box.y_hi / 2, box.z_lo, box.z_hi, box.x_lo, box.x_hi);
   std::vector<std::size_t> kept;
-  for (const std::uint64_t key : keys) {
-    const std::size_t i = std::size_t(key & 0xffffffffu);
-    const Candidate c = squares[i].c();
-    const int level = c.corners[0].y;
-    bool free = true;
-    for (int y = level - level_tolerance; y <= level + level_tolerance && free; ++y)
-      free = square_samples(c, [&](long z, long x0, long x1) { return !taken.any(y, z, x0, x1); });
-    if (!free) continue;
-    square_samples(c, [&](long z, long x0, long x1) { return taken.set(level, z, x0, x1), true; });
-    kept.push_back(i);
+  std::vector<std::uint64_t> keys;
+  // The size leads the rank, and each size is one run of the list: one size's keys at a time.
+  for (std::size_t size = 0; size < kAreaSizes.size(); ++size) {
+    keys.clear();
+    for (std::size_t i = squares.first_of(size); i < squares.first_of(size + 1); ++i) {
+      const Sized q = squares[i];
+      const std::uint64_t away =
+          std::uint64_t((1 << kContactBits) - 1 - std::min(contact(q.c()), (1 << kContactBits) - 1));
+      keys.push_back((std::uint64_t(q.size) << 62) | (std::uint64_t(misalignment_step(q.c())) << 56) | (away << 32) |
+                     std::uint64_t(i));
+    }
+    std::sort(keys.begin(), keys.end());
+    for (const std::uint64_t key : keys) {
+      const std::size_t i = std::size_t(key & 0xffffffffu);
+      const Candidate c = squares[i].c();
+      const int level = c.corners[0].y;
+      bool free = true;
+      for (int y = level - level_tolerance; y <= level + level_tolerance && free; ++y)
+        free = square_samples(c, [&](long z, long x0, long x1) { return !taken.any(y, z, x0, x1); });
+      if (!free) continue;
+      square_samples(c, [&](long z, long x0, long x1) { return taken.set(level, z, x0, x1), true; });
+      kept.push_back(i);
+    }
   }
   std::sort(kept.begin(), kept.end());  // the output keeps the search's order
   return kept;

@@ -6,6 +6,7 @@
 #include "roomsense/grid.h"
 
 #include <cstdint>
+#include <functional>
 #include <span>
 
 namespace roomsense::detail {
@@ -22,6 +23,12 @@ class SizedList {
  public:
   explicit SizedList(const std::array<Candidates, 3>& by_size) : by_size_(&by_size) {}
   std::size_t size() const { return (*by_size_)[0].size() + (*by_size_)[1].size() + (*by_size_)[2].size(); }
+  // Where size class s (0 large, 1 medium, 2 small) starts; first_of(3) is size().
+  std::size_t first_of(std::size_t s) const {
+    std::size_t first = 0;
+    for (std::size_t k = 0; k < s && k < 3; ++k) first += (*by_size_)[k].size();
+    return first;
+  }
   Sized operator[](std::size_t i) const {
     for (std::size_t s = 0; s < 2; ++s) {
       if (i < (*by_size_)[s].size()) return {(*by_size_)[s][i], kAreaSizes[s]};
@@ -36,7 +43,9 @@ class SizedList {
 
 // Eq. 3.44: large, then medium, then small; a rectangle is kept when none of its centre voxels (Eq. 3.43) is
 // already marked by a kept one.
-std::vector<Sized> deduplicate_centres(const std::array<Candidates, 3>& by_size);
+// Calls keep(rectangle) for each rectangle kept, in that order; returns how many. A floor's are many: the caller
+// keeps what it needs of each, not the list.
+std::size_t deduplicate_centres(const std::array<Candidates, 3>& by_size, const std::function<void(const Sized&)>& keep);
 
 // The room's main direction, in degrees in [0, 90): the length-weighted mode of the wall rectangles' top edges
 // modulo 90°. 0 without walls.

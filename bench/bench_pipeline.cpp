@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <map>
 #include <cstdio>
 #include <filesystem>
@@ -98,8 +99,8 @@ void counters(benchmark::State& state, const BenchRoom& room) {
 // Registers `name`, timing body() per iteration and reporting peak_MB: the most heap any iteration held beyond
 // what was live when the case started.
 template <class Body>
-void register_case(const std::string& name, Body body) {
-  benchmark::RegisterBenchmark(name.c_str(), [body](benchmark::State& state) {
+benchmark::internal::Benchmark* register_case(const std::string& name, Body body) {
+  return benchmark::RegisterBenchmark(name.c_str(), [body](benchmark::State& state) {
     const std::size_t base = bench::live_heap_bytes();
     bench::reset_heap_peak();
     body(state);
@@ -167,32 +168,45 @@ int main(int argc, char** argv) {
       counters(state, room);
     });
     // Issue 19: one 2 x 2 m block of the room re-sent (refined: every fifth triangle gone, or back as it was),
-    // then the new result, on an IncrementalAnalysis that holds every block. Blocks in turn.
-    register_case("update/" + room.name, [&room](benchmark::State& state) {
-      const std::map<std::uint64_t, Scan> blocks = split_into_blocks(room.scan);
-      std::vector<std::pair<std::uint64_t, std::array<Scan, 2>>> versions;
-      for (const auto& [id, block] : blocks) {
-        Scan refined = block;
-        refined.indices.clear();
-        for (std::size_t t = 0; t + 2 < block.indices.size(); t += 3)
-          if ((t / 3) % 5 != 4) refined.indices.insert(refined.indices.end(), &block.indices[t], &block.indices[t] + 3);
-        versions.push_back({id, {std::move(refined), block}});
-      }
+    // then the new result, on an IncrementalAnalysis that holds every block. Every block twice, in turn (the
+    // iterations are fixed to that), so the percentiles are those of every block of the room.
+    using Versions = std::vector<std::pair<std::uint64_t, std::array<Scan, 2>>>;
+    auto versions = std::make_shared<Versions>();
+    for (auto& [id, block] : split_into_blocks(room.scan)) {
+      Scan refined = block;
+      refined.indices.clear();
+      for (std::size_t t = 0; t + 2 < block.indices.size(); t += 3)
+        if ((t / 3) % 5 != 4) refined.indices.insert(refined.indices.end(), &block.indices[t], &block.indices[t] + 3);
+      versions->push_back({id, {std::move(refined), std::move(block)}});
+    }
+    register_case("update/" + room.name, [&room, versions](benchmark::State& state) {
       IncrementalAnalysis inc;
-      for (const auto& [id, block] : blocks) inc.set_chunk(id, block);
+      for (const auto& [id, two] : *versions) inc.set_chunk(id, two[1]);
       inc.result();
       std::size_t turn = 0, revoxelized = 0;
+      std::vector<double> ms;
       for (auto _ : state) {
-        const auto& [id, two] = versions[turn % versions.size()];
-        inc.set_chunk(id, two[(turn / versions.size()) % 2]);
+        const auto& [id, two] = (*versions)[turn % versions->size()];
+        const auto start = std::chrono::steady_clock::now();
+        inc.set_chunk(id, two[(turn / versions->size()) % 2]);
         benchmark::DoNotOptimize(inc.result());
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         revoxelized += inc.revoxelized_chunks();
         ++turn;
       }
-      state.counters["blocks"] = double(blocks.size());
+      std::sort(ms.begin(), ms.end());
+      const auto percentile = [&](double p) { return ms.empty() ? 0.0 : ms[std::size_t(p * double(ms.size() - 1))]; };
+      state.counters["p10_ms"] = percentile(0.1);
+      state.counters["p50_ms"] = percentile(0.5);
+      state.counters["p90_ms"] = percentile(0.9);
+      state.counters["max_ms"] = percentile(1.0);
+      state.counters["blocks"] = double(versions->size());
+      double block_triangles = 0;
+      for (const auto& [id, two] : *versions) block_triangles += double(two[1].indices.size() / 3);
+      state.counters["block_triangles"] = block_triangles / double(std::max<std::size_t>(1, versions->size()));
       state.counters["revoxelized"] = double(revoxelized) / double(std::max<std::size_t>(1, turn));
       counters(state, room);
-    });
+    })->Iterations(benchmark::IterationCount(2 * std::max<std::size_t>(1, versions->size())));
   }
   // How the area search grows with room size: empty-ish halls of increasing floor area.
   for (const float scale : {0.25f, 0.5f, 1.0f, 1.5f}) {

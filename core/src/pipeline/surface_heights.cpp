@@ -18,11 +18,12 @@ float surface_height(const GridSpec& spec, std::span<const glm::vec3> vertices,
   if (!indices.empty()) {
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
       const glm::vec3 &a = vertices[indices[t]], &b = vertices[indices[t + 1]], &c = vertices[indices[t + 2]];
+      const float cy = (a.y + b.y + c.y) / 3.0f;
+      if (!in_band(cy)) continue;  // most triangles: no cross product for them
       const glm::vec3 n = glm::cross(b - a, c - a);
       const float area2 = glm::length(n);
-      const float cy = (a.y + b.y + c.y) / 3.0f;
       // Near-horizontal (within ~25°) either way up: scans disagree on winding.
-      if (area2 <= 0.0f || std::fabs(n.y) < 0.9f * area2 || !in_band(cy)) continue;
+      if (area2 <= 0.0f || std::fabs(n.y) < 0.9f * area2) continue;
       weighted += double(cy) * area2;
       weight += area2;
     }

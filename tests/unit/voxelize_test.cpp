@@ -1,5 +1,6 @@
 // Voxelization (Eq. 3.6/3.7, triangle mode), levels (Eq. 3.8-3.10) and their determinism.
 #include "roomsense/analysis.h"
+#include "roomsense/error.h"
 #include "roomsense/synthetic.h"
 #include "roomsense/voxelize.h"
 #include "synthetic_fixture.h"
@@ -7,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <span>
 
 namespace roomsense {
 namespace {
@@ -50,6 +52,36 @@ TEST(Voxelize, TriangleModeMarksEveryVoxelATrianglePassesThrough) {
             const glm::ivec3 here(x, y, z);
             ASSERT_TRUE(here == a || here == b || here == c) << "marked voxel off the triangle";
           }
+  }
+}
+
+TEST(Voxelize, IntoAGridAddsToItsMarksAndRefusesAnotherGrid) {
+  // Two triangles voxelized one at a time into one grid mark what both do at once (the incremental stage's
+  // scratch grid relies on it), and a grid of other dimensions is refused, not written past.
+  const GridSpec spec = make_grid_spec({0, 0, 0}, {3, 3, 3}, 0.1f);
+  const std::vector<glm::vec3> world = {{0.2f, 0.1f, 0.3f}, {2.7f, 0.4f, 0.5f}, {1.1f, 2.9f, 0.2f},
+                                        {0.4f, 1.3f, 2.8f}, {2.2f, 0.7f, 2.5f}, {1.6f, 2.4f, 1.9f}};
+  const std::vector<std::uint32_t> indices = {0, 1, 2, 3, 4, 5};
+  const VoxelGrid both = voxelize(spec, world, indices, VoxelMode::Triangles);
+  const std::vector<glm::vec3> g = to_grid_units(world, spec);
+  VoxelGrid grid(spec);
+  std::uint64_t tests_first = 0, tests_second = 0, tests_both = 0;
+  voxelize_cpu_into({spec, g, std::span(indices).first(3), VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}, grid,
+                    1, &tests_first);
+  const auto after_first = std::count(grid.cells.begin(), grid.cells.end(), 1);
+  voxelize_cpu_into({spec, g, std::span(indices).last(3), VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}, grid,
+                    1, &tests_second);
+  EXPECT_GT(after_first, 0);
+  EXPECT_GT(std::count(grid.cells.begin(), grid.cells.end(), 1), after_first);
+  EXPECT_EQ(grid.cells, both.cells);
+  voxelize_cpu({spec, g, indices, VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}, 1, &tests_both);
+  EXPECT_EQ(tests_first + tests_second, tests_both);
+  VoxelGrid other(make_grid_spec({0, 0, 0}, {2, 3, 3}, 0.1f));
+  try {
+    voxelize_cpu_into({spec, g, indices, VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}, other);
+    FAIL() << "a grid of other dimensions was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::BadParameter);
   }
 }
 

@@ -101,6 +101,10 @@ class CpuVoxelStage final : public VoxelStage {
 // The pieces of CpuVoxelStage, for tests and for backends that do part of the work on the CPU.
 // `tests`, when given, receives the triangle-voxel tests done (the work the budget counts).
 VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads = 0, std::uint64_t* tests = nullptr);
+// The same marks set in `grid` (of request.spec), which may hold marks already: a caller voxelizing one chunk at a
+// time reuses one grid, clearing only the chunk's box.
+void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned threads = 0,
+                       std::uint64_t* tests = nullptr);
 std::vector<std::uint32_t> count_levels(const VoxelGrid& grid);
 void count_columns(const VoxelGrid& grid, const std::optional<FloorCeiling>& levels,
                    std::vector<std::uint32_t>& column_counts, std::vector<std::uint8_t>& column_any);

@@ -145,8 +145,8 @@ std::size_t deduplicate_centres(const std::array<Candidates, 3>& by_size, const 
   SampleRaster marked(lo.x, hi.x, lo.z, hi.z, lo.y, hi.y);
   std::size_t kept = 0;
   for (std::size_t s = 0; s < by_size.size(); ++s)
-    for (std::size_t i = 0; i < by_size[s].size(); ++i) {
-      const PackedCandidate p = by_size[s][i];
+    for (std::size_t r = 0; r < by_size[s].size(); ++r) {
+      const PackedCandidate p = by_size[s][r];
       const Candidate c = p.unpack();
       const glm::ivec3 sum = corner_sum(c);
       int xs[2], ys[2], zs[2];

@@ -185,6 +185,14 @@ bool triangle_overlaps_voxel(const glm::vec3& a, const glm::vec3& b, const glm::
 
 VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads, std::uint64_t* tests_done) {
   VoxelGrid grid(request.spec);
+  voxelize_cpu_into(request, grid, threads, tests_done);
+  return grid;
+}
+
+void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned threads, std::uint64_t* tests_done) {
+  if (!(grid.spec.nx == request.spec.nx && grid.spec.ny == request.spec.ny && grid.spec.nz == request.spec.nz) ||
+      grid.cells.size() != request.spec.voxel_count())
+    throw Error(ErrorCode::BadParameter, "voxelize_cpu_into: the grid is not the request's");
   const GridSpec& s = request.spec;
   const auto& p = request.grid_vertices;
   const auto voxel_of = [&](const glm::vec3& v) -> std::uint8_t& {
@@ -197,7 +205,7 @@ VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads, std::ui
         mark(voxel_of(p[i]));
       }
     });
-    return grid;
+    return;
   }
   // Triangle mode marks the voxels whose test cubes the triangles touch, and nothing else: a vertex no
   // triangle uses adds nothing, as it has no surface.
@@ -243,7 +251,6 @@ VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads, std::ui
     counter.flush(tests);
   });
   if (tests_done != nullptr) *tests_done = counter.total();
-  return grid;
 }
 
 std::vector<std::uint32_t> count_levels(const VoxelGrid& grid) {

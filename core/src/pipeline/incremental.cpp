@@ -95,9 +95,11 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
       }
     } catch (...) {
       kept_.clear();  // some were moved into `now`: keep nothing rather than an emptied entry
+      scratch_ = VoxelGrid(GridSpec{});
       throw;
     }
     kept_ = std::move(now);
+    scratch_ = VoxelGrid(GridSpec{});  // between analyses the stage holds no grid of its own
 
     VoxelStageResult r;
     r.grid = VoxelGrid(request.spec);
@@ -122,13 +124,23 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
   };
 
   // The chunk's triangles alone on the grid; its marks lie within its vertices' box (box_index per axis).
-  Kept voxelize_chunk(const VoxelizeRequest& request, const Layout& chunk) const {
+  Kept voxelize_chunk(const VoxelizeRequest& request, const Layout& chunk) {
     Kept k;
     k.hash = chunk.hash;
     if (chunk.index_count == 0) return k;
     VoxelizeRequest part = request;
     part.indices = request.indices.subspan(chunk.first_index, chunk.index_count);
-    const VoxelGrid grid = voxelize_cpu(part, threads_, &k.tests);
+    // One scratch grid for every chunk, cleared over each chunk's box after use: a chunk costs its box, not the
+    // grid (the first result of a room in a hundred chunks cleared the whole grid a hundred times).
+    if (!same_spec(scratch_.spec, request.spec) || scratch_.cells.size() != request.spec.voxel_count())
+      scratch_ = VoxelGrid(request.spec);
+    VoxelGrid& grid = scratch_;
+    try {
+      voxelize_cpu_into(part, grid, threads_, &k.tests);
+    } catch (...) {
+      scratch_ = VoxelGrid(GridSpec{});  // marks may be left in the box: the next chunk starts afresh
+      throw;
+    }
     const GridSpec& s = request.spec;
     glm::vec3 lo(INFINITY), hi(-INFINITY);
     for (const std::uint32_t i : part.indices) lo = glm::min(lo, request.grid_vertices[i]), hi = glm::max(hi, request.grid_vertices[i]);
@@ -139,7 +151,11 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
         for (int y = y0; y <= y1; ++y) {
           const std::size_t v = s.index(x, y, z);
           if (grid.cells[v] != 0) k.voxels.push_back(std::uint32_t(v));
+          grid.cells[v] = 0;
         }
+    // prepare_input drops what is not finite, but a mark outside the box would stay for the next chunk.
+    const auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    if (!finite(lo) || !finite(hi)) std::fill(grid.cells.begin(), grid.cells.end(), std::uint8_t{0});
     return k;
   }
 
@@ -149,6 +165,7 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
   GridSpec spec_{};
   std::map<std::uint64_t, Kept> kept_;
   std::size_t revoxelized_ = 0;
+  VoxelGrid scratch_{GridSpec{}};  // within one run, the chunks' grid: all zero between chunks
 };
 
 IncrementalAnalysis::IncrementalAnalysis(AnalysisOptions options)

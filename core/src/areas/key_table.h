@@ -20,7 +20,6 @@ class KeyTable {
       if (keys_[i] == kEmpty) return kAbsent;
     }
   }
-  bool contains(std::uint64_t key) const { return find(key) != kAbsent; }
 
   // Stores value for key unless key is there already (as std::unordered_map::emplace). Returns whether it
   // stored.

@@ -315,9 +315,9 @@ std::vector<std::size_t> pack_squares(const SizedList& squares, int level_tolera
     keys.clear();
     for (std::size_t i = squares.first_of(size); i < squares.first_of(size + 1); ++i) {
       const Sized q = squares[i];
-      const std::uint64_t away =
-          std::uint64_t((1 << kContactBits) - 1 - std::min(contact(q.c()), (1 << kContactBits) - 1));
-      keys.push_back((std::uint64_t(q.size) << 62) | (std::uint64_t(misalignment_step(q.c())) << 56) | (away << 32) |
+      const Candidate c = q.c();
+      const std::uint64_t away = std::uint64_t((1 << kContactBits) - 1 - std::min(contact(c), (1 << kContactBits) - 1));
+      keys.push_back((std::uint64_t(q.size) << 62) | (std::uint64_t(misalignment_step(c)) << 56) | (away << 32) |
                      std::uint64_t(i));
     }
     std::sort(keys.begin(), keys.end());

@@ -132,15 +132,10 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     part.indices = request.indices.subspan(chunk.first_index, chunk.index_count);
     // One scratch grid for every chunk, cleared over each chunk's box after use: a chunk costs its box, not the
     // grid (the first result of a room in a hundred chunks cleared the whole grid a hundred times).
-    if (!same_spec(scratch_.spec, request.spec) || scratch_.cells.size() != request.spec.voxel_count())
-      scratch_ = VoxelGrid(request.spec);
+    // A failure here reaches run(), which drops the scratch grid with whatever marks it holds.
+    if (!same_spec(scratch_.spec, request.spec)) scratch_ = VoxelGrid(request.spec);
     VoxelGrid& grid = scratch_;
-    try {
-      voxelize_cpu_into(part, grid, threads_, &k.tests);
-    } catch (...) {
-      scratch_ = VoxelGrid(GridSpec{});  // marks may be left in the box: the next chunk starts afresh
-      throw;
-    }
+    voxelize_cpu_into(part, grid, threads_, &k.tests);
     const GridSpec& s = request.spec;
     glm::vec3 lo(INFINITY), hi(-INFINITY);
     for (const std::uint32_t i : part.indices) lo = glm::min(lo, request.grid_vertices[i]), hi = glm::max(hi, request.grid_vertices[i]);

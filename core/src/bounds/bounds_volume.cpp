@@ -28,6 +28,10 @@ void fill_plane_holes(const GridSpec& s, const FloorCeiling& levels, std::vector
       for (int x = 0; x < s.nx; ++x) {
         const std::uint8_t *c = column(x, z), *l = column(x - 1, z), *r = column(x + 1, z), *b = column(x, z - 1),
                            *f = column(x, z + 1);
+        // Where the four neighbours equal the column, an empty voxel has no active neighbour in the X-Z plane
+        // and at most two (below, above) in the others: nothing to fill.
+        const auto same = [&](const std::uint8_t* n) { return n == c || std::equal(c + y_lo, c + y_hi + 1, n + y_lo); };
+        if (same(l) && same(r) && same(b) && same(f)) continue;
         for (int y = y_lo; y <= y_hi; ++y) {
           if (c[y]) continue;
           const int left = l[y], right = r[y], back = b[y], front = f[y];
@@ -165,15 +169,16 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeilin
 }
 
 void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
-  // Only levels that hold a solid voxel (and the one above them) can form a contact.
+  // Only levels that hold a solid voxel (and the one above them) can form a contact. Each column is read only
+  // below the lowest solid level found so far and above the highest.
+  const std::size_t ny = std::size_t(s.ny);
   int y_lo = s.ny, y_hi = -1;
   for (std::size_t col = 0; col < s.column_count(); ++col) {
-    const std::uint8_t* v = volume.data() + col * std::size_t(s.ny);
-    for (int y = 0; y < s.ny; ++y)
-      if (v[y]) {
-        y_lo = std::min(y_lo, y);
-        y_hi = std::max(y_hi, y);
-      }
+    const std::uint8_t* v = volume.data() + col * ny;
+    for (int y = 0; y < y_lo; ++y)
+      if (v[y]) y_lo = y;
+    for (int y = s.ny - 1; y > y_hi; --y)
+      if (v[y]) y_hi = y;
   }
   if (y_hi < 0) return;
   const int y_end = std::min(y_hi + 1, s.ny - 1);
@@ -191,22 +196,55 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
     }
     return false;
   };
+  // The levels the checks read, [y_lo, y_end + 1] within the grid.
+  const std::size_t read_from = std::size_t(y_lo), read_count = std::size_t(std::min(y_end + 1, s.ny - 1) - y_lo + 1);
+  const auto same = [&](const std::uint8_t* a, const std::uint8_t* b) {
+    return std::equal(a + read_from, a + read_from + read_count, b + read_from);
+  };
+  // Which columns a pass filled in: a later pass visits only the blocks with such a column (earlier in this
+  // pass or anywhere in the last). Any other block holds what it held when the last pass checked it and found
+  // nothing to fill, so skipping it changes nothing: the passes fill exactly what full passes would.
+  std::vector<std::uint8_t> filled_last(s.column_count(), 1), filled_now(s.column_count(), 0);
   for (bool changed = true; changed;) {
     changed = false;
     for (int z = 0; z < s.nz; ++z)
       for (int x = 0; x < s.nx; ++x) {
-        std::uint8_t* c = volume.data() + s.column(x, z) * std::size_t(s.ny);
-        std::uint8_t* cx = x + 1 < s.nx ? volume.data() + s.column(x + 1, z) * std::size_t(s.ny) : nullptr;
-        std::uint8_t* cz = z + 1 < s.nz ? volume.data() + s.column(x, z + 1) * std::size_t(s.ny) : nullptr;
-        std::uint8_t* cxz = cx && cz ? volume.data() + s.column(x + 1, z + 1) * std::size_t(s.ny) : nullptr;
+        const std::size_t col = s.column(x, z);
+        const std::size_t col_x = x + 1 < s.nx ? s.column(x + 1, z) : col, col_z = z + 1 < s.nz ? s.column(x, z + 1) : col,
+                          col_xz = x + 1 < s.nx && z + 1 < s.nz ? s.column(x + 1, z + 1) : col;
+        if (!(filled_last[col] | filled_last[col_x] | filled_last[col_z] | filled_last[col_xz] | filled_now[col] |
+              filled_now[col_x] | filled_now[col_z] | filled_now[col_xz]))
+          continue;
+        std::uint8_t* c = volume.data() + col * ny;
+        std::uint8_t* cx = x + 1 < s.nx ? volume.data() + col_x * ny : nullptr;
+        std::uint8_t* cz = z + 1 < s.nz ? volume.data() + col_z * ny : nullptr;
+        std::uint8_t* cxz = cx && cz ? volume.data() + col_xz * ny : nullptr;
+        // A contact needs a solid and an empty voxel side by side in each pair of columns the edge lies
+        // between: where two of them are equal over the levels read, that edge can fill nothing, as long as
+        // nothing in this block is filled (after a fill every check runs).
+        bool check_y = cxz && !same(c, cx) && !same(c, cz) && !same(cxz, cx) && !same(cxz, cz);
+        bool check_z = cx && !same(c, cx), check_x = cz && !same(c, cz);
+        if (!check_y && !check_z && !check_x) continue;
+        bool filled = false;
+        const auto fill = [&](std::uint8_t& p, std::uint8_t& q, std::uint8_t& r, std::uint8_t& t) {
+          if (!settle(p, q, r, t)) return;
+          filled = true;
+          check_y = cxz != nullptr, check_z = cx != nullptr, check_x = cz != nullptr;
+        };
         for (int y = y_lo; y <= y_end; ++y) {
-          if (cxz) changed |= settle(c[y], cxz[y], cx[y], cz[y]);  // edge along y
+          if (check_y) fill(c[y], cxz[y], cx[y], cz[y]);  // edge along y
           if (y + 1 < s.ny) {
-            if (cx) changed |= settle(c[y], cx[y + 1], cx[y], c[y + 1]);  // edge along z
-            if (cz) changed |= settle(c[y], cz[y + 1], cz[y], c[y + 1]);  // edge along x
+            if (check_z) fill(c[y], cx[y + 1], cx[y], c[y + 1]);  // edge along z
+            if (check_x) fill(c[y], cz[y + 1], cz[y], c[y + 1]);  // edge along x
           }
         }
+        if (filled) {
+          changed = true;
+          filled_now[col] = filled_now[col_x] = filled_now[col_z] = filled_now[col_xz] = 1;
+        }
       }
+    filled_last.swap(filled_now);
+    std::fill(filled_now.begin(), filled_now.end(), std::uint8_t{0});
   }
 }
 

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <unordered_map>
 
 namespace roomsense {
@@ -116,10 +117,17 @@ class SurfaceCorners {
       return x >= 0 && z >= 0 && x < s.nx && z < s.nz ? volume.data() + s.column(x, z) * std::size_t(s.ny) : empty.data();
     };
     const int y_first = lo_[1], y_last = lo_[1] + n_[1] - 1;  // lattice levels; voxel levels y-1 and y
+    const std::ptrdiff_t read_from = std::max(y_first - 1, 0), read_to = std::min(y_last, s.ny - 1) + 1;
     detail::parallel_for(std::size_t(n_[2]), threads, 16, [&](std::size_t z_begin, std::size_t z_end, std::size_t) {
       for (int z = lo_[2] + int(z_begin); z < lo_[2] + int(z_end); ++z, stop_point(stop))
         for (int x = lo_[0]; x < lo_[0] + n_[0]; ++x) {
           const std::uint8_t* cols[4] = {column(x - 1, z - 1), column(x, z - 1), column(x - 1, z), column(x, z)};
+          // Four equal columns turn nowhere: each level's four voxels are alike, so every plane through a
+          // point sees four equal faces or none.
+          const auto same = [&](const std::uint8_t* a, const std::uint8_t* b) {
+            return a == b || std::equal(a + read_from, a + read_to, b + read_from);
+          };
+          if (same(cols[0], cols[1]) && same(cols[0], cols[2]) && same(cols[0], cols[3])) continue;
           // The four voxels of level y - 1 (bits dy = 0), carried up from the previous level.
           const auto level = [&](int y) {
             int bits = 0;
@@ -189,24 +197,34 @@ class MeshBuilder {
 // its holes and triangulated.
 class SliceMesher {
  public:
-  SliceMesher(int na, int nb) : na_(na), nb_(nb), mask_(std::size_t(na) * std::size_t(nb)) {}
-  signed char* row(int b) { return &mask_[std::size_t(b) * std::size_t(na_)]; }
-  // The slice's non-zero cells, in row order (b, then a), as the caller filled them: labelling and tracing
-  // visit only these, not the whole slice, most of which a room's surface never crosses.
-  std::vector<std::size_t>& filled() { return filled_; }
+  SliceMesher(int na, int nb)
+      : width_(std::size_t(na) + 2),
+        mask_(width_ * (std::size_t(nb) + 2), 0),
+        label_(mask_.size(), -1),
+        visited_(mask_.size(), 0),
+        neighbour_{-std::ptrdiff_t(width_), 1, std::ptrdiff_t(width_), -1} {}
+  // One non-zero cell (a, b) of the slice, in any order. Labelling and tracing visit only these, not the
+  // whole slice, most of which a room's surface never crosses.
+  void set(int a, int b, signed char value) {
+    mask_[cell(a, b)] = value;
+    filled_.push_back(cell(a, b));
+  }
+  bool empty() const { return filled_.empty(); }
 
-  // `to_point` maps mask lattice point (a, b) to the 3D lattice.
+  // Meshes the cells set since the last call, then clears them. `to_point` maps mask lattice point (a, b)
+  // to the 3D lattice.
   template <class ToPoint>
   void mesh(const SurfaceCorners& corners, const ToPoint& to_point, MeshBuilder& out, const std::stop_token& stop) {
+    // Row order (b, then a): regions are numbered and traced in it, so the mesh does not depend on how the
+    // cells were found.
+    if (!std::is_sorted(filled_.begin(), filled_.end())) std::sort(filled_.begin(), filled_.end());
     label_regions();
     loops_.clear();
-    visited_.assign(mask_.size(), 0);
     for (const std::size_t c : filled_) {
-      const int a = int(c % std::size_t(na_)), b = int(c / std::size_t(na_));
       const signed char m = mask_[c];
       for (int side = 0; side < 4; ++side)
-        if (value(a + kNeighbour[side][0], b + kNeighbour[side][1]) != m && !(visited_[c] & (1 << side)))
-          trace(a, b, side, corners, to_point, out);
+        if (mask_[c + neighbour_[side]] != m && !(visited_[c] & (1 << side)))
+          trace(int(c % width_) - 1, int(c / width_) - 1, side, corners, to_point, out);
     }
     // Each region: its outer loop (positive area) and its holes.
     std::sort(loops_.begin(), loops_.end(), [](const Traced& x, const Traced& y) {
@@ -224,13 +242,15 @@ class SliceMesher {
       }
       i = j;
     }
+    // Outside the set cells mask, labels and visits stay at their cleared values between slices.
+    for (const std::size_t c : filled_) mask_[c] = 0, label_[c] = -1, visited_[c] = 0;
+    filled_.clear();
   }
 
  private:
   // Directions 0..3: +a, +b, -a, -b; the side of a cell a boundary edge in that direction runs along
   // (bottom, right, top, left) when the cell is on its left.
   static constexpr int kStep[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-  static constexpr int kNeighbour[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
   static constexpr int kStart[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};     // start corner of each side
   static constexpr int kLeftCell[4][2] = {{0, 0}, {-1, 0}, {-1, -1}, {0, -1}};  // of an edge leaving a point
 
@@ -241,13 +261,11 @@ class SliceMesher {
     detail::Loop points;
   };
 
-  std::size_t cell(int a, int b) const { return std::size_t(b) * std::size_t(na_) + std::size_t(a); }
-  signed char value(int a, int b) const {
-    return a >= 0 && b >= 0 && a < na_ && b < nb_ ? mask_[cell(a, b)] : static_cast<signed char>(0);
-  }
+  // The slice is stored with a border of empty cells, so (a, b) from (-1, -1) to (na, nb) is read unchecked.
+  std::size_t cell(int a, int b) const { return std::size_t(b + 1) * width_ + std::size_t(a + 1); }
+  signed char value(int a, int b) const { return mask_[cell(a, b)]; }
 
   void label_regions() {
-    label_.assign(mask_.size(), -1);
     int next = 0;
     for (const std::size_t seed : filled_) {
       if (label_[seed] >= 0) continue;
@@ -256,11 +274,8 @@ class SliceMesher {
       while (!stack_.empty()) {
         const std::size_t c = stack_.back();
         stack_.pop_back();
-        const int a = int(c % std::size_t(na_)), b = int(c / std::size_t(na_));
-        for (const auto& n : kNeighbour) {
-          const int na = a + n[0], nb = b + n[1];
-          if (na < 0 || nb < 0 || na >= na_ || nb >= nb_) continue;
-          const std::size_t nc = cell(na, nb);
+        for (const std::ptrdiff_t n : neighbour_) {
+          const std::size_t nc = c + n;  // a border cell is empty: never the seed's value
           if (label_[nc] < 0 && mask_[nc] == mask_[seed]) {
             label_[nc] = next;
             stack_.push_back(nc);
@@ -301,7 +316,7 @@ class SliceMesher {
     loops_.push_back(std::move(loop));
   }
 
-  int na_, nb_;
+  std::size_t width_;  // na + 2
   std::vector<signed char> mask_;
   std::vector<std::size_t> filled_;
   std::vector<int> label_;
@@ -310,6 +325,7 @@ class SliceMesher {
   std::vector<Traced> loops_;
   std::vector<detail::Loop> holes_;
   detail::Triangles triangles_;
+  std::array<std::ptrdiff_t, 4> neighbour_;  // the index steps of directions 0..3's neighbours
 };
 
 void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const Box& box, const Axes& ax,
@@ -321,21 +337,61 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
   const int na = box.hi[ax.a] - a0 + 1, nb = box.hi[ax.b] - b0 + 1, c_end = box.hi[ax.c];
   const std::uint8_t* base = volume.data() + a0 * sa + b0 * sb;
   SliceMesher slice(na, nb);
+  // Slice c lies between voxel layers c and c + 1; outside the box both are empty. Along y (stride 1) the
+  // faces are found once, column by column, and kept per slice, each slice's in row order.
+  std::vector<std::vector<std::array<int, 2>>> y_faces;
+  if (sc == 1) {
+    y_faces.resize(std::size_t(c_end - c0 + 2));
+    for (int b = 0; b < nb; ++b)
+      for (int a = 0; a < na; ++a) {
+        const std::uint8_t* v = base + a * sa + b * sb;
+        const auto face_at = [&](int c) { y_faces[std::size_t(c - c0 + 1)].push_back({a, b}); };
+        if (v[c0] != 0) face_at(c0 - 1);
+        for (int c = c0; c < c_end;) {
+          // Eight levels at a time where they hold no change (most of a column).
+          if (c + 8 <= c_end) {
+            std::uint64_t here, next;
+            std::memcpy(&here, v + c, 8);
+            std::memcpy(&next, v + c + 1, 8);
+            if (here == next) {
+              c += 8;
+              continue;
+            }
+          }
+          if (v[c] != v[c + 1]) face_at(c);
+          ++c;
+        }
+        if (v[c_end] != 0) face_at(c_end);
+      }
+  }
+  std::vector<int> differing;
   for (int c = c0 - 1; c <= c_end; ++c) {
     stop_point(stop);
     const std::uint8_t* below = c >= c0 ? base + c * sc : nullptr;
     const std::uint8_t* above = c + 1 <= c_end ? base + (c + 1) * sc : nullptr;
-    std::vector<std::size_t>& filled = slice.filled();
-    filled.clear();
-    for (int b = 0; b < nb; ++b) {
-      signed char* row = slice.row(b);
-      for (int a = 0; a < na; ++a) {
-        const std::ptrdiff_t off = a * sa + b * sb;
-        row[a] = static_cast<signed char>((below ? below[off] : 0) - (above ? above[off] : 0));
-        if (row[a] != 0) filled.push_back(std::size_t(b) * std::size_t(na) + std::size_t(a));
+    const auto face = [&](std::ptrdiff_t off) {
+      return static_cast<signed char>((below ? below[off] : 0) - (above ? above[off] : 0));
+    };
+    if (sc == 1) {
+      for (const auto& [a, b] : y_faces[std::size_t(c - c0 + 1)]) slice.set(a, b, face(a * sa + b * sb));
+    } else if (sa == 1) {
+      // a runs along y, contiguous in memory: a row equal in both layers has no face.
+      for (int b = 0; b < nb; ++b) {
+        const std::ptrdiff_t off = b * sb;
+        if (below && above && std::equal(below + off, below + off + na, above + off)) continue;
+        for (int a = 0; a < na; ++a)
+          if (const signed char m = face(off + a); m != 0) slice.set(a, b, m);
       }
+    } else {
+      // b runs along y: the columns of a equal in both layers have no face; the others are read row by row.
+      differing.clear();
+      for (int a = 0; a < na; ++a)
+        if (!below || !above || !std::equal(below + a * sa, below + a * sa + nb, above + a * sa)) differing.push_back(a);
+      for (int b = 0; b < nb; ++b)
+        for (const int a : differing)
+          if (const signed char m = face(a * sa + b); m != 0) slice.set(a, b, m);
     }
-    if (filled.empty()) continue;
+    if (slice.empty()) continue;
     slice.mesh(
         corners,
         [&](int a, int b) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -76,6 +77,58 @@ void parallel_tasks(std::size_t n, unsigned threads, Task&& task) {
   {
     std::vector<std::jthread> pool;
     pool.reserve(workers - 1);
+    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
+    work();
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
+// Runs task(i) for every i in [0, n) on up to `threads` workers, task i only once every task in after[i] has
+// ended; a free worker takes the lowest-numbered task that may run. For tasks of uneven cost where some need
+// others' results. Each task must write only its own outputs (and read others' only after them), so results do
+// not depend on which worker ran what. The first exception of any task is rethrown once all workers have
+// stopped; tasks not yet started then never start. `after` must hold no cycle.
+template <class Task>
+void parallel_graph(const std::vector<std::vector<std::size_t>>& after, unsigned threads, Task&& task) {
+  const std::size_t n = after.size();
+  std::vector<std::size_t> waiting(n);
+  std::vector<std::vector<std::size_t>> unlocks(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    waiting[i] = after[i].size();
+    for (const std::size_t before : after[i]) unlocks[before].push_back(i);
+  }
+  std::vector<bool> started(n, false);
+  std::size_t started_count = 0;
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::exception_ptr failure;
+  const auto work = [&] {
+    std::unique_lock lock(mutex);
+    while (!failure && started_count < n) {
+      std::size_t i = 0;
+      while (i < n && (started[i] || waiting[i] != 0)) ++i;
+      if (i == n) {  // every task left waits for one that is running
+        changed.wait(lock);
+        continue;
+      }
+      started[i] = true;
+      ++started_count;
+      lock.unlock();
+      std::exception_ptr error;
+      try {
+        task(i);
+      } catch (...) {
+        error = std::current_exception();
+      }
+      lock.lock();
+      if (error && !failure) failure = error;
+      for (const std::size_t next : unlocks[i]) --waiting[next];
+      changed.notify_all();
+    }
+  };
+  const std::size_t workers = std::min<std::size_t>(resolve_threads(threads), n);
+  {
+    std::vector<std::jthread> pool;
     for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
     work();
   }

@@ -161,6 +161,38 @@ TEST(Cancellation, AStopDuringALongVoxelizationReturnsPromptly) {
   EXPECT_LT(std::chrono::steady_clock::now() - stopped, std::chrono::seconds(3));
 }
 
+TEST(Cancellation, AStopDuringTheAreaSearchReturnsPromptlyOnAnyThreadCount) {
+  // The area search's tasks wait on one another (searches, then their packing): a stop must end them all, the
+  // waiting ones included, and surface as Cancelled. The 30 x 21 m hall's search takes a good part of a second.
+  const AnalysisResult prepared = [] {
+    AnalysisOptions o;
+    o.find_areas = false;
+    o.build_bounds = false;
+    return analyze(synth::generate(synth::hall_room(30.0f, 21.0f)), o);
+  }();
+  ASSERT_TRUE(prepared.ok());
+  const Storey& storey = prepared.storeys[0];
+  for (const unsigned threads : {1u, 2u, 3u})
+    for (const int after_ms : {0, 5, 40}) {
+      std::stop_source stop;
+      std::chrono::steady_clock::time_point stopped = std::chrono::steady_clock::now();
+      std::jthread stopper([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(after_ms));
+        stopped = std::chrono::steady_clock::now();
+        stop.request_stop();
+      });
+      try {
+        find_areas(prepared.voxels.grid, *prepared.features, {storey.floor_y, storey.ceiling_y, {}}, {}, {}, threads,
+                   stop.get_token());
+        FAIL() << "finished before the stop, " << threads << " threads";
+      } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ErrorCode::Cancelled) << threads << " threads";
+      }
+      stopper.join();
+      EXPECT_LT(std::chrono::steady_clock::now() - stopped, std::chrono::seconds(3)) << threads << " threads";
+    }
+}
+
 TEST(MinimumHeight, ALoneWallIsNoRoom) {
   // One wall 1.5 m high: its ends are the fullest levels, 15 levels apart at 0.1 m, yet the surfaces found
   // in them, 0.10 m and 1.50 m, are less than 1.5 m apart (issue 18's reproducer). No room.

@@ -102,7 +102,8 @@ struct AreaCounts {
 };
 
 struct AreaTimings {  // milliseconds
-  // search: §3.3 and, beside the square searches, the walls' reduction; reduce: the squares' (§3.4, growth).
+  // search: until the last search of §3.3 ends, with the reductions (§3.4, growth) that run beside the searches;
+  // reduce: the reductions left after it.
   double search = 0, reduce = 0, classify = 0;
 };
 

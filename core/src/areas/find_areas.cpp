@@ -1,4 +1,5 @@
-// §3.3-3.5 in the thesis's order: the 12 searches in parallel (§3.7), reduction per type, classification.
+// §3.3-3.5 in the thesis's order: the 12 searches in parallel (§3.7), reduction per type and size beside them,
+// classification.
 #include "../parallel.h"
 #include "roomsense/cancel.h"
 #include "classify.h"
@@ -7,8 +8,11 @@
 #include "search.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <mutex>
 #include <numbers>
 #include <string>
 
@@ -109,14 +113,22 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   std::array<std::array<Candidates, 3>, 4> found;
   std::array<bool, 12> skipped{};
   double dominant_deg = 0.0;  // the room's main direction, from the walls (reduce.h)
+  const auto range_of = [&](std::size_t type, std::size_t size) {
+    return type == 0 ? size_range(params.wall_width[size], params.wall_height[size], params.width_tolerance, voxel)
+                     : size_range(params.square_width[size], params.square_width[size], params.width_tolerance, voxel);
+  };
+  // The corner pairs a search may try: half a ring of second corners per first one (Eq. 3.21); squares try
+  // about four centres per tile.
+  const auto pairs = [&](std::size_t type, std::size_t size) {
+    const SizeRange range = range_of(type, size);
+    const double ring = 0.5 * std::numbers::pi * (range.max_d * range.max_d - range.min_d * range.min_d);
+    return starts[type] * ring * (type == 0 ? 1.0 : 2.0);
+  };
+  const auto search_cost = [&](std::size_t type) { return pairs(type, 0) + pairs(type, 1) + pairs(type, 2); };
   const auto search = [&](std::size_t t) {
     const std::size_t type = t / 3, size = t % 3;
-    const SizeRange range =
-        type == 0 ? size_range(params.wall_width[size], params.wall_height[size], params.width_tolerance, voxel)
-                  : size_range(params.square_width[size], params.square_width[size], params.width_tolerance, voxel);
-    // Half a ring of second corners per first one (Eq. 3.21); squares try about four centres per tile.
-    const double ring = 0.5 * std::numbers::pi * (range.max_d * range.max_d - range.min_d * range.min_d);
-    if (starts[type] * ring * (type == 0 ? 1.0 : 2.0) > kAreaSearchBudget) {
+    const SizeRange range = range_of(type, size);
+    if (pairs(type, size) > kAreaSearchBudget) {
       skipped[t] = true;
       return;
     }
@@ -127,71 +139,113 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
     const Surface surface = type == 1 ? Surface::Floor : type == 2 ? Surface::Ceiling : Surface::Furniture;
     found[type][size] = search_squares(spec, features, surface, range, params.horizontal_fill, dominant_deg, stop);
   };
-  // The three wall searches first: their rectangles give the room's main direction, which the square
-  // searches try first.
-  parallel_tasks(3, threads, search);
-  normals = NormalCounts();
-  std::vector<Sized> deduplicated_walls;
-  deduplicate_centres(found[0], [&](const Sized& s) { deduplicated_walls.push_back(s); });
-  dominant_deg = dominant_direction_deg(deduplicated_walls);
-
   // §3.4, independent per type: V_Wall, V_Floor, ... (Eq. 3.44), for reach; packing (reduce.h) picks from all
   // the rectangles found: Eq. 3.44 would drop a medium square whose centre a large one has, though packing
-  // may then refuse that large one.
+  // may then refuse that large one. Eq. 3.54-3.57 for the kept rectangles, which then grow into the surface
+  // packing left free (grow.h), per type in the task of its last packing, so that no type waits for the others'.
   // Reach reads the deduplicated walls and floors; of ceilings and furniture only the count is kept.
   const PlacementContext context{spec, features, surfaces, feature_params};
   std::vector<ReachWall> wall_areas;
   std::vector<ReachFloor> floor_areas;
-  std::array<std::size_t, 4> deduplicated_count{deduplicated_walls.size()};
-  std::array<std::vector<std::size_t>, 4> kept;
-  std::array<std::size_t, 4> found_count{};
-  // Eq. 3.54-3.57 for the kept rectangles, which then grow into the surface packing left free (grow.h): per
-  // type, in the same task as its packing, so that no type waits for the others'.
+  std::array<std::size_t, 4> deduplicated_count{}, found_count{};
   std::array<std::vector<Area>, 4> kept_areas;
-  const auto reduce = [&](std::size_t type) {
-    if (type == 0) {
-      for (const Sized& s : deduplicated_walls) wall_areas.emplace_back(to_area(s, AreaType::Wall, context));
-      deduplicated_walls = {};
-    }
-    if (type == 1)
-      deduplicated_count[type] = deduplicate_centres(
-          found[type], [&](const Sized& s) { floor_areas.emplace_back(to_area(s, AreaType::Floor, context)); });
-    if (type > 1) deduplicated_count[type] = deduplicate_centres(found[type], [](const Sized&) {});
-    const SizedList all(found[type]);
-    // Eq. 3.49: furniture squares less than reduction_offset levels apart are on one top.
-    const TileMap is_tile{spec, type == 1 ? std::span<const std::uint8_t>(features.free_floor)
-                                : type == 2 ? std::span<const std::uint8_t>(features.free_ceiling)
-                                            : std::span<const std::uint8_t>(),
-                          type == 3 ? std::span<const int>(features.furniture) : std::span<const int>()};
-    kept[type] = type == 0 ? pack_walls(all)
-                           : pack_squares(all, type == 3 ? params.reduction_offset - 1 : 0, dominant_deg, is_tile);
-    for (std::size_t i : kept[type]) kept_areas[type].push_back(to_area(all[i], kAreaTypes[type], context));
-    // Growth needs only the kept areas: the candidates go before it allocates its sample table.
-    for (std::size_t size = 0; size < found[type].size(); ++size) {
-      found_count[type] += found[type][size].size();
-      found[type][size] = Candidates();
-    }
+  const auto grow = [&](std::size_t type) {
     if (params.grow) grow_areas(kept_areas[type], growth_rule(spec, features, params, type), params, stop);
   };
-  // The walls' reduction needs only the wall searches: it runs beside the nine square searches.
-  parallel_tasks(10, threads, [&](std::size_t t) { t == 0 ? reduce(0) : search(t + 2); });
+  // Walls: V_Wall and the room's main direction, which the square searches try first (reduce.h), and beside
+  // them packing; the candidates (along the room's surface, not over its floor: few) go once both are done.
+  std::atomic<int> wall_candidate_users = 2;
+  const auto release_walls = [&] {
+    if (--wall_candidate_users != 0) return;
+    for (Candidates& size : found[0]) found_count[0] += size.size(), size = Candidates();
+  };
+  const auto deduplicate_walls = [&] {
+    normals = NormalCounts();
+    std::vector<Sized> walls;
+    deduplicated_count[0] = deduplicate_centres(spec, found[0], [&](const Sized& s) { walls.push_back(s); });
+    dominant_deg = dominant_direction_deg(walls);
+    for (const Sized& s : walls) wall_areas.emplace_back(to_area(s, AreaType::Wall, context));
+    release_walls();
+  };
+  const auto reduce_walls = [&] {
+    const SizedList all(found[0]);
+    for (std::size_t i : pack_walls(all)) kept_areas[0].push_back(to_area(all[i], AreaType::Wall, context));
+    release_walls();
+    grow(0);
+  };
+  // Squares one size at a time, large first: deduplicated (V_Floor for reach), packed and dropped before the
+  // next size is searched, so a type holds one size's candidates at a time (on a 50 x 50 m floor, millions).
+  std::array<std::unique_ptr<CentreDeduplicator>, 4> deduplicators;
+  std::array<std::unique_ptr<SquarePacker>, 4> packers;
+  const auto reduce_squares = [&](std::size_t type, std::size_t size) {
+    if (size == 0) {
+      deduplicators[type] = std::make_unique<CentreDeduplicator>(spec);
+      const TileMap is_tile{spec, type == 1 ? std::span<const std::uint8_t>(features.free_floor)
+                                  : type == 2 ? std::span<const std::uint8_t>(features.free_ceiling)
+                                              : std::span<const std::uint8_t>(),
+                            type == 3 ? std::span<const int>(features.furniture) : std::span<const int>()};
+      // Eq. 3.49: furniture squares less than reduction_offset levels apart are on one top.
+      packers[type] = std::make_unique<SquarePacker>(spec, type == 3 ? params.reduction_offset - 1 : 0, dominant_deg, is_tile);
+    }
+    Candidates& squares = found[type][size];
+    const AreaSize area_size = kAreaSizes[size];
+    deduplicated_count[type] += deduplicators[type]->add(squares, area_size, [&](const Sized& s) {
+      if (type == 1) floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
+    });
+    for (std::size_t i : packers[type]->pack(squares))
+      kept_areas[type].push_back(to_area(Sized{squares[i], area_size}, kAreaTypes[type], context));
+    found_count[type] += squares.size();
+    squares = Candidates();
+    if (size + 1 < kAreaSizes.size()) return;
+    deduplicators[type].reset();
+    packers[type].reset();
+    grow(type);
+  };
+  // The work as a graph (parallel_graph): the three wall searches; then the walls' deduplication, after which
+  // each type's sizes are searched and reduced in turn (search, reduce, next size); the walls' packing runs
+  // whenever a worker has nothing else. The types most costly to search start first.
+  constexpr std::size_t kDeduplicateWalls = 3;
+  std::vector<std::vector<std::size_t>> after = {{}, {}, {}, {0, 1, 2}};
+  std::vector<std::function<void()>> tasks = {[&] { search(0); }, [&] { search(1); }, [&] { search(2); },
+                                              deduplicate_walls};
+  std::array<std::size_t, 3> square_types = {1, 2, 3};
+  std::stable_sort(square_types.begin(), square_types.end(),
+                   [&](std::size_t a, std::size_t b) { return search_cost(a) > search_cost(b); });
+  std::vector<std::size_t> square_searches;
+  for (const std::size_t type : square_types)
+    for (std::size_t size = 0; size < kAreaSizes.size(); ++size) {
+      square_searches.push_back(tasks.size());
+      after.push_back({size == 0 ? kDeduplicateWalls : tasks.size() - 1});
+      tasks.push_back([&search, type, size] { search(3 * type + size); });
+      after.push_back({tasks.size() - 1});
+      tasks.push_back([&reduce_squares, type, size] { reduce_squares(type, size); });
+    }
+  after.push_back({0, 1, 2});
+  tasks.push_back(reduce_walls);
+  // The search time ends with the last search, the reduction's with the graph.
+  std::mutex searches_mutex;
+  std::size_t searches_left = square_searches.size();
+  auto searches_end = clock;
+  parallel_graph(after, threads, [&](std::size_t i) {
+    tasks[i]();
+    if (std::find(square_searches.begin(), square_searches.end(), i) == square_searches.end()) return;
+    const std::lock_guard lock(searches_mutex);
+    if (--searches_left == 0) searches_end = std::chrono::steady_clock::now();
+  });
   for (std::size_t t = 0; t < skipped.size(); ++t)
     if (skipped[t])
       result.warnings.push_back(std::string(to_string(kAreaSizes[t % 3])) + " " + std::string(to_string(kAreaTypes[t / 3])) +
                                 " areas not searched: too many corner pairs for this room at " +
                                 std::to_string(voxel).substr(0, 5) + " m voxels (a coarser --voxel searches them)");
   stop_point(stop);
-  result.timings.search = elapsed_ms(clock);  // the square searches, and the walls' reduction beside them
+  result.timings.search = std::chrono::duration<double, std::milli>(searches_end - clock).count();  // and overlapping reductions
+  result.timings.reduce = elapsed_ms(searches_end);
   clock = std::chrono::steady_clock::now();
-  parallel_tasks(3, threads, [&](std::size_t type) { reduce(type + 1); });
   for (std::size_t type = 0; type < 4; ++type) {
     result.counts.found[type] = found_count[type];
     result.counts.deduplicated[type] = deduplicated_count[type];
-    result.counts.reduced[type] = kept[type].size();
+    result.counts.reduced[type] = kept_areas[type].size();  // growth changes extents, not the count
   }
-  stop_point(stop);
-  result.timings.reduce = elapsed_ms(clock);
-  clock = std::chrono::steady_clock::now();
 
   // §3.5: reach against V_Floor and V_Wall (before packing).
   for (std::vector<Area>& areas : kept_areas) result.areas.insert(result.areas.end(), areas.begin(), areas.end());

@@ -136,33 +136,41 @@ double angle_mod_90(int dx, int dz) {
 
 }  // namespace
 
-std::size_t deduplicate_centres(const std::array<Candidates, 3>& by_size, const std::function<void(const Sized&)>& keep) {
-  // Centre voxels lie within the corners' box: a bit per voxel of it, rows along y.
-  glm::ivec3 lo(INT_MAX), hi(INT_MIN);
-  for (const Candidates& size : by_size)
-    for (std::size_t i = 0; i < size.size(); ++i)
-      for (const glm::ivec3& k : size[i].unpack().corners) lo = glm::min(lo, k), hi = glm::max(hi, k);
-  SampleRaster marked(lo.x, hi.x, lo.z, hi.z, lo.y, hi.y);
+CentreDeduplicator::CentreDeduplicator(const GridSpec& spec)
+    // Centre voxels lie within the corners' box, the grid's columns and its levels (one beyond, for a top's
+    // y_Actual): a bit per voxel, rows along y.
+    : marked_(std::make_unique<SampleRaster>(0, spec.nx - 1, 0, spec.nz - 1, -1, spec.ny)) {}
+CentreDeduplicator::~CentreDeduplicator() = default;
+
+std::size_t CentreDeduplicator::add(const Candidates& rects, AreaSize size,
+                                    const std::function<void(const Sized&)>& keep) {
   std::size_t kept = 0;
-  for (std::size_t s = 0; s < by_size.size(); ++s)
-    for (std::size_t r = 0; r < by_size[s].size(); ++r) {
-      const PackedCandidate p = by_size[s][r];
-      const Candidate c = p.unpack();
-      const glm::ivec3 sum = corner_sum(c);
-      int xs[2], ys[2], zs[2];
-      const int nx = centre_voxels(sum.x, xs), ny = centre_voxels(sum.y, ys), nz = centre_voxels(sum.z, zs);
-      const auto any_marked = [&] {
-        for (int i = 0; i < nx; ++i)
-          for (int k = 0; k < nz; ++k)
-            if (marked.any(xs[i], zs[k], ys[0], ys[ny - 1])) return true;
-        return false;
-      };
-      if (any_marked()) continue;
+  for (std::size_t r = 0; r < rects.size(); ++r) {
+    const PackedCandidate p = rects[r];
+    const Candidate c = p.unpack();
+    const glm::ivec3 sum = corner_sum(c);
+    int xs[2], ys[2], zs[2];
+    const int nx = centre_voxels(sum.x, xs), ny = centre_voxels(sum.y, ys), nz = centre_voxels(sum.z, zs);
+    const auto any_marked = [&] {
       for (int i = 0; i < nx; ++i)
-        for (int k = 0; k < nz; ++k) marked.set(xs[i], zs[k], ys[0], ys[ny - 1]);
-      keep({p, kAreaSizes[s]});
-      ++kept;
-    }
+        for (int k = 0; k < nz; ++k)
+          if (marked_->any(xs[i], zs[k], ys[0], ys[ny - 1])) return true;
+      return false;
+    };
+    if (any_marked()) continue;
+    for (int i = 0; i < nx; ++i)
+      for (int k = 0; k < nz; ++k) marked_->set(xs[i], zs[k], ys[0], ys[ny - 1]);
+    keep({p, size});
+    ++kept;
+  }
+  return kept;
+}
+
+std::size_t deduplicate_centres(const GridSpec& spec, const std::array<Candidates, 3>& by_size,
+                                const std::function<void(const Sized&)>& keep) {
+  CentreDeduplicator deduplicator(spec);
+  std::size_t kept = 0;
+  for (std::size_t s = 0; s < by_size.size(); ++s) kept += deduplicator.add(by_size[s], kAreaSizes[s], keep);
   return kept;
 }
 
@@ -206,11 +214,9 @@ std::vector<std::size_t> pack_walls(const SizedList& walls) {
   return kept;
 }
 
-namespace {
-
 // For a level-free TileMap (floor or ceiling): how many cells of a run along a row or a column are not tiles,
 // from prefix counts, cells outside the grid included (TileMap says they are no tiles).
-class NonTileCounts {
+class SquarePacker::NonTileCounts {
  public:
   explicit NonTileCounts(const TileMap& is_tile) : nx_(is_tile.spec.nx), nz_(is_tile.spec.nz) {
     along_x_.assign(std::size_t(nz_) * std::size_t(nx_ + 1), 0);
@@ -241,97 +247,96 @@ class NonTileCounts {
   std::vector<int> along_x_, along_z_;
 };
 
-}  // namespace
+SquarePacker::SquarePacker(const GridSpec& spec, int level_tolerance, double dominant_deg, const TileMap& is_tile)
+    : level_tolerance_(level_tolerance),
+      dominant_deg_(dominant_deg),
+      is_tile_(is_tile),
+      runs_(is_tile.mask.empty() ? nullptr : std::make_unique<NonTileCounts>(is_tile)),
+      // Per level, rows of half-voxel samples along x over the grid's columns: corners are voxel indices in the
+      // grid (at most a level beyond, for a top's y_Actual) and samples lie within a voxel and a half of them.
+      taken_(std::make_unique<SampleRaster>(-2, spec.ny + 2, -4, 2L * spec.nz + 4, -4, 2L * spec.nx + 4)) {}
+SquarePacker::~SquarePacker() = default;
 
-std::vector<std::size_t> pack_squares(const SizedList& squares, int level_tolerance, double dominant_deg,
-                                      const TileMap& is_tile) {
-  std::optional<NonTileCounts> runs;  // floor and ceiling: contact along the axes by run, not by cell
-  if (!is_tile.mask.empty()) runs.emplace(is_tile);
-  // Contact: unusable cells just outside the square's edges, sampled every half voxel.
-  const auto contact = [&](const Candidate& c) {
-    int n = 0;
-    const glm::ivec3 sum = corner_sum(c);  // 4 x the middle
-    for (std::size_t i = 0; i < 4; ++i) {
-      const glm::ivec3 e = c.corners[(i + 1) % 4] - c.corners[i];
-      if (e.x == 0 && e.z == 0) continue;
-      if (e.x == 0 || e.z == 0) {
-        // Along a grid axis every sample below is exact: the 2L + 1 samples of an edge of L voxels fall
-        // on its L + 1 cells twice each, but for the cell at the far end of the direction of travel
-        // (x + 0.5 + t rounds down to x + floor((1 + 2t) / 2); x + 0.5 - t to x - floor(2t / 2)), and
-        // 0.75 voxels out (away from the middle) is the neighbouring row. Counted by cell, without the doubles.
-        const bool along_x = e.z == 0;
-        const int steps = std::abs(along_x ? e.x : e.z), step = (along_x ? e.x : e.z) > 0 ? 1 : -1;
-        const int side = (along_x ? 4 * c.corners[i].z - sum.z : 4 * c.corners[i].x - sum.x) > 0 ? 1 : -1;
-        const int once = step > 0 ? 0 : steps;  // the cell one sample meets
-        const int x = c.corners[i].x, z = c.corners[i].z;
-        if (runs) {
-          const int far_x = x + step * steps, far_z = z + step * steps;
-          const int all = along_x ? runs->row(std::min(x, far_x), std::max(x, far_x), z + side)
-                                  : runs->column(x + side, std::min(z, far_z), std::max(z, far_z));
-          const int at_once = along_x ? runs->row(x + step * once, x + step * once, z + side)
-                                      : runs->column(x + side, z + step * once, z + step * once);
-          n += 2 * all - at_once;
-          continue;
-        }
-        for (int j = 0; j <= steps; ++j)
-          n += is_tile(along_x ? x + step * j : x + side, along_x ? z + side : z + step * j, c.corners[0].y)
-                   ? 0
-                   : (j == once ? 1 : 2);
+// Contact: unusable cells just outside the square's edges, sampled every half voxel.
+int SquarePacker::contact(const Candidate& c) const {
+  int n = 0;
+  const glm::ivec3 sum = corner_sum(c);  // 4 x the middle
+  for (std::size_t i = 0; i < 4; ++i) {
+    const glm::ivec3 e = c.corners[(i + 1) % 4] - c.corners[i];
+    if (e.x == 0 && e.z == 0) continue;
+    if (e.x == 0 || e.z == 0) {
+      // Along a grid axis every sample below is exact: the 2L + 1 samples of an edge of L voxels fall
+      // on its L + 1 cells twice each, but for the cell at the far end of the direction of travel
+      // (x + 0.5 + t rounds down to x + floor((1 + 2t) / 2); x + 0.5 - t to x - floor(2t / 2)), and
+      // 0.75 voxels out (away from the middle) is the neighbouring row. Counted by cell, without the doubles.
+      const bool along_x = e.z == 0;
+      const int steps = std::abs(along_x ? e.x : e.z), step = (along_x ? e.x : e.z) > 0 ? 1 : -1;
+      const int side = (along_x ? 4 * c.corners[i].z - sum.z : 4 * c.corners[i].x - sum.x) > 0 ? 1 : -1;
+      const int once = step > 0 ? 0 : steps;  // the cell one sample meets
+      const int x = c.corners[i].x, z = c.corners[i].z;
+      if (runs_) {
+        const int far_x = x + step * steps, far_z = z + step * steps;
+        const int all = along_x ? runs_->row(std::min(x, far_x), std::max(x, far_x), z + side)
+                                : runs_->column(x + side, std::min(z, far_z), std::max(z, far_z));
+        const int at_once = along_x ? runs_->row(x + step * once, x + step * once, z + side)
+                                    : runs_->column(x + side, z + step * once, z + step * once);
+        n += 2 * all - at_once;
         continue;
       }
-      const glm::dvec2 mid = glm::dvec2(sum.x, sum.z) * 0.25 + 0.5;
-      const glm::dvec2 a(c.corners[i].x + 0.5, c.corners[i].z + 0.5);
-      const glm::dvec2 b(c.corners[(i + 1) % 4].x + 0.5, c.corners[(i + 1) % 4].z + 0.5);
-      const double length = glm::distance(a, b);
-      const glm::dvec2 dir = (b - a) / length;
-      glm::dvec2 out(-dir.y, dir.x);
-      if (glm::dot(out, 0.5 * (a + b) - mid) < 0.0) out = -out;
-      for (double t = 0.0; t <= length; t += kSample) {
-        const glm::dvec2 p = a + t * dir + 0.75 * out;
-        n += is_tile(floor_int(p.x), floor_int(p.y), c.corners[0].y) ? 0 : 1;
-      }
+      for (int j = 0; j <= steps; ++j)
+        n += is_tile_(along_x ? x + step * j : x + side, along_x ? z + side : z + step * j, c.corners[0].y)
+                 ? 0
+                 : (j == once ? 1 : 2);
+      continue;
     }
-    return n;
-  };
+    const glm::dvec2 mid = glm::dvec2(sum.x, sum.z) * 0.25 + 0.5;
+    const glm::dvec2 a(c.corners[i].x + 0.5, c.corners[i].z + 0.5);
+    const glm::dvec2 b(c.corners[(i + 1) % 4].x + 0.5, c.corners[(i + 1) % 4].z + 0.5);
+    const double length = glm::distance(a, b);
+    const glm::dvec2 dir = (b - a) / length;
+    glm::dvec2 out(-dir.y, dir.x);
+    if (glm::dot(out, 0.5 * (a + b) - mid) < 0.0) out = -out;
+    for (double t = 0.0; t <= length; t += kSample) {
+      const glm::dvec2 p = a + t * dir + 0.75 * out;
+      n += is_tile_(floor_int(p.x), floor_int(p.y), c.corners[0].y) ? 0 : 1;
+    }
+  }
+  return n;
+}
+
+// Squares of a size share a few hundred edge directions: each direction's 5° step is computed once.
+int SquarePacker::misalignment_step(const Candidate& c) {
+  const glm::ivec3 e = c.corners[1] - c.corners[0];
+  const auto [it, added] = steps_of_direction_.try_emplace(pack_key(e.x, 0, e.z), 0);
+  if (added) it->second = int(std::lround(misalignment_deg(c, dominant_deg_) / 5.0));
+  return it->second;
+}
+
+std::vector<std::size_t> SquarePacker::pack(const Candidates& squares) {
   // Within a size, aligned with the room first (in steps of 5°), then by contact, then in search order. Each
-  // square's rank is computed once: the sort compares it O(n log n) times (an atan2 each, before).
-  // Squares of a size share a few hundred edge directions: each direction's 5° step is computed once.
-  std::unordered_map<std::uint64_t, int> steps_of_direction;
-  const auto misalignment_step = [&](const Candidate& c) {
-    const glm::ivec3 e = c.corners[1] - c.corners[0];
-    const auto [it, added] = steps_of_direction.try_emplace(pack_key(e.x, 0, e.z), 0);
-    if (added) it->second = int(std::lround(misalignment_deg(c, dominant_deg) / 5.0));
-    return it->second;
-  };
-  // The rank packed into one key, the square's index last: sorting the keys is the stable sort by rank.
+  // square's rank is computed once: the sort compares it O(n log n) times (an atan2 each, before). The rank
+  // is packed into one key, the square's index last: sorting the keys is the stable sort by rank.
   constexpr int kContactBits = 24;
   if (squares.size() > 0xffffffffu) throw std::length_error("more squares than packing can rank");
-  const SampleBox box = sample_box(squares);  // per level: rows of samples along x
-  SampleRaster taken(box.y_lo / 2, box.y_hi / 2, box.z_lo, box.z_hi, box.x_lo, box.x_hi);
-  std::vector<std::size_t> kept;
   std::vector<std::uint64_t> keys;
-  // The size leads the rank, and each size is one run of the list: one size's keys at a time.
-  for (std::size_t size = 0; size < kAreaSizes.size(); ++size) {
-    keys.clear();
-    for (std::size_t i = squares.first_of(size); i < squares.first_of(size + 1); ++i) {
-      const Sized q = squares[i];
-      const Candidate c = q.c();
-      const std::uint64_t away = std::uint64_t((1 << kContactBits) - 1 - std::min(contact(c), (1 << kContactBits) - 1));
-      keys.push_back((std::uint64_t(q.size) << 62) | (std::uint64_t(misalignment_step(c)) << 56) | (away << 32) |
-                     std::uint64_t(i));
-    }
-    std::sort(keys.begin(), keys.end());
-    for (const std::uint64_t key : keys) {
-      const std::size_t i = std::size_t(key & 0xffffffffu);
-      const Candidate c = squares[i].c();
-      const int level = c.corners[0].y;
-      bool free = true;
-      for (int y = level - level_tolerance; y <= level + level_tolerance && free; ++y)
-        free = square_samples(c, [&](long z, long x0, long x1) { return !taken.any(y, z, x0, x1); });
-      if (!free) continue;
-      square_samples(c, [&](long z, long x0, long x1) { return taken.set(level, z, x0, x1), true; });
-      kept.push_back(i);
-    }
+  keys.reserve(squares.size());
+  for (std::size_t i = 0; i < squares.size(); ++i) {
+    const Candidate c = squares[i].unpack();
+    const std::uint64_t away = std::uint64_t((1 << kContactBits) - 1 - std::min(contact(c), (1 << kContactBits) - 1));
+    keys.push_back((std::uint64_t(misalignment_step(c)) << 56) | (away << 32) | std::uint64_t(i));
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::size_t> kept;
+  for (const std::uint64_t key : keys) {
+    const std::size_t i = std::size_t(key & 0xffffffffu);
+    const Candidate c = squares[i].unpack();
+    const int level = c.corners[0].y;
+    bool free = true;
+    for (int y = level - level_tolerance_; y <= level + level_tolerance_ && free; ++y)
+      free = square_samples(c, [&](long z, long x0, long x1) { return !taken_->any(y, z, x0, x1); });
+    if (!free) continue;
+    square_samples(c, [&](long z, long x0, long x1) { return taken_->set(level, z, x0, x1), true; });
+    kept.push_back(i);
   }
   std::sort(kept.begin(), kept.end());  // the output keeps the search's order
   return kept;

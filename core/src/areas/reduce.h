@@ -7,6 +7,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <unordered_map>
 #include <span>
 
 namespace roomsense::detail {
@@ -17,18 +19,12 @@ struct Sized {
   Candidate c() const { return packed.unpack(); }
 };
 
-// The rectangles of one type, large, then medium, then small, indexed as one list: packing reads the searches'
-// own vectors instead of a copy of them (on a 50 x 50 m floor, millions of candidates).
+// The rectangles of one type, large, then medium, then small, indexed as one list: wall packing reads the
+// searches' own candidates instead of a copy of them.
 class SizedList {
  public:
   explicit SizedList(const std::array<Candidates, 3>& by_size) : by_size_(&by_size) {}
   std::size_t size() const { return (*by_size_)[0].size() + (*by_size_)[1].size() + (*by_size_)[2].size(); }
-  // Where size class s (0 large, 1 medium, 2 small) starts; first_of(3) is size().
-  std::size_t first_of(std::size_t s) const {
-    std::size_t first = 0;
-    for (std::size_t k = 0; k < s && k < 3; ++k) first += (*by_size_)[k].size();
-    return first;
-  }
   Sized operator[](std::size_t i) const {
     for (std::size_t s = 0; s < 2; ++s) {
       if (i < (*by_size_)[s].size()) return {(*by_size_)[s][i], kAreaSizes[s]};
@@ -41,11 +37,24 @@ class SizedList {
   const std::array<Candidates, 3>* by_size_;
 };
 
+class SampleRaster;
+
 // Eq. 3.44: large, then medium, then small; a rectangle is kept when none of its centre voxels (Eq. 3.43) is
-// already marked by a kept one.
-// Calls keep(rectangle) for each rectangle kept, in that order; returns how many. A floor's are many: the caller
-// keeps what it needs of each, not the list.
-std::size_t deduplicate_centres(const std::array<Candidates, 3>& by_size, const std::function<void(const Sized&)>& keep);
+// already marked by a kept one. One size at a time, so that a type's sizes need not all be held at once.
+class CentreDeduplicator {
+ public:
+  explicit CentreDeduplicator(const GridSpec& spec);  // every rectangle's corners lie in the grid
+  ~CentreDeduplicator();
+  // The rectangles of the next size, in order. Calls keep(rectangle) for each rectangle kept, in order; returns
+  // how many. A floor's are many: the caller keeps what it needs of each, not the list.
+  std::size_t add(const Candidates& rects, AreaSize size, const std::function<void(const Sized&)>& keep);
+
+ private:
+  std::unique_ptr<SampleRaster> marked_;
+};
+// All three sizes of one type at once.
+std::size_t deduplicate_centres(const GridSpec& spec, const std::array<Candidates, 3>& by_size,
+                                const std::function<void(const Sized&)>& keep);
 
 // The room's main direction, in degrees in [0, 90): the length-weighted mode of the wall rectangles' top edges
 // modulo 90°. 0 without walls.
@@ -78,8 +87,27 @@ struct TileMap {
 
 // Within a size and alignment, squares pressed against more unusable cells (not tiles: walls, clutter, the
 // edge of a top) go first, leaving the free surface in one piece for the next ones. For furniture, squares
-// more than `level_tolerance` levels apart never conflict (Eq. 3.49).
-std::vector<std::size_t> pack_squares(const SizedList& squares, int level_tolerance, double dominant_deg,
-                                      const TileMap& is_tile);
+// more than `level_tolerance` levels apart never conflict (Eq. 3.49). One size at a time: the size leads the
+// order, so a size's squares can be searched, packed and dropped before the next size's are searched.
+class SquarePacker {
+ public:
+  SquarePacker(const GridSpec& spec, int level_tolerance, double dominant_deg, const TileMap& is_tile);
+  ~SquarePacker();
+  // The squares of the next size (large, then medium, then small), in search order; returns the indices kept,
+  // ascending.
+  std::vector<std::size_t> pack(const Candidates& squares);
+
+ private:
+  class NonTileCounts;
+  int contact(const Candidate& c) const;
+  int misalignment_step(const Candidate& c);
+
+  int level_tolerance_;
+  double dominant_deg_;
+  TileMap is_tile_;
+  std::unique_ptr<NonTileCounts> runs_;  // floor and ceiling: contact along the axes by run, not by cell
+  std::unordered_map<std::uint64_t, int> steps_of_direction_;
+  std::unique_ptr<SampleRaster> taken_;
+};
 
 }  // namespace roomsense::detail

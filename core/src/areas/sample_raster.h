@@ -1,6 +1,6 @@
 // The half-voxel sample cells packing marks (reduce.cpp), as bits: a row of bits per (a, b) cell of a box, so
-// that a rectangle's run of samples along a row is tested and marked a 64-bit word at a time. The box is the
-// candidates' own, so memory follows the searched surface, not the room's extent beyond it.
+// that a rectangle's run of samples along a row is tested and marked a 64-bit word at a time. The rows of one a
+// exist from the first mark there: memory follows the marked surface, not the box, which may be the grid's.
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -16,14 +16,16 @@ class SampleRaster {
       : a_lo_(a_lo), b_lo_(b_lo), c_lo_(c_lo),
         na_(std::max(0L, a_hi - a_lo + 1)), nb_(std::max(0L, b_hi - b_lo + 1)),
         words_per_row_(std::max(1L, (c_hi - c_lo + 64) / 64)),
-        bits_(std::size_t(na_) * std::size_t(nb_) * std::size_t(words_per_row_), 0) {}
+        slabs_(std::size_t(na_)) {}
 
   // Whether any bit c in [c0, c1] of row (a, b) is set; outside the box nothing is.
   bool any(long a, long b, long c0, long c1) const {
     c0 = std::max(c0, c_lo_);
     c1 = std::min(c1, c_lo_ + 64 * words_per_row_ - 1);
     if (a < a_lo_ || b < b_lo_ || a >= a_lo_ + na_ || b >= b_lo_ + nb_ || c0 > c1) return false;
-    const std::uint64_t* row = &bits_[row_index(a, b)];
+    const std::vector<std::uint64_t>& slab = slabs_[std::size_t(a - a_lo_)];
+    if (slab.empty()) return false;
+    const std::uint64_t* row = &slab[row_index(b)];
     bool found = false;
     for_words(c0 - c_lo_, c1 - c_lo_, [&](std::size_t w, std::uint64_t mask) { found = found || (row[w] & mask); });
     return found;
@@ -36,14 +38,14 @@ class SampleRaster {
     if (a < a_lo_ || b < b_lo_ || a >= a_lo_ + na_ || b >= b_lo_ + nb_ || c0 < c_lo_ ||
         c1 >= c_lo_ + 64 * words_per_row_)
       throw std::logic_error("packing sample outside its raster");
-    std::uint64_t* row = &bits_[row_index(a, b)];
+    std::vector<std::uint64_t>& slab = slabs_[std::size_t(a - a_lo_)];
+    if (slab.empty()) slab.assign(std::size_t(nb_) * std::size_t(words_per_row_), 0);
+    std::uint64_t* row = &slab[row_index(b)];
     for_words(c0 - c_lo_, c1 - c_lo_, [&](std::size_t w, std::uint64_t mask) { row[w] |= mask; });
   }
 
  private:
-  std::size_t row_index(long a, long b) const {
-    return (std::size_t(a - a_lo_) * std::size_t(nb_) + std::size_t(b - b_lo_)) * std::size_t(words_per_row_);
-  }
+  std::size_t row_index(long b) const { return std::size_t(b - b_lo_) * std::size_t(words_per_row_); }
   // Calls f(word, mask) for the words holding bits [i0, i1] of a row (0 <= i0 <= i1).
   template <class F>
   static void for_words(long i0, long i1, F f) {
@@ -56,7 +58,7 @@ class SampleRaster {
   }
 
   long a_lo_, b_lo_, c_lo_, na_, nb_, words_per_row_;
-  std::vector<std::uint64_t> bits_;
+  std::vector<std::vector<std::uint64_t>> slabs_;  // per a: its rows, or empty before its first mark
 };
 
 }  // namespace roomsense::detail

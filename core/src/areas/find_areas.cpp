@@ -201,13 +201,13 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
     packers[type].reset();
     grow(type);
   };
-  // The work as a graph (parallel_graph): the three wall searches; then the walls' deduplication, after which
-  // each type's sizes are searched and reduced in turn (search, reduce, next size); the walls' packing runs
-  // whenever a worker has nothing else. The types most costly to search start first.
+  // The work as a graph (parallel_graph): the three wall searches; then the walls' deduplication and, beside
+  // it, their packing (which frees their candidates early); after the deduplication each type's sizes are
+  // searched and reduced in turn (search, reduce, next size), the types most costly to search first.
   constexpr std::size_t kDeduplicateWalls = 3;
-  std::vector<std::vector<std::size_t>> after = {{}, {}, {}, {0, 1, 2}};
+  std::vector<std::vector<std::size_t>> after = {{}, {}, {}, {0, 1, 2}, {0, 1, 2}};
   std::vector<std::function<void()>> tasks = {[&] { search(0); }, [&] { search(1); }, [&] { search(2); },
-                                              deduplicate_walls};
+                                              deduplicate_walls, reduce_walls};
   std::array<std::size_t, 3> square_types = {1, 2, 3};
   std::stable_sort(square_types.begin(), square_types.end(),
                    [&](std::size_t a, std::size_t b) { return search_cost(a) > search_cost(b); });
@@ -220,8 +220,6 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
       after.push_back({tasks.size() - 1});
       tasks.push_back([&reduce_squares, type, size] { reduce_squares(type, size); });
     }
-  after.push_back({0, 1, 2});
-  tasks.push_back(reduce_walls);
   // The search time ends with the last search, the reduction's with the graph.
   std::mutex searches_mutex;
   std::size_t searches_left = square_searches.size();

@@ -8,11 +8,14 @@
 namespace roomsense::detail {
 
 // Per-column prefix counts over y of "has a wall normal" (F != 0) in [floor, ceiling]: shared by the three
-// wall searches so each rectangle row costs O(1) per column. A byte a count where the room is under 256 levels
-// high (every room at the usual voxel sizes), else two; the blocked voxels a bit each.
+// wall searches so each rectangle row costs O(1) per column. Only columns with a normal have counts (walls
+// and what stands near them, not the open floor); a byte a count where the room is under 256 levels high
+// (every room at the usual voxel sizes), else two; the blocked voxels a bit each.
 struct NormalCounts {
+  static constexpr std::uint32_t kNoNormal = 0xffffffffu;
   int y0 = 0, levels = 0;               // covers y in [y0, y0 + levels)
-  std::vector<std::uint8_t> prefix8;    // column * (levels + 1) + (y - y0 + 1), when levels < 256
+  std::vector<std::uint32_t> slot;      // per column: where its counts start, or kNoNormal
+  std::vector<std::uint8_t> prefix8;    // slot * (levels + 1) + (y - y0 + 1), when levels < 256
   std::vector<std::uint16_t> prefix16;  // the same, otherwise
   std::size_t blocked_words = 0;        // per column
   std::vector<std::uint64_t> blocked_bits;  // RoomFeatures::wall_blocked, bit y - y0; empty when none is

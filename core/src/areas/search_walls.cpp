@@ -22,7 +22,8 @@ std::uint8_t compatible_normals(std::uint8_t first) {
 }  // namespace
 
 int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
-  const std::size_t base = column * std::size_t(levels + 1), hi = base + std::size_t(y_to - y0 + 1),
+  if (slot[column] == kNoNormal) return 0;
+  const std::size_t base = std::size_t(slot[column]) * std::size_t(levels + 1), hi = base + std::size_t(y_to - y0 + 1),
                     lo = base + std::size_t(y_from - y0);
   return prefix8.empty() ? int(prefix16[hi]) - int(prefix16[lo]) : int(prefix8[hi]) - int(prefix8[lo]);
 }
@@ -47,11 +48,19 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   n.levels = std::min({features.levels.ceiling - n.y0 + 1, spec.ny - n.y0,
                        int(std::numeric_limits<std::uint16_t>::max())});
   const std::size_t stride = std::size_t(n.levels + 1);
+  const auto normals_of = [&](std::size_t col) { return features.normals.data() + col * std::size_t(spec.ny) + n.y0; };
+  n.slot.assign(spec.column_count(), NormalCounts::kNoNormal);
+  std::uint32_t slots = 0;
+  for (std::size_t col = 0; col < spec.column_count() && n.levels > 0; ++col) {
+    const std::uint8_t* f = normals_of(col);
+    if (std::any_of(f, f + n.levels, [](std::uint8_t v) { return v != 0; })) n.slot[col] = slots++;
+  }
   const auto prefix_of = [&]<class Count>(std::vector<Count>& prefix) {
-    prefix.assign(spec.column_count() * stride, 0);
+    prefix.assign(std::size_t(slots) * stride, 0);
     for (std::size_t col = 0; col < spec.column_count(); ++col) {
-      const std::uint8_t* f = features.normals.data() + col * std::size_t(spec.ny) + n.y0;
-      Count* p = prefix.data() + col * stride;
+      if (n.slot[col] == NormalCounts::kNoNormal) continue;
+      const std::uint8_t* f = normals_of(col);
+      Count* p = prefix.data() + std::size_t(n.slot[col]) * stride;
       for (int i = 0; i < n.levels; ++i) p[i + 1] = Count(p[i] + (f[i] != 0 ? 1 : 0));
     }
   };

@@ -68,6 +68,28 @@ TEST(PrepareInput, RejectsAStrayVertexOneKilometreAway) {
   ASSERT_FALSE(r.warnings.empty());
 }
 
+TEST(PrepareInput, AnAnalysisOfWhatIsLeftEqualsOneOfTheCleanScan) {
+  // analyze() reads the scan in place where nothing is removed and the renumbered arrays where something is:
+  // a NaN vertex and a stray one, with triangles on them, leave exactly the clean room's analysis.
+  const Scan clean = synth::generate(synth::default_room());
+  Scan dirty = clean;
+  const auto n = std::uint32_t(dirty.vertices.size());
+  dirty.vertices.push_back({std::numeric_limits<float>::quiet_NaN(), 1.0f, 1.0f});
+  dirty.vertices.push_back({1000.0f, 0.0f, 0.0f});
+  dirty.indices.insert(dirty.indices.end(), {0, 1, n, n + 1, 2, 3});
+  const AnalysisResult a = analyze(clean), b = analyze(dirty);
+  ASSERT_TRUE(a.ok() && b.ok());
+  EXPECT_EQ(b.input.skipped_vertices, 1u);
+  EXPECT_EQ(b.input.outlier_vertices, 1u);
+  EXPECT_EQ(b.input.dropped_triangles, 2u);
+  EXPECT_EQ(a.voxels.grid.cells, b.voxels.grid.cells);
+  EXPECT_EQ(a.floor_y, b.floor_y);
+  ASSERT_EQ(a.areas.size(), b.areas.size());
+  for (std::size_t i = 0; i < a.areas.size(); ++i) EXPECT_EQ(a.areas[i].center, b.areas[i].center) << i;
+  EXPECT_EQ(a.bounds.vertices, b.bounds.vertices);
+  EXPECT_EQ(a.bounds.indices, b.bounds.indices);
+}
+
 TEST(GridBudget, AbsurdExtentsAreRefusedNotAllocated) {
   // Too few vertices for the outlier test: the grid budget must catch it.
   Scan scan{{{0, 0, 0}, {5000, 10, 5000}, {1, 1, 1}}, {}};

@@ -1,5 +1,6 @@
 #include "roomsense/error.h"
 #include "roomsense/input.h"
+#include "input_view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,7 +62,11 @@ void renumber_kept(const Scan& scan, const std::vector<std::uint8_t>& keep, Prep
 
 }  // namespace
 
-PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
+namespace {
+
+// prepare_input but for copying the scan's arrays where nothing was removed: returns whether it renumbered
+// (then `out` holds the kept vertices and triangles). The bounds are those of the kept vertices either way.
+bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out) {
   if (scan.vertices.empty()) throw Error(ErrorCode::EmptyInput, "the scan has no vertices");
   if (scan.vertices.size() > std::numeric_limits<std::uint32_t>::max())
     throw Error(ErrorCode::BadIndices, "the scan has more vertices than 32-bit indices can address");
@@ -74,7 +79,6 @@ PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
       throw Error(ErrorCode::BadIndices, "index " + std::to_string(scan.indices[i]) + " of triangle " +
                                              std::to_string(i / 3) + " is out of range (" +
                                              std::to_string(scan.vertices.size()) + " vertices)");
-  PreparedInput out;
   out.input_vertices = scan.vertices.size();
   out.input_triangles = scan.indices.size() / 3;
 
@@ -102,18 +106,38 @@ PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
     }
   }
 
-  if (out.skipped_vertices == 0 && out.outlier_vertices == 0) {  // the usual case: nothing to renumber
-    out.vertices = scan.vertices;
-    out.indices = scan.indices;
-  } else {
-    renumber_kept(scan, keep, out);
-  }
-  out.lo = out.hi = out.vertices.front();
-  for (const glm::vec3& v : out.vertices) {
+  const bool renumbered = out.skipped_vertices != 0 || out.outlier_vertices != 0;  // else: the usual case
+  if (renumbered) renumber_kept(scan, keep, out);
+  const std::vector<glm::vec3>& kept = renumbered ? out.vertices : scan.vertices;
+  out.lo = out.hi = kept.front();
+  for (const glm::vec3& v : kept) {
     out.lo = glm::min(out.lo, v);
     out.hi = glm::max(out.hi, v);
   }
+  return renumbered;
+}
+
+}  // namespace
+
+PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
+  PreparedInput out;
+  if (!check_input(scan, reject_outliers, out)) {
+    out.vertices = scan.vertices;
+    out.indices = scan.indices;
+  }
   return out;
 }
+
+namespace detail {
+
+InputView view_input(const Scan& scan, bool reject_outliers) {
+  InputView view;
+  const bool renumbered = check_input(scan, reject_outliers, view.checked);
+  view.vertices = renumbered ? std::span<const glm::vec3>(view.checked.vertices) : std::span<const glm::vec3>(scan.vertices);
+  view.indices = renumbered ? std::span<const std::uint32_t>(view.checked.indices) : std::span<const std::uint32_t>(scan.indices);
+  return view;
+}
+
+}  // namespace detail
 
 }  // namespace roomsense

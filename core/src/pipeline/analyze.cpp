@@ -4,6 +4,7 @@
 #include "roomsense/error.h"
 #include "roomsense/number_text.h"
 #include "../parallel.h"
+#include "../input/input_view.h"
 #include "storeys.h"
 #include "surface_heights.h"
 
@@ -129,21 +130,23 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
   Stopwatch clock;
   AnalysisResult r;
   stop_point(options.stop);
-  const PreparedInput in = prepare_input(scan, options.reject_outliers);
-  r.input = {in.input_vertices, in.input_triangles, in.skipped_vertices, in.outlier_vertices, in.dropped_triangles};
-  if (in.skipped_vertices > 0)
-    r.warnings.push_back(std::to_string(in.skipped_vertices) + " vertices with NaN or Inf coordinates skipped");
-  if (in.outlier_vertices > 0)
-    r.warnings.push_back(std::to_string(in.outlier_vertices) + " outlier vertices far from the room rejected");
-  if (in.dropped_triangles > 0)
-    r.warnings.push_back(std::to_string(in.dropped_triangles) + " triangles touching skipped vertices dropped");
+  const detail::InputView in = detail::view_input(scan, options.reject_outliers);
+  const PreparedInput& checked = in.checked;
+  r.input = {checked.input_vertices, checked.input_triangles, checked.skipped_vertices, checked.outlier_vertices,
+             checked.dropped_triangles};
+  if (checked.skipped_vertices > 0)
+    r.warnings.push_back(std::to_string(checked.skipped_vertices) + " vertices with NaN or Inf coordinates skipped");
+  if (checked.outlier_vertices > 0)
+    r.warnings.push_back(std::to_string(checked.outlier_vertices) + " outlier vertices far from the room rejected");
+  if (checked.dropped_triangles > 0)
+    r.warnings.push_back(std::to_string(checked.dropped_triangles) + " triangles touching skipped vertices dropped");
 
   r.mode = options.mode.value_or(in.indices.empty() ? VoxelMode::Vertices : VoxelMode::Triangles);
   if (r.mode == VoxelMode::Triangles && in.indices.empty()) {
     r.mode = VoxelMode::Vertices;
     r.warnings.push_back("triangle mode asked for a scan without triangles: vertex mode used");
   }
-  const GridSpec spec = make_grid_spec(in.lo, in.hi, options.voxel_size, options.voxel_budget);
+  const GridSpec spec = make_grid_spec(checked.lo, checked.hi, options.voxel_size, options.voxel_budget);
   const std::vector<glm::vec3> grid_vertices = to_grid_units(in.vertices, spec);
   const int min_separation = voxels_for(options.features.min_floor_ceiling, spec.voxel_size);
   r.timings.prepare = clock.lap();

@@ -1,6 +1,6 @@
 // §3.4: centre deduplication (Eq. 3.42-3.44), then packing (reduce.h says why it replaces Eq. 3.45-3.53): each
-// kept rectangle marks its half-voxel surface samples in a hash set, so a candidate meets only what lies
-// under it.
+// kept rectangle marks its half-voxel surface samples in a bit raster (sample_raster.h), so a candidate meets
+// only what lies under it.
 #include "reduce.h"
 
 #include "../floor_int.h"
@@ -10,12 +10,10 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
-#include <optional>
-#include <unordered_map>
-#include <climits>
 
 namespace roomsense::detail {
 namespace {

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <unordered_map>
 #include <span>
+#include <unordered_map>
 
 namespace roomsense::detail {
 

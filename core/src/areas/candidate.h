@@ -73,6 +73,7 @@ class Candidates {
   }
   std::size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
+  static constexpr std::size_t kBytesEach = 12;  // what one candidate takes
   PackedCandidate operator[](std::size_t i) const {
     const Item& item = blocks_[i / kBlock][i % kBlock];
     const std::uint64_t cell = (std::uint64_t(item.cell_hi) << 32) | item.cell_lo;
@@ -92,6 +93,7 @@ class Candidates {
   struct Item {
     std::uint32_t cell_lo, cell_hi, shape;
   };
+  static_assert(sizeof(Item) == kBytesEach);
   static constexpr std::size_t kBlock = 4096;
   std::vector<Shape> shapes_;
   std::vector<std::unique_ptr<Item[]>> blocks_;

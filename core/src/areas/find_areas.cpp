@@ -202,8 +202,14 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
     grow(type);
   };
   // The work as a graph (parallel_graph): the three wall searches; then the walls' deduplication and, beside
-  // it, their packing (which frees their candidates early); after the deduplication each type's sizes are
-  // searched and reduced in turn (search, reduce, next size), the types most costly to search first.
+  // it, their packing (which frees their candidates early); after the deduplication each type's square
+  // searches, side by side, the types most costly to search first, and each size's reduction after its search
+  // and the previous size's. Where one size's candidates would be large (about two per tile, 12 bytes each,
+  // past kChainBytes: a floor of some 400 m² and more), a size's search also waits for the previous size's
+  // reduction, so that the type holds one size's candidates at a time (on a 50 x 50 m floor, 6 MB each)
+  // rather than searching them side by side.
+  constexpr double kChainBytes = 1 << 20;
+  const auto chained = [&](std::size_t type) { return 2.0 * starts[type] * double(Candidates::kBytesEach) > kChainBytes; };
   constexpr std::size_t kDeduplicateWalls = 3;
   std::vector<std::vector<std::size_t>> after = {{}, {}, {}, {0, 1, 2}, {0, 1, 2}};
   std::vector<std::function<void()>> tasks = {[&] { search(0); }, [&] { search(1); }, [&] { search(2); },
@@ -214,10 +220,13 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   std::vector<std::size_t> square_searches;
   for (const std::size_t type : square_types)
     for (std::size_t size = 0; size < kAreaSizes.size(); ++size) {
+      // Tasks alternate: search, reduction. The previous size's reduction is the task before this search.
+      const std::size_t previous_reduction = tasks.size() - 1;
       square_searches.push_back(tasks.size());
-      after.push_back({size == 0 ? kDeduplicateWalls : tasks.size() - 1});
+      after.push_back({size > 0 && chained(type) ? previous_reduction : kDeduplicateWalls});
       tasks.push_back([&search, type, size] { search(3 * type + size); });
-      after.push_back({tasks.size() - 1});
+      after.push_back(size == 0 ? std::vector<std::size_t>{tasks.size() - 1}
+                                : std::vector<std::size_t>{tasks.size() - 1, previous_reduction});
       tasks.push_back([&reduce_squares, type, size] { reduce_squares(type, size); });
     }
   // The search time ends with the last search, the reduction's with the graph.

@@ -162,7 +162,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   const auto deduplicate_walls = [&] {
     normals = NormalCounts();
     std::vector<Sized> walls;
-    deduplicated_count[0] = deduplicate_centres(spec, found[0], [&](const Sized& s) { walls.push_back(s); });
+    deduplicated_count[0] = deduplicate_centres(spec, found[0], [&](const Sized& s) { walls.push_back(s); }, stop);
     dominant_deg = dominant_direction_deg(walls);
     for (const Sized& s : walls) wall_areas.emplace_back(to_area(s, AreaType::Wall, context));
     release_walls();
@@ -179,13 +179,14 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   std::array<std::unique_ptr<SquarePacker>, 4> packers;
   const auto reduce_squares = [&](std::size_t type, std::size_t size) {
     if (size == 0) {
-      deduplicators[type] = std::make_unique<CentreDeduplicator>(spec);
+      deduplicators[type] = std::make_unique<CentreDeduplicator>(spec, stop);
       const TileMap is_tile{spec, type == 1 ? std::span<const std::uint8_t>(features.free_floor)
                                   : type == 2 ? std::span<const std::uint8_t>(features.free_ceiling)
                                               : std::span<const std::uint8_t>(),
                             type == 3 ? std::span<const int>(features.furniture) : std::span<const int>()};
       // Eq. 3.49: furniture squares less than reduction_offset levels apart are on one top.
-      packers[type] = std::make_unique<SquarePacker>(spec, type == 3 ? params.reduction_offset - 1 : 0, dominant_deg, is_tile);
+      packers[type] = std::make_unique<SquarePacker>(spec, type == 3 ? params.reduction_offset - 1 : 0, dominant_deg,
+                                                     is_tile, stop);
     }
     Candidates& squares = found[type][size];
     const AreaSize area_size = kAreaSizes[size];
@@ -234,6 +235,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   std::size_t searches_left = square_searches.size();
   auto searches_end = clock;
   parallel_graph(after, threads, [&](std::size_t i) {
+    stop_point(stop);  // a stop ends the graph at the next task, not only inside the searches
     tasks[i]();
     if (std::find(square_searches.begin(), square_searches.end(), i) == square_searches.end()) return;
     const std::lock_guard lock(searches_mutex);

@@ -5,6 +5,7 @@
 
 #include "../floor_int.h"
 #include "sample_raster.h"
+#include "roomsense/cancel.h"
 
 #include <glm/geometric.hpp>
 
@@ -134,30 +135,33 @@ double angle_mod_90(int dx, int dz) {
 
 }  // namespace
 
-CentreDeduplicator::CentreDeduplicator(const GridSpec& spec)
-    // Centre voxels lie within the corners' box, the grid's columns and its levels (one beyond, for a top's
-    // y_Actual): a bit per voxel, rows along y.
-    : marked_(std::make_unique<SampleRaster>(0, spec.nx - 1, 0, spec.nz - 1, -1, spec.ny)) {}
+CentreDeduplicator::CentreDeduplicator(const GridSpec& spec, std::stop_token stop)
+    // Centre voxels lie within the corners' box: the grid's columns and its levels (one beyond, for a top's
+    // y_Actual). A bit per voxel, rows along x, each level's rows from its first mark: a floor's take a bit a
+    // column.
+    : marked_(std::make_unique<SampleRaster>(-1, spec.ny, 0, spec.nz - 1, 0, spec.nx - 1)), stop_(std::move(stop)) {}
 CentreDeduplicator::~CentreDeduplicator() = default;
 
 std::size_t CentreDeduplicator::add(const Candidates& rects, AreaSize size,
                                     const std::function<void(const Sized&)>& keep) {
   std::size_t kept = 0;
   for (std::size_t r = 0; r < rects.size(); ++r) {
+    if (r % kStopEvery == 0) stop_point(stop_);
     const PackedCandidate p = rects[r];
     const Candidate c = p.unpack();
     const glm::ivec3 sum = corner_sum(c);
+    // One voxel per axis, or two neighbours where the centre lies between them.
     int xs[2], ys[2], zs[2];
     const int nx = centre_voxels(sum.x, xs), ny = centre_voxels(sum.y, ys), nz = centre_voxels(sum.z, zs);
     const auto any_marked = [&] {
-      for (int i = 0; i < nx; ++i)
+      for (int j = 0; j < ny; ++j)
         for (int k = 0; k < nz; ++k)
-          if (marked_->any(xs[i], zs[k], ys[0], ys[ny - 1])) return true;
+          if (marked_->any(ys[j], zs[k], xs[0], xs[nx - 1])) return true;
       return false;
     };
     if (any_marked()) continue;
-    for (int i = 0; i < nx; ++i)
-      for (int k = 0; k < nz; ++k) marked_->set(xs[i], zs[k], ys[0], ys[ny - 1]);
+    for (int j = 0; j < ny; ++j)
+      for (int k = 0; k < nz; ++k) marked_->set(ys[j], zs[k], xs[0], xs[nx - 1]);
     keep({p, size});
     ++kept;
   }
@@ -165,8 +169,8 @@ std::size_t CentreDeduplicator::add(const Candidates& rects, AreaSize size,
 }
 
 std::size_t deduplicate_centres(const GridSpec& spec, const std::array<Candidates, 3>& by_size,
-                                const std::function<void(const Sized&)>& keep) {
-  CentreDeduplicator deduplicator(spec);
+                                const std::function<void(const Sized&)>& keep, std::stop_token stop) {
+  CentreDeduplicator deduplicator(spec, std::move(stop));
   std::size_t kept = 0;
   for (std::size_t s = 0; s < by_size.size(); ++s) kept += deduplicator.add(by_size[s], kAreaSizes[s], keep);
   return kept;
@@ -245,14 +249,16 @@ class SquarePacker::NonTileCounts {
   std::vector<int> along_x_, along_z_;
 };
 
-SquarePacker::SquarePacker(const GridSpec& spec, int level_tolerance, double dominant_deg, const TileMap& is_tile)
+SquarePacker::SquarePacker(const GridSpec& spec, int level_tolerance, double dominant_deg, const TileMap& is_tile,
+                           std::stop_token stop)
     : level_tolerance_(level_tolerance),
       dominant_deg_(dominant_deg),
       is_tile_(is_tile),
       runs_(is_tile.mask.empty() ? nullptr : std::make_unique<NonTileCounts>(is_tile)),
       // Per level, rows of half-voxel samples along x over the grid's columns: corners are voxel indices in the
       // grid (at most a level beyond, for a top's y_Actual) and samples lie within a voxel and a half of them.
-      taken_(std::make_unique<SampleRaster>(-2, spec.ny + 2, -4, 2L * spec.nz + 4, -4, 2L * spec.nx + 4)) {}
+      taken_(std::make_unique<SampleRaster>(-2, spec.ny + 2, -4, 2L * spec.nz + 4, -4, 2L * spec.nx + 4)),
+      stop_(std::move(stop)) {}
 SquarePacker::~SquarePacker() = default;
 
 // Contact: unusable cells just outside the square's edges, sampled every half voxel.
@@ -319,14 +325,16 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares) {
   std::vector<std::uint64_t> keys;
   keys.reserve(squares.size());
   for (std::size_t i = 0; i < squares.size(); ++i) {
+    if (i % kStopEvery == 0) stop_point(stop_);
     const Candidate c = squares[i].unpack();
     const std::uint64_t away = std::uint64_t((1 << kContactBits) - 1 - std::min(contact(c), (1 << kContactBits) - 1));
     keys.push_back((std::uint64_t(misalignment_step(c)) << 56) | (away << 32) | std::uint64_t(i));
   }
   std::sort(keys.begin(), keys.end());
   std::vector<std::size_t> kept;
-  for (const std::uint64_t key : keys) {
-    const std::size_t i = std::size_t(key & 0xffffffffu);
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    if (k % kStopEvery == 0) stop_point(stop_);
+    const std::size_t i = std::size_t(keys[k] & 0xffffffffu);
     const Candidate c = squares[i].unpack();
     const int level = c.corners[0].y;
     bool free = true;

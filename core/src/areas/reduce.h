@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <stop_token>
 #include <unordered_map>
 
 namespace roomsense::detail {
@@ -41,9 +42,12 @@ class SampleRaster;
 
 // Eq. 3.44: large, then medium, then small; a rectangle is kept when none of its centre voxels (Eq. 3.43) is
 // already marked by a kept one. One size at a time, so that a type's sizes need not all be held at once.
+// Packing and deduplication check the stop token every this many candidates (a floor's are millions).
+inline constexpr std::size_t kStopEvery = 4096;
+
 class CentreDeduplicator {
  public:
-  explicit CentreDeduplicator(const GridSpec& spec);  // every rectangle's corners lie in the grid
+  explicit CentreDeduplicator(const GridSpec& spec, std::stop_token stop = {});  // the corners lie in the grid
   ~CentreDeduplicator();
   // The rectangles of the next size, in order. Calls keep(rectangle) for each rectangle kept, in order; returns
   // how many. A floor's are many: the caller keeps what it needs of each, not the list.
@@ -51,10 +55,11 @@ class CentreDeduplicator {
 
  private:
   std::unique_ptr<SampleRaster> marked_;
+  std::stop_token stop_;
 };
 // All three sizes of one type at once.
 std::size_t deduplicate_centres(const GridSpec& spec, const std::array<Candidates, 3>& by_size,
-                                const std::function<void(const Sized&)>& keep);
+                                const std::function<void(const Sized&)>& keep, std::stop_token stop = {});
 
 // The room's main direction, in degrees in [0, 90): the length-weighted mode of the wall rectangles' top edges
 // modulo 90°. 0 without walls.
@@ -91,7 +96,8 @@ struct TileMap {
 // order, so a size's squares can be searched, packed and dropped before the next size's are searched.
 class SquarePacker {
  public:
-  SquarePacker(const GridSpec& spec, int level_tolerance, double dominant_deg, const TileMap& is_tile);
+  SquarePacker(const GridSpec& spec, int level_tolerance, double dominant_deg, const TileMap& is_tile,
+               std::stop_token stop = {});
   ~SquarePacker();
   // The squares of the next size (large, then medium, then small), in search order; returns the indices kept,
   // ascending.
@@ -108,6 +114,7 @@ class SquarePacker {
   std::unique_ptr<NonTileCounts> runs_;  // floor and ceiling: contact along the axes by run, not by cell
   std::unordered_map<std::uint64_t, int> steps_of_direction_;
   std::unique_ptr<SampleRaster> taken_;
+  std::stop_token stop_;
 };
 
 }  // namespace roomsense::detail

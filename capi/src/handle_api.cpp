@@ -571,15 +571,21 @@ rs_result rs_analyzer_compute_chunks(rs_analyzer* analyzer) {
   });
 }
 
+namespace {
+
+rs_state state_of(JobPhase phase, const HandleOutput* o) {
+  if (phase == JobPhase::Running) return RS_STATE_RUNNING;
+  if (phase == JobPhase::Idle || o == nullptr) return RS_STATE_IDLE;
+  return o->status == RS_SUCCESS ? RS_STATE_READY : RS_STATE_FAILED;
+}
+
+}  // namespace
+
 rs_result rs_analyzer_state(rs_analyzer* analyzer, rs_state* out) {
   if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
   if (out == nullptr) return RS_ERROR_INVALID_ARGUMENT;
   return guarded([&] {
-    *out = analyzer->job.inspect([](JobPhase phase, const HandleOutput* o) {
-      if (phase == JobPhase::Running) return RS_STATE_RUNNING;
-      if (phase == JobPhase::Idle || o == nullptr) return RS_STATE_IDLE;
-      return o->status == RS_SUCCESS ? RS_STATE_READY : RS_STATE_FAILED;
-    });
+    *out = analyzer->job.inspect(state_of);
     return RS_SUCCESS;
   });
 }
@@ -587,14 +593,13 @@ rs_result rs_analyzer_state(rs_analyzer* analyzer, rs_state* out) {
 rs_result rs_analyzer_wait(rs_analyzer* analyzer, uint32_t timeout_ms, rs_state* out) {
   if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
   return guarded([&] {
-    if (timeout_ms == RS_WAIT_INFINITE)
-      analyzer->job.wait();
-    else
-      analyzer->job.wait_for(std::chrono::milliseconds(timeout_ms));
-    rs_state state;
-    const rs_result r = rs_analyzer_state(analyzer, &state);
-    if (r == RS_SUCCESS && out != nullptr) *out = state;
-    return r;
+    // The state the wait ended on: read after it, under a second lock, it could be a compute another thread
+    // started meanwhile (RUNNING after an infinite wait).
+    const std::optional<std::chrono::milliseconds> timeout =
+        timeout_ms == RS_WAIT_INFINITE ? std::nullopt : std::optional(std::chrono::milliseconds(timeout_ms));
+    const rs_state state = analyzer->job.wait_and_inspect(timeout, state_of);
+    if (out != nullptr) *out = state;
+    return RS_SUCCESS;
   });
 }
 

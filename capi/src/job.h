@@ -79,17 +79,15 @@ class Job {
     return phase_;
   }
 
-  // Blocks until the job is not running or `timeout` passes; returns the phase then.
-  template <class Rep, class Period>
-  JobPhase wait_for(std::chrono::duration<Rep, Period> timeout) const {
+  // Blocks until the job is not running or `timeout` passes (none: no limit), then calls f(phase, result) under
+  // the same lock: f sees the state the wait ended on, not one a compute started on another thread since.
+  template <class F>
+  decltype(auto) wait_and_inspect(std::optional<std::chrono::milliseconds> timeout, F&& f) {
     std::unique_lock lock(mutex_);
-    cv_.wait_for(lock, timeout, [this] { return phase_ != JobPhase::Running; });
-    return phase_;
-  }
-  JobPhase wait() const {
-    std::unique_lock lock(mutex_);
-    cv_.wait(lock, [this] { return phase_ != JobPhase::Running; });
-    return phase_;
+    const auto not_running = [this] { return phase_ != JobPhase::Running; };
+    if (timeout) cv_.wait_for(lock, *timeout, not_running);
+    else cv_.wait(lock, not_running);
+    return std::forward<F>(f)(phase_, result_ ? &*result_ : static_cast<Result*>(nullptr));
   }
 
   // Calls f(phase, result) under the lock; result is null unless the phase is Done.

@@ -177,10 +177,11 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
                            min_separation);
   // Beyond the thesis (issue 15): a storey under a pitched roof reaches up to its ridge (raised_ceiling), below
   // the next storey's floor.
+  // Every storey's levels, the main one first.
+  std::vector<FloorCeiling*> all{&storeys.main};
+  for (FloorCeiling& other : storeys.others) all.push_back(&other);
   std::vector<bool> raised;
   {
-    std::vector<FloorCeiling*> all{&storeys.main};
-    for (FloorCeiling& other : storeys.others) all.push_back(&other);
     std::vector<std::uint32_t> counts;
     std::vector<std::uint8_t> any;
     for (FloorCeiling* fc : all) {
@@ -204,11 +205,9 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
     return up ? detail::surface_top(spec, in.vertices, fc.ceiling, fc.ceiling_peak) : height(fc.ceiling, fc.ceiling_peak);
   };
   // Each storey's floor and ceiling heights, each a pass over the triangles: side by side.
-  std::vector<const FloorCeiling*> all_levels{&levels};
-  for (const FloorCeiling& other : storeys.others) all_levels.push_back(&other);
-  std::vector<float> heights(2 * all_levels.size());
+  std::vector<float> heights(2 * all.size());
   detail::parallel_tasks(heights.size(), options.threads, [&](std::size_t k) {
-    const FloorCeiling& fc = *all_levels[k / 2];
+    const FloorCeiling& fc = *all[k / 2];
     heights[k] = k % 2 == 0 ? height(fc.floor_peak, fc.floor) : ceiling_height(fc, raised[k / 2]);
   });
   r.floor_y = heights[0];
@@ -219,8 +218,8 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
     return no_room("no floor and ceiling found: the fullest levels, at " + metres(r.floor_y) + " and " +
                    metres(r.ceiling_y) + ", are less than " + metres(min_height) + " apart");
   r.storeys.push_back({r.floor_y, r.ceiling_y, levels, {}});
-  for (std::size_t i = 1; i < all_levels.size(); ++i) {
-    const Storey storey{heights[2 * i], heights[2 * i + 1], *all_levels[i], {}};
+  for (std::size_t i = 1; i < all.size(); ++i) {
+    const Storey storey{heights[2 * i], heights[2 * i + 1], *all[i], {}};
     if (storey.ceiling_y - storey.floor_y >= min_height) r.storeys.push_back(storey);
   }
   // Beyond the thesis: §3.2-3.6 for each storey on its own levels and column counts, side by side.

@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/vector_relational.hpp>
+
+#include <cmath>
 #include <random>
 #include <span>
 
@@ -83,6 +86,52 @@ TEST(Voxelize, IntoAGridAddsToItsMarksAndRefusesAnotherGrid) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::BadParameter);
   }
+}
+
+TEST(Voxelize, AMeshOfSharedVerticesMarksExactlyWhatTheTestAcceptsInEachBox) {
+  // A jittered lattice of shared vertices (the corners' cells found once per vertex), its triangles from one
+  // voxel to boxes of a few and of many voxels: the marks are exactly the box voxels the test accepts, plus the
+  // voxel of each one-voxel box, and the same when each triangle is voxelized alone (cells found per triangle).
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> jitter(-0.04f, 0.04f);
+  const GridSpec spec = make_grid_spec({-0.1f, -0.1f, -0.1f}, {2.1f, 2.1f, 2.1f}, 0.1f);
+  constexpr int kSide = 21;
+  std::vector<glm::vec3> world;
+  for (int k = 0; k < kSide; ++k)
+    for (int i = 0; i < kSide; ++i)
+      world.push_back({0.1f * float(i) + jitter(rng), 1.0f + 0.3f * std::sin(0.7f * float(i + k)) + jitter(rng),
+                       0.1f * float(k) + jitter(rng)});
+  std::vector<std::uint32_t> indices;
+  for (int k = 0; k + 1 < kSide; ++k)
+    for (int i = 0; i + 1 < kSide; ++i) {
+      const std::uint32_t a = std::uint32_t(k * kSide + i), b = a + 1, c = a + kSide, d = c + 1;
+      indices.insert(indices.end(), {a, b, d, a, d, c});
+    }
+  indices.insert(indices.end(), {0, kSide * kSide - 1, kSide - 1});  // one triangle across the whole grid
+  ASSERT_GE(indices.size(), 2 * world.size());
+  const std::vector<glm::vec3> g = to_grid_units(world, spec);
+  VoxelGrid want(spec);
+  std::size_t by_size[3] = {0, 0, 0};  // one voxel, at most 2 x 2 x 2, more
+  for (std::size_t t = 0; t < indices.size() / 3; ++t) {
+    const glm::vec3 &a = g[indices[3 * t]], &b = g[indices[3 * t + 1]], &c = g[indices[3 * t + 2]];
+    const glm::vec3 lo = glm::min(glm::min(a, b), c), hi = glm::max(glm::max(a, b), c);
+    const glm::ivec3 first(box_index(lo.x, spec.nx), box_index(lo.y, spec.ny), box_index(lo.z, spec.nz));
+    const glm::ivec3 last(box_index(hi.x, spec.nx), box_index(hi.y, spec.ny), box_index(hi.z, spec.nz));
+    const glm::ivec3 extent = last - first;
+    ++by_size[first == last ? 0 : glm::all(glm::lessThan(extent, glm::ivec3(2))) ? 1 : 2];
+    for (int z = first.z; z <= last.z; ++z)
+      for (int x = first.x; x <= last.x; ++x)
+        for (int y = first.y; y <= last.y; ++y)
+          if (first == last || triangle_overlaps_voxel(a, b, c, x, y, z)) want.set(x, y, z);
+  }
+  for (const std::size_t n : by_size) EXPECT_GT(n, 0u);
+  EXPECT_EQ(voxelize(spec, world, indices, VoxelMode::Triangles, 2).cells, want.cells);
+  VoxelGrid alone(spec);
+  for (std::size_t t = 0; t < indices.size() / 3; ++t)
+    voxelize_cpu_into({spec, g, std::span(indices).subspan(3 * t, 3), VoxelMode::Triangles, 15,
+                       kDefaultVoxelTestBudget, {}},
+                      alone, 1);
+  EXPECT_EQ(alone.cells, want.cells);
 }
 
 TEST(Voxelize, AFaceOnAVoxelBoundaryLandsInTheUpperVoxelOnly) {

@@ -59,6 +59,15 @@ class TestCounter {
   std::atomic<std::uint64_t> total_{0};
 };
 
+// The voxel whose test cube holds a point: box_index per axis.
+struct BoxCell {
+  int at[3];
+  bool operator==(const BoxCell&) const = default;
+};
+BoxCell box_cell(const glm::vec3& v, const GridSpec& s) {
+  return {{box_index(v.x, s.nx), box_index(v.y, s.ny), box_index(v.z, s.nz)}};
+}
+
 // How triangle mode visits one triangle: its box, and the axis d along which its columns run. Only the
 // voxels near the triangle's plane are tested: along the axis where the normal is largest, each column
 // of the other two axes gets the plane's range over the column's square, widened by a voxel each way
@@ -69,16 +78,23 @@ struct TriangleScan {
   int d = 1, u = 0, v = 2;
   glm::dvec3 normal{0.0};
   bool one_voxel() const { return first[0] == last[0] && first[1] == last[1] && first[2] == last[2]; }
+  std::uint64_t box_volume() const {
+    return std::uint64_t(last[0] - first[0] + 1) * std::uint64_t(last[1] - first[1] + 1) *
+           std::uint64_t(last[2] - first[2] + 1);
+  }
+  // A box of at most 2 x 2 x 2 voxels, each tested: columns of the plane would spare none.
+  bool small() const { return last[0] - first[0] < 2 && last[1] - first[1] < 2 && last[2] - first[2] < 2; }
   bool planar() const { return normal[d] != 0.0; }
 
-  TriangleScan(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const GridSpec& s) {
-    const int n[3] = {s.nx, s.ny, s.nz};
-    const glm::vec3 lo = glm::min(glm::min(a, b), c), hi = glm::max(glm::max(a, b), c);
+  // ca, cb, cc: the corners' cells. box_index is monotone, so the box of the corners' cells is the cells of
+  // the corners' box.
+  TriangleScan(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const BoxCell& ca, const BoxCell& cb,
+               const BoxCell& cc) {
     for (int k = 0; k < 3; ++k) {
-      first[k] = box_index(lo[k], n[k]);
-      last[k] = box_index(hi[k], n[k]);
+      first[k] = std::min(std::min(ca.at[k], cb.at[k]), cc.at[k]);
+      last[k] = std::max(std::max(ca.at[k], cb.at[k]), cc.at[k]);
     }
-    if (one_voxel()) return;  // no plane needed: most of a fine scan's triangles
+    if (small()) return;  // no plane needed: most of a fine scan's triangles
     normal = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
     const glm::dvec3 m = glm::abs(normal);
     if (m.x >= m.y && m.x >= m.z && m.x != 0.0) d = 0;
@@ -91,6 +107,7 @@ struct TriangleScan {
   // the margins): summed before the scan, it refuses hopeless input at once.
   std::uint64_t tests_bound() const {
     if (one_voxel()) return 0;
+    if (small()) return box_volume();
     const auto extent = [&](int k) { return std::uint64_t(last[k] - first[k] + 1); };
     std::uint64_t span = extent(d);
     if (planar())
@@ -101,13 +118,22 @@ struct TriangleScan {
 };
 
 // Marks every voxel of the triangle's box whose test cube the triangle touches (see TriangleScan).
-void scan_triangle(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const GridSpec& s, VoxelGrid& grid,
-                   std::uint64_t& tests, TestCounter& counter) {
-  const TriangleScan scan(a, b, c, s);
+void scan_triangle(const TriangleScan& scan, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+                   const GridSpec& s, VoxelGrid& grid, std::uint64_t& tests, TestCounter& counter) {
   const int(&first)[3] = scan.first;
   const int(&last)[3] = scan.last;
   if (scan.one_voxel()) {  // inside one test cube: no test
     mark(grid.cells[s.index(first[0], first[1], first[2])]);
+    return;
+  }
+  if (scan.small()) {  // every voxel of a box of a few: the plane's bounds would save no test
+    for (int z = first[2]; z <= last[2]; ++z)
+      for (int x = first[0]; x <= last[0]; ++x)
+        for (int y = first[1]; y <= last[1]; ++y) {
+          std::uint8_t& voxel = grid.cells[s.index(x, y, z)];
+          if (!marked(voxel) && triangle_overlaps_voxel(a, b, c, x, y, z)) mark(voxel);
+        }
+    tests += scan.box_volume();
     return;
   }
   const int d = scan.d, u = scan.u, v = scan.v;
@@ -210,42 +236,60 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
   // Triangle mode marks the voxels whose test cubes the triangles touch, and nothing else: a vertex no
   // triangle uses adds nothing, as it has no surface.
   const std::size_t triangles = request.indices.size() / 3;
-  const auto corners = [&](std::size_t t) {
-    return std::array<const glm::vec3*, 3>{&p[request.indices[3 * t]], &p[request.indices[3 * t + 1]],
-                                           &p[request.indices[3 * t + 2]]};
-  };
+  // A whole scan's corners are its vertices, each shared by some six triangles: their cells are found once
+  // each, and most triangles, inside one voxel, cost three lookups and a compare. A few triangles of a large
+  // scan (a chunk re-sent) find their corners' cells as they go.
+  std::vector<BoxCell> cells;
+  if (request.indices.size() >= 2 * p.size()) {
+    cells.resize(p.size());
+    detail::parallel_for(p.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
+      for (std::size_t i = begin; i < end; ++i) {
+        if ((i & 0xffff) == 0) stop_point(request.stop);
+        cells[i] = box_cell(p[i], s);
+      }
+    });
+  }
+  const auto cell_of = [&](std::uint32_t i) { return cells.empty() ? box_cell(p[i], s) : cells[i]; };
   // Hopeless input is refused before any scan: when the triangles' boxes (at most the tests a scan does) could
   // exceed the budget, the sum of TriangleScan's lower bounds decides. A room's small triangles stop at the
   // boxes, which cost a few comparisons each rather than a plane in double.
-  const auto sum_over_triangles = [&](auto per_triangle) {
+  const auto sum_over_triangles = [&](auto per_scan) {
     std::atomic<std::uint64_t> total{0};
     detail::parallel_for(triangles, threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
       std::uint64_t sum = 0;
       for (std::size_t t = begin; t < end; ++t) {
-        const auto [a, b, c] = corners(t);
-        sum += per_triangle(*a, *b, *c);
+        const std::uint32_t* corner = &request.indices[3 * t];
+        const glm::vec3 &a = p[corner[0]], &b = p[corner[1]], &c = p[corner[2]];
+        sum += per_scan(a, b, c, cell_of(corner[0]), cell_of(corner[1]), cell_of(corner[2]));
         if ((t & 0xffff) == 0) stop_point(request.stop);
       }
       total.fetch_add(sum, std::memory_order_relaxed);
     });
     return total.load();
   };
-  const std::uint64_t box_bound = sum_over_triangles([&](const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
-    const glm::vec3 lo = glm::min(glm::min(a, b), c), hi = glm::max(glm::max(a, b), c);
-    const auto extent = [](float l, float h, int n) { return std::uint64_t(box_index(h, n) - box_index(l, n) + 1); };
-    return extent(lo.x, hi.x, s.nx) * extent(lo.y, hi.y, s.ny) * extent(lo.z, hi.z, s.nz);
-  });
+  const std::uint64_t box_bound = sum_over_triangles(
+      [](const glm::vec3&, const glm::vec3&, const glm::vec3&, const BoxCell& ca, const BoxCell& cb, const BoxCell& cc) {
+        std::uint64_t tests = 1;
+        for (int k = 0; k < 3; ++k)
+          tests *= std::uint64_t(std::max(std::max(ca.at[k], cb.at[k]), cc.at[k]) -
+                                 std::min(std::min(ca.at[k], cb.at[k]), cc.at[k]) + 1);
+        return tests;
+      });
   if (box_bound > request.test_budget &&
-      sum_over_triangles([&](const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
-        return TriangleScan(a, b, c, s).tests_bound();
+      sum_over_triangles([](const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const BoxCell& ca,
+                            const BoxCell& cb, const BoxCell& cc) {
+        return TriangleScan(a, b, c, ca, cb, cc).tests_bound();
       }) > request.test_budget)
     throw Error(ErrorCode::TooMuchWork, too_much_work_message(request.test_budget));
   TestCounter counter(request);
   detail::parallel_for(triangles, threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t) {
     std::uint64_t tests = 0;
     for (std::size_t t = begin; t < end; ++t) {
-      const auto [a, b, c] = corners(t);
-      scan_triangle(*a, *b, *c, s, grid, tests, counter);
+      const std::uint32_t* corner = &request.indices[3 * t];
+      const glm::vec3 &a = p[corner[0]], &b = p[corner[1]], &c = p[corner[2]];
+      const BoxCell ca = cell_of(corner[0]), cb = cell_of(corner[1]), cc = cell_of(corner[2]);
+      if (ca == cb && ca == cc) mark(grid.cells[s.index(ca.at[0], ca.at[1], ca.at[2])]);  // one voxel: no test
+      else scan_triangle(TriangleScan(a, b, c, ca, cb, cc), a, b, c, s, grid, tests, counter);
       if (tests >= TestCounter::kFlushEvery || (t & 0xff) == 0) counter.flush(tests);
     }
     counter.flush(tests);

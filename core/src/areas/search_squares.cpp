@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -33,6 +34,28 @@ class BoxCounts {
   int at(int x, int z) const { return sums_[std::size_t(z) * std::size_t(nx_ + 1) + std::size_t(x)]; }
   int nx_, nz_;
   std::vector<int> sums_;
+};
+
+// A bit per cell of the padded tile grid, rows along x, with a spare word after each row: word(x, z) is the
+// 64 cells from (x, z) on, for any x in the row, without a bounds check.
+class PaddedBits {
+ public:
+  struct Size {
+    int nx, nz;
+  };
+  explicit PaddedBits(Size size)
+      : row_words_(std::size_t(size.nx + 63) / 64 + 1), words_(row_words_ * std::size_t(size.nz), 0) {}
+  void clear() { std::fill(words_.begin(), words_.end(), std::uint64_t{0}); }
+  void set(int x, int z) { words_[std::size_t(z) * row_words_ + std::size_t(x / 64)] |= std::uint64_t{1} << (x % 64); }
+  std::uint64_t word(int x, int z) const {
+    const std::uint64_t* w = words_.data() + std::size_t(z) * row_words_ + std::size_t(x / 64);
+    const int shift = x % 64;
+    return shift == 0 ? w[0] : (w[0] >> shift) | (w[1] << (64 - shift));
+  }
+
+ private:
+  std::size_t row_words_;
+  std::vector<std::uint64_t> words_;
 };
 
 // One bit per possible centre of one level, indexed by 4 x the centre (Eq. 3.42). The bits exist from the first
@@ -108,19 +131,24 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
   // the centre's cell: no bounds checks, no index arithmetic. A centre (cx, cz) on the half-voxel lattice has
   // cx and cz of one parity p; with cx = 2 hx + p, corner 1 is at hx + (p - dx + dz) / 2, an exact division.
   const int pad = corner_reach + 1;
-  const std::ptrdiff_t row = spec.nx + 2 * pad;
-  std::vector<std::uint8_t> padded(std::size_t(row) * std::size_t(spec.nz + 2 * pad), 0);
-  struct CornerOffsets {
-    std::ptrdiff_t c1, c2, c3, c4;
+  const PaddedBits::Size padded_size{spec.nx + 2 * pad, spec.nz + 2 * pad};
+  PaddedBits first_bits(padded_size), tile_bits(padded_size);
+  // Each orientation's corners relative to the centre's cell (cx / 2, cz / 2), in padded bit coordinates.
+  struct CornerCells {
+    int x[4], z[4];
   };
-  std::array<std::vector<CornerOffsets>, 2> corner_offsets;
+  std::array<std::vector<CornerCells>, 2> corner_cells;
   for (int p = 0; p < 2; ++p)
     for (const RingOffset& o : by_parity[std::size_t(p)]) {
       const int x1 = (p - o.dx + o.dz) / 2, z1 = (p - o.dx - o.dz) / 2;
-      const auto at = [&](int x, int z) { return std::ptrdiff_t(z) * row + x; };
-      corner_offsets[std::size_t(p)].push_back({at(x1, z1), at(x1 + o.dx, z1 + o.dz),
-                                                at(x1 + o.dx - o.dz, z1 + o.dz + o.dx), at(x1 - o.dz, z1 + o.dx)});
+      corner_cells[std::size_t(p)].push_back({{x1 + pad, x1 + o.dx + pad, x1 + o.dx - o.dz + pad, x1 - o.dz + pad},
+                                              {z1 + pad, z1 + o.dz + pad, z1 + o.dz + o.dx + pad, z1 + o.dx + pad}});
     }
+  // One row of centres: those still open for a square at this level (here) or one level up (above), and the
+  // orientation each found.
+  constexpr std::uint32_t kNone = 0xffffffffu;
+  std::vector<std::uint64_t> open_here, open_above;
+  std::vector<std::uint32_t> found_here, found_above;
   for (int layer = 0; layer < layers; centres[std::size_t(layer++)].release()) {  // later layers never read it
     const int y1 = by_facet ? features.facets[std::size_t(layer)].level : y_from + layer;
     // Corner 1 must be a tile of this level; the other cells may also be one level higher (§3.3.4).
@@ -135,10 +163,13 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
       }
     }
     if (std::none_of(first.begin(), first.end(), [](std::uint8_t t) { return t != 0; })) continue;
+    first_bits.clear();
+    tile_bits.clear();
     for (int z = 0; z < spec.nz; ++z)
       for (int x = 0; x < spec.nx; ++x) {
         const std::size_t col = spec.column(x, z);
-        padded[std::size_t((z + pad) * row + x + pad)] = std::uint8_t((tile[col] != 0 ? 1 : 0) | (first[col] != 0 ? 2 : 0));
+        if (tile[col] != 0) tile_bits.set(x + pad, z + pad);
+        if (first[col] != 0) first_bits.set(x + pad, z + pad);
       }
     box_unsuitable.fill(spec, [&](std::size_t col) { return tile[col] == 0; });  // walls are never tiles
     box_first.fill(spec, [&](std::size_t col) { return first[col] != 0; });
@@ -175,13 +206,21 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
       return true;
     };
 
-    // Eq. 3.44 keeps one square per centre, so we search centre by centre (on the half-voxel lattice where
-    // square centres lie) and stop at the first valid orientation, most nearly axis-aligned first: the same
-    // centres as the thesis's loop over first corners, found without trying every orientation of each.
-    for (int cz = 0; cz <= 2 * (spec.nz - 1); ++cz, stop_point(stop))
-      for (int cx = 0; cx <= 2 * (spec.nx - 1); ++cx) {
-        if ((cx - cz) % 2 != 0) continue;  // dx - dz and dx + dz share their parity: no square centres here
-        const glm::ivec3 sum(2 * cx, 0, 2 * cz);
+    // Eq. 3.44 keeps one square per centre, so each centre on the half-voxel lattice where square centres lie
+    // takes the first valid orientation, most nearly axis-aligned first: the same centres as the thesis's loop
+    // over first corners, found without trying every orientation of each. A row of centres (one cz, cx of its
+    // parity) is searched at once: each orientation's corner test (corner 1 a first corner, the others tiles)
+    // is four shifted words of the padded bit rows for 64 centres, and only the centres that pass it and are
+    // still open are checked cell by cell. Each centre's squares are then added in orientation order, centre
+    // by centre along the row, as a loop over centres would add them.
+    for (int cz = 0; cz <= 2 * (spec.nz - 1); ++cz, stop_point(stop)) {
+      const int p = cz & 1;  // dx - dz and dx + dz share their parity: cx - cz is even
+      const int centres_in_row = spec.nx - p;  // cx = 2 hx + p <= 2 (nx - 1)
+      const std::size_t words = (std::size_t(centres_in_row) + 63) / 64;
+      open_here.assign(words, 0);
+      open_above.assign(words, 0);
+      for (int hx = 0; hx < centres_in_row; ++hx) {
+        const int cx = 2 * hx + p;
         const glm::ivec2 near_lo = glm::max(glm::ivec2(cx / 2 - corner_reach, cz / 2 - corner_reach), glm::ivec2(0));
         const glm::ivec2 near_hi =
             glm::min(glm::ivec2(cx / 2 + corner_reach, cz / 2 + corner_reach), glm::ivec2(spec.nx - 1, spec.nz - 1));
@@ -194,26 +233,59 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
               (box_walls.sum(in_lo, in_hi) > 0 || double(box_unsuitable.sum(in_lo, in_hi)) > most_missing))
             continue;
         }
-        bool need_here = !here.contains(sum), need_above = may_rise && !above.contains(sum);
-        const std::vector<RingOffset>& orientations = by_parity[std::size_t(cx & 1)];
-        const std::vector<CornerOffsets>& offsets = corner_offsets[std::size_t(cx & 1)];
-        const std::uint8_t* centre = padded.data() + (cz / 2 + pad) * row + (cx / 2 + pad);
-        for (std::size_t i = 0; i < orientations.size(); ++i) {
-          if (!need_here && !need_above) break;
-          const CornerOffsets& k = offsets[i];
-          if (!(centre[k.c1] & 2) || !(centre[k.c2] & centre[k.c3] & centre[k.c4] & 1)) continue;
+        const glm::ivec3 sum(2 * cx, 0, 2 * cz);
+        const std::uint64_t bit = std::uint64_t{1} << (hx % 64);
+        if (!here.contains(sum)) open_here[std::size_t(hx / 64)] |= bit;
+        if (may_rise && !above.contains(sum)) open_above[std::size_t(hx / 64)] |= bit;
+      }
+      const std::vector<RingOffset>& orientations = by_parity[std::size_t(p)];
+      const std::vector<CornerCells>& cells = corner_cells[std::size_t(p)];
+      found_here.assign(std::size_t(centres_in_row), kNone);
+      found_above.assign(std::size_t(centres_in_row), kNone);
+      const int hz = cz / 2;
+      for (std::size_t i = 0; i < orientations.size(); ++i) {
+        const CornerCells& k = cells[i];
+        bool any_open = false;
+        for (std::size_t w = 0; w < words; ++w) {
+          std::uint64_t open = open_here[w] | open_above[w];
+          if (open == 0) continue;
+          any_open = true;
+          const int x = int(64 * w);
+          open &= first_bits.word(x + k.x[0], hz + k.z[0]) & tile_bits.word(x + k.x[1], hz + k.z[1]) &
+                  tile_bits.word(x + k.x[2], hz + k.z[2]) & tile_bits.word(x + k.x[3], hz + k.z[3]);
+          for (; open != 0; open &= open - 1) {
+            const int b = std::countr_zero(open), hx = x + b;
+            const std::uint64_t bit = std::uint64_t{1} << b;
+            const RingOffset& o = orientations[i];
+            const int cx = 2 * hx + p;
+            const int x1 = (cx - (o.dx - o.dz)) / 2, z1 = (cz - (o.dx + o.dz)) / 2;
+            bool rises = false;
+            if (!valid(x1, z1, o, rises)) continue;
+            std::uint64_t& needed = rises ? open_above[w] : open_here[w];
+            if (!(needed & bit)) continue;
+            needed &= ~bit;
+            (rises ? found_above : found_here)[std::size_t(hx)] = std::uint32_t(i);
+          }
+        }
+        if (!any_open) break;
+      }
+      for (int hx = 0; hx < centres_in_row; ++hx) {
+        const std::uint32_t h = found_here[std::size_t(hx)], a = found_above[std::size_t(hx)];
+        if (h == kNone && a == kNone) continue;
+        const int cx = 2 * hx + p;
+        const glm::ivec3 sum(2 * cx, 0, 2 * cz);
+        const auto add = [&](std::uint32_t i, bool rises) {
           const RingOffset& o = orientations[i];
           const int x1 = (cx - (o.dx - o.dz)) / 2, z1 = (cz - (o.dx + o.dz)) / 2;
-          bool rises = false;
-          if (!valid(x1, z1, o, rises)) continue;
-          bool& needed = rises ? need_above : need_here;
-          if (!needed) continue;
-          needed = false;
           (rises ? above : here).insert(sum);
           const int y = rises ? y1 + 1 : y1;  // y_Actual, Eq. 3.41
-          out.push_back(glm::ivec3(x1, y, z1), first_shape[std::size_t(cx & 1)] + std::uint32_t(i));
-        }
+          out.push_back(glm::ivec3(x1, y, z1), first_shape[std::size_t(p)] + i);
+        };
+        if (h != kNone && (a == kNone || h < a)) add(h, false);
+        if (a != kNone) add(a, true);
+        if (h != kNone && a != kNone && h > a) add(h, false);
       }
+    }
   }
   return out;
 }

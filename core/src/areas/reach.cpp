@@ -6,11 +6,13 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <optional>
 #include <queue>
+#include <set>
 #include <unordered_map>
 
 namespace roomsense::detail {
@@ -47,11 +49,19 @@ struct Segment {
 // walls along it (a grid walk) instead of all of them.
 class WallSegments {
  public:
+  // Walls of one footprint in X-Z (areas one above another on a wall: most of V_Wall) block and are excluded
+  // alike, as reach reads nothing but that footprint: each footprint is bucketed once, by its first wall.
   WallSegments(const std::vector<ReachWall>& walls, double bucket) : size_(bucket) {
     segments_.reserve(walls.size());
+    std::set<std::array<float, 7>> footprints;
     for (std::size_t i = 0; i < walls.size(); ++i) {
-      const Segment s{P2(walls[i].top_left), P2(walls[i].top_right)};
+      const ReachWall& w = walls[i];
+      const Segment s{P2(w.top_left), P2(w.top_right)};
       segments_.push_back(s);
+      if (!footprints.insert({w.top_left.x, w.top_left.y, w.top_right.x, w.top_right.y, w.center.x, w.center.y,
+                              w.half_width})
+               .second)
+        continue;
       for (int bz = cell(std::min(s.a.y, s.b.y)); bz <= cell(std::max(s.a.y, s.b.y)); ++bz)
         for (int bx = cell(std::min(s.a.x, s.b.x)); bx <= cell(std::max(s.a.x, s.b.x)); ++bx)
           buckets_[key(bx, bz)].push_back(i);
@@ -59,13 +69,14 @@ class WallSegments {
   }
   const Segment& segment(std::size_t i) const { return segments_[i]; }
 
-  // Does any wall segment but the excluded ones cross the sight line from p to q?
+  // Does any wall segment but the excluded ones cross the sight line from p to q? (The crossing is tested
+  // first: it is the cheaper test and most segments fail it.)
   template <class Excluded>
   bool blocked(P2 p, P2 q, Excluded excluded) const {
     bool hit = false;
     walk(p, q, [&](const std::vector<std::size_t>& ids) {
       for (std::size_t i : ids)
-        if (!excluded(i) && segments_intersect(p, q, segments_[i].a, segments_[i].b)) return hit = true;
+        if (segments_intersect(p, q, segments_[i].a, segments_[i].b) && !excluded(i)) return hit = true;
       return false;
     });
     return hit;
@@ -133,34 +144,37 @@ class FloorIndex {
     }
   }
 
-  // Tries the floor areas for which gap_of gives a value, smallest gap first (ties to the lower index), until
-  // visible(floor, gap) holds; returns that gap. gap_of must be at least the centre distance less `slack` and
-  // less the floor's half width, which bounds what farther buckets can hold.
-  template <class GapOf, class Visible>
-  std::optional<double> nearest_visible(P2 from, double slack, GapOf gap_of, Visible visible) const {
-    if (floors_.empty()) return std::nullopt;
-    using Entry = std::pair<double, std::size_t>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  // Reach reads only whether the nearest visible floor area's gap is below `close`, not the gap itself: so
+  // rather than every floor in gap order, the floors with a gap below `close` (only those near `from`), in any
+  // order, then the others: Within at the first visible one of the first, Beyond at the first of the second,
+  // None when no floor for which gap_of gives a value is visible. gap_of must be at least the centre distance
+  // less `slack` and less the floor's half width, which bounds where the near ones lie. Buckets are visited
+  // nearest first, where a visible floor is likeliest.
+  enum class Visible { None, Within, Beyond };
+  template <class GapOf, class IsVisible>
+  Visible nearest_visible(P2 from, double slack, double close, GapOf gap_of, IsVisible visible) const {
+    if (floors_.empty()) return Visible::None;
     const glm::ivec2 c = cell(from);  // may lie outside the grid
     const int last_ring = std::max({std::abs(c.x), std::abs(c.y), std::abs(nx_ - 1 - c.x), std::abs(nz_ - 1 - c.y)});
-    for (int ring = 0; ring <= last_ring + 1; ++ring) {
-      if (ring <= last_ring)
+    // Centres in ring r lie at least r - 1 buckets away, so their gaps are at least that less the slack and
+    // the largest half width.
+    const double near_reach = std::ceil((close + slack + max_half_) / size_) + 1.0;
+    const int near_rings = near_reach > double(last_ring) ? last_ring : int(near_reach);
+    const auto first_visible = [&](int rings, bool near) {
+      for (int ring = 0; ring <= rings; ++ring)
         for (int bz = c.y - ring; bz <= c.y + ring; ++bz)
           for (int bx = c.x - ring; bx <= c.x + ring; ++bx) {
             if (std::max(std::abs(bx - c.x), std::abs(bz - c.y)) != ring || bx < 0 || bz < 0 || bx >= nx_ || bz >= nz_)
               continue;
-            for (std::size_t i : buckets_[std::size_t(bz) * std::size_t(nx_) + std::size_t(bx)])
-              if (const std::optional<double> gap = gap_of(floors_[i])) queue.emplace(*gap, i);
+            for (std::size_t i : buckets_[std::size_t(bz) * std::size_t(nx_) + std::size_t(bx)]) {
+              const std::optional<double> gap = gap_of(floors_[i]);
+              if (gap && (*gap < close) == near && visible(floors_[i], *gap)) return true;
+            }
           }
-      // Centres in later rings lie at least `ring` buckets away.
-      const double bound = ring < last_ring ? double(ring) * size_ - slack - max_half_ : INFINITY;
-      while (!queue.empty() && queue.top().first <= bound) {
-        const Entry e = queue.top();
-        queue.pop();
-        if (visible(floors_[e.second], e.first)) return e.first;
-      }
-    }
-    return std::nullopt;
+      return false;
+    };
+    if (first_visible(near_rings, true)) return Visible::Within;
+    return first_visible(last_ring, false) ? Visible::Beyond : Visible::None;
   }
 
  private:
@@ -205,22 +219,23 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
         if (len == 0.0 || glm::dot(u, n) < cone_cos * len) return std::nullopt;
         return len - floor.half_width;
       };
-      const auto found =
-          floor_index.nearest_visible(c, 0.0, gap, [&](const ReachFloor& f, double) { return sight(f, same_wall); });
-      if (!found) return Reach::None;
+      const auto found = floor_index.nearest_visible(c, 0.0, close, gap,
+                                                     [&](const ReachFloor& f, double) { return sight(f, same_wall); });
+      if (found == FloorIndex::Visible::None) return Reach::None;
       const bool low = area.center.y - floor_y <= params.close_height;
-      return low && *found < close ? Reach::Close : Reach::Distance;
+      return low && found == FloorIndex::Visible::Within ? Reach::Close : Reach::Distance;
     }
     // §3.5.2: the distance between centres less both half sizes; overlapping areas need no line of sight.
     const auto none = [](std::size_t) { return false; };
     const auto gap = [&](const ReachFloor& floor) -> std::optional<double> {
       return glm::distance(c, P2(floor.center)) - area.half_width - floor.half_width;
     };
-    const auto found = floor_index.nearest_visible(c, area.half_width, gap,
-                                                   [&](const ReachFloor& f, double g) { return g <= 0.0 || sight(f, none); });
-    if (!found) return Reach::None;
+    const auto found = floor_index.nearest_visible(c, area.half_width, close, gap, [&](const ReachFloor& f, double g) {
+      return g <= 0.0 || sight(f, none);
+    });
+    if (found == FloorIndex::Visible::None) return Reach::None;
     if (area.type == AreaType::Ceiling) return Reach::Distance;  // never within reach of a hand
-    return *found < close ? Reach::Close : Reach::Distance;
+    return found == FloorIndex::Visible::Within ? Reach::Close : Reach::Distance;
   };
 
   parallel_for(areas.size(), threads, 16, [&](std::size_t begin, std::size_t end, std::size_t) {

@@ -10,9 +10,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <optional>
-#include <queue>
-#include <set>
 #include <unordered_map>
 
 namespace roomsense::detail {
@@ -53,15 +52,21 @@ class WallSegments {
   // alike, as reach reads nothing but that footprint: each footprint is bucketed once, by its first wall.
   WallSegments(const std::vector<ReachWall>& walls, double bucket) : size_(bucket) {
     segments_.reserve(walls.size());
-    std::set<std::array<float, 7>> footprints;
+    const auto footprint = [&](std::size_t i) {
+      const ReachWall& w = walls[i];
+      return std::array<float, 7>{w.top_left.x, w.top_left.y, w.top_right.x, w.top_right.y, w.center.x, w.center.y,
+                                  w.half_width};
+    };
+    std::vector<std::size_t> order(walls.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return footprint(a) < footprint(b); });
+    std::vector<bool> repeated(walls.size(), false);
+    for (std::size_t k = 1; k < order.size(); ++k) repeated[order[k]] = footprint(order[k]) == footprint(order[k - 1]);
     for (std::size_t i = 0; i < walls.size(); ++i) {
       const ReachWall& w = walls[i];
       const Segment s{P2(w.top_left), P2(w.top_right)};
       segments_.push_back(s);
-      if (!footprints.insert({w.top_left.x, w.top_left.y, w.top_right.x, w.top_right.y, w.center.x, w.center.y,
-                              w.half_width})
-               .second)
-        continue;
+      if (repeated[i]) continue;
       for (int bz = cell(std::min(s.a.y, s.b.y)); bz <= cell(std::max(s.a.y, s.b.y)); ++bz)
         for (int bx = cell(std::min(s.a.x, s.b.x)); bx <= cell(std::max(s.a.x, s.b.x)); ++bx)
           buckets_[key(bx, bz)].push_back(i);

@@ -14,6 +14,7 @@
 #include <climits>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <stdexcept>
 
 namespace roomsense::detail {
@@ -318,23 +319,44 @@ int SquarePacker::misalignment_step(const Candidate& c) {
 
 std::vector<std::size_t> SquarePacker::pack(const Candidates& squares) {
   // Within a size, aligned with the room first (in steps of 5°), then by contact, then in search order. Each
-  // square's rank is computed once: the sort compares it O(n log n) times (an atan2 each, before). The rank
-  // is packed into one key, the square's index last: sorting the keys is the stable sort by rank.
-  constexpr int kContactBits = 24;
+  // square's rank is computed once, and the ranks are few (ten steps, contacts up to the samples around a
+  // square): a counting sort by rank, stable, so that equal ranks keep the search order.
   if (squares.size() > 0xffffffffu) throw std::length_error("more squares than packing can rank");
-  std::vector<std::uint64_t> keys;
-  keys.reserve(squares.size());
+  // A rank in 32 bits, as a floor's squares are millions: the step (0 to 9: misalignment is at most 45°) above
+  // the contact.
+  constexpr int kContactBits = 28;
+  constexpr std::uint32_t kContactMask = (std::uint32_t{1} << kContactBits) - 1;
+  std::vector<std::uint32_t> ranks(squares.size());
+  std::uint32_t max_step = 0, max_contact = 0;
   for (std::size_t i = 0; i < squares.size(); ++i) {
     if (i % kStopEvery == 0) stop_point(stop_);
     const Candidate c = squares[i].unpack();
-    const std::uint64_t away = std::uint64_t((1 << kContactBits) - 1 - std::min(contact(c), (1 << kContactBits) - 1));
-    keys.push_back((std::uint64_t(misalignment_step(c)) << 56) | (away << 32) | std::uint64_t(i));
+    const std::uint32_t step = std::uint32_t(misalignment_step(c)),
+                        touching = std::min(std::uint32_t(contact(c)), kContactMask);
+    ranks[i] = step << kContactBits | touching;
+    max_step = std::max(max_step, step), max_contact = std::max(max_contact, touching);
   }
-  std::sort(keys.begin(), keys.end());
+  // Bucket step * (max_contact + 1) + (max_contact - contact): step ascending, contact descending.
+  const std::size_t contacts = std::size_t(max_contact) + 1, buckets = (std::size_t(max_step) + 1) * contacts;
+  const auto bucket_of = [&](std::uint32_t rank) {
+    return std::size_t(rank >> kContactBits) * contacts + std::size_t(max_contact - (rank & kContactMask));
+  };
+  std::vector<std::uint32_t> order(squares.size());
+  if (buckets <= std::max<std::size_t>(squares.size(), 1 << 20)) {
+    std::vector<std::uint32_t> first(buckets + 1, 0);
+    for (const std::uint32_t rank : ranks) ++first[bucket_of(rank) + 1];
+    for (std::size_t b = 0; b < buckets; ++b) first[b + 1] += first[b];
+    for (std::size_t i = 0; i < squares.size(); ++i) order[first[bucket_of(ranks[i])]++] = std::uint32_t(i);
+  } else {  // contacts past the samples around a square at any usual voxel size: a comparison sort
+    std::iota(order.begin(), order.end(), std::uint32_t{0});
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return bucket_of(ranks[a]) < bucket_of(ranks[b]); });
+  }
+  ranks = {};
   std::vector<std::size_t> kept;
-  for (std::size_t k = 0; k < keys.size(); ++k) {
+  for (std::size_t k = 0; k < order.size(); ++k) {
     if (k % kStopEvery == 0) stop_point(stop_);
-    const std::size_t i = std::size_t(keys[k] & 0xffffffffu);
+    const std::size_t i = order[k];
     const Candidate c = squares[i].unpack();
     const int level = c.corners[0].y;
     bool free = true;

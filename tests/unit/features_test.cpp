@@ -7,6 +7,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <random>
+
 namespace roomsense {
 namespace {
 
@@ -204,6 +206,54 @@ TEST(WallNormals, PointIntoTheRoom) {
             if (n & bit) { EXPECT_EQ(f.walls[s.column(x + dx, z + dz)], 1) << spec.name; }
         }
     EXPECT_GT(marked, 100u) << spec.name;
+  }
+}
+
+TEST(WallOpenings, DoorsAreGapsOfAtMostTheOpeningBetweenWallColumnsOpenDownToTheFloor) {
+  // Random wall columns, room and voxels: a voxel before a non-wall column is blocked as a door exactly where,
+  // walking from that column along the wall's face both ways, wall columns lie within the opening's width and
+  // the column is empty in the room's lower half (the definition, by walking, against the detector's scans).
+  std::mt19937 rng(3);
+  const GridSpec spec = make_grid_spec({0, 0, 0}, {2.4f, 2.0f, 1.9f}, 0.1f);
+  const FloorCeiling levels{1, 18, 1, 18};
+  const int max_opening = 6, y_from = levels.floor + 1, y_to = levels.ceiling - 1;
+  const int low_top = std::min(y_to, levels.floor + (levels.ceiling - levels.floor) / 2);
+  for (int trial = 0; trial < 30; ++trial) {
+    std::bernoulli_distribution wall_at(0.1 + 0.02 * trial), filled(0.02);
+    VoxelGrid grid(spec);
+    std::vector<std::uint8_t> walls(spec.column_count()), room(spec.column_count(), 1);
+    for (std::size_t c = 0; c < walls.size(); ++c) walls[c] = wall_at(rng) ? 1 : 0;
+    for (std::uint8_t& v : grid.cells) v = filled(rng) ? 1 : 0;
+    const std::vector<std::uint8_t> blocked = detect_wall_openings(grid, levels, walls, room, 0, max_opening, {});
+    const auto is_wall = [&](int x, int z) { return spec.contains(x, 0, z) && walls[spec.column(x, z)] != 0; };
+    const auto door = [&](int x, int z, int ax, int az) {
+      if (!spec.contains(x, 0, z) || is_wall(x, z)) return false;
+      for (int y = y_from; y <= low_top; ++y)
+        if (grid.at(x, y, z)) return false;
+      int a = 1, b = 1;
+      while (spec.contains(x - a * ax, 0, z - a * az) && !is_wall(x - a * ax, z - a * az)) ++a;
+      while (spec.contains(x + b * ax, 0, z + b * az) && !is_wall(x + b * ax, z + b * az)) ++b;
+      return is_wall(x - a * ax, z - a * az) && is_wall(x + b * ax, z + b * az) && a + b - 1 <= max_opening;
+    };
+    int doors = 0;
+    for (int z = 0; z < spec.nz; ++z)
+      for (int x = 0; x < spec.nx; ++x) {
+        if (is_wall(x, z)) continue;
+        bool want = false;  // behind (x, z) along a step d, with the face along (d.z, d.x); no wall behind
+        for (const glm::ivec2 d : {glm::ivec2(1, 0), glm::ivec2(-1, 0), glm::ivec2(0, 1), glm::ivec2(0, -1)})
+          want = want || (!is_wall(x - d.x, z - d.y) && door(x - d.x, z - d.y, d.y, d.x));
+        // Where a wall lies behind, the wall's own test decides: only columns with no wall beside them here.
+        bool wall_beside = false;
+        for (const glm::ivec2 d : {glm::ivec2(1, 0), glm::ivec2(-1, 0), glm::ivec2(0, 1), glm::ivec2(0, -1)})
+          wall_beside = wall_beside || is_wall(x - d.x, z - d.y);
+        if (wall_beside) continue;
+        doors += want ? 1 : 0;
+        const bool got = !blocked.empty() && blocked[spec.index(x, y_from, z)] != 0;
+        ASSERT_EQ(got, want) << "trial " << trial << " column " << x << ", " << z;
+      }
+    if (trial == 0) {
+      EXPECT_GT(doors, 0);
+    }
   }
 }
 

@@ -40,19 +40,32 @@ std::vector<std::uint8_t> detect_wall_openings(const VoxelGrid& grid, const Floo
       for (int i = -reach; i <= reach; ++i) m = LabelMask(m | labels.at(s, x + i * along.dx, y + dy, z + i * along.dz));
     return m;
   };
-  // A door: column (x, z) lies in a gap of at most max_opening between wall columns along `along`, and is
-  // open down to the floor (no voxel in the lower half of the room).
+  // A door: column (x, z) lies in a gap of at most max_opening between wall columns along a grid axis, and is
+  // open down to the floor (no voxel in the lower half of the room). Found for every column at once, from the
+  // nearest wall column before and after it along each axis: bit 0 along x, bit 1 along z.
   const int low_top = std::min(y_to, levels.floor + std::max(1, (levels.ceiling - levels.floor) / 2));
-  const auto door_gap = [&](int x, int z, Step along) {
-    if (!inside(x, z) || walls[s.column(x, z)]) return false;
-    const std::uint8_t* v = grid.column_data(x, z);
-    if (std::any_of(v + y_from, v + low_top + 1, [](std::uint8_t c) { return c != 0; })) return false;
-    int a = 1, b = 1;
-    while (a <= max_opening_voxels && inside(x - a * along.dx, z - a * along.dz) && !is_wall(x - a * along.dx, z - a * along.dz)) ++a;
-    while (b <= max_opening_voxels && inside(x + b * along.dx, z + b * along.dz) && !is_wall(x + b * along.dx, z + b * along.dz)) ++b;
-    return is_wall(x - a * along.dx, z - a * along.dz) && is_wall(x + b * along.dx, z + b * along.dz) &&
-           a + b - 1 <= max_opening_voxels;
+  std::vector<std::uint8_t> door(s.column_count(), 0);
+  const auto find_doors = [&](int lines, int length, auto column_at, std::uint8_t bit) {
+    std::vector<int> previous(std::size_t(length), -1);
+    for (int line = 0; line < lines; ++line) {
+      for (int i = 0, wall = -1; i < length; ++i) {
+        if (walls[column_at(line, i)]) wall = i;
+        previous[std::size_t(i)] = wall;
+      }
+      for (int i = length - 1, next = -1; i >= 0; --i) {
+        const std::size_t col = column_at(line, i);
+        if (walls[col]) {
+          next = i;
+          continue;
+        }
+        if (next < 0 || previous[std::size_t(i)] < 0 || next - previous[std::size_t(i)] - 1 > max_opening_voxels) continue;
+        const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
+        if (std::none_of(v + y_from, v + low_top + 1, [](std::uint8_t c) { return c != 0; })) door[col] |= bit;
+      }
+    }
   };
+  find_doors(s.nz, s.nx, [&](int z, int x) { return s.column(x, z); }, 1);
+  find_doors(s.nx, s.nz, [&](int x, int z) { return s.column(x, z); }, 2);
 
   std::vector<std::uint8_t> blocked(s.voxel_count(), 0);
   bool any = false;
@@ -85,7 +98,7 @@ std::vector<std::uint8_t> detect_wall_openings(const VoxelGrid& grid, const Floo
             }
             if (open) blocked[s.index(x, y, z)] = 1, any = true;
           }
-        } else if (door_gap(bx, bz, along)) {
+        } else if (door[s.column(bx, bz)] & (along.dx != 0 ? 1 : 2)) {
           for (int y = y_from; y <= y_to; ++y) blocked[s.index(x, y, z)] = 1;
           any = true;
         }

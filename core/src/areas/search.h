@@ -19,8 +19,15 @@ struct NormalCounts {
   std::vector<std::uint16_t> prefix16;  // the same, otherwise
   std::size_t blocked_words = 0;        // per column
   std::vector<std::uint64_t> blocked_bits;  // RoomFeatures::wall_blocked, bit y - y0; empty when none is
+  // Per level, x and normal bit k (kNormalLeft ... kNormalBackward), a bit per z: where a second corner may
+  // lie, 64 at a time (the searches' most frequent read).
+  std::size_t z_words = 0;
+  std::vector<std::uint64_t> z_bits;  // ((y - y0) * nx + x) * 4 + k, then z / 64
   int count(std::size_t column, int y_from, int y_to) const;  // voxels with a normal in [y_from, y_to]
   bool blocked(std::size_t column, int y_from, int y_to) const;  // any blocked voxel in [y_from, y_to]
+  // Bits z in [z_from, z_from + 64) of the voxels at (x, y) whose normal has any bit of `normal_mask`; 0
+  // outside the grid.
+  std::uint64_t z_window(int nx, int x, int y, std::uint8_t normal_mask, int z_from) const;
 };
 NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features);
 

@@ -5,6 +5,7 @@
 #include "roomsense/cancel.h"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 
 namespace roomsense::detail {
@@ -41,6 +42,26 @@ bool NormalCounts::blocked(std::size_t column, int y_from, int y_to) const {
   return false;
 }
 
+std::uint64_t NormalCounts::z_window(int nx, int x, int y, std::uint8_t normal_mask, int z_from) const {
+  const int total = int(64 * z_words);
+  if (z_from >= total || z_from <= -64) return 0;
+  const std::uint64_t* rows = z_bits.data() + (std::size_t(y - y0) * std::size_t(nx) + std::size_t(x)) * 4 * z_words;
+  std::uint64_t out = 0;
+  for (int k = 0; k < 4; ++k) {
+    if (!(normal_mask & (1 << k))) continue;
+    const std::uint64_t* row = rows + std::size_t(k) * z_words;
+    if (z_from < 0) {
+      out |= row[0] << -z_from;
+      continue;
+    }
+    const std::size_t w = std::size_t(z_from / 64);
+    const int shift = z_from % 64;
+    out |= row[w] >> shift;
+    if (shift != 0 && w + 1 < z_words) out |= row[w + 1] << (64 - shift);
+  }
+  return out;
+}
+
 NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   NormalCounts n;
   n.y0 = features.levels.floor;
@@ -66,6 +87,18 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   };
   if (n.levels < 256) prefix_of(n.prefix8);
   else prefix_of(n.prefix16);
+  n.z_words = std::size_t(spec.nz + 63) / 64;
+  n.z_bits.assign(std::size_t(std::max(n.levels, 0)) * std::size_t(spec.nx) * 4 * n.z_words, 0);
+  for (std::size_t col = 0; col < spec.column_count(); ++col) {
+    if (n.slot[col] == NormalCounts::kNoNormal) continue;
+    const int x = int(col % std::size_t(spec.nx)), z = int(col / std::size_t(spec.nx));
+    const std::uint8_t* f = normals_of(col);
+    for (int i = 0; i < n.levels; ++i)
+      for (int k = 0; k < 4; ++k)
+        if (f[i] & (1 << k))
+          n.z_bits[((std::size_t(i) * std::size_t(spec.nx) + std::size_t(x)) * 4 + std::size_t(k)) * n.z_words +
+                   std::size_t(z / 64)] |= std::uint64_t{1} << (z % 64);
+  }
   if (!features.wall_blocked.empty()) {
     n.blocked_words = std::size_t(n.levels + 63) / 64;
     n.blocked_bits.assign(spec.column_count() * n.blocked_words, 0);
@@ -125,25 +158,44 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
   const auto centre_bit = [&](int sx, int sy, int sz) {
     return (std::size_t(sz) * std::size_t(2 * spec.nx) + std::size_t(sx)) * std::size_t(y_span) + std::size_t(sy - y_base);
   };
+  // The ring by dx (ascending, as ring_offsets orders it), each dx's offsets by dz ascending: a bit per dz in
+  // words of 64 from dz = -reach, and the offset's index in the ring.
+  const int reach = int(std::floor(size.max_d)), dz_span = 2 * reach + 1;
+  const std::size_t dz_words = std::size_t(dz_span + 63) / 64;
+  std::vector<std::uint64_t> ring_dz(std::size_t(reach + 1) * dz_words, 0);
+  std::vector<std::uint32_t> ring_index(std::size_t(reach + 1) * std::size_t(dz_span), 0);
+  for (std::size_t r = 0; r < ring.size(); ++r) {
+    const std::size_t bit = std::size_t(ring[r].dz + reach);
+    ring_dz[std::size_t(ring[r].dx) * dz_words + bit / 64] |= std::uint64_t{1} << (bit % 64);
+    ring_index[std::size_t(ring[r].dx) * std::size_t(dz_span) + bit] = std::uint32_t(r);
+  }
+  // A second corner with a compatible normal at offset (dx, dz) from the first: the ring's offsets in order, 64
+  // dz at a time.
+  const auto seconds_of = [&](int x1, int y1, int z1, std::uint8_t compatible, int dx, std::size_t w) {
+    return ring_dz[std::size_t(dx) * dz_words + w] &
+           normals.z_window(spec.nx, x1 + dx, y1, compatible, z1 + int(64 * w) - reach);
+  };
   for (int z1 = 0; z1 < spec.nz; ++z1, stop_point(stop))
-    for (int x1 = 0; x1 < spec.nx; ++x1)
+    for (int x1 = 0; x1 < spec.nx; ++x1) {
+      if (normals.slot[spec.column(x1, z1)] == NormalCounts::kNoNormal) continue;  // most of an open floor
       for (int y1 = std::max(y_first, floor); y1 <= ceiling; ++y1) {
         const std::uint8_t f1 = f[spec.index(x1, y1, z1)];
         if (f1 == 0) continue;
         const std::uint8_t compatible = compatible_normals(f1);
-        for (std::size_t r = 0; r < ring.size(); ++r) {
-          const RingOffset& o = ring[r];
-          const int x2 = x1 + o.dx, z2 = z1 + o.dz;
-          if (x2 >= spec.nx || z2 < 0 || z2 >= spec.nz) continue;
-          if ((f[spec.index(x2, y1, z2)] & compatible) == 0) continue;
-          const int h = shapes[r].side;
-          const std::size_t bit = centre_bit(x1 + x2, 2 * y1 - h, z1 + z2);
-          if (centres.test(bit)) continue;
-          if (!valid(x1, z1, o, y1, h)) continue;
-          centres.set(bit);
-          out.push_back(glm::ivec3(x1, y1, z1), std::uint32_t(r));
-        }
+        for (int dx = 0; dx <= reach && x1 + dx < spec.nx; ++dx)
+          for (std::size_t w = 0; w < dz_words; ++w)
+            for (std::uint64_t seconds = seconds_of(x1, y1, z1, compatible, dx, w); seconds != 0; seconds &= seconds - 1) {
+              const std::size_t r =
+                  ring_index[std::size_t(dx) * std::size_t(dz_span) + 64 * w + std::size_t(std::countr_zero(seconds))];
+              const RingOffset& o = ring[r];
+              const int h = shapes[r].side;
+              const std::size_t bit = centre_bit(2 * x1 + o.dx, 2 * y1 - h, 2 * z1 + o.dz);
+              if (centres.test(bit) || !valid(x1, z1, o, y1, h)) continue;
+              centres.set(bit);
+              out.push_back(glm::ivec3(x1, y1, z1), std::uint32_t(r));
+            }
       }
+    }
   return out;
 }
 

@@ -21,6 +21,9 @@ struct RingOffset {
   std::vector<CellRun> runs;   // the covered cells, one run per column
   int cells = 0;               // how many
   glm::ivec2 box_lo{0}, box_hi{0};  // their bounding box (x, z), relative to the first corner
+  // A box of covered cells (the largest over runs of whole columns), relative to the first corner; empty
+  // (core_lo.x > core_hi.x) for a wall top.
+  glm::ivec2 core_lo{1, 0}, core_hi{0, 0};
 };
 
 enum class Shape {
@@ -50,6 +53,18 @@ inline std::vector<RingOffset> ring_offsets(const SizeRange& size, Shape shape) 
       o.box_lo = {o.runs.front().dx, o.runs.front().dz_lo};
       o.box_hi = {o.runs.back().dx, o.runs.front().dz_hi};
       for (const CellRun& r : o.runs) o.box_lo.y = std::min(o.box_lo.y, r.dz_lo), o.box_hi.y = std::max(o.box_hi.y, r.dz_hi);
+      if (shape == Shape::Square) {
+        long best = 0;
+        for (std::size_t i = 0; i < o.runs.size(); ++i) {
+          int lo = o.runs[i].dz_lo, hi = o.runs[i].dz_hi;  // the z both ends of runs i..j cover
+          for (std::size_t j = i; j < o.runs.size(); ++j) {
+            lo = std::max(lo, o.runs[j].dz_lo), hi = std::min(hi, o.runs[j].dz_hi);
+            if (lo > hi) break;
+            const long area = long(j - i + 1) * long(hi - lo + 1);
+            if (area > best) best = area, o.core_lo = {o.runs[i].dx, lo}, o.core_hi = {o.runs[j].dx, hi};
+          }
+        }
+      }
       out.push_back(std::move(o));
     }
   return out;

@@ -190,12 +190,23 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
       rises = false;
       const glm::ivec2 box_lo = glm::ivec2(x1, z1) + o.box_lo, box_hi = glm::ivec2(x1, z1) + o.box_hi;
       const bool box_inside = box_lo.x >= 0 && box_lo.y >= 0 && box_hi.x < spec.nx && box_hi.y < spec.nz;
-      if (box_inside && box_unsuitable.sum(box_lo, box_hi) == 0) {
+      const auto rises_in_runs = [&] {
         if (may_rise && box_raised.sum(box_lo, box_hi) > 0)
           for (const CellRun& run : o.runs)
             rises = rises || box_raised.sum({x1 + run.dx, z1 + run.dz_lo}, {x1 + run.dx, z1 + run.dz_hi}) > 0;
         return true;
-      }
+      };
+      const int unsuitable_in_box = box_inside ? box_unsuitable.sum(box_lo, box_hi) : -1;
+      if (unsuitable_in_box == 0) return rises_in_runs();
+      // The box of whole columns inside the square (RingOffset::core_lo): a wall or too many unsuitable cells
+      // there fail the square at once.
+      const glm::ivec2 core_lo = glm::ivec2(x1, z1) + o.core_lo, core_hi = glm::ivec2(x1, z1) + o.core_hi;
+      if (core_lo.x <= core_hi.x &&
+          (box_walls.sum(core_lo, core_hi) > 0 || double(box_unsuitable.sum(core_lo, core_hi)) > may_miss))
+        return false;
+      // Where the bounding box holds no wall and no more unsuitable cells than allowed, neither do the cells.
+      if (box_inside && double(unsuitable_in_box) <= may_miss && box_walls.sum(box_lo, box_hi) == 0)
+        return rises_in_runs();
       int missing = 0;
       for (const CellRun& run : o.runs) {
         const int x = x1 + run.dx, lo = z1 + run.dz_lo, hi = z1 + run.dz_hi;  // inside: the corners are

@@ -15,17 +15,32 @@
 namespace roomsense::detail {
 namespace {
 
-// Counts over axis-aligned boxes of cells in O(1) (a summed-area table).
+// A box of cells, inclusive.
+struct CellBox {
+  glm::ivec2 lo{0}, hi{-1};
+  bool empty() const { return lo.x > hi.x || lo.y > hi.y; }
+};
+
+// Counts over axis-aligned boxes of cells in O(1) (a summed-area table), over a region of the grid: boxes
+// inside it only.
 class BoxCounts {
  public:
   BoxCounts(const GridSpec& spec) : nx_(spec.nx), nz_(spec.nz), sums_(std::size_t(nx_ + 1) * std::size_t(nz_ + 1), 0) {}
   template <class Pred>
   void fill(const GridSpec& spec, Pred pred) {
-    for (int z = 0; z < nz_; ++z)
-      for (int x = 0; x < nx_; ++x)
-        at(x + 1, z + 1) = at(x, z + 1) + at(x + 1, z) - at(x, z) + (pred(spec.column(x, z)) ? 1 : 0);
+    fill(spec, CellBox{{0, 0}, {nx_ - 1, nz_ - 1}}, pred);
   }
-  int sum(glm::ivec2 lo, glm::ivec2 hi) const {  // inclusive; lo and hi inside the grid
+  template <class Pred>
+  void fill(const GridSpec& spec, const CellBox& region, Pred pred) {
+    const glm::ivec2 lo = region.lo, hi = region.hi;
+    for (int x = lo.x; x <= hi.x + 1; ++x) at(x, lo.y) = 0;
+    for (int z = lo.y; z <= hi.y; ++z) {
+      at(lo.x, z + 1) = 0;
+      for (int x = lo.x; x <= hi.x; ++x)
+        at(x + 1, z + 1) = at(x, z + 1) + at(x + 1, z) - at(x, z) + (pred(spec.column(x, z)) ? 1 : 0);
+    }
+  }
+  int sum(glm::ivec2 lo, glm::ivec2 hi) const {  // inclusive; lo and hi inside the region filled
     return at(hi.x + 1, hi.y + 1) - at(lo.x, hi.y + 1) - at(hi.x + 1, lo.y) + at(lo.x, lo.y);
   }
 
@@ -149,32 +164,52 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
   constexpr std::uint32_t kNone = 0xffffffffu;
   std::vector<std::uint64_t> open_here, open_above;
   std::vector<std::uint32_t> found_here, found_above;
+  // Each layer's first corners' box: a centre further than corner_reach from it has no square, and a square
+  // around a centre within that reach lies within corner_reach of the centre. So a layer's work, a furniture
+  // top's or a facet's, is its box grown by twice the reach, not the grid.
+  const auto layer_of = [&](std::size_t col) {  // the layer whose first corner the column may be, or -1
+    if (surface == Surface::Floor) return features.free_floor[col] != 0 ? 0 : -1;
+    if (surface == Surface::Ceiling)
+      return features.free_ceiling[col] == 0 ? -1 : by_facet ? features.ceiling_facet[col] : 0;
+    const int f = features.furniture[col];
+    return f >= y_from && f <= y_to ? f - y_from : -1;
+  };
+  std::vector<CellBox> first_box(std::size_t(std::max(layers, 0)),
+                                 CellBox{{spec.nx, spec.nz}, {-1, -1}});
+  for (int z = 0; z < spec.nz; ++z)
+    for (int x = 0; x < spec.nx; ++x) {
+      const int layer = layer_of(spec.column(x, z));
+      if (layer < 0 || layer >= layers) continue;
+      CellBox& b = first_box[std::size_t(layer)];
+      b.lo = glm::min(b.lo, glm::ivec2(x, z)), b.hi = glm::max(b.hi, glm::ivec2(x, z));
+    }
+  std::vector<std::uint8_t> tile(spec.column_count(), 0), first(spec.column_count(), 0);
   for (int layer = 0; layer < layers; centres[std::size_t(layer++)].release()) {  // later layers never read it
     const int y1 = by_facet ? features.facets[std::size_t(layer)].level : y_from + layer;
+    const CellBox& firsts = first_box[std::size_t(layer)];
+    if (firsts.empty()) continue;
+    const CellBox region{glm::max(firsts.lo - 2 * corner_reach - 1, glm::ivec2(0)),
+                         glm::min(firsts.hi + 2 * corner_reach + 1, glm::ivec2(spec.nx - 1, spec.nz - 1))};
     // Corner 1 must be a tile of this level; the other cells may also be one level higher (§3.3.4).
-    std::vector<std::uint8_t> tile(spec.column_count(), 0), first(spec.column_count(), 0);
-    for (std::size_t col = 0; col < tile.size(); ++col) {
-      if (surface == Surface::Floor) tile[col] = first[col] = features.free_floor[col];
-      if (surface == Surface::Ceiling)
-        tile[col] = first[col] = features.free_ceiling[col] && (!by_facet || features.ceiling_facet[col] == layer);
-      if (surface == Surface::Furniture) {
-        first[col] = features.furniture[col] == y1;
-        tile[col] = first[col] || features.furniture[col] == y1 + 1;
-      }
-    }
-    if (std::none_of(first.begin(), first.end(), [](std::uint8_t t) { return t != 0; })) continue;
     first_bits.clear();
     tile_bits.clear();
-    for (int z = 0; z < spec.nz; ++z)
-      for (int x = 0; x < spec.nx; ++x) {
+    for (int z = region.lo.y; z <= region.hi.y; ++z)
+      for (int x = region.lo.x; x <= region.hi.x; ++x) {
         const std::size_t col = spec.column(x, z);
+        if (surface == Surface::Floor) tile[col] = first[col] = features.free_floor[col];
+        if (surface == Surface::Ceiling)
+          tile[col] = first[col] = features.free_ceiling[col] && (!by_facet || features.ceiling_facet[col] == layer);
+        if (surface == Surface::Furniture) {
+          first[col] = features.furniture[col] == y1;
+          tile[col] = first[col] || features.furniture[col] == y1 + 1;
+        }
         if (tile[col] != 0) tile_bits.set(x + pad, z + pad);
         if (first[col] != 0) first_bits.set(x + pad, z + pad);
       }
-    box_unsuitable.fill(spec, [&](std::size_t col) { return tile[col] == 0; });  // walls are never tiles
-    box_first.fill(spec, [&](std::size_t col) { return first[col] != 0; });
+    box_unsuitable.fill(spec, region, [&](std::size_t col) { return tile[col] == 0; });  // walls are never tiles
+    box_first.fill(spec, region, [&](std::size_t col) { return first[col] != 0; });
     if (surface == Surface::Furniture) {
-      box_raised.fill(spec, [&](std::size_t col) { return features.furniture[col] == y1 + 1; });
+      box_raised.fill(spec, region, [&](std::size_t col) { return features.furniture[col] == y1 + 1; });
     }
     CentreSet& here = centres[std::size_t(layer)];
     CentreSet& above = centres[std::size_t(layer + 1)];
@@ -224,13 +259,21 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
     // is four shifted words of the padded bit rows for 64 centres, and only the centres that pass it and are
     // still open are checked cell by cell. Each centre's squares are then added in orientation order, centre
     // by centre along the row, as a loop over centres would add them.
-    for (int cz = 0; cz <= 2 * (spec.nz - 1); ++cz, stop_point(stop)) {
+    // Centres whose cell (cx / 2, cz / 2) lies within corner_reach of the first corners' box; in a row, centre
+    // hx_first + i is bit i.
+    const glm::ivec2 near_firsts_lo = glm::max(firsts.lo - corner_reach, glm::ivec2(0));
+    const glm::ivec2 near_firsts_hi = glm::min(firsts.hi + corner_reach, glm::ivec2(spec.nx - 1, spec.nz - 1));
+    const int cz_last = std::min(2 * near_firsts_hi.y + 1, 2 * (spec.nz - 1));
+    for (int cz = 2 * near_firsts_lo.y; cz <= cz_last; ++cz, stop_point(stop)) {
       const int p = cz & 1;  // dx - dz and dx + dz share their parity: cx - cz is even
-      const int centres_in_row = spec.nx - p;  // cx = 2 hx + p <= 2 (nx - 1)
+      const int hx_first = near_firsts_lo.x;  // cx = 2 hx + p <= 2 (nx - 1)
+      const int centres_in_row = std::min(near_firsts_hi.x, spec.nx - 1 - p) - hx_first + 1;
+      if (centres_in_row <= 0) continue;
       const std::size_t words = (std::size_t(centres_in_row) + 63) / 64;
       open_here.assign(words, 0);
       open_above.assign(words, 0);
-      for (int hx = 0; hx < centres_in_row; ++hx) {
+      for (int i = 0; i < centres_in_row; ++i) {
+        const int hx = hx_first + i;
         const int cx = 2 * hx + p;
         const glm::ivec2 near_lo = glm::max(glm::ivec2(cx / 2 - corner_reach, cz / 2 - corner_reach), glm::ivec2(0));
         const glm::ivec2 near_hi =
@@ -245,9 +288,9 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
             continue;
         }
         const glm::ivec3 sum(2 * cx, 0, 2 * cz);
-        const std::uint64_t bit = std::uint64_t{1} << (hx % 64);
-        if (!here.contains(sum)) open_here[std::size_t(hx / 64)] |= bit;
-        if (may_rise && !above.contains(sum)) open_above[std::size_t(hx / 64)] |= bit;
+        const std::uint64_t bit = std::uint64_t{1} << (i % 64);
+        if (!here.contains(sum)) open_here[std::size_t(i / 64)] |= bit;
+        if (may_rise && !above.contains(sum)) open_above[std::size_t(i / 64)] |= bit;
       }
       const std::vector<RingOffset>& orientations = by_parity[std::size_t(p)];
       const std::vector<CornerCells>& cells = corner_cells[std::size_t(p)];
@@ -261,29 +304,29 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
           std::uint64_t open = open_here[w] | open_above[w];
           if (open == 0) continue;
           any_open = true;
-          const int x = int(64 * w);
+          const int x = hx_first + int(64 * w);  // the word's first centre
           open &= first_bits.word(x + k.x[0], hz + k.z[0]) & tile_bits.word(x + k.x[1], hz + k.z[1]) &
                   tile_bits.word(x + k.x[2], hz + k.z[2]) & tile_bits.word(x + k.x[3], hz + k.z[3]);
           for (; open != 0; open &= open - 1) {
-            const int b = std::countr_zero(open), hx = x + b;
+            const int b = std::countr_zero(open);
             const std::uint64_t bit = std::uint64_t{1} << b;
             const RingOffset& o = orientations[i];
-            const int cx = 2 * hx + p;
+            const int cx = 2 * (x + b) + p;
             const int x1 = (cx - (o.dx - o.dz)) / 2, z1 = (cz - (o.dx + o.dz)) / 2;
             bool rises = false;
             if (!valid(x1, z1, o, rises)) continue;
             std::uint64_t& needed = rises ? open_above[w] : open_here[w];
             if (!(needed & bit)) continue;
             needed &= ~bit;
-            (rises ? found_above : found_here)[std::size_t(hx)] = std::uint32_t(i);
+            (rises ? found_above : found_here)[64 * w + std::size_t(b)] = std::uint32_t(i);
           }
         }
         if (!any_open) break;
       }
-      for (int hx = 0; hx < centres_in_row; ++hx) {
-        const std::uint32_t h = found_here[std::size_t(hx)], a = found_above[std::size_t(hx)];
+      for (int i = 0; i < centres_in_row; ++i) {
+        const std::uint32_t h = found_here[std::size_t(i)], a = found_above[std::size_t(i)];
         if (h == kNone && a == kNone) continue;
-        const int cx = 2 * hx + p;
+        const int cx = 2 * (hx_first + i) + p;
         const glm::ivec3 sum(2 * cx, 0, 2 * cz);
         const auto add = [&](std::uint32_t i, bool rises) {
           const RingOffset& o = orientations[i];

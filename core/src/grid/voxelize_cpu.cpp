@@ -86,14 +86,18 @@ struct TriangleScan {
   bool small() const { return last[0] - first[0] < 2 && last[1] - first[1] < 2 && last[2] - first[2] < 2; }
   bool planar() const { return normal[d] != 0.0; }
 
-  // ca, cb, cc: the corners' cells. box_index is monotone, so the box of the corners' cells is the cells of
-  // the corners' box.
-  TriangleScan(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const BoxCell& ca, const BoxCell& cb,
-               const BoxCell& cc) {
+  // The box alone, from the corners' cells: box_index is monotone, so the box of the corners' cells is the
+  // cells of the corners' box.
+  TriangleScan(const BoxCell& ca, const BoxCell& cb, const BoxCell& cc) {
     for (int k = 0; k < 3; ++k) {
       first[k] = std::min(std::min(ca.at[k], cb.at[k]), cc.at[k]);
       last[k] = std::max(std::max(ca.at[k], cb.at[k]), cc.at[k]);
     }
+  }
+  // The box and, beyond a few voxels, the plane.
+  TriangleScan(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const BoxCell& ca, const BoxCell& cb,
+               const BoxCell& cc)
+      : TriangleScan(ca, cb, cc) {
     if (small()) return;  // no plane needed: most of a fine scan's triangles
     normal = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
     const glm::dvec3 m = glm::abs(normal);
@@ -269,11 +273,7 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
   };
   const std::uint64_t box_bound = sum_over_triangles(
       [](const glm::vec3&, const glm::vec3&, const glm::vec3&, const BoxCell& ca, const BoxCell& cb, const BoxCell& cc) {
-        std::uint64_t tests = 1;
-        for (int k = 0; k < 3; ++k)
-          tests *= std::uint64_t(std::max(std::max(ca.at[k], cb.at[k]), cc.at[k]) -
-                                 std::min(std::min(ca.at[k], cb.at[k]), cc.at[k]) + 1);
-        return tests;
+        return TriangleScan(ca, cb, cc).box_volume();
       });
   if (box_bound > request.test_budget &&
       sum_over_triangles([](const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const BoxCell& ca,

@@ -141,10 +141,10 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
   const int corner_reach = int(std::ceil(size.max_d * 0.7072)) + 1;
   // Centres found so far, per level of the squares' corners (y_actual for furniture, Eq. 3.41) or facet.
   std::vector<CentreSet> centres(std::size_t(layers + 1), CentreSet(spec));
-  // The corner test, the loop's most frequent, reads a copy of the tiles padded by corner_reach on every side
-  // (bit 0: a tile, bit 1: a first corner), so that each orientation's four corners are constant offsets from
-  // the centre's cell: no bounds checks, no index arithmetic. A centre (cx, cz) on the half-voxel lattice has
-  // cx and cz of one parity p; with cx = 2 hx + p, corner 1 is at hx + (p - dx + dz) / 2, an exact division.
+  // The corner test, the loop's most frequent, reads bit copies of the tiles and of the first corners, padded by
+  // corner_reach on every side, so that each orientation's four corners are constant offsets from the centre's
+  // cell: no bounds checks. A centre (cx, cz) on the half-voxel lattice has cx and cz of one parity p; with
+  // cx = 2 hx + p, corner 1 is at hx + (p - dx + dz) / 2, an exact division.
   const int pad = corner_reach + 1;
   const PaddedBits::Size padded_size{spec.nx + 2 * pad, spec.nz + 2 * pad};
   PaddedBits first_bits(padded_size), tile_bits(padded_size);
@@ -259,6 +259,7 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
     // is four shifted words of the padded bit rows for 64 centres, and only the centres that pass it and are
     // still open are checked cell by cell. Each centre's squares are then added in orientation order, centre
     // by centre along the row, as a loop over centres would add them.
+    //
     // Centres whose cell (cx / 2, cz / 2) lies within corner_reach of the first corners' box; in a row, centre
     // hx_first + i is bit i.
     const glm::ivec2 near_firsts_lo = glm::max(firsts.lo - corner_reach, glm::ivec2(0));
@@ -328,12 +329,12 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
         if (h == kNone && a == kNone) continue;
         const int cx = 2 * (hx_first + i) + p;
         const glm::ivec3 sum(2 * cx, 0, 2 * cz);
-        const auto add = [&](std::uint32_t i, bool rises) {
-          const RingOffset& o = orientations[i];
+        const auto add = [&](std::uint32_t orientation, bool rises) {
+          const RingOffset& o = orientations[orientation];
           const int x1 = (cx - (o.dx - o.dz)) / 2, z1 = (cz - (o.dx + o.dz)) / 2;
           (rises ? above : here).insert(sum);
           const int y = rises ? y1 + 1 : y1;  // y_Actual, Eq. 3.41
-          out.push_back(glm::ivec3(x1, y, z1), first_shape[std::size_t(p)] + i);
+          out.push_back(glm::ivec3(x1, y, z1), first_shape[std::size_t(p)] + orientation);
         };
         if (h != kNone && (a == kNone || h < a)) add(h, false);
         if (a != kNone) add(a, true);

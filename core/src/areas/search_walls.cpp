@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdlib>
 #include <limits>
 
 namespace roomsense::detail {
@@ -160,7 +161,9 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
   };
   // The ring by dx (ascending, as ring_offsets orders it), each dx's offsets by dz ascending: a bit per dz in
   // words of 64 from dz = -reach, and the offset's index in the ring.
-  const int reach = int(std::floor(size.max_d)), dz_span = 2 * reach + 1;
+  int reach = 0;
+  for (const RingOffset& o : ring) reach = std::max({reach, o.dx, std::abs(o.dz)});
+  const int dz_span = 2 * reach + 1;
   const std::size_t dz_words = std::size_t(dz_span + 63) / 64;
   std::vector<std::uint64_t> ring_dz(std::size_t(reach + 1) * dz_words, 0);
   std::vector<std::uint32_t> ring_index(std::size_t(reach + 1) * std::size_t(dz_span), 0);

@@ -399,6 +399,26 @@ TEST(Areas, CloseReachNeedsAFloorAreaNearby) {
   EXPECT_GT(close_walls, 0);
 }
 
+TEST(Areas, ANegativeOrNaNCloseDistanceMakesNothingClose) {
+  // An engine's AreaParams reach the search unchecked: a close distance of -inf, -1e30 or NaN leaves nothing
+  // close and everything else as at the default (reach is the same whether an area can see any floor area).
+  const Scan scan = synth::generate(synth::default_room());
+  AnalysisOptions options;
+  options.build_bounds = false;
+  const AnalysisResult usual = analyze(scan, options);
+  ASSERT_TRUE(usual.ok());
+  for (const float close : {-INFINITY, -1e30f, NAN}) {
+    options.areas.close_distance = close;
+    const AnalysisResult r = analyze(scan, options);
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.areas.size(), usual.areas.size());
+    for (std::size_t i = 0; i < r.areas.size(); ++i) {
+      const Reach want = usual.areas[i].reach == Reach::Close ? Reach::Distance : usual.areas[i].reach;
+      EXPECT_EQ(r.areas[i].reach, want) << "close distance " << close << ", area " << i;
+    }
+  }
+}
+
 TEST(Areas, SearchingNothingFindsNothing) {
   // A room without free floor tiles (everything below 1.5 m occupied) has no floor areas and does not fail.
   synth::RoomSpec spec = synth::default_room();

@@ -257,6 +257,19 @@ TEST(WallOpenings, DoorsAreGapsOfAtMostTheOpeningBetweenWallColumnsOpenDownToThe
   }
 }
 
+TEST(WallOpenings, LevelsOfNoHeightFindNoDoorAndReadNothingOutsideTheGrid) {
+  // detect_wall_openings is public: levels with the ceiling at or below the floor, or past the grid, are input
+  // it must survive (ASan checks the reads), finding no door where the room has no height.
+  const GridSpec spec = make_grid_spec({0, 0, 0}, {1.0f, 0.5f, 1.0f}, 0.1f);
+  VoxelGrid grid(spec);
+  std::vector<std::uint8_t> walls(spec.column_count(), 0), room(spec.column_count(), 0);
+  for (int z = 0; z < spec.nz; ++z) walls[spec.column(0, z)] = walls[spec.column(4, z)] = 1;
+  for (const FloorCeiling levels : {FloorCeiling{3, 3, 3, 3}, FloorCeiling{4, 1, 4, 1}, FloorCeiling{spec.ny + 5, spec.ny + 9, spec.ny + 5, spec.ny + 9}}) {
+    const std::vector<std::uint8_t> blocked = detect_wall_openings(grid, levels, walls, room, 0, 6, {});
+    EXPECT_TRUE(blocked.empty() || std::count(blocked.begin(), blocked.end(), 1) == 0);
+  }
+}
+
 TEST(WallNormals, NoneFaceAWindowOpening) {
   // Wall columns need > 50 % of the height: the default room's window (1.2 m of 2.6 m) leaves its columns
   // short of that, so no wall, and no normal, stands in the opening.

@@ -164,7 +164,10 @@ class FloorIndex {
     // Centres in ring r lie at least r - 1 buckets away, so their gaps are at least that less the slack and
     // the largest half width.
     const double near_reach = std::ceil((close + slack + max_half_) / size_) + 1.0;
-    const int near_rings = near_reach <= double(last_ring) ? int(near_reach) : last_ring;  // NaN: every ring
+    // Clamped before the conversion: an engine's AreaParams may hold any close distance, NaN included.
+    const int near_rings = near_reach >= -1.0 && near_reach <= double(last_ring) ? int(near_reach)
+                           : near_reach < -1.0                                    ? -1
+                                                                                  : last_ring;
     const auto first_visible = [&](int rings, bool near) {
       for (int ring = 0; ring <= rings; ++ring)
         for (int bz = c.y - ring; bz <= c.y + ring; ++bz)

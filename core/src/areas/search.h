@@ -20,7 +20,8 @@ struct NormalCounts {
   std::size_t blocked_words = 0;        // per column
   std::vector<std::uint64_t> blocked_bits;  // RoomFeatures::wall_blocked, bit y - y0; empty when none is
   // Per level, x and normal bit k (kNormalLeft ... kNormalBackward), a bit per z: where a second corner may
-  // lie, 64 at a time (the searches' most frequent read).
+  // lie, 64 at a time (the searches' most frequent read). Empty (z_words 0) for grids under 32 voxels in z,
+  // where the rows would outweigh the normals themselves, and rooms without normals.
   std::size_t z_words = 0;
   std::vector<std::uint64_t> z_bits;  // ((y - y0) * nx + x) * 4 + k, then z / 64
   int count(std::size_t column, int y_from, int y_to) const;  // voxels with a normal in [y_from, y_to]

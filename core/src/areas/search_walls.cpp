@@ -15,7 +15,7 @@ namespace {
 // Normals the second corner may carry (Alg. 2): the first corner's, or one at a right angle to them, so that
 // only corners facing opposite ways are refused.
 std::uint8_t compatible_normals(std::uint8_t first) {
-  std::uint8_t out = first;
+  std::uint8_t out = first & (kNormalLeft | kNormalRight | kNormalForward | kNormalBackward);
   if (first & (kNormalLeft | kNormalRight)) out |= kNormalForward | kNormalBackward;
   if (first & (kNormalForward | kNormalBackward)) out |= kNormalLeft | kNormalRight;
   return out;
@@ -88,9 +88,11 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   };
   if (n.levels < 256) prefix_of(n.prefix8);
   else prefix_of(n.prefix16);
-  n.z_words = std::size_t(spec.nz + 63) / 64;
+  // The bit rows take 4 * 64 bits per (level, x) for every 64 z: at most the normals' own bytes from 32 z on.
+  // Shallower grids (and rooms without normals) go without them.
+  n.z_words = slots > 0 && spec.nz >= 32 ? std::size_t(spec.nz + 63) / 64 : 0;
   n.z_bits.assign(std::size_t(std::max(n.levels, 0)) * std::size_t(spec.nx) * 4 * n.z_words, 0);
-  for (std::size_t col = 0; col < spec.column_count(); ++col) {
+  for (std::size_t col = 0; col < spec.column_count() && n.z_words > 0; ++col) {
     if (n.slot[col] == NormalCounts::kNoNormal) continue;
     const int x = int(col % std::size_t(spec.nx)), z = int(col / std::size_t(spec.nx));
     const std::uint8_t* f = normals_of(col);
@@ -159,24 +161,31 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
   const auto centre_bit = [&](int sx, int sy, int sz) {
     return (std::size_t(sz) * std::size_t(2 * spec.nx) + std::size_t(sx)) * std::size_t(y_span) + std::size_t(sy - y_base);
   };
-  // The ring by dx (ascending, as ring_offsets orders it), each dx's offsets by dz ascending: a bit per dz in
-  // words of 64 from dz = -reach, and the offset's index in the ring.
+  // The ring in words of 64 dz (bit dz + reach) per dx, in the ring's order (dx ascending, then dz): only the
+  // words that hold offsets, each with the ring index of its lowest bit. Offset bit b of a word is ring entry
+  // first + (the word's bits below b).
   int reach = 0;
   for (const RingOffset& o : ring) reach = std::max({reach, o.dx, std::abs(o.dz)});
-  const int dz_span = 2 * reach + 1;
-  const std::size_t dz_words = std::size_t(dz_span + 63) / 64;
-  std::vector<std::uint64_t> ring_dz(std::size_t(reach + 1) * dz_words, 0);
-  std::vector<std::uint32_t> ring_index(std::size_t(reach + 1) * std::size_t(dz_span), 0);
+  struct RingWord {
+    int dx, dz_from;        // dz_from: the dz of bit 0
+    std::uint64_t offsets;  // bit dz - dz_from
+    std::uint32_t first;    // the ring index of the lowest bit
+  };
+  std::vector<RingWord> ring_words;
   for (std::size_t r = 0; r < ring.size(); ++r) {
-    const std::size_t bit = std::size_t(ring[r].dz + reach);
-    ring_dz[std::size_t(ring[r].dx) * dz_words + bit / 64] |= std::uint64_t{1} << (bit % 64);
-    ring_index[std::size_t(ring[r].dx) * std::size_t(dz_span) + bit] = std::uint32_t(r);
+    const int dz_from = (ring[r].dz + reach) / 64 * 64 - reach;
+    if (ring_words.empty() || ring_words.back().dx != ring[r].dx || ring_words.back().dz_from != dz_from)
+      ring_words.push_back({ring[r].dx, dz_from, 0, std::uint32_t(r)});
+    ring_words.back().offsets |= std::uint64_t{1} << (ring[r].dz - dz_from);
   }
-  // A second corner with a compatible normal at offset (dx, dz) from the first: the ring's offsets in order, 64
-  // dz at a time.
-  const auto seconds_of = [&](int x1, int y1, int z1, std::uint8_t compatible, int dx, std::size_t w) {
-    return ring_dz[std::size_t(dx) * dz_words + w] &
-           normals.z_window(spec.nx, x1 + dx, y1, compatible, z1 + int(64 * w) - reach);
+  // Where Alg. 2 has a second corner: one with a compatible normal at a ring offset, tried in the ring's order.
+  const auto try_rectangle = [&](int x1, int y1, int z1, std::size_t r) {
+    const RingOffset& o = ring[r];
+    const int h = shapes[r].side;
+    const std::size_t bit = centre_bit(2 * x1 + o.dx, 2 * y1 - h, 2 * z1 + o.dz);
+    if (centres.test(bit) || !valid(x1, z1, o, y1, h)) return;
+    centres.set(bit);
+    out.push_back(glm::ivec3(x1, y1, z1), std::uint32_t(r));
   };
   for (int z1 = 0; z1 < spec.nz; ++z1, stop_point(stop))
     for (int x1 = 0; x1 < spec.nx; ++x1) {
@@ -185,18 +194,22 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
         const std::uint8_t f1 = f[spec.index(x1, y1, z1)];
         if (f1 == 0) continue;
         const std::uint8_t compatible = compatible_normals(f1);
-        for (int dx = 0; dx <= reach && x1 + dx < spec.nx; ++dx)
-          for (std::size_t w = 0; w < dz_words; ++w)
-            for (std::uint64_t seconds = seconds_of(x1, y1, z1, compatible, dx, w); seconds != 0; seconds &= seconds - 1) {
-              const std::size_t r =
-                  ring_index[std::size_t(dx) * std::size_t(dz_span) + 64 * w + std::size_t(std::countr_zero(seconds))];
-              const RingOffset& o = ring[r];
-              const int h = shapes[r].side;
-              const std::size_t bit = centre_bit(2 * x1 + o.dx, 2 * y1 - h, 2 * z1 + o.dz);
-              if (centres.test(bit) || !valid(x1, z1, o, y1, h)) continue;
-              centres.set(bit);
-              out.push_back(glm::ivec3(x1, y1, z1), std::uint32_t(r));
-            }
+        if (normals.z_bits.empty()) {  // a grid too shallow in z for bit rows: the second corners one by one
+          for (std::size_t r = 0; r < ring.size(); ++r) {
+            const int x2 = x1 + ring[r].dx, z2 = z1 + ring[r].dz;
+            if (x2 < spec.nx && z2 >= 0 && z2 < spec.nz && (f[spec.index(x2, y1, z2)] & compatible) != 0)
+              try_rectangle(x1, y1, z1, r);
+          }
+          continue;
+        }
+        for (const RingWord& word : ring_words) {
+          if (x1 + word.dx >= spec.nx) break;  // dx only grows
+          std::uint64_t seconds = word.offsets & normals.z_window(spec.nx, x1 + word.dx, y1, compatible, z1 + word.dz_from);
+          for (; seconds != 0; seconds &= seconds - 1) {
+            const std::uint64_t below = word.offsets & ((seconds & -seconds) - 1);
+            try_rectangle(x1, y1, z1, word.first + std::size_t(std::popcount(below)));
+          }
+        }
       }
     }
   return out;

@@ -44,6 +44,8 @@ std::vector<std::uint8_t> detect_wall_openings(const VoxelGrid& grid, const Floo
   // open down to the floor (no voxel in the lower half of the room). Found for every column at once, from the
   // nearest wall column before and after it along each axis: bit 0 along x, bit 1 along z.
   const int low_top = std::min(y_to, levels.floor + std::max(1, (levels.ceiling - levels.floor) / 2));
+  // The lower half's levels [low_from, low_end) within the column, empty for levels of no height.
+  const int low_from = std::min(y_from, s.ny), low_end = std::max(low_from, std::min(low_top + 1, s.ny));
   std::vector<std::uint8_t> door(s.column_count(), 0);
   const auto find_doors = [&](int lines, int length, auto column_at, std::uint8_t bit) {
     std::vector<int> previous(std::size_t(length), -1);
@@ -60,7 +62,7 @@ std::vector<std::uint8_t> detect_wall_openings(const VoxelGrid& grid, const Floo
         }
         if (next < 0 || previous[std::size_t(i)] < 0 || next - previous[std::size_t(i)] - 1 > max_opening_voxels) continue;
         const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
-        if (std::none_of(v + y_from, v + low_top + 1, [](std::uint8_t c) { return c != 0; })) door[col] |= bit;
+        if (std::none_of(v + low_from, v + low_end, [](std::uint8_t c) { return c != 0; })) door[col] |= bit;
       }
     }
   };

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <filesystem>
 #include <string>
 
 #if defined(_WIN32)
@@ -47,13 +46,7 @@ inline int run_program(const std::string& program, const std::string& args, cons
   const std::string out = stdout_path.empty() ? std::string("NUL") : "\"" + stdout_path + "\"";
   const std::string line = "\"\"" + exe + "\" " + args + " >" + out + " 2>\"" + stderr_path + "\"\"";
   (void)shell_prefix;
-  // Under Wine, with many tests starting programs at once, cmd.exe now and then fails to start one that
-  // exists (9009, "not recognized") or system() reports -1 for one that ran: such a run is repeated, twice at
-  // most. A program that is missing still fails at once.
-  int status = std::system(line.c_str());
-  for (int retry = 0; retry < 2 && (status == -1 || status == 9009) && std::filesystem::exists(program); ++retry)
-    status = std::system(line.c_str());
-  return status;
+  return std::system(line.c_str());
 #else
   const std::string out = stdout_path.empty() ? std::string("/dev/null") : stdout_path;
   const std::string line = shell_prefix + program + " " + args + " >" + out + " 2>" + stderr_path;

@@ -74,8 +74,8 @@ class WallSegments {
   }
   const Segment& segment(std::size_t i) const { return segments_[i]; }
 
-  // Does any wall segment but the excluded ones cross the sight line from p to q? (The crossing is tested
-  // first: it is the cheaper test and most segments fail it.)
+  // Does any wall segment but the excluded ones cross the sight line from p to q? (The crossing, the cheaper
+  // test, goes first.)
   template <class Excluded>
   bool blocked(P2 p, P2 q, Excluded excluded) const {
     bool hit = false;
@@ -149,15 +149,15 @@ class FloorIndex {
     }
   }
 
-  // Reach reads only whether the nearest visible floor area's gap is below `close`, not the gap itself: so
-  // rather than every floor in gap order, the floors with a gap below `close` (only those near `from`), in any
-  // order, then the others: Within at the first visible one of the first, Beyond at the first of the second,
-  // None when no floor for which gap_of gives a value is visible. gap_of must be at least the centre distance
-  // less `slack` and less the floor's half width, which bounds where the near ones lie. Buckets are visited
-  // nearest first, where a visible floor is likeliest.
+  // Which floor areas `from` sees. Reach reads only whether the nearest visible one's gap is below `close`,
+  // not the gap itself, so rather than every floor in gap order: the floors with a gap below `close` (only
+  // those near `from`) in any order, then the others. Within at the first visible one of the first, Beyond at
+  // the first of the second, None when no floor for which gap_of gives a value is visible. gap_of must be at
+  // least the centre distance less `slack` and less the floor's half width, which bounds where the near ones
+  // lie. Buckets are visited nearest first, where a visible floor is likeliest.
   enum class Visible { None, Within, Beyond };
   template <class GapOf, class IsVisible>
-  Visible nearest_visible(P2 from, double slack, double close, GapOf gap_of, IsVisible visible) const {
+  Visible visible_floor(P2 from, double slack, double close, GapOf gap_of, IsVisible visible) const {
     if (floors_.empty()) return Visible::None;
     const glm::ivec2 c = cell(from);  // may lie outside the grid
     const int last_ring = std::max({std::abs(c.x), std::abs(c.y), std::abs(nx_ - 1 - c.x), std::abs(nz_ - 1 - c.y)});
@@ -227,7 +227,7 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
         if (len == 0.0 || glm::dot(u, n) < cone_cos * len) return std::nullopt;
         return len - floor.half_width;
       };
-      const auto found = floor_index.nearest_visible(c, 0.0, close, gap,
+      const auto found = floor_index.visible_floor(c, 0.0, close, gap,
                                                      [&](const ReachFloor& f, double) { return sight(f, same_wall); });
       if (found == FloorIndex::Visible::None) return Reach::None;
       const bool low = area.center.y - floor_y <= params.close_height;
@@ -238,7 +238,7 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
     const auto gap = [&](const ReachFloor& floor) -> std::optional<double> {
       return glm::distance(c, P2(floor.center)) - area.half_width - floor.half_width;
     };
-    const auto found = floor_index.nearest_visible(c, area.half_width, close, gap, [&](const ReachFloor& f, double g) {
+    const auto found = floor_index.visible_floor(c, area.half_width, close, gap, [&](const ReachFloor& f, double g) {
       return g <= 0.0 || sight(f, none);
     });
     if (found == FloorIndex::Visible::None) return Reach::None;

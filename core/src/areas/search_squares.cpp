@@ -183,7 +183,6 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
       CellBox& b = first_box[std::size_t(layer)];
       b.lo = glm::min(b.lo, glm::ivec2(x, z)), b.hi = glm::max(b.hi, glm::ivec2(x, z));
     }
-  std::vector<std::uint8_t> tile(spec.column_count(), 0), first(spec.column_count(), 0);
   for (int layer = 0; layer < layers; centres[std::size_t(layer++)].release()) {  // later layers never read it
     const int y1 = by_facet ? features.facets[std::size_t(layer)].level : y_from + layer;
     const CellBox& firsts = first_box[std::size_t(layer)];
@@ -191,26 +190,20 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
     const CellBox region{glm::max(firsts.lo - 2 * corner_reach - 1, glm::ivec2(0)),
                          glm::min(firsts.hi + 2 * corner_reach + 1, glm::ivec2(spec.nx - 1, spec.nz - 1))};
     // Corner 1 must be a tile of this level; the other cells may also be one level higher (§3.3.4).
+    const auto is_first = [&](std::size_t col) { return layer_of(col) == layer; };
+    const auto raised = [&](std::size_t col) { return surface == Surface::Furniture && features.furniture[col] == y1 + 1; };
+    const auto is_tile = [&](std::size_t col) { return is_first(col) || raised(col); };
     first_bits.clear();
     tile_bits.clear();
     for (int z = region.lo.y; z <= region.hi.y; ++z)
       for (int x = region.lo.x; x <= region.hi.x; ++x) {
         const std::size_t col = spec.column(x, z);
-        if (surface == Surface::Floor) tile[col] = first[col] = features.free_floor[col];
-        if (surface == Surface::Ceiling)
-          tile[col] = first[col] = features.free_ceiling[col] && (!by_facet || features.ceiling_facet[col] == layer);
-        if (surface == Surface::Furniture) {
-          first[col] = features.furniture[col] == y1;
-          tile[col] = first[col] || features.furniture[col] == y1 + 1;
-        }
-        if (tile[col] != 0) tile_bits.set(x + pad, z + pad);
-        if (first[col] != 0) first_bits.set(x + pad, z + pad);
+        if (is_tile(col)) tile_bits.set(x + pad, z + pad);
+        if (is_first(col)) first_bits.set(x + pad, z + pad);
       }
-    box_unsuitable.fill(spec, region, [&](std::size_t col) { return tile[col] == 0; });  // walls are never tiles
-    box_first.fill(spec, region, [&](std::size_t col) { return first[col] != 0; });
-    if (surface == Surface::Furniture) {
-      box_raised.fill(spec, region, [&](std::size_t col) { return features.furniture[col] == y1 + 1; });
-    }
+    box_unsuitable.fill(spec, region, [&](std::size_t col) { return !is_tile(col); });  // walls are never tiles
+    box_first.fill(spec, region, is_first);
+    if (surface == Surface::Furniture) box_raised.fill(spec, region, raised);
     CentreSet& here = centres[std::size_t(layer)];
     CentreSet& above = centres[std::size_t(layer + 1)];
     const bool may_rise = surface == Surface::Furniture;

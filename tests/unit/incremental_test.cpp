@@ -57,7 +57,7 @@ void replay(const Scan& scan, unsigned seed, bool keeps_voxels = true) {
   std::shuffle(order.begin(), order.end(), rng);
   IncrementalAnalysis inc;
   std::vector<std::uint64_t> added, removed;
-  std::size_t steps = 0, same_grid_steps = 0;
+  std::size_t steps = 0, same_grid_steps = 0, bands_searched = 0, bands_total = 0, partly_searched = 0;
   std::optional<GridSpec> previous_grid;
   const auto check = [&](const std::string& what) {
     ++steps;
@@ -81,6 +81,9 @@ void replay(const Scan& scan, unsigned seed, bool keeps_voxels = true) {
           previous_grid->ny == grid.ny && previous_grid->nz == grid.nz) {
         ++same_grid_steps;
         EXPECT_LE(inc.revoxelized_chunks(), 1u) << what << ": of " << inc.chunk_count() << " chunks";
+        bands_searched += inc.area_bands_searched();
+        bands_total += inc.area_bands_total();
+        if (inc.area_bands_searched() > 0 && inc.area_bands_searched() < inc.area_bands_total()) ++partly_searched;
       }
       previous_grid = grid;
     } catch (const Error& e) {
@@ -111,8 +114,11 @@ void replay(const Scan& scan, unsigned seed, bool keeps_voxels = true) {
   EXPECT_TRUE(inc.reused_result());
   // Steps that leave the grid's extent as it was keep the other chunks' voxels (a step that moves it
   // voxelizes every chunk again); there are such steps in every room.
+  // And their area searches keep the rectangles of the bands of rows whose features did not change.
   if (keeps_voxels) {
     EXPECT_GT(same_grid_steps, 0u) << "of " << steps << " steps";
+    EXPECT_LT(bands_searched, bands_total) << "over " << same_grid_steps << " steps under an unchanged grid";
+    EXPECT_GT(partly_searched, 0u) << "steps that searched some bands and kept the others";
   }
 }
 

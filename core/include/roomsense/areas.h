@@ -64,6 +64,7 @@ struct AreaParams {
   // Beyond the thesis: packed areas grow along their axes into the free surface around them, so an area is at
   // least its class's size rather than exactly it (issue 14). False keeps the thesis's fixed sizes.
   bool grow = true;
+  bool operator==(const AreaParams&) const = default;
 };
 
 // One classified area (§3.5), in metres, in the scan's frame (right-handed, +Y up).

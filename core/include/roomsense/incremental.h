@@ -5,8 +5,10 @@
 // all its chunks, in id order, as one scan. That result equals analyze(combined_scan(), options) exactly,
 // timings aside. What it reuses between results today: each chunk's voxels (its triangles' marks on the grid,
 // kept per chunk while the grid and the chunk are unchanged), so a change voxelizes only the chunks it
-// touched; everything after the voxel stage (levels, features, areas, bounds) is derived again in full.
-// An unchanged set of chunks returns the previous result at once.
+// touched; and each area search's rectangles by bands of 8 grid rows, so that a band is searched again only
+// where the features it reads changed (areas/search_cache.h). Levels, features, the areas' reduction and
+// classification, and bounds are derived again in full. An unchanged set of chunks returns the previous
+// result at once.
 #pragma once
 #include "roomsense/analysis.h"
 #include "roomsense/scan.h"
@@ -17,6 +19,9 @@
 #include <stop_token>
 
 namespace roomsense {
+namespace detail {
+struct AnalysisCaches;
+}
 
 class IncrementalAnalysis {
  public:
@@ -47,6 +52,10 @@ class IncrementalAnalysis {
   // previous result whole (no chunk changed).
   std::size_t revoxelized_chunks() const;
   bool reused_result() const { return reused_; }
+  // Of the latest result() that ran: how many bands of rows its area searches searched (the others' rectangles
+  // were kept from the result before), and how many there were.
+  std::size_t area_bands_searched() const;
+  std::size_t area_bands_total() const;
 
  private:
   struct Chunk {
@@ -58,6 +67,7 @@ class IncrementalAnalysis {
   AnalysisOptions options_;
   std::map<std::uint64_t, Chunk> chunks_;
   std::unique_ptr<ChunkVoxelStage> stage_;
+  std::unique_ptr<detail::AnalysisCaches> caches_;
   std::optional<AnalysisResult> result_;
   bool dirty_ = true, reused_ = false;
 };

@@ -51,6 +51,12 @@ class Candidates {
     int side = PackedCandidate::kSquare;    // a wall's height h (Eq. 3.20), or kSquare
   };
 
+  // One candidate as stored: corner 1's cell in bit fields and its shape's index.
+  struct Item {
+    std::uint32_t cell_lo, cell_hi, shape;
+    bool operator==(const Item&) const = default;
+  };
+
   Candidates() = default;
   // Corner 1 lies in the grid's columns, at a level in [0, levels).
   Candidates(const GridSpec& spec, int levels, std::vector<Shape> shapes)
@@ -66,16 +72,28 @@ class Candidates {
     if (glm::any(glm::lessThan(first, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(first, limit_)) ||
         shape >= shapes_.size())
       throw std::logic_error("a candidate outside its search's grid");
-    if (size_ % kBlock == 0) blocks_.push_back(std::make_unique<Item[]>(kBlock));
     const std::uint64_t cell = (((std::uint64_t(first.x) << z_bits_) | std::uint64_t(first.z)) << y_bits_) | std::uint64_t(first.y);
-    blocks_.back()[size_ % kBlock] = {std::uint32_t(cell), std::uint32_t(cell >> 32), shape};
+    push_item({std::uint32_t(cell), std::uint32_t(cell >> 32), shape});
+  }
+  // An item of a Candidates made with the same grid, levels and shapes (SearchCache's kept pieces).
+  void push_item(const Item& item) {
+    if (item.shape >= shapes_.size()) throw std::logic_error("a candidate of another search");
+    if (size_ % kBlock == 0) blocks_.push_back(std::make_unique<Item[]>(kBlock));
+    blocks_.back()[size_ % kBlock] = item;
     ++size_;
   }
+  const Item& item(std::size_t i) const { return blocks_[i / kBlock][i % kBlock]; }
   std::size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
   static constexpr std::size_t kBytesEach = 12;  // what one candidate takes
-  PackedCandidate operator[](std::size_t i) const {
-    const Item& item = blocks_[i / kBlock][i % kBlock];
+  // The same grid, levels and shapes, without rectangles.
+  Candidates empty_like() const {
+    Candidates c;
+    c.y_bits_ = y_bits_, c.z_bits_ = z_bits_, c.limit_ = limit_, c.shapes_ = shapes_;
+    return c;
+  }
+  PackedCandidate operator[](std::size_t i) const { return decode(item(i)); }
+  PackedCandidate decode(const Item& item) const {
     const std::uint64_t cell = (std::uint64_t(item.cell_hi) << 32) | item.cell_lo;
     const Shape& s = shapes_[item.shape];
     const auto field = [](std::uint64_t v, int bits) { return int(v & ((std::uint64_t{1} << bits) - 1)); };
@@ -90,9 +108,6 @@ class Candidates {
  private:
   int y_bits_ = 0, z_bits_ = 0;  // a cell is x, z, y in bit fields
   glm::ivec3 limit_{0};
-  struct Item {
-    std::uint32_t cell_lo, cell_hi, shape;
-  };
   static_assert(sizeof(Item) == kBytesEach);
   static constexpr std::size_t kBlock = 4096;
   std::vector<Shape> shapes_;
@@ -139,6 +154,7 @@ class BitSet {
   explicit BitSet(std::size_t size) : words_((size + 63) / 64, 0) {}
   bool test(std::size_t i) const { return (words_[i / 64] >> (i % 64)) & 1u; }
   void set(std::size_t i) { words_[i / 64] |= std::uint64_t{1} << (i % 64); }
+  void reset(std::size_t i) { words_[i / 64] &= ~(std::uint64_t{1} << (i % 64)); }
 
  private:
   std::vector<std::uint64_t> words_;

@@ -6,6 +6,7 @@
 #include "grow.h"
 #include "reduce.h"
 #include "search.h"
+#include "search_cache.h"
 
 #include <algorithm>
 #include <atomic>
@@ -92,14 +93,26 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
 AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const SurfaceLevels& surfaces,
                       const AreaParams& params, const FeatureParams& feature_params, unsigned threads,
                       std::stop_token stop) {
+  return detail::find_areas(grid, features, surfaces, params, feature_params, threads, std::move(stop), nullptr);
+}
+
+AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& features, const SurfaceLevels& surfaces,
+                              const AreaParams& params, const FeatureParams& feature_params, unsigned threads,
+                              std::stop_token stop, SearchCache* cache) {
   using namespace detail;
   const GridSpec& spec = grid.spec;
   const float voxel = spec.voxel_size;
   AreaResult result;
   auto clock = std::chrono::steady_clock::now();
 
+  if (cache) cache->begin(spec, features);
+  // What the searches and their reduction derive, in voxels, before the areas in metres: the previous analysis's
+  // where its features were these (IncrementalAnalysis), else found by the graph below.
+  const SearchCache::Reduction* unchanged = cache ? cache->unchanged_reduction(params) : nullptr;
+  SearchCache::Reduction red = unchanged ? *unchanged : SearchCache::Reduction{};
   // §3.3: task t searches type t / 3 in size t % 3. Each writes only its own slot.
-  NormalCounts normals = count_normals(spec, features);  // for the wall searches only: freed after them
+  // For the wall searches only: freed after them.
+  NormalCounts normals = unchanged ? NormalCounts() : count_normals(spec, features);
   // The corners a search starts from, for its cost estimate: voxels with a normal, or tiles.
   const auto count_if = [](const auto& v, auto pred) { return double(std::count_if(v.begin(), v.end(), pred)); };
   double with_normal = 0;  // from the prefix counts, not another pass over F
@@ -111,8 +124,8 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
       count_if(features.free_ceiling, [](std::uint8_t t) { return t != 0; }),
       count_if(features.furniture, [](int c) { return c != kNoFurniture; })};
   std::array<std::array<Candidates, 3>, 4> found;
-  std::array<bool, 12> skipped{};
-  double dominant_deg = 0.0;  // the room's main direction, from the walls (reduce.h)
+  std::array<bool, 12>& skipped = red.skipped;
+  double& dominant_deg = red.dominant_deg;  // the room's main direction, from the walls (reduce.h)
   const auto range_of = [&](std::size_t type, std::size_t size) {
     return type == 0 ? size_range(params.wall_width[size], params.wall_height[size], params.width_tolerance, voxel)
                      : size_range(params.square_width[size], params.square_width[size], params.width_tolerance, voxel);
@@ -133,7 +146,12 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
       return;
     }
     if (type == 0) {
-      found[type][size] = search_walls(spec, features, normals, range, params.wall_fill, stop);
+      found[type][size] = cache ? cache->walls(size, spec, features, normals, range, params.wall_fill, stop)
+                                : search_walls(spec, features, normals, range, params.wall_fill, stop);
+      return;
+    }
+    if (cache) {
+      found[type][size] = cache->squares(type, size, spec, features, range, params.horizontal_fill, dominant_deg, stop);
       return;
     }
     const Surface surface = type == 1 ? Surface::Floor : type == 2 ? Surface::Ceiling : Surface::Furniture;
@@ -147,9 +165,17 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   const PlacementContext context{spec, features, surfaces, feature_params};
   std::vector<ReachWall> wall_areas;
   std::vector<ReachFloor> floor_areas;
-  std::array<std::size_t, 4> deduplicated_count{}, found_count{};
+  std::array<std::size_t, 4>&deduplicated_count = red.deduplicated, &found_count = red.found;
   std::array<std::vector<Area>, 4> kept_areas;
-  const auto grow = [&](std::size_t type) {
+  // The areas in metres of what the reduction keeps; each type's grown (grow.h).
+  const auto finish_walls_for_reach = [&] {
+    for (const Sized& s : red.walls) wall_areas.emplace_back(to_area(s, AreaType::Wall, context));
+  };
+  const auto finish_floors_for_reach = [&] {
+    for (const Sized& s : red.floors) floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
+  };
+  const auto finish = [&](std::size_t type) {
+    for (const Sized& s : red.kept[type]) kept_areas[type].push_back(to_area(s, kAreaTypes[type], context));
     if (params.grow) grow_areas(kept_areas[type], growth_rule(spec, features, params, type), params, stop);
   };
   // Walls: V_Wall and the room's main direction, which the square searches try first (reduce.h), and beside
@@ -161,17 +187,16 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   };
   const auto deduplicate_walls = [&] {
     normals = NormalCounts();
-    std::vector<Sized> walls;
-    deduplicated_count[0] = deduplicate_centres(spec, found[0], [&](const Sized& s) { walls.push_back(s); }, stop);
-    dominant_deg = dominant_direction_deg(walls);
-    for (const Sized& s : walls) wall_areas.emplace_back(to_area(s, AreaType::Wall, context));
+    deduplicated_count[0] = deduplicate_centres(spec, found[0], [&](const Sized& s) { red.walls.push_back(s); }, stop);
+    dominant_deg = dominant_direction_deg(red.walls);
+    finish_walls_for_reach();
     release_walls();
   };
   const auto reduce_walls = [&] {
     const SizedList all(found[0]);
-    for (std::size_t i : pack_walls(all)) kept_areas[0].push_back(to_area(all[i], AreaType::Wall, context));
+    for (std::size_t i : pack_walls(all)) red.kept[0].push_back(all[i]);
     release_walls();
-    grow(0);
+    finish(0);
   };
   // Squares one size at a time, large first: deduplicated (V_Floor for reach), packed and dropped before the
   // next size is searched, so a type holds one size's candidates at a time (on a 50 x 50 m floor, millions).
@@ -191,16 +216,16 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
     Candidates& squares = found[type][size];
     const AreaSize area_size = kAreaSizes[size];
     deduplicated_count[type] += deduplicators[type]->add(squares, area_size, [&](const Sized& s) {
-      if (type == 1) floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
+      if (type == 1) red.floors.push_back(s);
     });
-    for (std::size_t i : packers[type]->pack(squares))
-      kept_areas[type].push_back(to_area(Sized{squares[i], area_size}, kAreaTypes[type], context));
+    for (std::size_t i : packers[type]->pack(squares)) red.kept[type].push_back(Sized{squares[i], area_size});
     found_count[type] += squares.size();
     squares = Candidates();
     if (size + 1 < kAreaSizes.size()) return;
     deduplicators[type].reset();
     packers[type].reset();
-    grow(type);
+    if (type == 1) finish_floors_for_reach();
+    finish(type);
   };
   // The work as a graph (parallel_graph): the three wall searches; then the walls' deduplication and, beside
   // it, their packing (which frees their candidates early); after the deduplication each type's square
@@ -234,13 +259,21 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   std::mutex searches_mutex;
   std::size_t searches_left = square_searches.size();
   auto searches_end = clock;
-  parallel_graph(after, threads, [&](std::size_t i) {
-    stop_point(stop);  // a stop ends the graph at the next task, not only inside the searches
-    tasks[i]();
-    if (std::find(square_searches.begin(), square_searches.end(), i) == square_searches.end()) return;
-    const std::lock_guard lock(searches_mutex);
-    if (--searches_left == 0) searches_end = std::chrono::steady_clock::now();
-  });
+  if (unchanged) {
+    searches_end = std::chrono::steady_clock::now();
+    parallel_tasks(6, threads, [&](std::size_t t) {
+      stop_point(stop);
+      t < 4 ? finish(t) : t == 4 ? finish_walls_for_reach() : finish_floors_for_reach();
+    });
+  } else {
+    parallel_graph(after, threads, [&](std::size_t i) {
+      stop_point(stop);  // a stop ends the graph at the next task, not only inside the searches
+      tasks[i]();
+      if (std::find(square_searches.begin(), square_searches.end(), i) == square_searches.end()) return;
+      const std::lock_guard lock(searches_mutex);
+      if (--searches_left == 0) searches_end = std::chrono::steady_clock::now();
+    });
+  }
   for (std::size_t t = 0; t < skipped.size(); ++t)
     if (skipped[t])
       result.warnings.push_back(std::string(to_string(kAreaSizes[t % 3])) + " " + std::string(to_string(kAreaTypes[t / 3])) +
@@ -260,6 +293,7 @@ AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const
   for (std::vector<Area>& areas : kept_areas) result.areas.insert(result.areas.end(), areas.begin(), areas.end());
   assign_reach(result.areas, floor_areas, wall_areas, surfaces.floor_y, params, threads);
   result.timings.classify = elapsed_ms(clock);
+  if (cache && !unchanged) cache->keep_reduction(std::move(red), params);
   return result;
 }
 

@@ -32,10 +32,35 @@ struct NormalCounts {
 };
 NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features);
 
+// A search over bands of grid rows (z), for SearchCache (search_cache.h): band b holds rows [b * rows,
+// (b + 1) * rows) of a wall search's first corners or a square search's centres (their cell's z), and only
+// the bands marked are searched. Each band's rectangles are those it finds searched alone: a square's centre
+// lies in one band, but a wall rectangle's centre may be found again by a later band, which the whole
+// search would skip (SearchCache drops it). The output says where each band's rectangles end (`pieces`):
+// per band for walls, per layer and band (layer-major, as the output) for squares.
+struct RowBands {
+  int rows = 0;
+  std::vector<std::uint8_t> searched;  // per band of the grid: 1 to search it
+  int band(int z) const { return z / rows; }
+  bool searches(int z) const { return searched[std::size_t(z / rows)] != 0; }
+};
+struct Piece {
+  int layer = 0, band = 0;
+  std::size_t end = 0;  // one past its last rectangle in the output
+};
+struct BandedSearch {
+  const RowBands* bands = nullptr;    // nullptr: the whole grid at once, no pieces
+  std::vector<Piece>* pieces = nullptr;
+};
+
 // Alg. 2 (Eq. 3.20-3.27). Returns the first valid rectangle for each distinct centre, in search order: a
 // later rectangle with the same centre would always be dropped by Eq. 3.44, so this changes nothing.
 Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, const NormalCounts& normals,
-                        const SizeRange& size, float fill, const std::stop_token& stop = {});
+                        const SizeRange& size, float fill, const std::stop_token& stop = {}, BandedSearch banded = {});
+// How far a wall search's rectangles reach in z from their first corner, and a square search's cells from
+// their centre's cell: the rows around a band whose features its rectangles read.
+int wall_search_reach(const SizeRange& size);
+int square_search_reach(const SizeRange& size);
 
 enum class Surface { Floor, Ceiling, Furniture };
 
@@ -44,6 +69,8 @@ enum class Surface { Floor, Ceiling, Furniture };
 // the orientations nearest the room's main direction (`dominant_deg`, see reduce.h) first.
 Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Surface surface,
                           const SizeRange& size, float fill, double dominant_deg = 0.0,
-                          const std::stop_token& stop = {});
+                          const std::stop_token& stop = {}, BandedSearch banded = {});
+// The layers a square search works through (furniture levels, or ceiling facets), in its order.
+int square_layers(const RoomFeatures& features, Surface surface);
 
 }  // namespace roomsense::detail

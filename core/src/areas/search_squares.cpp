@@ -91,10 +91,25 @@ class CentreSet {
   std::optional<BitSet> bits_;
 };
 
+// A centre is at most d / √2 from each corner, so corner 1 lies in this box around it (in voxels).
+int corner_reach(const SizeRange& size) { return int(std::ceil(size.max_d * 0.7072)) + 1; }
+
 }  // namespace
 
+// The cells a square covers touch its corners' cells or their neighbours.
+int square_search_reach(const SizeRange& size) { return corner_reach(size) + 1; }
+
+// The levels searched: one for floors (I_Floor + 1), (I_Floor, I_yEnd] for furniture (Eq. 3.40), whose tops C
+// holds as the level above the top voxel (Eq. 3.13). Ceilings: beyond the thesis, each facet of E
+// (RoomFeatures::facets) on its own, facet 0 at I_Ceiling - 1 as Eq. 3.39.
+int square_layers(const RoomFeatures& features, Surface surface) {
+  if (surface == Surface::Ceiling && !features.facets.empty()) return int(features.facets.size());
+  return surface == Surface::Furniture ? features.y_end - features.levels.floor : 1;
+}
+
 Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Surface surface,
-                          const SizeRange& size, float fill, double dominant_deg, const std::stop_token& stop) {
+                          const SizeRange& size, float fill, double dominant_deg, const std::stop_token& stop,
+                          BandedSearch banded) {
   // The orientations, split by the parity of dx - dz (= that of dx + dz), most nearly aligned with the room
   // first (with the grid's axes in a room without walls).
   std::vector<RingOffset> ring = ring_offsets(size, Shape::Square);
@@ -108,14 +123,11 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
   std::array<std::vector<RingOffset>, 2> by_parity;
   for (RingOffset& o : ring) by_parity[std::size_t((o.dx - o.dz) & 1)].push_back(std::move(o));
   const FloorCeiling& levels = features.levels;
-  // The levels searched: one for floors (I_Floor + 1), (I_Floor, I_yEnd] for furniture (Eq. 3.40), whose tops
-  // C holds as the level above the top voxel (Eq. 3.13). Ceilings: beyond the thesis, each facet of E
-  // (RoomFeatures::facets) on its own, facet 0 at I_Ceiling - 1 as Eq. 3.39.
+  // The layers (square_layers): levels from y_from, or facets.
   const bool by_facet = surface == Surface::Ceiling && !features.facets.empty();
-  int y_from = levels.floor + 1, y_to = levels.floor + 1;
-  if (surface == Surface::Ceiling) y_from = y_to = levels.ceiling - 1;
-  if (surface == Surface::Furniture) y_to = features.y_end;
-  const int layers = by_facet ? int(features.facets.size()) : y_to - y_from + 1;
+  const int y_from = surface == Surface::Ceiling ? levels.ceiling - 1 : levels.floor + 1;
+  const int y_to = surface == Surface::Furniture ? features.y_end : y_from;
+  const int layers = square_layers(features, surface);
 
   // Corner 1 lies in the grid at y_Actual, at most one level above the highest level searched (Eq. 3.41); the
   // offsets are both parities' in turn.
@@ -137,8 +149,7 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
   for (const auto& parity : by_parity)
     for (const RingOffset& o : parity)
       most_missing = std::max(most_missing, double(o.cells) - double(fill) * (o.d + 1.0) * (o.d + 1.0));
-  // A centre is at most d / √2 from each corner, so corner 1 lies in this box around it (in voxels).
-  const int corner_reach = int(std::ceil(size.max_d * 0.7072)) + 1;
+  const int corner_reach = roomsense::detail::corner_reach(size);
   // Centres found so far, per level of the squares' corners (y_actual for furniture, Eq. 3.41) or facet.
   std::vector<CentreSet> centres(std::size_t(layers + 1), CentreSet(spec));
   // The corner test, the loop's most frequent, reads bit copies of the tiles and of the first corners, padded by
@@ -187,8 +198,21 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
     const int y1 = by_facet ? features.facets[std::size_t(layer)].level : y_from + layer;
     const CellBox& firsts = first_box[std::size_t(layer)];
     if (firsts.empty()) continue;
-    const CellBox region{glm::max(firsts.lo - 2 * corner_reach - 1, glm::ivec2(0)),
-                         glm::min(firsts.hi + 2 * corner_reach + 1, glm::ivec2(spec.nx - 1, spec.nz - 1))};
+    CellBox region{glm::max(firsts.lo - 2 * corner_reach - 1, glm::ivec2(0)),
+                   glm::min(firsts.hi + 2 * corner_reach + 1, glm::ivec2(spec.nx - 1, spec.nz - 1))};
+    // Centres whose cell (cx / 2, cz / 2) lies within corner_reach of the first corners' box; in a row, centre
+    // hx_first + i is bit i.
+    const glm::ivec2 near_firsts_lo = glm::max(firsts.lo - corner_reach, glm::ivec2(0));
+    const glm::ivec2 near_firsts_hi = glm::min(firsts.hi + corner_reach, glm::ivec2(spec.nx - 1, spec.nz - 1));
+    // By bands: the rows of centres searched, and the cells their squares read (within corner_reach).
+    if (banded.bands) {
+      int lo = spec.nz, hi = -1;
+      for (int z = near_firsts_lo.y; z <= near_firsts_hi.y; ++z)
+        if (banded.bands->searches(z)) lo = std::min(lo, z), hi = z;
+      if (lo > hi) continue;
+      region.lo.y = std::max(region.lo.y, lo - corner_reach - 1);
+      region.hi.y = std::min(region.hi.y, hi + corner_reach + 1);
+    }
     // Corner 1 must be a tile of this level; the other cells may also be one level higher (§3.3.4).
     const auto is_first = [&](std::size_t col) { return layer_of(col) == layer; };
     const auto raised = [&](std::size_t col) { return surface == Surface::Furniture && features.furniture[col] == y1 + 1; };
@@ -252,13 +276,15 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
     // is four shifted words of the padded bit rows for 64 centres, and only the centres that pass it and are
     // still open are checked cell by cell. Each centre's squares are then added in orientation order, centre
     // by centre along the row, as a loop over centres would add them.
-    //
-    // Centres whose cell (cx / 2, cz / 2) lies within corner_reach of the first corners' box; in a row, centre
-    // hx_first + i is bit i.
-    const glm::ivec2 near_firsts_lo = glm::max(firsts.lo - corner_reach, glm::ivec2(0));
-    const glm::ivec2 near_firsts_hi = glm::min(firsts.hi + corner_reach, glm::ivec2(spec.nx - 1, spec.nz - 1));
     const int cz_last = std::min(2 * near_firsts_hi.y + 1, 2 * (spec.nz - 1));
+    int band = -1;  // by bands: the band of the rows searched last in this layer
     for (int cz = 2 * near_firsts_lo.y; cz <= cz_last; ++cz, stop_point(stop)) {
+      if (banded.bands) {
+        const int b = banded.bands->band(cz / 2);
+        if (!banded.bands->searches(cz / 2)) continue;
+        if (b != band && band >= 0) banded.pieces->push_back({layer, band, out.size()});
+        band = b;
+      }
       const int p = cz & 1;  // dx - dz and dx + dz share their parity: cx - cz is even
       const int hx_first = near_firsts_lo.x;  // cx = 2 hx + p <= 2 (nx - 1)
       const int centres_in_row = std::min(near_firsts_hi.x, spec.nx - 1 - p) - hx_first + 1;
@@ -334,6 +360,7 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
         if (h != kNone && a != kNone && h > a) add(h, false);
       }
     }
+    if (band >= 0) banded.pieces->push_back({layer, band, out.size()});
   }
   return out;
 }

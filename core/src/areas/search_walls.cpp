@@ -115,8 +115,11 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   return n;
 }
 
+// A rectangle's cells lie between its corners, |dz| <= max_d, and may touch one more row each way.
+int wall_search_reach(const SizeRange& size) { return int(std::floor(size.max_d)) + 2; }
+
 Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, const NormalCounts& normals,
-                        const SizeRange& size, float fill, const std::stop_token& stop) {
+                        const SizeRange& size, float fill, const std::stop_token& stop, BandedSearch banded) {
   const std::vector<RingOffset> ring = ring_offsets(size, Shape::WallTop);
   const int floor = normals.y0, ceiling = normals.y0 + normals.levels - 1;
   // Alg. 2 starts the top row at I_Floor + ⌊w_min/2⌋, leaving room for the height below it.
@@ -179,15 +182,28 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
     ring_words.back().offsets |= std::uint64_t{1} << (ring[r].dz - dz_from);
   }
   // Where Alg. 2 has a second corner: one with a compatible normal at a ring offset, tried in the ring's order.
+  // By bands, each band's centres are its own: the bits it set are cleared when it ends.
+  std::vector<std::size_t> band_bits;
   const auto try_rectangle = [&](int x1, int y1, int z1, std::size_t r) {
     const RingOffset& o = ring[r];
     const int h = shapes[r].side;
     const std::size_t bit = centre_bit(2 * x1 + o.dx, 2 * y1 - h, 2 * z1 + o.dz);
     if (centres.test(bit) || !valid(x1, z1, o, y1, h)) return;
     centres.set(bit);
+    if (banded.bands) band_bits.push_back(bit);
     out.push_back(glm::ivec3(x1, y1, z1), std::uint32_t(r));
   };
-  for (int z1 = 0; z1 < spec.nz; ++z1, stop_point(stop))
+  const auto end_band = [&](int band) {
+    banded.pieces->push_back({0, band, out.size()});
+    for (const std::size_t bit : band_bits) centres.reset(bit);
+    band_bits.clear();
+  };
+  for (int z1 = 0; z1 < spec.nz; ++z1, stop_point(stop)) {
+    if (banded.bands) {
+      const RowBands& b = *banded.bands;
+      if (z1 > 0 && b.band(z1 - 1) != b.band(z1) && b.searches(z1 - 1)) end_band(b.band(z1 - 1));
+      if (!b.searches(z1)) continue;
+    }
     for (int x1 = 0; x1 < spec.nx; ++x1) {
       if (normals.slot[spec.column(x1, z1)] == NormalCounts::kNoNormal) continue;  // most of an open floor
       for (int y1 = std::max(y_first, floor); y1 <= ceiling; ++y1) {
@@ -212,6 +228,8 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
         }
       }
     }
+  }
+  if (banded.bands && spec.nz > 0 && banded.bands->searches(spec.nz - 1)) end_band(banded.bands->band(spec.nz - 1));
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include "roomsense/number_text.h"
 #include "../parallel.h"
 #include "../input/input_view.h"
+#include "analysis_caches.h"
 #include "storeys.h"
 #include "surface_heights.h"
 
@@ -126,7 +127,9 @@ int room_at_point(const AnalysisResult& result, std::uint32_t storey, const glm:
   return local == kNoRoom ? kNoRoom : first_room_of(result, storey) + local;
 }
 
-AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
+AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) { return detail::analyze(scan, options, nullptr); }
+
+AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options, AnalysisCaches* caches) {
   Stopwatch clock;
   AnalysisResult r;
   stop_point(options.stop);
@@ -245,12 +248,15 @@ AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) {
     r.storeys[i].ceiling_planes = detail::ceiling_planes(spec, in.vertices, in.indices, r.storey_features(i));
   // Each storey's areas, side by side: one storey's search leaves a worker idle now and then, the next fills it.
   std::vector<AreaResult> storey_areas(options.find_areas ? r.storeys.size() : 0);
+  if (caches)
+    while (caches->storeys.size() < storey_areas.size()) caches->storeys.push_back(std::make_unique<SearchCache>());
   Stopwatch areas_clock;
   detail::parallel_tasks(storey_areas.size(), options.threads, [&](std::size_t i) {
     const Storey& storey = r.storeys[i];
     storey_areas[i] = find_areas(r.voxels.grid, r.storey_features(i),
                                  {storey.floor_y, storey.ceiling_y, storey.ceiling_planes}, options.areas,
-                                 options.features, options.threads, options.stop);
+                                 options.features, options.threads, options.stop,
+                                 caches ? caches->storeys[i].get() : nullptr);
   });
   for (std::uint32_t i = 0; i < storey_areas.size(); ++i) {
     AreaResult& found = storey_areas[i];

@@ -8,6 +8,8 @@
 // every vertex and triangle (otherwise the combined indices are renumbered and the stage runs in full).
 #include "roomsense/incremental.h"
 
+#include "analysis_caches.h"
+
 #include "roomsense/error.h"
 #include "roomsense/voxelize.h"
 
@@ -164,7 +166,9 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
 };
 
 IncrementalAnalysis::IncrementalAnalysis(AnalysisOptions options)
-    : options_(std::move(options)), stage_(std::make_unique<ChunkVoxelStage>(options_.threads)) {
+    : options_(std::move(options)),
+      stage_(std::make_unique<ChunkVoxelStage>(options_.threads)),
+      caches_(std::make_unique<detail::AnalysisCaches>()) {
   options_.voxel_stage = stage_.get();
 }
 IncrementalAnalysis::~IncrementalAnalysis() = default;
@@ -220,7 +224,7 @@ const AnalysisResult& IncrementalAnalysis::result() {
   }
   stage_->set_layout(std::move(layout), combined.vertices.size(), combined.indices.size());
   result_.reset();
-  result_ = analyze(combined, options_);
+  result_ = detail::analyze(combined, options_, caches_.get());
   dirty_ = false;
   return *result_;
 }
@@ -275,5 +279,17 @@ std::map<std::uint64_t, Scan> split_into_blocks(const Scan& scan, float tile) {
 }
 
 std::size_t IncrementalAnalysis::revoxelized_chunks() const { return reused_ ? 0 : stage_->revoxelized(); }
+
+std::size_t IncrementalAnalysis::area_bands_searched() const {
+  std::size_t n = 0;
+  for (const auto& cache : caches_->storeys) n += reused_ ? 0 : cache->bands_searched();
+  return n;
+}
+
+std::size_t IncrementalAnalysis::area_bands_total() const {
+  std::size_t n = 0;
+  for (const auto& cache : caches_->storeys) n += cache->bands_total();
+  return n;
+}
 
 }  // namespace roomsense

@@ -1,0 +1,86 @@
+// Beyond the thesis (issue 19): the 12 area searches of one storey kept between the analyses of an
+// IncrementalAnalysis, by bands of grid rows (search.h's RowBands), so that an analysis searches again only
+// the bands whose rectangles may read a row whose features changed, and takes the others' rectangles as they
+// were found. Each search's result equals the whole search's exactly (tests/unit/incremental_test.cpp replays
+// rooms chunk by chunk against full analyses).
+#pragma once
+#include "reduce.h"
+#include "search.h"
+
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <vector>
+
+namespace roomsense::detail {
+
+class SearchCache {
+ public:
+  static constexpr int kBandRows = 8;
+
+  // Before an analysis's searches: compares the features they read with the previous analysis's, row by row.
+  // Every band is searched again where the grid, the levels, I_yEnd or the ceiling facets' levels changed.
+  void begin(const GridSpec& spec, const RoomFeatures& features);
+  // search_walls for size class `size`, and search_squares for type 1-3 (Surface) and `size`, from the kept
+  // bands where nothing they read changed. Calls for different searches may run side by side.
+  Candidates walls(std::size_t size, const GridSpec& spec, const RoomFeatures& features, const NormalCounts& normals,
+                   const SizeRange& range, float fill, const std::stop_token& stop);
+  Candidates squares(std::size_t type, std::size_t size, const GridSpec& spec, const RoomFeatures& features,
+                     const SizeRange& range, float fill, double dominant_deg, const std::stop_token& stop);
+  // What find_areas derives from the searches' rectangles before it turns them into areas in metres: a function
+  // of the features and the parameters alone.
+  struct Reduction {
+    std::array<std::vector<Sized>, 4> kept;  // per type, packed, in find_areas's order
+    std::vector<Sized> walls, floors;        // deduplicated: V_Wall and V_Floor for reach
+    std::array<std::size_t, 4> found{}, deduplicated{};
+    std::array<bool, 12> skipped{};
+    double dominant_deg = 0.0;
+  };
+  // The previous analysis's Reduction where nothing the searches read changed since and `params` are its own
+  // (every search's kept bands then stay as they are); otherwise nullptr, and find_areas searches and reduces.
+  const Reduction* unchanged_reduction(const AreaParams& params);
+  void keep_reduction(Reduction reduction, const AreaParams& params);
+  // Over the searches since begin(): the bands searched, and the bands there were.
+  std::size_t bands_searched() const { return searched_; }
+  std::size_t bands_total() const { return total_; }
+
+ private:
+  struct Kept {
+    std::uint64_t generation = 0;  // of the begin() whose features its pieces were found on; 0: none
+    double min_d = 0, max_d = 0, height_ratio = 0, dominant_deg = 0;
+    float fill = 0;
+    int layers = 0, bands = 0;
+    std::vector<std::vector<Candidates::Item>> pieces;  // layer * bands + band
+  };
+  // Which bands to search: all where `kept` does not match, else those within `reach` rows of a changed row.
+  RowBands plan(Kept& kept, std::size_t type, int layers, const SizeRange& range, float fill, double dominant_deg,
+                int reach);
+  // Keeps the searched bands' pieces of `found`; drops everything when the cache would outgrow its bound.
+  void drop(Kept& kept);
+  void keep(Kept& kept, const RowBands& bands, const Candidates& found, const std::vector<Piece>& pieces);
+
+  std::array<Kept, 12> kept_;  // search t: type t / 3, size t % 3
+  Reduction reduction_;
+  AreaParams reduction_params_;
+  std::uint64_t reduction_generation_ = 0;
+  // Counts begin()s. A search's pieces are reused only when kept in the previous one: one skipped (too many
+  // corner pairs) or cut short (a stop, an error) since searches everything again.
+  std::uint64_t generation_ = 0;
+  bool all_changed_ = true;
+  std::array<std::vector<std::uint8_t>, 4> changed_rows_;  // per type, per row z
+  // What the searches read, as the previous analysis had it.
+  GridSpec spec_{};
+  FloorCeiling levels_{};
+  int y_end_ = 0;
+  std::vector<int> facet_levels_;
+  std::vector<std::uint8_t> walls_, normals_, wall_blocked_, free_floor_, free_ceiling_;
+  std::vector<int> furniture_, ceiling_facet_;
+  std::atomic<std::size_t> searched_ = 0, total_ = 0, kept_bytes_ = 0;
+};
+
+// find_areas (areas.h), its searches served by `cache` where there is one (one per storey).
+AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const SurfaceLevels& surfaces,
+                      const AreaParams& params, const FeatureParams& feature_params, unsigned threads,
+                      std::stop_token stop, SearchCache* cache);
+
+}  // namespace roomsense::detail

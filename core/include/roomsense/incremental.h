@@ -6,9 +6,11 @@
 // timings aside. What it reuses between results today: each chunk's voxels (its triangles' marks on the grid,
 // kept per chunk while the grid and the chunk are unchanged), so a change voxelizes only the chunks it
 // touched; and each area search's rectangles by bands of 8 grid rows, so that a band is searched again only
-// where the features it reads changed (areas/search_cache.h). Levels, features, the areas' reduction and
-// classification, and bounds are derived again in full. An unchanged set of chunks returns the previous
-// result at once.
+// where the features it reads changed (areas/search_cache.h); where no feature changed, the searches'
+// deduplication and packing too, so that only the areas in metres, their growth and reach are derived again;
+// and where the grid, the labels' voxels and the storeys' levels are as before (a chunk refined within its
+// voxels), the features and bounds. Levels, surface heights and classification are derived again in full.
+// An unchanged set of chunks returns the previous result at once.
 #pragma once
 #include "roomsense/analysis.h"
 #include "roomsense/scan.h"

@@ -15,6 +15,8 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
+#include <utility>
 
 namespace roomsense {
 namespace {
@@ -226,9 +228,25 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     if (storey.ceiling_y - storey.floor_y >= min_height) r.storeys.push_back(storey);
   }
   // Beyond the thesis: §3.2-3.6 for each storey on its own levels and column counts, side by side.
-  const LabelGrid labels = voxelize_labels(spec, scan.labels, options.voxel_test_budget, r.warnings);
+  LabelGrid labels = voxelize_labels(spec, scan.labels, options.voxel_test_budget, r.warnings);
   r.other_features.resize(r.storeys.size() - 1);
-  detail::parallel_tasks(r.storeys.size(), options.threads, [&](std::size_t i) {
+  // An IncrementalAnalysis whose chunks changed within their voxels: the features (and below, the bounds) are
+  // the previous analysis's.
+  std::vector<FloorCeiling> storey_levels;
+  for (const Storey& storey : r.storeys) storey_levels.push_back(storey.levels);
+  std::optional<AnalysisCaches::Derived> derived;
+  if (caches) derived = std::exchange(caches->derived, std::nullopt);
+  const auto same_spec = [](const GridSpec& a, const GridSpec& b) {
+    return a.origin == b.origin && a.voxel_size == b.voxel_size && a.nx == b.nx && a.ny == b.ny && a.nz == b.nz;
+  };
+  const bool same_input = derived && same_spec(derived->spec, spec) && derived->levels == storey_levels &&
+                          derived->cells == r.voxels.grid.cells && derived->labels.present == labels.present &&
+                          derived->labels.masks == labels.masks;
+  if (derived && !same_input) derived.reset();
+  if (same_input) {
+    r.features = derived->features;
+    r.other_features = derived->other_features;
+  } else detail::parallel_tasks(r.storeys.size(), options.threads, [&](std::size_t i) {
     stop_point(options.stop);
     if (i == 0) {
       r.features = detect_features(r.voxels, options.features, options.threads, options.stop, labels);
@@ -240,6 +258,12 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     r.other_features[i - 1] = detect_features(r.voxels.grid, r.storeys[i].levels, column_counts, column_any,
                                               options.features, options.threads, options.stop, labels);
   });
+  if (caches && !derived) {
+    derived.emplace();
+    derived->spec = spec, derived->cells = r.voxels.grid.cells, derived->labels = std::move(labels);
+    derived->levels = std::move(storey_levels);
+    derived->features = r.features, derived->other_features = r.other_features;
+  }
   r.status_message = "ok";
   r.timings.features = clock.lap();
   stop_point(options.stop);
@@ -281,9 +305,16 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   clock.lap();
   stop_point(options.stop);
   if (options.build_bounds) {
-    build_all_bounds(r, options);
+    if (derived && derived->has_bounds) {
+      r.bounds = derived->bounds;
+      r.room_bounds = derived->room_bounds;
+    } else {
+      build_all_bounds(r, options);
+      if (derived) derived->has_bounds = true, derived->bounds = r.bounds, derived->room_bounds = r.room_bounds;
+    }
     r.timings.bounds = clock.lap();
   }
+  if (caches) caches->derived = std::move(derived);
   r.timings.total = r.timings.prepare + r.timings.voxelize + r.timings.features + r.timings.areas +
                     r.timings.reduce + r.timings.classify + r.timings.bounds;
   return r;

@@ -175,8 +175,16 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     for (const Sized& s : red.floors) floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
   };
   const auto finish = [&](std::size_t type) {
-    for (const Sized& s : red.kept[type]) kept_areas[type].push_back(to_area(s, kAreaTypes[type], context));
-    if (params.grow) grow_areas(kept_areas[type], growth_rule(spec, features, params, type), params, stop);
+    std::vector<Area>& areas = kept_areas[type];
+    for (const Sized& s : red.kept[type]) areas.push_back(to_area(s, kAreaTypes[type], context));
+    if (!params.grow) return;
+    if (const std::vector<Area>* same = cache ? cache->grown(type, areas, params) : nullptr) {
+      areas = *same;
+      return;
+    }
+    std::vector<Area> before = cache ? areas : std::vector<Area>();
+    grow_areas(areas, growth_rule(spec, features, params, type), params, stop);
+    if (cache) cache->keep_grown(type, std::move(before), areas, params);
   };
   // Walls: V_Wall and the room's main direction, which the square searches try first (reduce.h), and beside
   // them packing; the candidates (along the room's surface, not over its floor: few) go once both are done.

@@ -37,6 +37,10 @@ class KeyTable {
   }
 
   std::size_t size() const { return size_; }
+  // Room for n keys without growing.
+  void reserve(std::size_t n) {
+    while (4 * n > 3 * keys_.size()) grow();
+  }
 
  private:
   // pack_key uses 63 bits, so no cell has this key.

@@ -6,6 +6,7 @@
 #include "key_table.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 namespace roomsense::detail {
@@ -48,6 +49,7 @@ void SearchCache::begin(const GridSpec& spec, const RoomFeatures& features) {
     for (std::vector<std::uint8_t>& rows : changed_rows_) rows = walls;  // no type's rectangle covers a wall
     mark_changed(features.normals, normals_, ny, spec, changed_rows_[0]);
     mark_changed(features.wall_blocked, wall_blocked_, ny, spec, changed_rows_[0]);
+    mark_changed(features.ceiling, ceiling_, 1, spec, changed_rows_[0]);  // where walls grow up to
     mark_changed(features.free_floor, free_floor_, 1, spec, changed_rows_[1]);
     mark_changed(features.free_ceiling, free_ceiling_, 1, spec, changed_rows_[2]);
     mark_changed(features.ceiling_facet, ceiling_facet_, 1, spec, changed_rows_[2]);
@@ -56,7 +58,7 @@ void SearchCache::begin(const GridSpec& spec, const RoomFeatures& features) {
   spec_ = spec, levels_ = features.levels, y_end_ = features.y_end, facet_levels_ = std::move(facet_levels);
   walls_ = features.walls, normals_ = features.normals, wall_blocked_ = features.wall_blocked;
   free_floor_ = features.free_floor, free_ceiling_ = features.free_ceiling;
-  furniture_ = features.furniture, ceiling_facet_ = features.ceiling_facet;
+  furniture_ = features.furniture, ceiling_facet_ = features.ceiling_facet, ceiling_ = features.ceiling;
 }
 
 const SearchCache::Reduction* SearchCache::unchanged_reduction(const AreaParams& params) {
@@ -75,6 +77,39 @@ void SearchCache::keep_reduction(Reduction reduction, const AreaParams& params) 
   reduction_ = std::move(reduction);
   reduction_params_ = params;
   reduction_generation_ = generation_;
+}
+
+namespace {
+
+// Bit for bit, so that a -0 is not taken for a 0.
+bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
+bool same_bits(const glm::vec3& a, const glm::vec3& b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
+bool same_bits(const Area& a, const Area& b) {
+  // Every field: a field added to Area changes its size and must be compared here.
+  static_assert(sizeof(Area) == 4 + 4 * 12 + 2 * 12 + 4 * 4 + 3 * 4);
+  for (std::size_t i = 0; i < 4; ++i)
+    if (!same_bits(a.corners[i], b.corners[i])) return false;
+  return a.type == b.type && a.size == b.size && a.reach == b.reach && same_bits(a.center, b.center) &&
+         same_bits(a.normal, b.normal) && same_bits(a.half_width, b.half_width) &&
+         same_bits(a.half_height, b.half_height) && same_bits(a.rotation_deg, b.rotation_deg) &&
+         same_bits(a.volume_height, b.volume_height) && a.flags == b.flags && a.storey == b.storey && a.room == b.room;
+}
+
+}  // namespace
+
+const std::vector<Area>* SearchCache::grown(std::size_t type, const std::vector<Area>& before, const AreaParams& params) {
+  Grown& g = grown_[type];
+  const std::vector<std::uint8_t>& rows = changed_rows_[type];
+  if (all_changed_ || g.generation + 1 != generation_ || !(params == g.params) || before.size() != g.before.size() ||
+      std::find(rows.begin(), rows.end(), 1) != rows.end() ||
+      !std::equal(before.begin(), before.end(), g.before.begin(), [](const Area& a, const Area& b) { return same_bits(a, b); }))
+    return nullptr;
+  g.generation = generation_;
+  return &g.after;
+}
+
+void SearchCache::keep_grown(std::size_t type, std::vector<Area> before, std::vector<Area> after, const AreaParams& params) {
+  grown_[type] = {generation_, std::move(before), std::move(after), params};
 }
 
 RowBands SearchCache::plan(Kept& kept, std::size_t type, int layers, const SizeRange& range, float fill,
@@ -137,6 +172,9 @@ Candidates SearchCache::walls(std::size_t size, const GridSpec& spec, const Room
   // The bands in order, each rectangle unless an earlier band found its centre (as the whole search skips it).
   Candidates out = found.empty_like();
   KeyTable centres;
+  std::size_t count = found.size();
+  for (std::size_t b = 0; b < bands.searched.size(); ++b) count += bands.searched[b] ? 0 : kept.pieces[b].size();
+  centres.reserve(count);
   const auto add = [&](const Candidates::Item& item) {
     const glm::ivec3 sum = corner_sum(found.decode(item).unpack());
     if (centres.insert(pack_key(sum.x, sum.y, sum.z))) out.push_item(item);

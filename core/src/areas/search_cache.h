@@ -18,7 +18,8 @@ class SearchCache {
  public:
   static constexpr int kBandRows = 8;
 
-  // Before an analysis's searches: compares the features they read with the previous analysis's, row by row.
+  // Before an analysis's searches: compares the features they and growth read with the previous analysis's, row
+  // by row.
   // Every band is searched again where the grid, the levels, I_yEnd or the ceiling facets' levels changed.
   void begin(const GridSpec& spec, const RoomFeatures& features);
   // search_walls for size class `size`, and search_squares for type 1-3 (Surface) and `size`, from the kept
@@ -40,6 +41,10 @@ class SearchCache {
   // (every search's kept bands then stay as they are); otherwise nullptr, and find_areas searches and reduces.
   const Reduction* unchanged_reduction(const AreaParams& params);
   void keep_reduction(Reduction reduction, const AreaParams& params);
+  // Growth (grow.h) of a type's packed areas, `before` growing, where the previous analysis grew the same areas
+  // (bit for bit) over the same features with the same parameters: the areas it grew them into; else nullptr.
+  const std::vector<Area>* grown(std::size_t type, const std::vector<Area>& before, const AreaParams& params);
+  void keep_grown(std::size_t type, std::vector<Area> before, std::vector<Area> after, const AreaParams& params);
   // Over the searches since begin(): the bands searched, and the bands there were.
   std::size_t bands_searched() const { return searched_; }
   std::size_t bands_total() const { return total_; }
@@ -60,6 +65,12 @@ class SearchCache {
   void keep(Kept& kept, const RowBands& bands, const Candidates& found, const std::vector<Piece>& pieces);
 
   std::array<Kept, 12> kept_;  // search t: type t / 3, size t % 3
+  struct Grown {
+    std::uint64_t generation = 0;
+    std::vector<Area> before, after;
+    AreaParams params;
+  };
+  std::array<Grown, 4> grown_;
   Reduction reduction_;
   AreaParams reduction_params_;
   std::uint64_t reduction_generation_ = 0;
@@ -74,7 +85,7 @@ class SearchCache {
   int y_end_ = 0;
   std::vector<int> facet_levels_;
   std::vector<std::uint8_t> walls_, normals_, wall_blocked_, free_floor_, free_ceiling_;
-  std::vector<int> furniture_, ceiling_facet_;
+  std::vector<int> furniture_, ceiling_facet_, ceiling_;
   std::atomic<std::size_t> searched_ = 0, total_ = 0, kept_bytes_ = 0;
 };
 

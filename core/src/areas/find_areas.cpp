@@ -15,6 +15,7 @@
 #include <functional>
 #include <mutex>
 #include <numbers>
+#include <optional>
 #include <string>
 
 namespace roomsense {
@@ -202,7 +203,28 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   };
   const auto reduce_walls = [&] {
     const SizedList all(found[0]);
-    for (std::size_t i : pack_walls(all)) red.kept[0].push_back(all[i]);
+    // IncrementalAnalysis: the three sizes' replays as one, where all three are known.
+    std::optional<PackReplay> replay;
+    if (cache && cache->replay(0, 0) && cache->replay(0, 1) && cache->replay(0, 2)) {
+      replay.emplace();
+      for (std::size_t size = 0; size < 3; ++size) {
+        const PackReplay& r = *cache->replay(0, size);
+        replay->previous.insert(replay->previous.end(), r.previous.begin(), r.previous.end());
+        replay->gone.insert(replay->gone.end(), r.gone.begin(), r.gone.end());
+      }
+    }
+    const std::vector<std::size_t> packed = pack_walls(all, replay ? &*replay : nullptr);
+    for (std::size_t i : packed) red.kept[0].push_back(all[i]);
+    if (cache) {
+      std::size_t first = 0;
+      for (std::size_t size = 0; size < 3; ++size) {
+        std::vector<std::size_t> of_size;
+        for (const std::size_t i : packed)
+          if (i >= first && i - first < found[0][size].size()) of_size.push_back(i - first);
+        cache->record_packing(0, size, of_size);
+        first += found[0][size].size();
+      }
+    }
     release_walls();
     finish(0);
   };
@@ -226,7 +248,11 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     deduplicated_count[type] += deduplicators[type]->add(squares, area_size, [&](const Sized& s) {
       if (type == 1) red.floors.push_back(s);
     });
-    for (std::size_t i : packers[type]->pack(squares)) red.kept[type].push_back(Sized{squares[i], area_size});
+    std::vector<std::uint32_t> ranks;
+    const std::vector<std::size_t> packed =
+        packers[type]->pack(squares, cache ? cache->replay(type, size) : nullptr, cache ? &ranks : nullptr);
+    for (std::size_t i : packed) red.kept[type].push_back(Sized{squares[i], area_size});
+    if (cache) cache->record_packing(type, size, packed, ranks);
     found_count[type] += squares.size();
     squares = Candidates();
     if (size + 1 < kAreaSizes.size()) return;

@@ -199,14 +199,86 @@ double misalignment_deg(const Candidate& square, double dominant_deg) {
   return std::min(d, 90.0 - d);
 }
 
-std::vector<std::size_t> pack_walls(const SizedList& walls) {
+ChangedRegion::Box ChangedRegion::around(const Candidate& c) {
+  Box b{glm::ivec2(c.corners[0].x, c.corners[0].z), glm::ivec2(c.corners[0].x, c.corners[0].z)};
+  for (const glm::ivec3& k : c.corners) b.lo = glm::min(b.lo, glm::ivec2(k.x, k.z)), b.hi = glm::max(b.hi, glm::ivec2(k.x, k.z));
+  return {b.lo - 2, b.hi + 2};
+}
+
+ChangedRegion::Blocks ChangedRegion::blocks(const Box& b) const {
+  const auto block = [&](glm::ivec2 column) { return glm::ivec2(floor_int(double(column.x - origin_.x) / kBlock),
+                                                                floor_int(double(column.y - origin_.y) / kBlock)); };
+  return {glm::max(block(b.lo), glm::ivec2(0)), glm::min(block(b.hi), glm::ivec2(columns_ - 1, rows_ - 1))};
+}
+
+void ChangedRegion::add(const Box& b) {
+  // The first box sets the origin; a box beyond the blocks there are grows them (copied: rare, and small).
+  if (empty_) origin_ = b.lo - 64 * kBlock, columns_ = 0, rows_ = 0;
+  const glm::ivec2 need_lo = glm::ivec2(floor_int(double(b.lo.x - origin_.x) / kBlock), floor_int(double(b.lo.y - origin_.y) / kBlock));
+  const glm::ivec2 need_hi = glm::ivec2(floor_int(double(b.hi.x - origin_.x) / kBlock), floor_int(double(b.hi.y - origin_.y) / kBlock));
+  if (need_lo.x < 0 || need_lo.y < 0 || need_hi.x >= columns_ || need_hi.y >= rows_) {
+    const glm::ivec2 shift = glm::max(-need_lo, glm::ivec2(0));
+    const glm::ivec2 size = glm::max(glm::ivec2(columns_, rows_), need_hi + 1) + shift;
+    ChangedRegion grown;
+    grown.origin_ = origin_ - shift * kBlock, grown.columns_ = size.x + 16, grown.rows_ = size.y + 16;
+    grown.bits_.assign(grown.words_per_row() * std::size_t(grown.rows_), 0);
+    for (int z = 0; z < rows_; ++z)
+      for (int x = 0; x < columns_; ++x)
+        if ((bits_[std::size_t(z) * words_per_row() + std::size_t(x / 64)] >> (x % 64)) & 1u) {
+          const int gx = x + shift.x, gz = z + shift.y;
+          grown.bits_[std::size_t(gz) * grown.words_per_row() + std::size_t(gx / 64)] |= std::uint64_t{1} << (gx % 64);
+        }
+    *this = std::move(grown);
+  }
+  empty_ = false;
+  const Blocks k = blocks(b);
+  for (int z = k.lo.y; z <= k.hi.y; ++z)
+    for (int x = k.lo.x; x <= k.hi.x; ++x) bits_[std::size_t(z) * words_per_row() + std::size_t(x / 64)] |= std::uint64_t{1} << (x % 64);
+}
+
+bool ChangedRegion::touches(const Box& b) const {
+  if (empty_) return false;
+  const Blocks k = blocks(b);
+  for (int z = k.lo.y; z <= k.hi.y; ++z) {
+    const std::uint64_t* row = bits_.data() + std::size_t(z) * words_per_row();
+    for (int x = k.lo.x; x <= k.hi.x; x = (x / 64 + 1) * 64) {
+      const int last = std::min(k.hi.x, (x / 64) * 64 + 63);
+      const std::uint64_t mask = (~std::uint64_t{0} >> (63 - (last % 64))) & (~std::uint64_t{0} << (x % 64));
+      if (row[x / 64] & mask) return true;
+    }
+  }
+  return false;
+}
+
+namespace {
+
+// One item of a replayed packing (PackReplay): its previous decision where nothing changed near it, else
+// `decide()`, noting a change where the decision differs.
+template <class Decide>
+bool replayed(const PackReplay* replay, std::size_t i, const Candidate& c, ChangedRegion& changed, Decide decide) {
+  if (!replay) return decide();
+  const int previous = replay->previous[i];
+  const ChangedRegion::Box box = ChangedRegion::around(c);
+  if (previous >= 0 && !changed.touches(box)) return previous == 1;
+  const bool packed = decide();
+  if (packed != (previous == 1)) changed.add(box);  // an item refused now and unknown before changes nothing
+  return packed;
+}
+
+}  // namespace
+
+std::vector<std::size_t> pack_walls(const SizedList& walls, const PackReplay* replay) {
   const SampleBox box = sample_box(walls);
   SampleRaster taken(box.x_lo, box.x_hi, box.z_lo, box.z_hi, box.y_lo, box.y_hi);
   std::vector<std::size_t> kept;
+  ChangedRegion changed;
+  if (replay)
+    for (const Candidate& c : replay->gone) changed.add(ChangedRegion::around(c));
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const Candidate c = walls[i].c();
-    const bool free =
-        wall_samples(c, 0, [&](long x, long z, long y0, long y1) { return !taken.any(x, z, y0, y1); });
+    const bool free = replayed(replay, i, c, changed, [&] {
+      return wall_samples(c, 0, [&](long x, long z, long y0, long y1) { return !taken.any(x, z, y0, y1); });
+    });
     if (!free) continue;
     // Marked a voxel thick either side: a rectangle one voxel in front of another on a wall off the axes
     // (the staircase of its voxels) covers the same wall.
@@ -317,7 +389,8 @@ int SquarePacker::misalignment_step(const Candidate& c) {
   return it->second;
 }
 
-std::vector<std::size_t> SquarePacker::pack(const Candidates& squares) {
+std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const PackReplay* replay,
+                                           std::vector<std::uint32_t>* ranks_out) {
   // Within a size, aligned with the room first (in steps of 5°), then by contact, then in search order. Each
   // square's rank is computed once, and the ranks are few (ten steps, contacts up to the samples around a
   // square): a counting sort by rank, stable, so that equal ranks keep the search order.
@@ -330,12 +403,15 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares) {
   std::uint32_t max_step = 0, max_contact = 0;
   for (std::size_t i = 0; i < squares.size(); ++i) {
     if (i % kStopEvery == 0) stop_point(stop_);
-    const Candidate c = squares[i].unpack();
-    const std::uint32_t step = std::uint32_t(misalignment_step(c)),
-                        touching = std::min(std::uint32_t(contact(c)), kContactMask);
-    ranks[i] = step << kContactBits | touching;
-    max_step = std::max(max_step, step), max_contact = std::max(max_contact, touching);
+    if (replay && replay->ranks[i] != PackReplay::kUnknownRank) {
+      ranks[i] = replay->ranks[i];
+    } else {
+      const Candidate c = squares[i].unpack();
+      ranks[i] = std::uint32_t(misalignment_step(c)) << kContactBits | std::min(std::uint32_t(contact(c)), kContactMask);
+    }
+    max_step = std::max(max_step, ranks[i] >> kContactBits), max_contact = std::max(max_contact, ranks[i] & kContactMask);
   }
+  if (ranks_out) *ranks_out = ranks;
   // Bucket step * (max_contact + 1) + (max_contact - contact): step ascending, contact descending.
   const std::size_t contacts = std::size_t(max_contact) + 1, buckets = (std::size_t(max_step) + 1) * contacts;
   const auto bucket_of = [&](std::uint32_t rank) {
@@ -353,15 +429,23 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares) {
                      [&](std::uint32_t a, std::uint32_t b) { return bucket_of(ranks[a]) < bucket_of(ranks[b]); });
   }
   ranks = {};
+  // A size packed without a replay changes what is unknown: the sizes after it cannot replay either.
+  if (!replay) replayable_ = false;
+  if (!replayable_) replay = nullptr;
+  if (replay)
+    for (const Candidate& c : replay->gone) changed_.add(ChangedRegion::around(c));
   std::vector<std::size_t> kept;
   for (std::size_t k = 0; k < order.size(); ++k) {
     if (k % kStopEvery == 0) stop_point(stop_);
     const std::size_t i = order[k];
     const Candidate c = squares[i].unpack();
     const int level = c.corners[0].y;
-    bool free = true;
-    for (int y = level - level_tolerance_; y <= level + level_tolerance_ && free; ++y)
-      free = square_samples(c, [&](long z, long x0, long x1) { return !taken_->any(y, z, x0, x1); });
+    const bool free = replayed(replay, i, c, changed_, [&] {
+      bool none = true;
+      for (int y = level - level_tolerance_; y <= level + level_tolerance_ && none; ++y)
+        none = square_samples(c, [&](long z, long x0, long x1) { return !taken_->any(y, z, x0, x1); });
+      return none;
+    });
     if (!free) continue;
     square_samples(c, [&](long z, long x0, long x1) { return taken_->set(level, z, x0, x1), true; });
     kept.push_back(i);

@@ -74,7 +74,44 @@ double misalignment_deg(const Candidate& square, double dominant_deg);
 // surface (sampled on a half-voxel raster) with a kept one, in order: large, medium, small, and within a size
 // squares aligned with the room's main direction first, so that large areas tile the free surface and
 // smaller ones fill what they leave. Returns the indices kept.
-std::vector<std::size_t> pack_walls(const SizedList& walls);
+// IncrementalAnalysis (search_cache.h): packing replayed against the previous analysis's. An item keeps its
+// previous decision unless an item before it in packing order that is new, gone, or decided otherwise now lies
+// within reach of its samples; only those are tested, so the result is the whole packing's.
+struct PackReplay {
+  std::vector<std::int8_t> previous;  // per item, in the list's order: 1 packed, 0 refused, -1 not known
+  std::vector<Candidate> gone;        // packed by the previous analysis, not in the list now
+  // Squares: per item, its rank in packing order where it is known to be as before (SquarePacker::pack's
+  // `ranks`), else kUnknownRank.
+  static constexpr std::uint32_t kUnknownRank = 0xffffffffu;
+  std::vector<std::uint32_t> ranks;
+};
+
+// Where the items a replay tests again lie: blocks of 4 x 4 voxel columns around the items that changed, a bit
+// each, in rows of 64-bit words (a test is a word or two per row of blocks).
+class ChangedRegion {
+ public:
+  struct Box {
+    glm::ivec2 lo, hi;  // columns (x, z), inclusive
+  };
+  // A rectangle's samples, marks and conflicts lie within its corners' columns and two more around them.
+  static Box around(const Candidate& c);
+  void add(const Box& b);
+  bool touches(const Box& b) const;
+
+ private:
+  static constexpr int kBlock = 4;
+  struct Blocks {
+    glm::ivec2 lo, hi;
+  };
+  Blocks blocks(const Box& b) const;  // clamped to the blocks there are; empty where b lies outside them
+  std::size_t words_per_row() const { return std::size_t(columns_) / 64 + 1; }
+  int columns_ = 0, rows_ = 0;  // blocks, grown to what add() is given
+  glm::ivec2 origin_{0};        // the first block's column
+  std::vector<std::uint64_t> bits_;
+  bool empty_ = true;
+};
+
+std::vector<std::size_t> pack_walls(const SizedList& walls, const PackReplay* replay = nullptr);
 // The columns a square may rest on: free floor D or free ceiling E (`mask`), or a furniture top C at a square's
 // level (`top`: the column's level, equal or one below, Eq. 3.41). Inline: packing asks it for every sample of
 // every candidate's outline.
@@ -101,7 +138,10 @@ class SquarePacker {
   ~SquarePacker();
   // The squares of the next size (large, then medium, then small), in search order; returns the indices kept,
   // ascending.
-  std::vector<std::size_t> pack(const Candidates& squares);
+  // With a replay (PackReplay), the decisions of squares far from what changed are the previous analysis's.
+  // `ranks`, where given, receives each square's rank (for the next analysis's replay).
+  std::vector<std::size_t> pack(const Candidates& squares, const PackReplay* replay = nullptr,
+                                std::vector<std::uint32_t>* ranks = nullptr);
 
  private:
   class NonTileCounts;
@@ -114,6 +154,8 @@ class SquarePacker {
   std::unique_ptr<NonTileCounts> runs_;  // floor and ceiling: contact along the axes by run, not by cell
   std::unordered_map<std::uint64_t, int> steps_of_direction_;
   std::unique_ptr<SampleRaster> taken_;
+  ChangedRegion changed_;  // over all sizes: a large square's change reaches the smaller ones after it
+  bool replayable_ = true;
   std::stop_token stop_;
 };
 

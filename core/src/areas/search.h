@@ -48,9 +48,11 @@ struct Piece {
   int layer = 0, band = 0;
   std::size_t end = 0;  // one past its last rectangle in the output
 };
+struct RingOffset;
 struct BandedSearch {
   const RowBands* bands = nullptr;    // nullptr: the whole grid at once, no pieces
   std::vector<Piece>* pieces = nullptr;
+  const std::vector<RingOffset>* ring = nullptr;  // the size's ring_offsets, where the caller keeps them
 };
 
 // Alg. 2 (Eq. 3.20-3.27). Returns the first valid rectangle for each distinct centre, in search order: a

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <tuple>
+#include <utility>
 
 namespace roomsense::detail {
 namespace {
@@ -67,8 +69,10 @@ const SearchCache::Reduction* SearchCache::unchanged_reduction(const AreaParams&
       std::any_of(changed_rows_.begin(), changed_rows_.end(), changed))
     return nullptr;
   // The searches would find what they kept: their pieces hold for this analysis's features too.
-  for (Kept& kept : kept_)
+  for (Kept& kept : kept_) {
     if (kept.generation + 1 == generation_) kept.generation = generation_, total_ += std::size_t(kept.bands);
+    if (kept.packed_generation + 1 == generation_) kept.packed_generation = generation_;
+  }
   reduction_generation_ = generation_;
   return &reduction_;
 }
@@ -121,8 +125,11 @@ RowBands SearchCache::plan(Kept& kept, std::size_t type, int layers, const SizeR
                     kept.dominant_deg == dominant_deg && kept.layers == layers && kept.bands == bands;
   if (!same) {
     drop(kept);
-    kept = {0, range.min_d, range.max_d, range.height_ratio, dominant_deg, fill, layers, bands, {}};
+    kept.min_d = range.min_d, kept.max_d = range.max_d, kept.height_ratio = range.height_ratio;
+    kept.dominant_deg = dominant_deg, kept.fill = fill, kept.layers = layers, kept.bands = bands;
     kept.pieces.resize(std::size_t(std::max(layers, 0)) * std::size_t(bands));
+    kept.states.resize(kept.pieces.size());
+    kept.ranks.resize(kept.pieces.size());
   } else {
     const std::vector<std::uint8_t>& changed = changed_rows_[type];
     for (int b = 0; b < bands; ++b) {
@@ -140,26 +147,127 @@ void SearchCache::drop(Kept& kept) {
   kept = {};
 }
 
-void SearchCache::keep(Kept& kept, const RowBands& bands, const Candidates& found, const std::vector<Piece>& pieces) {
+namespace {
+
+// A rectangle's identity within a search: corner 1's cell and its shape.
+std::tuple<std::uint32_t, std::uint32_t, std::uint32_t> key_of(const Candidates::Item& item) {
+  return {item.cell_hi, item.cell_lo, item.shape};
+}
+
+}  // namespace
+
+std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, const RowBands& bands, const Candidates& found,
+                                                        const std::vector<Piece>& pieces) {
   const std::size_t band_count = bands.searched.size();
+  std::vector<Replaced> old;
   for (std::size_t b = 0; b < band_count; ++b) {
     if (!bands.searched[b]) continue;
     for (int layer = 0; layer < kept.layers; ++layer) {
-      std::vector<Candidates::Item>& piece = kept.pieces[std::size_t(layer) * band_count + b];
-      kept_bytes_ -= piece.size() * sizeof(Candidates::Item);
-      piece = {};
+      const std::size_t slot = std::size_t(layer) * band_count + b;
+      kept_bytes_ -= kept.pieces[slot].size() * sizeof(Candidates::Item);
+      old.push_back({slot, std::exchange(kept.pieces[slot], {}), std::exchange(kept.states[slot], {}),
+                     std::exchange(kept.ranks[slot], {})});
     }
   }
   std::size_t begin = 0;
   for (const Piece& p : pieces) {
-    std::vector<Candidates::Item>& piece = kept.pieces[std::size_t(p.layer) * band_count + std::size_t(p.band)];
-    for (std::size_t i = begin; i < p.end; ++i) piece.push_back(found.item(i));
+    const std::size_t slot = std::size_t(p.layer) * band_count + std::size_t(p.band);
+    for (std::size_t i = begin; i < p.end; ++i) kept.pieces[slot].push_back(found.item(i));
+    kept.states[slot].assign(p.end - begin, kAbsent);
+    kept.ranks[slot].assign(p.end - begin, PackReplay::kUnknownRank);
     kept_bytes_ += (p.end - begin) * sizeof(Candidates::Item);
     begin = p.end;
   }
   kept.generation = generation_;
+  return old;
+}
+
+Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vector<Replaced> replaced, bool walls) {
+  // The previous analysis's packing of each rectangle, where known: of a replaced slot's rectangles by identity.
+  const bool known = kept.packed_generation + 1 == generation_;
+  kept.source.clear();
+  kept.replay = {};
+  using Keyed = std::pair<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, std::uint8_t>;
+  std::vector<std::vector<Keyed>> before(kept.pieces.size());
+  std::vector<std::vector<std::uint8_t>> matched(kept.pieces.size());
+  for (Replaced& r : replaced) {
+    if (!known) continue;
+    for (std::size_t k = 0; k < r.items.size(); ++k) before[r.slot].push_back({key_of(r.items[k]), r.states[k]});
+    std::sort(before[r.slot].begin(), before[r.slot].end());
+    matched[r.slot].assign(r.items.size(), 0);
+  }
+  const auto previous_state = [&](std::size_t slot, std::size_t k) -> std::uint8_t {
+    if (!known) return kAbsent;
+    if (matched[slot].empty()) return kept.states[slot][k];
+    const auto key = key_of(kept.pieces[slot][k]);
+    const auto it = std::lower_bound(before[slot].begin(), before[slot].end(), Keyed{key, 0});
+    if (it == before[slot].end() || it->first != key) return kAbsent;
+    // A square found again may pack in another place of the order (its contact may have changed): taken as
+    // gone and new. A wall's order is the search's, which keeps it among the others.
+    if (!walls) return kAbsent;
+    matched[slot][std::size_t(it - before[slot].begin())] = 1;
+    return it->second;
+  };
+  // Walls: the bands in order, each rectangle unless an earlier band found its centre (as the whole search
+  // skips it). Squares: layer by layer, band by band.
+  Candidates out = found.empty_like();
+  KeyTable centres;
+  std::size_t count = 0;
+  for (const auto& piece : kept.pieces) count += piece.size();
+  if (walls) centres.reserve(count);
+  kept.source.reserve(count);
+  kept.replay.previous.reserve(count);
+  if (!walls) kept.replay.ranks.reserve(count);
+  for (std::size_t slot = 0; slot < kept.pieces.size(); ++slot)
+    for (std::size_t k = 0; k < kept.pieces[slot].size(); ++k) {
+      const Candidates::Item& item = kept.pieces[slot][k];
+      const std::uint8_t state = previous_state(slot, k);
+      if (walls) {
+        const Candidate c = found.decode(item).unpack();
+        const glm::ivec3 sum = corner_sum(c);
+        if (!centres.insert(pack_key(sum.x, sum.y, sum.z))) {
+          if (state == kPacked) kept.replay.gone.push_back(c);
+          continue;
+        }
+      }
+      out.push_item(item);
+      kept.source.push_back({std::uint32_t(slot), std::uint32_t(k)});
+      kept.replay.previous.push_back(state == kPacked ? 1 : state == kRefused ? 0 : -1);
+      // A replaced slot's ranks are unknown (kUnknownRank): its features changed.
+      if (!walls) kept.replay.ranks.push_back(known ? kept.ranks[slot][k] : PackReplay::kUnknownRank);
+    }
+  // Packed before, not found again.
+  for (std::size_t slot = 0; slot < before.size(); ++slot)
+    for (std::size_t k = 0; k < before[slot].size(); ++k)
+      if (!matched[slot][k] && before[slot][k].second == kPacked) {
+        const auto [hi, lo, shape] = before[slot][k].first;
+        kept.replay.gone.push_back(found.decode({lo, hi, shape}).unpack());
+      }
+  kept.replay_known = known;
   // The kept rectangles stay within twice the grid's bytes and 16 MB; past that a search keeps nothing.
   if (kept_bytes_ > 2 * spec_.voxel_count() + (std::size_t{16} << 20)) drop(kept);
+  return out;
+}
+
+const PackReplay* SearchCache::replay(std::size_t type, std::size_t size) const {
+  const Kept& kept = kept_[3 * type + size];
+  return kept.replay_known && kept.generation == generation_ ? &kept.replay : nullptr;
+}
+
+void SearchCache::record_packing(std::size_t type, std::size_t size, std::span<const std::size_t> packed,
+                                 std::span<const std::uint32_t> ranks) {
+  Kept& kept = kept_[3 * type + size];
+  if (kept.generation != generation_) return;  // dropped, or not searched in this analysis
+  for (std::vector<std::uint8_t>& states : kept.states) std::fill(states.begin(), states.end(), kAbsent);
+  for (std::size_t i = 0; i < kept.source.size(); ++i) {
+    const auto [slot, k] = kept.source[i];
+    kept.states[slot][k] = kRefused;
+    if (!ranks.empty()) kept.ranks[slot][k] = ranks[i];
+  }
+  for (const std::size_t i : packed) kept.states[kept.source[i].first][kept.source[i].second] = kPacked;
+  kept.packed_generation = generation_;
+  kept.source = {};
+  kept.replay = {};
 }
 
 Candidates SearchCache::walls(std::size_t size, const GridSpec& spec, const RoomFeatures& features,
@@ -168,29 +276,9 @@ Candidates SearchCache::walls(std::size_t size, const GridSpec& spec, const Room
   Kept& kept = kept_[size];
   const RowBands bands = plan(kept, 0, 1, range, fill, 0.0, wall_search_reach(range));
   std::vector<Piece> pieces;
-  const Candidates found = search_walls(spec, features, normals, range, fill, stop, {&bands, &pieces});
-  // The bands in order, each rectangle unless an earlier band found its centre (as the whole search skips it).
-  Candidates out = found.empty_like();
-  KeyTable centres;
-  std::size_t count = found.size();
-  for (std::size_t b = 0; b < bands.searched.size(); ++b) count += bands.searched[b] ? 0 : kept.pieces[b].size();
-  centres.reserve(count);
-  const auto add = [&](const Candidates::Item& item) {
-    const glm::ivec3 sum = corner_sum(found.decode(item).unpack());
-    if (centres.insert(pack_key(sum.x, sum.y, sum.z))) out.push_item(item);
-  };
-  std::size_t begin = 0;
-  auto piece = pieces.begin();
-  for (int b = 0; b < int(bands.searched.size()); ++b) {
-    if (bands.searched[std::size_t(b)]) {
-      for (std::size_t i = begin; i < piece->end; ++i) add(found.item(i));
-      begin = piece->end, ++piece;
-      continue;
-    }
-    for (const Candidates::Item& item : kept.pieces[std::size_t(b)]) add(item);
-  }
-  keep(kept, bands, found, pieces);
-  return out;
+  if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::WallTop);
+  const Candidates found = search_walls(spec, features, normals, range, fill, stop, {&bands, &pieces, &kept.ring});
+  return assemble(kept, found, replace(kept, bands, found, pieces), true);
 }
 
 Candidates SearchCache::squares(std::size_t type, std::size_t size, const GridSpec& spec, const RoomFeatures& features,
@@ -200,24 +288,10 @@ Candidates SearchCache::squares(std::size_t type, std::size_t size, const GridSp
   const int layers = square_layers(features, surface);
   const RowBands bands = plan(kept, type, layers, range, fill, dominant_deg, square_search_reach(range));
   std::vector<Piece> pieces;
-  const Candidates found = search_squares(spec, features, surface, range, fill, dominant_deg, stop, {&bands, &pieces});
-  // Layer by layer, band by band: the searched bands from found, the others as kept.
-  std::vector<std::pair<std::size_t, std::size_t>> found_range(std::size_t(std::max(layers, 0)) * bands.searched.size(), {0, 0});
-  std::size_t begin = 0;
-  for (const Piece& p : pieces) {
-    found_range[std::size_t(p.layer) * bands.searched.size() + std::size_t(p.band)] = {begin, p.end};
-    begin = p.end;
-  }
-  Candidates out = found.empty_like();
-  for (std::size_t i = 0; i < found_range.size(); ++i) {
-    if (bands.searched[i % bands.searched.size()]) {
-      for (std::size_t k = found_range[i].first; k < found_range[i].second; ++k) out.push_item(found.item(k));
-      continue;
-    }
-    for (const Candidates::Item& item : kept.pieces[i]) out.push_item(item);
-  }
-  keep(kept, bands, found, pieces);
-  return out;
+  if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::Square);
+  const Candidates found =
+      search_squares(spec, features, surface, range, fill, dominant_deg, stop, {&bands, &pieces, &kept.ring});
+  return assemble(kept, found, replace(kept, bands, found, pieces), false);
 }
 
 }  // namespace roomsense::detail

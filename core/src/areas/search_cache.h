@@ -5,11 +5,13 @@
 // rooms chunk by chunk against full analyses).
 #pragma once
 #include "reduce.h"
+#include "ring_offsets.h"
 #include "search.h"
 
 #include <array>
 #include <atomic>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 namespace roomsense::detail {
@@ -45,6 +47,12 @@ class SearchCache {
   // (bit for bit) over the same features with the same parameters: the areas it grew them into; else nullptr.
   const std::vector<Area>* grown(std::size_t type, const std::vector<Area>& before, const AreaParams& params);
   void keep_grown(std::size_t type, std::vector<Area> before, std::vector<Area> after, const AreaParams& params);
+  // Packing (reduce.h) of the list walls() or squares() returned for (type, size) in this analysis: its replay
+  // against the previous analysis's packing, or nullptr where that is not known; and what it packed (indices
+  // into the list) and, for squares, each one's rank, recorded for the next analysis.
+  const PackReplay* replay(std::size_t type, std::size_t size) const;
+  void record_packing(std::size_t type, std::size_t size, std::span<const std::size_t> packed,
+                      std::span<const std::uint32_t> ranks = {});
   // Over the searches since begin(): the bands searched, and the bands there were.
   std::size_t bands_searched() const { return searched_; }
   std::size_t bands_total() const { return total_; }
@@ -55,14 +63,36 @@ class SearchCache {
     double min_d = 0, max_d = 0, height_ratio = 0, dominant_deg = 0;
     float fill = 0;
     int layers = 0, bands = 0;
-    std::vector<std::vector<Candidates::Item>> pieces;  // layer * bands + band
+    std::vector<RingOffset> ring;  // the search's offsets (ring_offsets), found once
+    std::vector<std::vector<Candidates::Item>> pieces;  // slot layer * bands + band
+    // Per slot and rectangle, its packing in the analysis of packed_generation (kAbsent: not in the list), and
+    // for squares its rank in packing order.
+    std::vector<std::vector<std::uint8_t>> states;
+    std::vector<std::vector<std::uint32_t>> ranks;
+    std::uint64_t packed_generation = 0;
+    // This analysis's list (walls(), squares()): each rectangle's slot and index, and its packing's replay.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> source;
+    PackReplay replay;
+    bool replay_known = false;
+  };
+  static constexpr std::uint8_t kAbsent = 0, kRefused = 1, kPacked = 2;
+  // A slot a search replaced, as it was.
+  struct Replaced {
+    std::size_t slot;
+    std::vector<Candidates::Item> items;
+    std::vector<std::uint8_t> states;
+    std::vector<std::uint32_t> ranks;
   };
   // Which bands to search: all where `kept` does not match, else those within `reach` rows of a changed row.
   RowBands plan(Kept& kept, std::size_t type, int layers, const SizeRange& range, float fill, double dominant_deg,
                 int reach);
-  // Keeps the searched bands' pieces of `found`; drops everything when the cache would outgrow its bound.
   void drop(Kept& kept);
-  void keep(Kept& kept, const RowBands& bands, const Candidates& found, const std::vector<Piece>& pieces);
+  // Puts the searched bands' pieces of `found` in place of the kept ones, and returns those.
+  std::vector<Replaced> replace(Kept& kept, const RowBands& bands, const Candidates& found,
+                                const std::vector<Piece>& pieces);
+  // The search's list from the kept pieces, with its packing's replay; drops everything when the cache would
+  // outgrow its bound.
+  Candidates assemble(Kept& kept, const Candidates& found, std::vector<Replaced> replaced, bool walls);
 
   std::array<Kept, 12> kept_;  // search t: type t / 3, size t % 3
   struct Grown {

@@ -112,7 +112,7 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
                           BandedSearch banded) {
   // The orientations, split by the parity of dx - dz (= that of dx + dz), most nearly aligned with the room
   // first (with the grid's axes in a room without walls).
-  std::vector<RingOffset> ring = ring_offsets(size, Shape::Square);
+  std::vector<RingOffset> ring = banded.ring ? *banded.ring : ring_offsets(size, Shape::Square);
   const auto misalignment = [&](const RingOffset& o) {
     const double a = std::fmod(std::atan2(double(o.dz), double(o.dx)) * 180.0 / std::numbers::pi + 360.0, 90.0);
     const double d = std::fabs(a - dominant_deg);

@@ -120,7 +120,8 @@ int wall_search_reach(const SizeRange& size) { return int(std::floor(size.max_d)
 
 Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, const NormalCounts& normals,
                         const SizeRange& size, float fill, const std::stop_token& stop, BandedSearch banded) {
-  const std::vector<RingOffset> ring = ring_offsets(size, Shape::WallTop);
+  const std::vector<RingOffset> own_ring = banded.ring ? std::vector<RingOffset>() : ring_offsets(size, Shape::WallTop);
+  const std::vector<RingOffset>& ring = banded.ring ? *banded.ring : own_ring;
   const int floor = normals.y0, ceiling = normals.y0 + normals.levels - 1;
   // Alg. 2 starts the top row at I_Floor + ⌊w_min/2⌋, leaving room for the height below it.
   const int y_first = floor + int(std::floor(size.min_d * size.height_ratio));

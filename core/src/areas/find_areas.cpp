@@ -107,13 +107,15 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   auto clock = std::chrono::steady_clock::now();
 
   if (cache) cache->begin(spec, features);
-  // What the searches and their reduction derive, in voxels, before the areas in metres: the previous analysis's
-  // where its features were these (IncrementalAnalysis), else found by the graph below.
-  const SearchCache::Reduction* unchanged = cache ? cache->unchanged_reduction(params) : nullptr;
-  SearchCache::Reduction red = unchanged ? *unchanged : SearchCache::Reduction{};
+  // What each type's searches and their reduction derive, in voxels, before the areas in metres: the previous
+  // analysis's where nothing they read changed (IncrementalAnalysis: walls decided here, squares once the
+  // walls give the room's main direction), else found by the graph below.
+  std::array<SearchCache::TypeReduction, 4> red;
+  std::array<const SearchCache::TypeReduction*, 4> reused{};
+  if (cache) reused[0] = cache->unchanged_type(0, params, 0.0);
   // §3.3: task t searches type t / 3 in size t % 3. Each writes only its own slot.
   // For the wall searches only: freed after them.
-  NormalCounts normals = unchanged ? NormalCounts() : count_normals(spec, features);
+  NormalCounts normals = reused[0] ? NormalCounts() : count_normals(spec, features);
   // The corners a search starts from, for its cost estimate: voxels with a normal, or tiles.
   const auto count_if = [](const auto& v, auto pred) { return double(std::count_if(v.begin(), v.end(), pred)); };
   double with_normal = 0;  // from the prefix counts, not another pass over F
@@ -125,8 +127,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       count_if(features.free_ceiling, [](std::uint8_t t) { return t != 0; }),
       count_if(features.furniture, [](int c) { return c != kNoFurniture; })};
   std::array<std::array<Candidates, 3>, 4> found;
-  std::array<bool, 12>& skipped = red.skipped;
-  double& dominant_deg = red.dominant_deg;  // the room's main direction, from the walls (reduce.h)
+  double dominant_deg = 0.0;  // the room's main direction, from the walls (reduce.h)
   const auto range_of = [&](std::size_t type, std::size_t size) {
     return type == 0 ? size_range(params.wall_width[size], params.wall_height[size], params.width_tolerance, voxel)
                      : size_range(params.square_width[size], params.square_width[size], params.width_tolerance, voxel);
@@ -141,9 +142,10 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   const auto search_cost = [&](std::size_t type) { return pairs(type, 0) + pairs(type, 1) + pairs(type, 2); };
   const auto search = [&](std::size_t t) {
     const std::size_t type = t / 3, size = t % 3;
+    if (reused[type]) return;
     const SizeRange range = range_of(type, size);
     if (pairs(type, size) > kAreaSearchBudget) {
-      skipped[t] = true;
+      red[type].skipped[size] = true;
       return;
     }
     if (type == 0) {
@@ -166,18 +168,17 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   const PlacementContext context{spec, features, surfaces, feature_params};
   std::vector<ReachWall> wall_areas;
   std::vector<ReachFloor> floor_areas;
-  std::array<std::size_t, 4>&deduplicated_count = red.deduplicated, &found_count = red.found;
   std::array<std::vector<Area>, 4> kept_areas;
   // The areas in metres of what the reduction keeps; each type's grown (grow.h).
   const auto finish_walls_for_reach = [&] {
-    for (const Sized& s : red.walls) wall_areas.emplace_back(to_area(s, AreaType::Wall, context));
+    for (const Sized& s : red[0].for_reach) wall_areas.emplace_back(to_area(s, AreaType::Wall, context));
   };
   const auto finish_floors_for_reach = [&] {
-    for (const Sized& s : red.floors) floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
+    for (const Sized& s : red[1].for_reach) floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
   };
   const auto finish = [&](std::size_t type) {
     std::vector<Area>& areas = kept_areas[type];
-    for (const Sized& s : red.kept[type]) areas.push_back(to_area(s, kAreaTypes[type], context));
+    for (const Sized& s : red[type].kept) areas.push_back(to_area(s, kAreaTypes[type], context));
     if (!params.grow) return;
     if (const std::vector<Area>* same = cache ? cache->grown(type, areas, params) : nullptr) {
       areas = *same;
@@ -192,16 +193,30 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   std::atomic<int> wall_candidate_users = 2;
   const auto release_walls = [&] {
     if (--wall_candidate_users != 0) return;
-    for (Candidates& size : found[0]) found_count[0] += size.size(), size = Candidates();
+    for (Candidates& size : found[0]) red[0].found += size.size(), size = Candidates();
+  };
+  // The square types whose reduction is the previous analysis's, decided once the walls give the main direction.
+  const auto reuse_squares = [&] {
+    for (std::size_t type = 1; type < 4 && cache; ++type) reused[type] = cache->unchanged_type(type, params, dominant_deg);
   };
   const auto deduplicate_walls = [&] {
     normals = NormalCounts();
-    deduplicated_count[0] = deduplicate_centres(spec, found[0], [&](const Sized& s) { red.walls.push_back(s); }, stop);
-    dominant_deg = dominant_direction_deg(red.walls);
-    finish_walls_for_reach();
+    if (reused[0]) {
+      red[0].for_reach = reused[0]->for_reach, red[0].deduplicated = reused[0]->deduplicated;
+    } else {
+      red[0].deduplicated =
+          deduplicate_centres(spec, found[0], [&](const Sized& s) { red[0].for_reach.push_back(s); }, stop);
+    }
+    dominant_deg = red[0].dominant_deg = dominant_direction_deg(red[0].for_reach);
+    reuse_squares();
     release_walls();
   };
   const auto reduce_walls = [&] {
+    if (reused[0]) {
+      red[0].kept = reused[0]->kept, red[0].found = reused[0]->found, red[0].skipped = reused[0]->skipped;
+      finish(0);
+      return;
+    }
     const SizedList all(found[0]);
     // IncrementalAnalysis: the three sizes' replays as one, where all three are known.
     std::optional<PackReplay> replay;
@@ -214,7 +229,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       }
     }
     const std::vector<std::size_t> packed = pack_walls(all, replay ? &*replay : nullptr);
-    for (std::size_t i : packed) red.kept[0].push_back(all[i]);
+    for (std::size_t i : packed) red[0].kept.push_back(all[i]);
     if (cache) {
       std::size_t first = 0;
       for (std::size_t size = 0; size < 3; ++size) {
@@ -233,6 +248,13 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   std::array<std::unique_ptr<CentreDeduplicator>, 4> deduplicators;
   std::array<std::unique_ptr<SquarePacker>, 4> packers;
   const auto reduce_squares = [&](std::size_t type, std::size_t size) {
+    if (reused[type]) {
+      if (size + 1 < kAreaSizes.size()) return;
+      red[type] = *reused[type];
+      if (type == 1) finish_floors_for_reach();
+      finish(type);
+      return;
+    }
     if (size == 0) {
       deduplicators[type] = std::make_unique<CentreDeduplicator>(spec, stop);
       const TileMap is_tile{spec, type == 1 ? std::span<const std::uint8_t>(features.free_floor)
@@ -245,15 +267,15 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     }
     Candidates& squares = found[type][size];
     const AreaSize area_size = kAreaSizes[size];
-    deduplicated_count[type] += deduplicators[type]->add(squares, area_size, [&](const Sized& s) {
-      if (type == 1) red.floors.push_back(s);
+    red[type].deduplicated += deduplicators[type]->add(squares, area_size, [&](const Sized& s) {
+      if (type == 1) red[type].for_reach.push_back(s);
     });
     std::vector<std::uint32_t> ranks;
     const std::vector<std::size_t> packed =
         packers[type]->pack(squares, cache ? cache->replay(type, size) : nullptr, cache ? &ranks : nullptr);
-    for (std::size_t i : packed) red.kept[type].push_back(Sized{squares[i], area_size});
+    for (std::size_t i : packed) red[type].kept.push_back(Sized{squares[i], area_size});
     if (cache) cache->record_packing(type, size, packed, ranks);
-    found_count[type] += squares.size();
+    red[type].found += squares.size();
     squares = Candidates();
     if (size + 1 < kAreaSizes.size()) return;
     deduplicators[type].reset();
@@ -262,7 +284,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     finish(type);
   };
   // The work as a graph (parallel_graph): the three wall searches; then the walls' deduplication and, beside
-  // it, their packing (which frees their candidates early); after the deduplication each type's square
+  // it, their packing (which frees their candidates early); after the deduplication V_Wall's areas, and each type's square
   // searches, side by side, the types most costly to search first, and each size's reduction after its search
   // and the previous size's. Where one size's candidates would be large (about two per tile, 12 bytes each,
   // past kChainBytes: a floor of some 400 m² and more), a size's search also waits for the previous size's
@@ -271,9 +293,9 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   constexpr double kChainBytes = 1 << 20;
   const auto chained = [&](std::size_t type) { return 2.0 * starts[type] * double(Candidates::kBytesEach) > kChainBytes; };
   constexpr std::size_t kDeduplicateWalls = 3;
-  std::vector<std::vector<std::size_t>> after = {{}, {}, {}, {0, 1, 2}, {0, 1, 2}};
+  std::vector<std::vector<std::size_t>> after = {{}, {}, {}, {0, 1, 2}, {0, 1, 2}, {kDeduplicateWalls}};
   std::vector<std::function<void()>> tasks = {[&] { search(0); }, [&] { search(1); }, [&] { search(2); },
-                                              deduplicate_walls, reduce_walls};
+                                              deduplicate_walls, reduce_walls, finish_walls_for_reach};
   std::array<std::size_t, 3> square_types = {1, 2, 3};
   std::stable_sort(square_types.begin(), square_types.end(),
                    [&](std::size_t a, std::size_t b) { return search_cost(a) > search_cost(b); });
@@ -293,23 +315,15 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   std::mutex searches_mutex;
   std::size_t searches_left = square_searches.size();
   auto searches_end = clock;
-  if (unchanged) {
-    searches_end = std::chrono::steady_clock::now();
-    parallel_tasks(6, threads, [&](std::size_t t) {
-      stop_point(stop);
-      t < 4 ? finish(t) : t == 4 ? finish_walls_for_reach() : finish_floors_for_reach();
-    });
-  } else {
-    parallel_graph(after, threads, [&](std::size_t i) {
-      stop_point(stop);  // a stop ends the graph at the next task, not only inside the searches
-      tasks[i]();
-      if (std::find(square_searches.begin(), square_searches.end(), i) == square_searches.end()) return;
-      const std::lock_guard lock(searches_mutex);
-      if (--searches_left == 0) searches_end = std::chrono::steady_clock::now();
-    });
-  }
-  for (std::size_t t = 0; t < skipped.size(); ++t)
-    if (skipped[t])
+  parallel_graph(after, threads, [&](std::size_t i) {
+    stop_point(stop);  // a stop ends the graph at the next task, not only inside the searches
+    tasks[i]();
+    if (std::find(square_searches.begin(), square_searches.end(), i) == square_searches.end()) return;
+    const std::lock_guard lock(searches_mutex);
+    if (--searches_left == 0) searches_end = std::chrono::steady_clock::now();
+  });
+  for (std::size_t t = 0; t < 12; ++t)
+    if (red[t / 3].skipped[t % 3])
       result.warnings.push_back(std::string(to_string(kAreaSizes[t % 3])) + " " + std::string(to_string(kAreaTypes[t / 3])) +
                                 " areas not searched: too many corner pairs for this room at " +
                                 std::to_string(voxel).substr(0, 5) + " m voxels (a coarser --voxel searches them)");
@@ -318,8 +332,8 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   result.timings.reduce = elapsed_ms(searches_end);
   clock = std::chrono::steady_clock::now();
   for (std::size_t type = 0; type < 4; ++type) {
-    result.counts.found[type] = found_count[type];
-    result.counts.deduplicated[type] = deduplicated_count[type];
+    result.counts.found[type] = red[type].found;
+    result.counts.deduplicated[type] = red[type].deduplicated;
     result.counts.reduced[type] = kept_areas[type].size();  // growth changes extents, not the count
   }
 
@@ -327,7 +341,8 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   for (std::vector<Area>& areas : kept_areas) result.areas.insert(result.areas.end(), areas.begin(), areas.end());
   assign_reach(result.areas, floor_areas, wall_areas, surfaces.floor_y, params, threads);
   result.timings.classify = elapsed_ms(clock);
-  if (cache && !unchanged) cache->keep_reduction(std::move(red), params);
+  for (std::size_t type = 0; type < 4 && cache; ++type)
+    if (!reused[type]) cache->keep_type(type, std::move(red[type]), params);
   return result;
 }
 

@@ -63,24 +63,25 @@ void SearchCache::begin(const GridSpec& spec, const RoomFeatures& features) {
   furniture_ = features.furniture, ceiling_facet_ = features.ceiling_facet, ceiling_ = features.ceiling;
 }
 
-const SearchCache::Reduction* SearchCache::unchanged_reduction(const AreaParams& params) {
-  const auto changed = [](const std::vector<std::uint8_t>& rows) { return std::find(rows.begin(), rows.end(), 1) != rows.end(); };
-  if (all_changed_ || reduction_generation_ + 1 != generation_ || !(params == reduction_params_) ||
-      std::any_of(changed_rows_.begin(), changed_rows_.end(), changed))
+const SearchCache::TypeReduction* SearchCache::unchanged_type(std::size_t type, const AreaParams& params,
+                                                              double dominant_deg) {
+  KeptType& kept_type = types_[type];
+  const std::vector<std::uint8_t>& rows = changed_rows_[type];
+  if (all_changed_ || kept_type.generation + 1 != generation_ || !(params == kept_type.params) ||
+      (type > 0 && kept_type.reduction.dominant_deg != dominant_deg) || std::find(rows.begin(), rows.end(), 1) != rows.end())
     return nullptr;
-  // The searches would find what they kept: their pieces hold for this analysis's features too.
-  for (Kept& kept : kept_) {
+  kept_type.generation = generation_;
+  // The searches would find what they kept, and packing decide as it did.
+  for (std::size_t size = 0; size < 3; ++size) {
+    Kept& kept = kept_[3 * type + size];
     if (kept.generation + 1 == generation_) kept.generation = generation_, total_ += std::size_t(kept.bands);
     if (kept.packed_generation + 1 == generation_) kept.packed_generation = generation_;
   }
-  reduction_generation_ = generation_;
-  return &reduction_;
+  return &kept_type.reduction;
 }
 
-void SearchCache::keep_reduction(Reduction reduction, const AreaParams& params) {
-  reduction_ = std::move(reduction);
-  reduction_params_ = params;
-  reduction_generation_ = generation_;
+void SearchCache::keep_type(std::size_t type, TypeReduction reduction, const AreaParams& params) {
+  types_[type] = {generation_, std::move(reduction), params};
 }
 
 namespace {

@@ -30,19 +30,20 @@ class SearchCache {
                    const SizeRange& range, float fill, const std::stop_token& stop);
   Candidates squares(std::size_t type, std::size_t size, const GridSpec& spec, const RoomFeatures& features,
                      const SizeRange& range, float fill, double dominant_deg, const std::stop_token& stop);
-  // What find_areas derives from the searches' rectangles before it turns them into areas in metres: a function
-  // of the features and the parameters alone.
-  struct Reduction {
-    std::array<std::vector<Sized>, 4> kept;  // per type, packed, in find_areas's order
-    std::vector<Sized> walls, floors;        // deduplicated: V_Wall and V_Floor for reach
-    std::array<std::size_t, 4> found{}, deduplicated{};
-    std::array<bool, 12> skipped{};
-    double dominant_deg = 0.0;
+  // What find_areas derives from one type's searches before it turns them into areas in metres: a function of
+  // the features they read, the parameters and, for squares, the room's main direction.
+  struct TypeReduction {
+    std::vector<Sized> kept;       // packed, in find_areas's order
+    std::vector<Sized> for_reach;  // deduplicated: V_Wall for walls, V_Floor for floors (reach); else empty
+    std::size_t found = 0, deduplicated = 0;
+    std::array<bool, 3> skipped{};  // per size: not searched (too many corner pairs)
+    double dominant_deg = 0.0;      // walls: the main direction they give; squares: the one they were searched in
   };
-  // The previous analysis's Reduction where nothing the searches read changed since and `params` are its own
-  // (every search's kept bands then stay as they are); otherwise nullptr, and find_areas searches and reduces.
-  const Reduction* unchanged_reduction(const AreaParams& params);
-  void keep_reduction(Reduction reduction, const AreaParams& params);
+  // The previous analysis's reduction of `type` where nothing its searches read changed since, `params` are its
+  // own and, for squares, `dominant_deg` is the one it was searched in (the type's kept bands and packing then
+  // hold as they are); otherwise nullptr, and find_areas searches and reduces the type.
+  const TypeReduction* unchanged_type(std::size_t type, const AreaParams& params, double dominant_deg);
+  void keep_type(std::size_t type, TypeReduction reduction, const AreaParams& params);
   // Growth (grow.h) of a type's packed areas, `before` growing, where the previous analysis grew the same areas
   // (bit for bit) over the same features with the same parameters: the areas it grew them into; else nullptr.
   const std::vector<Area>* grown(std::size_t type, const std::vector<Area>& before, const AreaParams& params);
@@ -101,9 +102,12 @@ class SearchCache {
     AreaParams params;
   };
   std::array<Grown, 4> grown_;
-  Reduction reduction_;
-  AreaParams reduction_params_;
-  std::uint64_t reduction_generation_ = 0;
+  struct KeptType {
+    std::uint64_t generation = 0;
+    TypeReduction reduction;
+    AreaParams params;
+  };
+  std::array<KeptType, 4> types_;
   // Counts begin()s. A search's pieces are reused only when kept in the previous one: one skipped (too many
   // corner pairs) or cut short (a stop, an error) since searches everything again.
   std::uint64_t generation_ = 0;

@@ -47,6 +47,64 @@ std::vector<BenchRoom> load_rooms() {
   return rooms;
 }
 
+// A box of side `side` standing on `corner` (its lowest x, y, z), its five faces but the bottom each n x n quads
+// of two triangles: an object a headset meshes as one chunk.
+Scan box_chunk(const glm::vec3& corner, float side, int n) {
+  Scan s;
+  const auto face = [&](const glm::vec3& origin, const glm::vec3& u, const glm::vec3& v) {
+    const auto base = std::uint32_t(s.vertices.size());
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) s.vertices.push_back(origin + u * (float(i) / float(n)) + v * (float(j) / float(n)));
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const std::uint32_t a = base + std::uint32_t(j * (n + 1) + i), b = a + 1, c = a + std::uint32_t(n + 1), d = c + 1;
+        s.indices.insert(s.indices.end(), {a, b, d, a, d, c});
+      }
+  };
+  const glm::vec3 x(side, 0, 0), y(0, side, 0), z(0, 0, side);
+  face(corner + y, x, z);
+  face(corner, x, y);
+  face(corner + z, x, y);
+  face(corner, z, y);
+  face(corner + x, z, y);
+  return s;
+}
+
+using Versions = std::vector<std::pair<std::uint64_t, std::array<Scan, 2>>>;
+
+// Every block of a room into `inc`, and the time of its first result (counter first_ms).
+const AnalysisResult& first_result(benchmark::State& state, IncrementalAnalysis& inc, const Versions& versions) {
+  const auto start = std::chrono::steady_clock::now();
+  for (const auto& [id, two] : versions) inc.set_chunk(id, two[1]);
+  const AnalysisResult& r = inc.result();
+  state.counters["first_ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+// Each iteration: `change` (one chunk set or removed), then the new result; the percentiles of those times,
+// and how many chunks an update voxelized and what share of the area searches' bands it searched.
+template <class Change>
+void time_updates(benchmark::State& state, IncrementalAnalysis& inc, Change change) {
+  std::vector<double> ms;
+  double revoxelized = 0, bands_searched = 0, bands = 0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    change();
+    benchmark::DoNotOptimize(inc.result());
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    revoxelized += double(inc.revoxelized_chunks());
+    bands_searched += double(inc.area_bands_searched()), bands += double(inc.area_bands_total());
+  }
+  std::sort(ms.begin(), ms.end());
+  const auto percentile = [&](double p) { return ms.empty() ? 0.0 : ms[std::size_t(p * double(ms.size() - 1))]; };
+  state.counters["p10_ms"] = percentile(0.1);
+  state.counters["p50_ms"] = percentile(0.5);
+  state.counters["p90_ms"] = percentile(0.9);
+  state.counters["max_ms"] = percentile(1.0);
+  state.counters["revoxelized"] = revoxelized / double(std::max<std::size_t>(1, ms.size()));
+  state.counters["bands_searched"] = bands > 0 ? bands_searched / bands : 0.0;
+}
+
 // Inputs prepared once per room, so each benchmark times only its own stage.
 struct Prepared {
   PreparedInput input;
@@ -170,7 +228,6 @@ int main(int argc, char** argv) {
     // Issue 19: one 2 x 2 m block of the room re-sent (refined: every fifth triangle gone, or back as it was),
     // then the new result, on an IncrementalAnalysis that holds every block. Every block twice, in turn (the
     // iterations are fixed to that), so the percentiles are those of every block of the room.
-    using Versions = std::vector<std::pair<std::uint64_t, std::array<Scan, 2>>>;
     auto versions = std::make_shared<Versions>();
     for (auto& [id, block] : split_into_blocks(room.scan)) {
       Scan refined = block;
@@ -181,34 +238,40 @@ int main(int argc, char** argv) {
     }
     register_case("update/" + room.name, [&room, versions](benchmark::State& state) {
       IncrementalAnalysis inc;
-      const auto first = std::chrono::steady_clock::now();  // the first result: every block voxelized
-      for (const auto& [id, two] : *versions) inc.set_chunk(id, two[1]);
-      inc.result();
-      state.counters["first_ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - first).count();
-      std::size_t turn = 0, revoxelized = 0;
-      std::vector<double> ms;
-      for (auto _ : state) {
+      first_result(state, inc, *versions);
+      std::size_t turn = 0;
+      time_updates(state, inc, [&] {
         const auto& [id, two] = (*versions)[turn % versions->size()];
-        const auto start = std::chrono::steady_clock::now();
         inc.set_chunk(id, two[(turn / versions->size()) % 2]);
-        benchmark::DoNotOptimize(inc.result());
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-        revoxelized += inc.revoxelized_chunks();
         ++turn;
-      }
-      std::sort(ms.begin(), ms.end());
-      const auto percentile = [&](double p) { return ms.empty() ? 0.0 : ms[std::size_t(p * double(ms.size() - 1))]; };
-      state.counters["p10_ms"] = percentile(0.1);
-      state.counters["p50_ms"] = percentile(0.5);
-      state.counters["p90_ms"] = percentile(0.9);
-      state.counters["max_ms"] = percentile(1.0);
-      state.counters["blocks"] = double(versions->size());
+      });
       double block_triangles = 0;
       for (const auto& [id, two] : *versions) block_triangles += double(two[1].indices.size() / 3);
+      state.counters["blocks"] = double(versions->size());
       state.counters["block_triangles"] = block_triangles / double(std::max<std::size_t>(1, versions->size()));
-      state.counters["revoxelized"] = double(revoxelized) / double(std::max<std::size_t>(1, turn));
       counters(state, room);
     })->Iterations(benchmark::IterationCount(2 * std::max<std::size_t>(1, versions->size())));
+    // Issue 19's per-update case: a chunk of 1,960 triangles (a 0.4 m box of fine triangles standing on the
+    // floor) added, then removed, at 24 places spread over the room, the room held in blocks as above.
+    register_case("update_object/" + room.name, [&room, versions](benchmark::State& state) {
+      IncrementalAnalysis inc;
+      const AnalysisResult& first = first_result(state, inc, *versions);
+      const GridSpec grid = first.voxels.grid.spec;
+      const float floor_y = first.floor_y;
+      constexpr std::uint64_t kObject = std::uint64_t{1} << 62;  // beyond split_into_blocks's ids
+      std::size_t turn = 0;
+      time_updates(state, inc, [&] {
+        const std::size_t place = (turn / 2) % 24;
+        const float fx = 0.2f + 0.6f * float(place % 6) / 5.0f, fz = 0.2f + 0.6f * float(place / 6) / 3.0f;
+        const glm::vec3 corner(grid.origin.x + fx * float(grid.nx) * grid.voxel_size, floor_y,
+                               grid.origin.z + fz * float(grid.nz) * grid.voxel_size);
+        if (turn % 2 == 0) inc.set_chunk(kObject, box_chunk(corner, 0.4f, 14));
+        else inc.remove_chunk(kObject);
+        ++turn;
+      });
+      state.counters["object_triangles"] = double(box_chunk({}, 0.4f, 14).indices.size() / 3);
+      counters(state, room);
+    })->Iterations(48);
   }
   // How the area search grows with room size: empty-ish halls of increasing floor area.
   for (const float scale : {0.25f, 0.5f, 1.0f, 1.5f}) {

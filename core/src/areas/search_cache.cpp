@@ -144,7 +144,7 @@ RowBands SearchCache::plan(Kept& kept, std::size_t type, int layers, const SizeR
 }
 
 void SearchCache::drop(Kept& kept) {
-  for (const auto& piece : kept.pieces) kept_bytes_ -= piece.size() * sizeof(Candidates::Item);
+  for (const auto& piece : kept.pieces) kept_bytes_ -= piece.size() * kBytesEach;
   kept = {};
 }
 
@@ -165,7 +165,7 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, const RowBan
     if (!bands.searched[b]) continue;
     for (int layer = 0; layer < kept.layers; ++layer) {
       const std::size_t slot = std::size_t(layer) * band_count + b;
-      kept_bytes_ -= kept.pieces[slot].size() * sizeof(Candidates::Item);
+      kept_bytes_ -= kept.pieces[slot].size() * kBytesEach;
       old.push_back({slot, std::exchange(kept.pieces[slot], {}), std::exchange(kept.states[slot], {}),
                      std::exchange(kept.ranks[slot], {})});
     }
@@ -176,7 +176,7 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, const RowBan
     for (std::size_t i = begin; i < p.end; ++i) kept.pieces[slot].push_back(found.item(i));
     kept.states[slot].assign(p.end - begin, kAbsent);
     kept.ranks[slot].assign(p.end - begin, PackReplay::kUnknownRank);
-    kept_bytes_ += (p.end - begin) * sizeof(Candidates::Item);
+    kept_bytes_ += (p.end - begin) * kBytesEach;
     begin = p.end;
   }
   kept.generation = generation_;

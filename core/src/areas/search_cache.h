@@ -77,6 +77,8 @@ class SearchCache {
     bool replay_known = false;
   };
   static constexpr std::uint8_t kAbsent = 0, kRefused = 1, kPacked = 2;
+  // What a kept rectangle takes: itself, its packing state and its rank.
+  static constexpr std::size_t kBytesEach = sizeof(Candidates::Item) + sizeof(std::uint8_t) + sizeof(std::uint32_t);
   // A slot a search replaced, as it was.
   struct Replaced {
     std::size_t slot;

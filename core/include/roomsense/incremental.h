@@ -3,14 +3,18 @@
 //
 // An IncrementalAnalysis holds chunks by id (added, replaced, removed) and answers result(): the analysis of
 // all its chunks, in id order, as one scan. That result equals analyze(combined_scan(), options) exactly,
-// timings aside. What it reuses between results today: each chunk's voxels (its triangles' marks on the grid,
-// kept per chunk while the grid and the chunk are unchanged), so a change voxelizes only the chunks it
-// touched; and each area search's rectangles by bands of 8 grid rows, so that a band is searched again only
-// where the features it reads changed (areas/search_cache.h); where no feature changed, the searches'
-// deduplication and packing too, so that only the areas in metres, their growth and reach are derived again;
-// and where the grid, the labels' voxels and the storeys' levels are as before (a chunk refined within its
-// voxels), the features and bounds. Levels, surface heights and classification are derived again in full.
-// An unchanged set of chunks returns the previous result at once.
+// timings aside. What it reuses between results, each only where what it reads is as before:
+// - each chunk's voxels (its triangles' marks on the grid, kept per chunk while the grid and the chunk are
+//   unchanged): a change voxelizes only the chunks it touched;
+// - the features and bounds, where the grid, the labels' voxels and the storeys' levels are the previous
+//   result's (a chunk refined within its voxels);
+// - each area search's rectangles by bands of 8 grid rows: a band is searched again only within the search's
+//   reach of a row whose features changed (areas/search_cache.h);
+// - an area type's whole reduction (deduplication, packing) where nothing its searches read changed, and its
+//   growth where its packed areas are also as before;
+// - packing's decisions away from the rectangles that changed (areas/reduce.h: PackReplay).
+// Levels, surface heights, reach and the rest of the features, areas and bounds are derived again. An
+// unchanged set of chunks returns the previous result at once.
 #pragma once
 #include "roomsense/analysis.h"
 #include "roomsense/scan.h"

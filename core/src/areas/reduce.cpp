@@ -15,6 +15,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 namespace roomsense::detail {
@@ -252,17 +253,16 @@ bool ChangedRegion::touches(const Box& b) const {
 
 namespace {
 
-// One item of a replayed packing (PackReplay): its previous decision where nothing changed near it, else
-// `decide()`, noting a change where the decision differs.
-template <class Decide>
-bool replayed(const PackReplay* replay, std::size_t i, const Candidate& c, ChangedRegion& changed, Decide decide) {
-  if (!replay) return decide();
-  const int previous = replay->previous[i];
-  const ChangedRegion::Box box = ChangedRegion::around(c);
-  if (previous >= 0 && !changed.touches(box)) return previous == 1;
-  const bool packed = decide();
-  if (packed != (previous == 1)) changed.add(box);  // an item refused now and unknown before changes nothing
-  return packed;
+// A replayed packing (PackReplay): item i's previous decision where nothing that changed lies near it, else
+// nothing (the packer tests it, and notes the change where its decision differs).
+std::optional<bool> previous_decision(const PackReplay* replay, std::size_t i, const Candidate& c,
+                                      const ChangedRegion& changed) {
+  if (!replay || replay->previous[i] < 0 || changed.touches(ChangedRegion::around(c))) return std::nullopt;
+  return replay->previous[i] == 1;
+}
+void note_decision(const PackReplay* replay, std::size_t i, const Candidate& c, bool packed, ChangedRegion& changed) {
+  // An item refused now and unknown before changes nothing.
+  if (replay && packed != (replay->previous[i] == 1)) changed.add(ChangedRegion::around(c));
 }
 
 }  // namespace
@@ -276,9 +276,10 @@ std::vector<std::size_t> pack_walls(const SizedList& walls, const PackReplay* re
     for (const Candidate& c : replay->gone) changed.add(ChangedRegion::around(c));
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const Candidate c = walls[i].c();
-    const bool free = replayed(replay, i, c, changed, [&] {
-      return wall_samples(c, 0, [&](long x, long z, long y0, long y1) { return !taken.any(x, z, y0, y1); });
-    });
+    const std::optional<bool> previous = previous_decision(replay, i, c, changed);
+    const bool free = previous ? *previous
+                               : wall_samples(c, 0, [&](long x, long z, long y0, long y1) { return !taken.any(x, z, y0, y1); });
+    if (!previous) note_decision(replay, i, c, free, changed);
     if (!free) continue;
     // Marked a voxel thick either side: a rectangle one voxel in front of another on a wall off the axes
     // (the staircase of its voxels) covers the same wall.
@@ -440,12 +441,11 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const Pac
     const std::size_t i = order[k];
     const Candidate c = squares[i].unpack();
     const int level = c.corners[0].y;
-    const bool free = replayed(replay, i, c, changed_, [&] {
-      bool none = true;
-      for (int y = level - level_tolerance_; y <= level + level_tolerance_ && none; ++y)
-        none = square_samples(c, [&](long z, long x0, long x1) { return !taken_->any(y, z, x0, x1); });
-      return none;
-    });
+    const std::optional<bool> previous = previous_decision(replay, i, c, changed_);
+    bool free = previous.value_or(true);
+    for (int y = level - level_tolerance_; y <= level + level_tolerance_ && free && !previous; ++y)
+      free = square_samples(c, [&](long z, long x0, long x1) { return !taken_->any(y, z, x0, x1); });
+    if (!previous) note_decision(replay, i, c, free, changed_);
     if (!free) continue;
     square_samples(c, [&](long z, long x0, long x1) { return taken_->set(level, z, x0, x1), true; });
     kept.push_back(i);

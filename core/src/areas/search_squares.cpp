@@ -107,7 +107,11 @@ int square_layers(const RoomFeatures& features, Surface surface) {
   return surface == Surface::Furniture ? features.y_end - features.levels.floor : 1;
 }
 
-Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Surface surface,
+namespace {
+
+// The search whole (kBanded false: the code the full analysis runs, without a test of the bands), or by bands.
+template <bool kBanded>
+Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Surface surface,
                           const SizeRange& size, float fill, double dominant_deg, const std::stop_token& stop,
                           BandedSearch banded) {
   // The orientations, split by the parity of dx - dz (= that of dx + dz), most nearly aligned with the room
@@ -205,7 +209,7 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
     const glm::ivec2 near_firsts_lo = glm::max(firsts.lo - corner_reach, glm::ivec2(0));
     const glm::ivec2 near_firsts_hi = glm::min(firsts.hi + corner_reach, glm::ivec2(spec.nx - 1, spec.nz - 1));
     // By bands: the rows of centres searched, and the cells their squares read (within corner_reach).
-    if (banded.bands) {
+    if constexpr (kBanded) {
       int lo = spec.nz, hi = -1;
       for (int z = near_firsts_lo.y; z <= near_firsts_hi.y; ++z)
         if (banded.bands->searches(z)) lo = std::min(lo, z), hi = z;
@@ -279,7 +283,7 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
     const int cz_last = std::min(2 * near_firsts_hi.y + 1, 2 * (spec.nz - 1));
     int band = -1;  // by bands: the band of the rows searched last in this layer
     for (int cz = 2 * near_firsts_lo.y; cz <= cz_last; ++cz, stop_point(stop)) {
-      if (banded.bands) {
+      if constexpr (kBanded) {
         const int b = banded.bands->band(cz / 2);
         if (!banded.bands->searches(cz / 2)) continue;
         if (b != band && band >= 0) banded.pieces->push_back({layer, band, out.size()});
@@ -360,9 +364,19 @@ Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Su
         if (h != kNone && a != kNone && h > a) add(h, false);
       }
     }
-    if (band >= 0) banded.pieces->push_back({layer, band, out.size()});
+    if constexpr (kBanded)
+      if (band >= 0) banded.pieces->push_back({layer, band, out.size()});
   }
   return out;
+}
+
+}  // namespace
+
+Candidates search_squares(const GridSpec& spec, const RoomFeatures& features, Surface surface,
+                          const SizeRange& size, float fill, double dominant_deg, const std::stop_token& stop,
+                          BandedSearch banded) {
+  return banded.bands ? squares_search<true>(spec, features, surface, size, fill, dominant_deg, stop, banded)
+                      : squares_search<false>(spec, features, surface, size, fill, dominant_deg, stop, banded);
 }
 
 }  // namespace roomsense::detail

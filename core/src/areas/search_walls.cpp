@@ -118,7 +118,11 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
 // A rectangle's cells lie between its corners, |dz| <= max_d, and may touch one more row each way.
 int wall_search_reach(const SizeRange& size) { return int(std::floor(size.max_d)) + 2; }
 
-Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, const NormalCounts& normals,
+namespace {
+
+// The search whole (kBanded false: the code the full analysis runs, without a test of the bands), or by bands.
+template <bool kBanded>
+Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, const NormalCounts& normals,
                         const SizeRange& size, float fill, const std::stop_token& stop, BandedSearch banded) {
   const std::vector<RingOffset> own_ring = banded.ring ? std::vector<RingOffset>() : ring_offsets(size, Shape::WallTop);
   const std::vector<RingOffset>& ring = banded.ring ? *banded.ring : own_ring;
@@ -191,7 +195,7 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
     const std::size_t bit = centre_bit(2 * x1 + o.dx, 2 * y1 - h, 2 * z1 + o.dz);
     if (centres.test(bit) || !valid(x1, z1, o, y1, h)) return;
     centres.set(bit);
-    if (banded.bands) band_bits.push_back(bit);
+    if constexpr (kBanded) band_bits.push_back(bit);
     out.push_back(glm::ivec3(x1, y1, z1), std::uint32_t(r));
   };
   const auto end_band = [&](int band) {
@@ -200,7 +204,7 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
     band_bits.clear();
   };
   for (int z1 = 0; z1 < spec.nz; ++z1, stop_point(stop)) {
-    if (banded.bands) {
+    if constexpr (kBanded) {
       const RowBands& b = *banded.bands;
       if (z1 > 0 && b.band(z1 - 1) != b.band(z1) && b.searches(z1 - 1)) end_band(b.band(z1 - 1));
       if (!b.searches(z1)) continue;
@@ -230,8 +234,17 @@ Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, cons
       }
     }
   }
-  if (banded.bands && spec.nz > 0 && banded.bands->searches(spec.nz - 1)) end_band(banded.bands->band(spec.nz - 1));
+  if constexpr (kBanded)
+    if (spec.nz > 0 && banded.bands->searches(spec.nz - 1)) end_band(banded.bands->band(spec.nz - 1));
   return out;
+}
+
+}  // namespace
+
+Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, const NormalCounts& normals,
+                        const SizeRange& size, float fill, const std::stop_token& stop, BandedSearch banded) {
+  return banded.bands ? walls_search<true>(spec, features, normals, size, fill, stop, banded)
+                      : walls_search<false>(spec, features, normals, size, fill, stop, banded);
 }
 
 }  // namespace roomsense::detail

@@ -17,6 +17,8 @@
 #include <map>
 #include <optional>
 #include <random>
+#include <stop_token>
+#include <thread>
 
 namespace {
 
@@ -185,6 +187,40 @@ TEST(Incremental, BadChunksAreRefusedAndNothingIsLost) {
   EXPECT_TRUE(inc.remove_chunk(2));
   EXPECT_EQ(inc.result().areas.size(), areas);  // the room as before: chunk 1 kept its voxels
   EXPECT_EQ(inc.revoxelized_chunks(), 0u);
+}
+
+// A result cancelled at any point (the voxels, the features, halfway through the area searches and their
+// reductions) leaves nothing half-kept: the next result, without a stop, equals the full analysis. The stops
+// come after delays spread over an update's time, so they land in every stage.
+TEST(Incremental, AResultCancelledAnywhereLeavesTheNextEqualToTheFullAnalysis) {
+  const std::map<std::uint64_t, Scan> tiles = split_into_blocks(synth::generate_builtin_source("synthetic:thesis-room1"));
+  IncrementalAnalysis inc;
+  for (const auto& [id, chunk] : tiles) inc.set_chunk(id, chunk);
+  inc.result();
+  std::mt19937 rng(35);
+  std::size_t cancelled = 0;
+  for (int step = 0; step < 24; ++step) {
+    const auto it = std::next(tiles.begin(), std::ptrdiff_t(rng() % tiles.size()));
+    if (step % 3 == 2) inc.remove_chunk(it->first);
+    else inc.set_chunk(it->first, step % 3 == 0 ? refined(it->second) : it->second);
+    std::stop_source stop;
+    inc.set_stop(stop.get_token());
+    std::thread stopper([&stop, delay = std::chrono::microseconds(500 * step)] {
+      std::this_thread::sleep_for(delay);
+      stop.request_stop();
+    });
+    try {
+      inc.result();
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::Cancelled) << e.what();
+      ++cancelled;
+    }
+    stopper.join();
+    inc.set_stop({});
+    expect_same(inc.result(), analyze(inc.combined_scan()), "after step " + std::to_string(step));
+    if (step % 3 == 2) inc.set_chunk(it->first, it->second);
+  }
+  EXPECT_GT(cancelled, 0u);
 }
 
 }  // namespace

@@ -30,6 +30,7 @@ struct GridSpec {
   bool contains(int x, int y, int z) const { return x >= 0 && y >= 0 && z >= 0 && x < nx && y < ny && z < nz; }
   // The world position of lattice point (x,y,z): the minimum corner of voxel (x,y,z).
   glm::vec3 lattice_to_world(float x, float y, float z) const { return origin + glm::vec3(x, y, z) * voxel_size; }
+  bool operator==(const GridSpec&) const = default;
 };
 
 // Eq. 3.4/3.5: the grid spanning [lo, hi]. Throws Error(GridTooLarge) past `voxel_budget` voxels, and

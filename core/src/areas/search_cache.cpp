@@ -14,10 +14,6 @@
 namespace roomsense::detail {
 namespace {
 
-bool same_spec(const GridSpec& a, const GridSpec& b) {
-  return a.origin == b.origin && a.voxel_size == b.voxel_size && a.nx == b.nx && a.ny == b.ny && a.nz == b.nz;
-}
-
 // Marks row z where a per-column (`per_column` 1) or per-voxel (ny) array differs from its previous copy.
 template <class T>
 void mark_changed(const std::vector<T>& now, const std::vector<T>& before, std::size_t per_column, const GridSpec& spec,
@@ -41,7 +37,7 @@ void SearchCache::begin(const GridSpec& spec, const RoomFeatures& features) {
   searched_ = 0, total_ = 0;
   std::vector<int> facet_levels;
   for (const CeilingFacet& f : features.facets) facet_levels.push_back(f.level);
-  all_changed_ = !same_spec(spec, spec_) || features.levels != levels_ || features.y_end != y_end_ ||
+  all_changed_ = spec != spec_ || features.levels != levels_ || features.y_end != y_end_ ||
                  facet_levels != facet_levels_;
   for (std::vector<std::uint8_t>& rows : changed_rows_) rows.assign(std::size_t(spec.nz), all_changed_ ? 1 : 0);
   if (!all_changed_) {

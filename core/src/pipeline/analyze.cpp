@@ -236,10 +236,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   for (const Storey& storey : r.storeys) storey_levels.push_back(storey.levels);
   std::optional<AnalysisCaches::Derived> derived;
   if (caches) derived = std::exchange(caches->derived, std::nullopt);
-  const auto same_spec = [](const GridSpec& a, const GridSpec& b) {
-    return a.origin == b.origin && a.voxel_size == b.voxel_size && a.nx == b.nx && a.ny == b.ny && a.nz == b.nz;
-  };
-  const bool same_input = derived && same_spec(derived->spec, spec) && derived->levels == storey_levels &&
+  const bool same_input = derived && derived->spec == spec && derived->levels == storey_levels &&
                           derived->cells == r.voxels.grid.cells && derived->labels.present == labels.present &&
                           derived->labels.masks == labels.masks;
   if (derived && !same_input) derived.reset();

@@ -49,10 +49,6 @@ std::uint64_t content_hash(const Scan& scan) {
   return h.value();
 }
 
-bool same_spec(const GridSpec& a, const GridSpec& b) {
-  return a.origin == b.origin && a.voxel_size == b.voxel_size && a.nx == b.nx && a.ny == b.ny && a.nz == b.nz;
-}
-
 }  // namespace
 
 // Serves the voxel stage of analyze() from the chunks' kept voxels. Before each analysis the owner says where
@@ -83,7 +79,7 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
       revoxelized_ = layout_.size();
       return CpuVoxelStage(threads_).run(request);
     }
-    if (!same_spec(request.spec, spec_)) kept_.clear(), spec_ = request.spec;
+    if (request.spec != spec_) kept_.clear(), spec_ = request.spec;
     std::map<std::uint64_t, Kept> now;
     try {
       for (const Layout& chunk : layout_) {
@@ -135,7 +131,7 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     // One scratch grid for every chunk, cleared over each chunk's box after use: a chunk costs its box, not the
     // grid (the first result of a room in a hundred chunks cleared the whole grid a hundred times).
     // A failure here reaches run(), which drops the scratch grid with whatever marks it holds.
-    if (!same_spec(scratch_.spec, request.spec)) scratch_ = VoxelGrid(request.spec);
+    if (scratch_.spec != request.spec) scratch_ = VoxelGrid(request.spec);
     VoxelGrid& grid = scratch_;
     voxelize_cpu_into(part, grid, threads_, &k.tests);
     const GridSpec& s = request.spec;

@@ -170,15 +170,19 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   std::vector<ReachFloor> floor_areas;
   std::array<std::vector<Area>, 4> kept_areas;
   // The areas in metres of what the reduction keeps; each type's grown (grow.h).
+  // Without a cache the lists in voxels go once in metres (a large floor's are many).
   const auto finish_walls_for_reach = [&] {
     for (const Sized& s : red[0].for_reach) wall_areas.emplace_back(to_area(s, AreaType::Wall, context));
+    if (!cache) red[0].for_reach = {};
   };
   const auto finish_floors_for_reach = [&] {
     for (const Sized& s : red[1].for_reach) floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
   };
   const auto finish = [&](std::size_t type) {
     std::vector<Area>& areas = kept_areas[type];
+    areas.reserve(red[type].kept.size());
     for (const Sized& s : red[type].kept) areas.push_back(to_area(s, kAreaTypes[type], context));
+    if (!cache) red[type].kept = {};
     if (!params.grow) return;
     if (const std::vector<Area>* same = cache ? cache->grown(type, areas, params) : nullptr) {
       areas = *same;
@@ -267,8 +271,12 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     }
     Candidates& squares = found[type][size];
     const AreaSize area_size = kAreaSizes[size];
+    // V_Floor: kept in voxels only for an IncrementalAnalysis (which may place it again at another floor height);
+    // a large floor's are many, so the whole analysis holds them in metres alone.
     red[type].deduplicated += deduplicators[type]->add(squares, area_size, [&](const Sized& s) {
-      if (type == 1) red[type].for_reach.push_back(s);
+      if (type != 1) return;
+      if (cache) red[type].for_reach.push_back(s);
+      else floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
     });
     std::vector<std::uint32_t> ranks;
     const std::vector<std::size_t> packed =

@@ -1,8 +1,9 @@
-// Beyond the thesis (issue 19): the 12 area searches of one storey kept between the analyses of an
-// IncrementalAnalysis, by bands of grid rows (search.h's RowBands), so that an analysis searches again only
-// the bands whose rectangles may read a row whose features changed, and takes the others' rectangles as they
-// were found. Each search's result equals the whole search's exactly (tests/unit/incremental_test.cpp replays
-// rooms chunk by chunk against full analyses).
+// Beyond the thesis (issue 19): what find_areas found for one storey, kept between the analyses of an
+// IncrementalAnalysis: the 12 searches' rectangles by bands of grid rows (search.h's RowBands), so that an
+// analysis searches again only the bands whose rectangles may read a row whose features changed; each
+// rectangle's packing decision and rank, for packing's replay (reduce.h); each area type's reduction and
+// growth, for a type nothing of which changed. Every result equals the whole analysis's exactly
+// (tests/unit/incremental_test.cpp replays rooms chunk by chunk against full analyses).
 #pragma once
 #include "reduce.h"
 #include "ring_offsets.h"
@@ -20,9 +21,8 @@ class SearchCache {
  public:
   static constexpr int kBandRows = 8;
 
-  // Before an analysis's searches: compares the features they and growth read with the previous analysis's, row
-  // by row.
-  // Every band is searched again where the grid, the levels, I_yEnd or the ceiling facets' levels changed.
+  // Before an analysis's searches: compares the features they and growth read with the previous analysis's,
+  // row by row. Everything is derived again where the grid, the levels, I_yEnd or the facets' levels changed.
   void begin(const GridSpec& spec, const RoomFeatures& features);
   // search_walls for size class `size`, and search_squares for type 1-3 (Surface) and `size`, from the kept
   // bands where nothing they read changed. Calls for different searches may run side by side.

@@ -234,7 +234,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   // the previous analysis's.
   std::vector<FloorCeiling> storey_levels;
   for (const Storey& storey : r.storeys) storey_levels.push_back(storey.levels);
-  std::optional<AnalysisCaches::Derived> derived;
+  std::optional<DerivedFromVoxels> derived;
   if (caches) derived = std::exchange(caches->derived, std::nullopt);
   const bool same_input = derived && derived->spec == spec && derived->levels == storey_levels &&
                           derived->cells == r.voxels.grid.cells && derived->labels.present == labels.present &&

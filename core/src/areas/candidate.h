@@ -69,15 +69,14 @@ class Candidates {
   }
 
   void push_back(glm::ivec3 first, std::uint32_t shape) {
-    if (glm::any(glm::lessThan(first, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(first, limit_)) ||
-        shape >= shapes_.size())
+    if (glm::any(glm::lessThan(first, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(first, limit_)))
       throw std::logic_error("a candidate outside its search's grid");
     const std::uint64_t cell = (((std::uint64_t(first.x) << z_bits_) | std::uint64_t(first.z)) << y_bits_) | std::uint64_t(first.y);
     push_item({std::uint32_t(cell), std::uint32_t(cell >> 32), shape});
   }
   // An item of a Candidates made with the same grid, levels and shapes (SearchCache's kept pieces).
   void push_item(const Item& item) {
-    if (item.shape >= shapes_.size()) throw std::logic_error("a candidate of another search");
+    if (item.shape >= shapes_.size()) throw std::logic_error("a candidate outside its search's shapes");
     if (size_ % kBlock == 0) blocks_.push_back(std::make_unique<Item[]>(kBlock));
     blocks_.back()[size_ % kBlock] = item;
     ++size_;

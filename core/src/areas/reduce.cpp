@@ -206,42 +206,32 @@ ChangedRegion::Box ChangedRegion::around(const Candidate& c) {
   return {b.lo - 2, b.hi + 2};
 }
 
+ChangedRegion::ChangedRegion(const Box& columns)
+    : origin_(columns.lo),
+      columns_(std::max(1, (columns.hi.x - columns.lo.x) / kBlock + 1)),
+      rows_(std::max(1, (columns.hi.y - columns.lo.y) / kBlock + 1)),
+      words_per_row_(std::size_t(columns_ + 63) / 64),
+      bits_(words_per_row_ * std::size_t(rows_), 0) {}
+
 ChangedRegion::Blocks ChangedRegion::blocks(const Box& b) const {
-  const auto block = [&](glm::ivec2 column) { return glm::ivec2(floor_int(double(column.x - origin_.x) / kBlock),
-                                                                floor_int(double(column.y - origin_.y) / kBlock)); };
-  return {glm::max(block(b.lo), glm::ivec2(0)), glm::min(block(b.hi), glm::ivec2(columns_ - 1, rows_ - 1))};
+  const auto block = [&](glm::ivec2 column) {
+    return glm::clamp((glm::max(column, origin_) - origin_) / kBlock, glm::ivec2(0), glm::ivec2(columns_ - 1, rows_ - 1));
+  };
+  return {block(b.lo), block(b.hi)};
 }
 
 void ChangedRegion::add(const Box& b) {
-  // The first box sets the origin; a box beyond the blocks there are grows them (copied: rare, and small).
-  if (empty_) origin_ = b.lo - 64 * kBlock, columns_ = 0, rows_ = 0;
-  const glm::ivec2 need_lo = glm::ivec2(floor_int(double(b.lo.x - origin_.x) / kBlock), floor_int(double(b.lo.y - origin_.y) / kBlock));
-  const glm::ivec2 need_hi = glm::ivec2(floor_int(double(b.hi.x - origin_.x) / kBlock), floor_int(double(b.hi.y - origin_.y) / kBlock));
-  if (need_lo.x < 0 || need_lo.y < 0 || need_hi.x >= columns_ || need_hi.y >= rows_) {
-    const glm::ivec2 shift = glm::max(-need_lo, glm::ivec2(0));
-    const glm::ivec2 size = glm::max(glm::ivec2(columns_, rows_), need_hi + 1) + shift;
-    ChangedRegion grown;
-    grown.origin_ = origin_ - shift * kBlock, grown.columns_ = size.x + 16, grown.rows_ = size.y + 16;
-    grown.bits_.assign(grown.words_per_row() * std::size_t(grown.rows_), 0);
-    for (int z = 0; z < rows_; ++z)
-      for (int x = 0; x < columns_; ++x)
-        if ((bits_[std::size_t(z) * words_per_row() + std::size_t(x / 64)] >> (x % 64)) & 1u) {
-          const int gx = x + shift.x, gz = z + shift.y;
-          grown.bits_[std::size_t(gz) * grown.words_per_row() + std::size_t(gx / 64)] |= std::uint64_t{1} << (gx % 64);
-        }
-    *this = std::move(grown);
-  }
   empty_ = false;
   const Blocks k = blocks(b);
   for (int z = k.lo.y; z <= k.hi.y; ++z)
-    for (int x = k.lo.x; x <= k.hi.x; ++x) bits_[std::size_t(z) * words_per_row() + std::size_t(x / 64)] |= std::uint64_t{1} << (x % 64);
+    for (int x = k.lo.x; x <= k.hi.x; ++x) bits_[std::size_t(z) * words_per_row_ + std::size_t(x / 64)] |= std::uint64_t{1} << (x % 64);
 }
 
 bool ChangedRegion::touches(const Box& b) const {
   if (empty_) return false;
   const Blocks k = blocks(b);
   for (int z = k.lo.y; z <= k.hi.y; ++z) {
-    const std::uint64_t* row = bits_.data() + std::size_t(z) * words_per_row();
+    const std::uint64_t* row = bits_.data() + std::size_t(z) * words_per_row_;
     for (int x = k.lo.x; x <= k.hi.x; x = (x / 64 + 1) * 64) {
       const int last = std::min(k.hi.x, (x / 64) * 64 + 63);
       const std::uint64_t mask = (~std::uint64_t{0} >> (63 - (last % 64))) & (~std::uint64_t{0} << (x % 64));
@@ -271,7 +261,7 @@ std::vector<std::size_t> pack_walls(const SizedList& walls, const PackReplay* re
   const SampleBox box = sample_box(walls);
   SampleRaster taken(box.x_lo, box.x_hi, box.z_lo, box.z_hi, box.y_lo, box.y_hi);
   std::vector<std::size_t> kept;
-  ChangedRegion changed;
+  ChangedRegion changed({{int(box.x_lo / 2), int(box.z_lo / 2)}, {int(box.x_hi / 2), int(box.z_hi / 2)}});
   if (replay)
     for (const Candidate& c : replay->gone) changed.add(ChangedRegion::around(c));
   for (std::size_t i = 0; i < walls.size(); ++i) {
@@ -332,6 +322,7 @@ SquarePacker::SquarePacker(const GridSpec& spec, int level_tolerance, double dom
       // Per level, rows of half-voxel samples along x over the grid's columns: corners are voxel indices in the
       // grid (at most a level beyond, for a top's y_Actual) and samples lie within a voxel and a half of them.
       taken_(std::make_unique<SampleRaster>(-2, spec.ny + 2, -4, 2L * spec.nz + 4, -4, 2L * spec.nx + 4)),
+      changed_({{0, 0}, {spec.nx - 1, spec.nz - 1}}),  // the squares' corners lie in the grid's columns
       stop_(std::move(stop)) {}
 SquarePacker::~SquarePacker() = default;
 

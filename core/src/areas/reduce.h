@@ -68,12 +68,6 @@ double dominant_direction_deg(const std::vector<Sized>& walls);
 // The angle between a square's first edge and the main direction, modulo 90°: in [0, 45].
 double misalignment_deg(const Candidate& square, double dominant_deg);
 
-// Packing, beyond the thesis (issue 14). Eq. 3.45-3.53 keep a rectangle unless one of its corners or edge
-// midpoints lies in a kept one (walls widened by 2 voxels), which both leaves gaps (the widening, strips no
-// test point reaches) and lets rotated squares overlap. Here a rectangle is kept unless it shares any of its
-// surface (sampled on a half-voxel raster) with a kept one, in order: large, medium, small, and within a size
-// squares aligned with the room's main direction first, so that large areas tile the free surface and
-// smaller ones fill what they leave. Returns the indices kept.
 // IncrementalAnalysis (search_cache.h): packing replayed against the previous analysis's. An item keeps its
 // previous decision unless an item before it in packing order that is new, gone, or decided otherwise now lies
 // within reach of its samples; only those are tested, so the result is the whole packing's.
@@ -87,12 +81,14 @@ struct PackReplay {
 };
 
 // Where the items a replay tests again lie: blocks of 4 x 4 voxel columns around the items that changed, a bit
-// each, in rows of 64-bit words (a test is a word or two per row of blocks).
+// each, in rows of 64-bit words (a test is a word or two per row of blocks), over the columns the items lie in.
+// A box reaching past them counts at their edge: it may find more than it should, never less.
 class ChangedRegion {
  public:
   struct Box {
     glm::ivec2 lo, hi;  // columns (x, z), inclusive
   };
+  explicit ChangedRegion(const Box& columns);
   // A rectangle's samples, marks and conflicts lie within its corners' columns and two more around them.
   static Box around(const Candidate& c);
   void add(const Box& b);
@@ -103,14 +99,20 @@ class ChangedRegion {
   struct Blocks {
     glm::ivec2 lo, hi;
   };
-  Blocks blocks(const Box& b) const;  // clamped to the blocks there are; empty where b lies outside them
-  std::size_t words_per_row() const { return std::size_t(columns_) / 64 + 1; }
-  int columns_ = 0, rows_ = 0;  // blocks, grown to what add() is given
-  glm::ivec2 origin_{0};        // the first block's column
+  Blocks blocks(const Box& b) const;  // clamped to the region's blocks
+  glm::ivec2 origin_;  // the first block's first column
+  int columns_, rows_;  // blocks
+  std::size_t words_per_row_;
   std::vector<std::uint64_t> bits_;
   bool empty_ = true;
 };
 
+// Packing, beyond the thesis (issue 14). Eq. 3.45-3.53 keep a rectangle unless one of its corners or edge
+// midpoints lies in a kept one (walls widened by 2 voxels), which both leaves gaps (the widening, strips no
+// test point reaches) and lets rotated squares overlap. Here a rectangle is kept unless it shares any of its
+// surface (sampled on a half-voxel raster) with a kept one, in order: large, medium, small, and within a size
+// squares aligned with the room's main direction first, so that large areas tile the free surface and
+// smaller ones fill what they leave. Returns the indices kept.
 std::vector<std::size_t> pack_walls(const SizedList& walls, const PackReplay* replay = nullptr);
 // The columns a square may rest on: free floor D or free ceiling E (`mask`), or a furniture top C at a square's
 // level (`top`: the column's level, equal or one below, Eq. 3.41). Inline: packing asks it for every sample of

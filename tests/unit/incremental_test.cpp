@@ -189,6 +189,41 @@ TEST(Incremental, BadChunksAreRefusedAndNothingIsLost) {
   EXPECT_EQ(inc.revoxelized_chunks(), 0u);
 }
 
+// Chunks with NaN vertices and with outliers (a vertex a kilometre away) among clean ones: the input checks,
+// which an IncrementalAnalysis runs chunk by chunk, skip and reject exactly what analyze() does on the
+// combined scan, whether they arrive, are replaced or leave.
+TEST(Incremental, ChunksWithNaNVerticesOrOutliersEqualTheFullAnalysis) {
+  const Scan room = synth::generate_builtin_source("synthetic:default");
+  const std::map<std::uint64_t, Scan> tiles = split_into_blocks(room, 2.0f);
+  IncrementalAnalysis inc;
+  for (const auto& [id, tile] : tiles) inc.set_chunk(id, tile);
+  const auto check = [&](const std::string& what) {
+    const AnalysisResult want = analyze(inc.combined_scan());
+    expect_same(inc.result(), want, what);
+  };
+  check("clean");
+  const std::uint64_t first = tiles.begin()->first, last = tiles.rbegin()->first;
+  Scan with_nan = tiles.at(first);
+  with_nan.vertices[0] = glm::vec3(NAN, 0.0f, 0.0f);
+  Scan with_outlier = tiles.at(last);
+  with_outlier.vertices.back() += glm::vec3(1000.0f, 0.0f, 0.0f);
+  inc.set_chunk(first, with_nan);
+  check("a NaN vertex in the first chunk");
+  EXPECT_GT(inc.result().input.skipped_vertices, 0u);
+  inc.set_chunk(last, with_outlier);
+  check("and an outlier in the last");
+  EXPECT_GT(inc.result().input.outlier_vertices, 0u);
+  inc.set_chunk(first, tiles.at(first));
+  check("the NaN vertex replaced");
+  inc.set_chunk(7, with_outlier);  // before every tile in id order
+  check("an outlier chunk in front");
+  inc.remove_chunk(7);
+  inc.set_chunk(last, tiles.at(last));
+  check("clean again");
+  EXPECT_EQ(inc.result().input.outlier_vertices, 0u);
+  EXPECT_EQ(inc.result().input.skipped_vertices, 0u);
+}
+
 // A result cancelled at any point (the voxels, the features, halfway through the area searches and their
 // reductions) leaves nothing half-kept: the next result, without a stop, equals the full analysis. The stops
 // come after delays spread over an update's time, so they land in every stage.

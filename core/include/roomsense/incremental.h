@@ -69,6 +69,8 @@ class IncrementalAnalysis {
     std::uint64_t hash = 0;  // of its vertices, indices and labels
   };
   class ChunkVoxelStage;
+  // Brings the kept combined scan (detail::CombinedScan) up to the chunks.
+  void update_combined();
 
   AnalysisOptions options_;
   std::map<std::uint64_t, Chunk> chunks_;

@@ -3,7 +3,9 @@
 #pragma once
 #include "roomsense/input.h"
 
+#include <cmath>
 #include <span>
+#include <vector>
 
 namespace roomsense::detail {
 
@@ -18,7 +20,24 @@ struct InputView {
   std::span<const std::uint32_t> indices;
 };
 
-// prepare_input's checks and errors; the views are valid while `scan` and the result live.
-InputView view_input(const Scan& scan, bool reject_outliers);
+// A run of a scan's vertices (a chunk's, for an IncrementalAnalysis): how many there are, how many are finite,
+// and the bounds of those.
+struct VertexRun {
+  std::size_t count = 0, finite = 0;
+  glm::vec3 lo{INFINITY}, hi{-INFINITY};
+};
+VertexRun summarize_vertices(std::span<const glm::vec3> vertices);
+
+// What the caller of view_input knows of the scan already: its vertices as consecutive runs (summed, every
+// vertex), and whether every index is known to be in range. An IncrementalAnalysis knows both for each chunk, so
+// a chunk that did not change costs the checks nothing but its run.
+struct KnownInput {
+  std::vector<VertexRun> runs;
+  bool indices_in_range = false;
+};
+
+// prepare_input's checks and errors; the views are valid while `scan` and the result live. `known`, where not
+// null, must describe `scan` (runs that do not cover its vertices exactly are ignored).
+InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* known = nullptr);
 
 }  // namespace roomsense::detail

@@ -12,7 +12,7 @@ namespace {
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// The [q, 1-q] quantiles of one axis, widened by the outlier margin. Quantiles of an evenly strided sample
+// The [q, 1-q] quantiles of one axis over the kept vertices (`keep` empty: all), widened by the outlier margin. Quantiles of an evenly strided sample
 // of at most kQuantileSample vertices are as good for this and keep large scans cheap.
 constexpr std::size_t kQuantileSample = 16384;
 std::pair<float, float> robust_range(const std::vector<glm::vec3>& vertices, const std::vector<std::uint8_t>& keep, int axis) {
@@ -20,7 +20,7 @@ std::pair<float, float> robust_range(const std::vector<glm::vec3>& vertices, con
   const std::size_t stride = std::max<std::size_t>(1, vertices.size() / kQuantileSample);
   values.reserve(vertices.size() / stride + 1);
   for (std::size_t i = 0; i < vertices.size(); i += stride)
-    if (keep[i]) values.push_back(vertices[i][axis]);
+    if (keep.empty() || keep[i]) values.push_back(vertices[i][axis]);
   if (values.empty()) return {-INFINITY, INFINITY};
   const std::size_t lo_k = std::size_t(double(values.size() - 1) * kOutlierQuantile);
   const std::size_t hi_k = values.size() - 1 - lo_k;
@@ -64,9 +64,15 @@ void renumber_kept(const Scan& scan, const std::vector<std::uint8_t>& keep, Prep
 
 namespace {
 
+bool covers(std::span<const detail::VertexRun> runs, std::size_t vertices) {
+  std::size_t n = 0;
+  for (const detail::VertexRun& run : runs) n += run.count;
+  return !runs.empty() && n == vertices;
+}
+
 // prepare_input but for copying the scan's arrays where nothing was removed: returns whether it renumbered
 // (then `out` holds the kept vertices and triangles). The bounds are those of the kept vertices either way.
-bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out) {
+bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, const detail::KnownInput* known) {
   if (scan.vertices.empty()) throw Error(ErrorCode::EmptyInput, "the scan has no vertices");
   if (scan.vertices.size() > std::numeric_limits<std::uint32_t>::max())
     throw Error(ErrorCode::BadIndices, "the scan has more vertices than 32-bit indices can address");
@@ -74,45 +80,72 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out) {
     throw Error(ErrorCode::BadIndices,
                 "the index count " + std::to_string(scan.indices.size()) + " is not a multiple of 3");
   const std::uint32_t vertex_count = std::uint32_t(scan.vertices.size());
-  for (std::size_t i = 0; i < scan.indices.size(); ++i)
-    if (scan.indices[i] >= vertex_count) [[unlikely]]
-      throw Error(ErrorCode::BadIndices, "index " + std::to_string(scan.indices[i]) + " of triangle " +
-                                             std::to_string(i / 3) + " is out of range (" +
-                                             std::to_string(scan.vertices.size()) + " vertices)");
+  if (known == nullptr || !known->indices_in_range)
+    for (std::size_t i = 0; i < scan.indices.size(); ++i)
+      if (scan.indices[i] >= vertex_count) [[unlikely]]
+        throw Error(ErrorCode::BadIndices, "index " + std::to_string(scan.indices[i]) + " of triangle " +
+                                               std::to_string(i / 3) + " is out of range (" +
+                                               std::to_string(scan.vertices.size()) + " vertices)");
   out.input_vertices = scan.vertices.size();
   out.input_triangles = scan.indices.size() / 3;
 
-  std::vector<std::uint8_t> keep(scan.vertices.size(), 0);
+  // The vertices by runs: the caller's, or one over them all.
+  std::vector<detail::VertexRun> own;
+  if (known == nullptr || !covers(known->runs, scan.vertices.size()))
+    own.push_back(detail::summarize_vertices(scan.vertices));
+  const std::span<const detail::VertexRun> runs =
+      own.empty() ? std::span<const detail::VertexRun>(known->runs) : std::span<const detail::VertexRun>(own);
   std::size_t finite_count = 0;
-  for (std::size_t i = 0; i < scan.vertices.size(); ++i) {
-    keep[i] = finite(scan.vertices[i]) ? 1 : 0;
-    finite_count += keep[i];
-  }
+  for (const detail::VertexRun& run : runs) finite_count += run.finite;
   out.skipped_vertices = scan.vertices.size() - finite_count;
+
+  // Which vertices are kept: made only once one is removed (the usual scan removes none).
+  std::vector<std::uint8_t> keep;
+  const auto make_keep = [&] {
+    if (!keep.empty()) return;
+    keep.resize(scan.vertices.size());
+    for (std::size_t i = 0; i < scan.vertices.size(); ++i) keep[i] = finite(scan.vertices[i]) ? 1 : 0;
+  };
+  if (out.skipped_vertices != 0) make_keep();
 
   if (reject_outliers && finite_count >= kOutlierMinVertices) {
     std::pair<float, float> range[3];
     for (int axis = 0; axis < 3; ++axis) range[axis] = robust_range(scan.vertices, keep, axis);
-    for (std::size_t i = 0; i < scan.vertices.size(); ++i) {
-      if (!keep[i]) continue;
-      for (int axis = 0; axis < 3; ++axis) {
-        const float v = scan.vertices[i][axis];
-        if (v < range[axis].first || v > range[axis].second) {
-          keep[i] = 0;
-          ++out.outlier_vertices;
-          break;
-        }
+    std::size_t first = 0;
+    for (const detail::VertexRun& run : runs) {
+      // A run whose finite vertices' bounds lie within the ranges has no outlier.
+      bool inside = true;
+      for (int axis = 0; axis < 3; ++axis)
+        inside = inside && run.lo[axis] >= range[axis].first && run.hi[axis] <= range[axis].second;
+      for (std::size_t i = first; !inside && i < first + run.count; ++i) {
+        const glm::vec3& v = scan.vertices[i];
+        if (!finite(v)) continue;
+        for (int axis = 0; axis < 3; ++axis)
+          if (v[axis] < range[axis].first || v[axis] > range[axis].second) {
+            make_keep();
+            keep[i] = 0;
+            ++out.outlier_vertices;
+            break;
+          }
       }
+      first += run.count;
     }
   }
 
   const bool renumbered = out.skipped_vertices != 0 || out.outlier_vertices != 0;  // else: the usual case
-  if (renumbered) renumber_kept(scan, keep, out);
-  const std::vector<glm::vec3>& kept = renumbered ? out.vertices : scan.vertices;
-  out.lo = out.hi = kept.front();
-  for (const glm::vec3& v : kept) {
-    out.lo = glm::min(out.lo, v);
-    out.hi = glm::max(out.hi, v);
+  if (renumbered) {
+    renumber_kept(scan, keep, out);
+    out.lo = out.hi = out.vertices.front();
+    for (const glm::vec3& v : out.vertices) {
+      out.lo = glm::min(out.lo, v);
+      out.hi = glm::max(out.hi, v);
+    }
+  } else {
+    out.lo = glm::vec3(INFINITY), out.hi = glm::vec3(-INFINITY);
+    for (const detail::VertexRun& run : runs) {
+      out.lo = glm::min(out.lo, run.lo);
+      out.hi = glm::max(out.hi, run.hi);
+    }
   }
   return renumbered;
 }
@@ -121,7 +154,7 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out) {
 
 PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
   PreparedInput out;
-  if (!check_input(scan, reject_outliers, out)) {
+  if (!check_input(scan, reject_outliers, out, nullptr)) {
     out.vertices = scan.vertices;
     out.indices = scan.indices;
   }
@@ -130,9 +163,21 @@ PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
 
 namespace detail {
 
-InputView view_input(const Scan& scan, bool reject_outliers) {
+VertexRun summarize_vertices(std::span<const glm::vec3> vertices) {
+  VertexRun run;
+  run.count = vertices.size();
+  for (const glm::vec3& v : vertices) {
+    if (!finite(v)) continue;
+    ++run.finite;
+    run.lo = glm::min(run.lo, v);
+    run.hi = glm::max(run.hi, v);
+  }
+  return run;
+}
+
+InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* known) {
   InputView view;
-  const bool renumbered = check_input(scan, reject_outliers, view.checked);
+  const bool renumbered = check_input(scan, reject_outliers, view.checked, known);
   view.vertices = renumbered ? std::span<const glm::vec3>(view.checked.vertices) : std::span<const glm::vec3>(scan.vertices);
   view.indices = renumbered ? std::span<const std::uint32_t>(view.checked.indices) : std::span<const std::uint32_t>(scan.indices);
   return view;

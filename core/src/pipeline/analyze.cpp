@@ -131,11 +131,12 @@ int room_at_point(const AnalysisResult& result, std::uint32_t storey, const glm:
 
 AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) { return detail::analyze(scan, options, nullptr); }
 
-AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options, AnalysisCaches* caches) {
+AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options, AnalysisCaches* caches,
+                               const KnownInput* known) {
   Stopwatch clock;
   AnalysisResult r;
   stop_point(options.stop);
-  const detail::InputView in = detail::view_input(scan, options.reject_outliers);
+  const detail::InputView in = detail::view_input(scan, options.reject_outliers, known);
   const PreparedInput& checked = in.checked;
   r.input = {checked.input_vertices, checked.input_triangles, checked.skipped_vertices, checked.outlier_vertices,
              checked.dropped_triangles};

@@ -185,42 +185,95 @@ bool IncrementalAnalysis::remove_chunk(std::uint64_t id) {
   return true;
 }
 
+namespace {
+
+// Appends `from` to `to`, each index moved past the `to`'s vertices before; throws BadIndices for an index
+// past `vertices` (the chunk's own), in chunk `id`.
+void append_indices(std::vector<std::uint32_t>& to, std::span<const std::uint32_t> from, std::size_t vertices,
+                    std::uint32_t base, std::uint64_t id) {
+  const auto worst = std::max_element(from.begin(), from.end());
+  if (worst != from.end() && *worst >= vertices)
+    throw Error(ErrorCode::BadIndices, "chunk " + std::to_string(id) + ": index " + std::to_string(*worst) +
+                                           " is out of range (" + std::to_string(vertices) + " vertices)");
+  const std::size_t at = to.size();
+  to.resize(at + from.size());
+  for (std::size_t k = 0; k < from.size(); ++k) to[at + k] = base + from[k];
+}
+
+// Appends chunk `id`'s arrays to `out`, its indices moved past the vertices before it.
+void append_chunk(Scan& out, std::uint64_t id, const Scan& s) {
+  // An index past the chunk's own vertices stays past them (+ the chunks before), so analyze() refuses it
+  // as it would the chunk alone, unless it lands in a later chunk: checked here instead.
+  append_indices(out.indices, s.indices, s.vertices.size(), std::uint32_t(out.vertices.size()), id);
+  out.vertices.insert(out.vertices.end(), s.vertices.begin(), s.vertices.end());
+  const auto label_base = std::uint32_t(out.labels.vertices.size());
+  out.labels.vertices.insert(out.labels.vertices.end(), s.labels.vertices.begin(), s.labels.vertices.end());
+  for (const std::uint32_t i : s.labels.indices) out.labels.indices.push_back(label_base + i);
+  out.labels.labels.insert(out.labels.labels.end(), s.labels.labels.begin(), s.labels.labels.end());
+}
+
+}  // namespace
+
 Scan IncrementalAnalysis::combined_scan() const {
   Scan out;
-  for (const auto& [id, chunk] : chunks_) {
-    const Scan& s = chunk.scan;
-    const auto base = std::uint32_t(out.vertices.size());
-    out.vertices.insert(out.vertices.end(), s.vertices.begin(), s.vertices.end());
-    // An index past the chunk's own vertices stays past them (+ the chunks before), so analyze() refuses it
-    // as it would the chunk alone, unless it lands in a later chunk: checked here instead.
-    for (const std::uint32_t i : s.indices) {
-      if (i >= s.vertices.size())
-        throw Error(ErrorCode::BadIndices, "chunk " + std::to_string(id) + ": index " + std::to_string(i) +
-                                               " is out of range (" + std::to_string(s.vertices.size()) + " vertices)");
-      out.indices.push_back(base + i);
-    }
-    const auto label_base = std::uint32_t(out.labels.vertices.size());
-    out.labels.vertices.insert(out.labels.vertices.end(), s.labels.vertices.begin(), s.labels.vertices.end());
-    for (const std::uint32_t i : s.labels.indices) out.labels.indices.push_back(label_base + i);
-    out.labels.labels.insert(out.labels.labels.end(), s.labels.labels.begin(), s.labels.labels.end());
-  }
+  for (const auto& [id, chunk] : chunks_) append_chunk(out, id, chunk.scan);
   return out;
+}
+
+void IncrementalAnalysis::update_combined() {
+  detail::CombinedScan& c = caches_->combined;
+  // The chunks placed as before, from the first: kept; the rest copied again.
+  std::size_t same = 0;
+  auto it = chunks_.begin();
+  for (; same < c.placed.size() && it != chunks_.end(); ++same, ++it)
+    if (c.placed[same].id != it->first || c.placed[same].hash != it->second.hash) break;
+  // The vertex runs of the chunks after those, by id, to be kept for the ones that come back unchanged.
+  std::vector<std::pair<detail::CombinedScan::Placed, detail::VertexRun>> later;
+  for (std::size_t k = same; k < c.placed.size(); ++k) later.push_back({c.placed[k], c.known.runs[k]});
+  if (same < c.placed.size()) {
+    const detail::CombinedScan::Placed& from = c.placed[same];
+    c.scan.vertices.resize(from.vertex);
+    c.scan.indices.resize(from.index);
+    c.scan.labels.vertices.resize(from.label_vertex);
+    c.scan.labels.indices.resize(from.label_index);
+    c.scan.labels.labels.resize(from.label);
+    c.placed.resize(same);
+    c.known.runs.resize(same);
+  }
+  try {
+    auto was = later.begin();
+    for (; it != chunks_.end(); ++it) {
+      const Scan& s = it->second.scan;
+      c.placed.push_back({it->first, it->second.hash, c.scan.vertices.size(), c.scan.indices.size(),
+                          c.scan.labels.vertices.size(), c.scan.labels.indices.size(), c.scan.labels.labels.size()});
+      while (was != later.end() && was->first.id < it->first) ++was;
+      const bool unchanged = was != later.end() && was->first.id == it->first && was->first.hash == it->second.hash;
+      c.known.runs.push_back(unchanged ? was->second : detail::summarize_vertices(s.vertices));
+      append_chunk(c.scan, it->first, s);
+    }
+  } catch (...) {
+    c = {};  // a chunk half appended: the next result copies every chunk again
+    throw;
+  }
+  c.known.indices_in_range = true;
 }
 
 const AnalysisResult& IncrementalAnalysis::result() {
   reused_ = !dirty_ && result_.has_value();
   if (reused_) return *result_;
-  const Scan combined = combined_scan();
+  update_combined();
+  const detail::CombinedScan& c = caches_->combined;
   std::vector<ChunkVoxelStage::Layout> layout;
-  std::size_t vertex = 0, index = 0;
-  for (const auto& [id, chunk] : chunks_) {
-    layout.push_back({id, chunk.hash, vertex, chunk.scan.vertices.size(), index, chunk.scan.indices.size()});
-    vertex += chunk.scan.vertices.size();
-    index += chunk.scan.indices.size();
+  for (std::size_t k = 0; k < c.placed.size(); ++k) {
+    const detail::CombinedScan::Placed& p = c.placed[k];
+    const bool last = k + 1 == c.placed.size();
+    const std::size_t vertex_end = last ? c.scan.vertices.size() : c.placed[k + 1].vertex,
+                      index_end = last ? c.scan.indices.size() : c.placed[k + 1].index;
+    layout.push_back({p.id, p.hash, p.vertex, vertex_end - p.vertex, p.index, index_end - p.index});
   }
-  stage_->set_layout(std::move(layout), combined.vertices.size(), combined.indices.size());
+  stage_->set_layout(std::move(layout), c.scan.vertices.size(), c.scan.indices.size());
   result_.reset();
-  result_ = detail::analyze(combined, options_, caches_.get());
+  result_ = detail::analyze(c.scan, options_, caches_.get(), &c.known);
   dirty_ = false;
   return *result_;
 }

@@ -4,6 +4,9 @@
 #include "roomsense/analysis.h"
 #include "../areas/search_cache.h"
 #include "../input/input_view.h"
+#include "surface_heights.h"
+
+#include <map>
 
 #include <memory>
 #include <optional>
@@ -39,16 +42,40 @@ struct CombinedScan {
   KnownInput known;            // a run per placed chunk; every index in range
 };
 
+// The surface heights' sums (surface_heights.h) of a combined scan's bands, chunk by chunk: a band's sum is the
+// sum of its chunks' (ExactSum), and a chunk's is kept while the chunk and the band are as before, so an
+// analysis passes over the triangles of the chunks that changed, not all of them.
+class ChunkBandSums {
+ public:
+  using Limits = std::pair<float, float>;  // band_limits
+  struct Band {
+    Limits limits;
+    std::vector<BandSum> chunks;  // per placed chunk
+  };
+  // The band's sums in each chunk of `c` (its triangles as they are: the input checks removed nothing), the
+  // kept ones where they are known. May run side by side with other calls of band().
+  Band band(const CombinedScan& c, Limits limits) const;
+  // Keeps `bands` (of c's chunks) for the next analysis, and no others.
+  void keep(const CombinedScan& c, const std::vector<Band>& bands);
+
+ private:
+  struct Kept {
+    std::uint64_t hash = 0;
+    std::vector<std::pair<Limits, BandSum>> bands;
+  };
+  std::map<std::uint64_t, Kept> chunks_;  // by chunk id
+};
+
 // For one AnalysisOptions: an IncrementalAnalysis's own.
 struct AnalysisCaches {
   std::vector<std::unique_ptr<SearchCache>> storeys;  // storey i of the latest analysis
   std::optional<DerivedFromVoxels> derived;           // the latest analysis's
   CombinedScan combined;
+  ChunkBandSums band_sums;  // of `combined`
 };
 
-// analyze() (analysis.h), its area searches served by `caches`; `known`, where not null, is what the caller
-// knows of `scan` (view_input).
-AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options, AnalysisCaches* caches,
-                       const KnownInput* known = nullptr);
+// analyze() (analysis.h), served by `caches` where not null: its area searches, features and bounds always;
+// its input checks and surface heights where `scan` is caches->combined.scan.
+AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options, AnalysisCaches* caches);
 
 }  // namespace roomsense::detail

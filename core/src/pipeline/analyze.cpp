@@ -131,12 +131,13 @@ int room_at_point(const AnalysisResult& result, std::uint32_t storey, const glm:
 
 AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) { return detail::analyze(scan, options, nullptr); }
 
-AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options, AnalysisCaches* caches,
-                               const KnownInput* known) {
+AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options, AnalysisCaches* caches) {
   Stopwatch clock;
   AnalysisResult r;
   stop_point(options.stop);
-  const detail::InputView in = detail::view_input(scan, options.reject_outliers, known);
+  // An IncrementalAnalysis's combined scan: what it knows of each chunk.
+  const CombinedScan* chunks = caches != nullptr && &scan == &caches->combined.scan ? &caches->combined : nullptr;
+  const detail::InputView in = detail::view_input(scan, options.reject_outliers, chunks ? &chunks->known : nullptr);
   const PreparedInput& checked = in.checked;
   r.input = {checked.input_vertices, checked.input_triangles, checked.skipped_vertices, checked.outlier_vertices,
              checked.dropped_triangles};
@@ -205,17 +206,30 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     count_columns(r.voxels.grid, r.voxels.levels, r.voxels.column_counts, r.voxels.column_any);
   }
   const FloorCeiling& levels = *r.voxels.levels;
-  const auto height = [&](int lower, int upper) { return detail::surface_height(spec, in.vertices, in.indices, lower, upper); };
-  // A raised storey's ceiling is its ridge: the highest point of the roof.
-  const auto ceiling_height = [&](const FloorCeiling& fc, bool up) {
-    return up ? detail::surface_top(spec, in.vertices, fc.ceiling, fc.ceiling_peak) : height(fc.ceiling, fc.ceiling_peak);
+  // Each band's height from its chunks' sums where the scan is in chunks and the input checks removed nothing.
+  const bool by_chunks = chunks != nullptr && in.indices.data() == scan.indices.data() && !in.indices.empty();
+  std::vector<ChunkBandSums::Band> bands(by_chunks ? 2 * all.size() : 0);
+  const auto height = [&](std::size_t k, int lower, int upper) {
+    if (!by_chunks) return detail::surface_height(spec, in.vertices, in.indices, lower, upper);
+    bands[k] = caches->band_sums.band(*chunks, band_limits(spec, lower, upper));
+    BandSum sum;
+    for (const BandSum& part : bands[k].chunks) sum += part;
+    return sum.exact() ? band_height(sum, bands[k].limits)
+                       : detail::surface_height(spec, in.vertices, in.indices, lower, upper);
   };
-  // Each storey's floor and ceiling heights, each a pass over the triangles: side by side.
+  // Each storey's floor and ceiling heights, each a pass over the triangles: side by side. A raised storey's
+  // ceiling is its ridge: the highest point of the roof.
   std::vector<float> heights(2 * all.size());
   detail::parallel_tasks(heights.size(), options.threads, [&](std::size_t k) {
     const FloorCeiling& fc = *all[k / 2];
-    heights[k] = k % 2 == 0 ? height(fc.floor_peak, fc.floor) : ceiling_height(fc, raised[k / 2]);
+    if (k % 2 == 0) heights[k] = height(k, fc.floor_peak, fc.floor);
+    else if (raised[k / 2]) heights[k] = detail::surface_top(spec, in.vertices, fc.ceiling, fc.ceiling_peak);
+    else heights[k] = height(k, fc.ceiling, fc.ceiling_peak);
   });
+  if (by_chunks) {
+    std::erase_if(bands, [](const ChunkBandSums::Band& b) { return b.chunks.empty(); });
+    caches->band_sums.keep(*chunks, bands);
+  }
   r.floor_y = heights[0];
   r.ceiling_y = heights[1];
   // Eq. 3.9/3.10 keep levels 1.5 m apart, but the surfaces inside them may be closer (a lone wall's two

@@ -273,7 +273,7 @@ const AnalysisResult& IncrementalAnalysis::result() {
   }
   stage_->set_layout(std::move(layout), c.scan.vertices.size(), c.scan.indices.size());
   result_.reset();
-  result_ = detail::analyze(c.scan, options_, caches_.get(), &c.known);
+  result_ = detail::analyze(c.scan, options_, caches_.get());
   dirty_ = false;
   return *result_;
 }

@@ -8,25 +8,87 @@
 
 namespace roomsense::detail {
 
+void ExactSum::carry_in(std::int64_t whole, std::uint64_t fraction, std::uint64_t magnitude) {
+  fraction_ += fraction;
+  // Wraps silently only where the bound says inexact: |whole_| <= magnitude_ always.
+  whole_ = std::int64_t(std::uint64_t(whole_) + std::uint64_t(whole) + (fraction_ < fraction ? 1u : 0u));
+  magnitude_ = magnitude_ > kMaxMagnitude - std::min(magnitude, kMaxMagnitude) ? kMaxMagnitude + 1 : magnitude_ + magnitude;
+}
+
+void ExactSum::add(double term) {
+  if (!(std::fabs(term) < 0x1p40)) {
+    magnitude_ = kMaxMagnitude + 1;
+    return;
+  }
+  const double whole = std::floor(term);
+  // term - whole is exact (the bits of term below 1) and in [0, 1); scaled by 2^-64 exactly, truncated.
+  carry_in(std::int64_t(whole), std::uint64_t(std::ldexp(term - whole, 64)), std::uint64_t(std::fabs(whole)) + 1);
+}
+
+ExactSum& ExactSum::operator+=(const ExactSum& other) {
+  carry_in(other.whole_, other.fraction_, other.magnitude_);
+  return *this;
+}
+
+double ExactSum::value() const { return double(whole_) + std::ldexp(double(fraction_), -64); }
+
+std::pair<float, float> band_limits(const GridSpec& spec, int lo, int hi) {
+  return {spec.origin.y + (float(lo) - kVoxelTestEpsilon) * spec.voxel_size,
+          spec.origin.y + (float(hi + 1) - kVoxelTestEpsilon) * spec.voxel_size};
+}
+
+namespace {
+
+// Calls f(cy, area2) for each near-horizontal triangle of `indices` whose centroid's height cy lies in the band
+// (area2: twice its area).
+template <class F>
+void for_band_triangles(std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,
+                        std::pair<float, float> limits, F&& f) {
+  const auto [y_lo, y_hi] = limits;
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const glm::vec3 &a = vertices[indices[t]], &b = vertices[indices[t + 1]], &c = vertices[indices[t + 2]];
+    const float cy = (a.y + b.y + c.y) / 3.0f;
+    if (!(cy >= y_lo && cy < y_hi)) continue;  // most triangles: no cross product for them
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    const float area2 = glm::length(n);
+    // Near-horizontal (within ~25°) either way up: scans disagree on winding.
+    if (area2 <= 0.0f || std::fabs(n.y) < 0.9f * area2) continue;
+    f(cy, area2);
+  }
+}
+
+}  // namespace
+
+BandSum band_sum(std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,
+                 std::pair<float, float> limits) {
+  BandSum sum;
+  for_band_triangles(vertices, indices, limits, [&](float cy, float area2) {
+    sum.weighted.add(double(cy) * area2);  // a product of two floats: exact in a double
+    sum.weight.add(area2);
+  });
+  return sum;
+}
+
+float band_height(const BandSum& sum, std::pair<float, float> limits) {
+  const double weight = sum.weight.value();
+  if (weight > 0.0) return float(sum.weighted.value() / weight);
+  return 0.5f * (limits.first + limits.second);
+}
+
 float surface_height(const GridSpec& spec, std::span<const glm::vec3> vertices,
                      std::span<const std::uint32_t> indices, int lo, int hi) {
-  // The band's levels as triangle mode sees them: test cubes sit kVoxelTestEpsilon below the voxels.
-  const float y_lo = spec.origin.y + (float(lo) - kVoxelTestEpsilon) * spec.voxel_size;
-  const float y_hi = spec.origin.y + (float(hi + 1) - kVoxelTestEpsilon) * spec.voxel_size;
+  const std::pair<float, float> limits = band_limits(spec, lo, hi);
+  const auto [y_lo, y_hi] = limits;
   const auto in_band = [&](float y) { return y >= y_lo && y < y_hi; };
   double weighted = 0.0, weight = 0.0;
   if (!indices.empty()) {
-    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-      const glm::vec3 &a = vertices[indices[t]], &b = vertices[indices[t + 1]], &c = vertices[indices[t + 2]];
-      const float cy = (a.y + b.y + c.y) / 3.0f;
-      if (!in_band(cy)) continue;  // most triangles: no cross product for them
-      const glm::vec3 n = glm::cross(b - a, c - a);
-      const float area2 = glm::length(n);
-      // Near-horizontal (within ~25°) either way up: scans disagree on winding.
-      if (area2 <= 0.0f || std::fabs(n.y) < 0.9f * area2) continue;
+    const BandSum sum = band_sum(vertices, indices, limits);
+    if (sum.exact()) return band_height(sum, limits);
+    // Terms too large for the fixed point (coordinates of 10^6 m and more): summed in order.
+    for_band_triangles(vertices, indices, limits, [&](float cy, float area2) {
       weighted += double(cy) * area2;
       weight += area2;
-    }
+    });
   } else {
     // A point cloud has no normals: wall points spread evenly over the band while the surface's pile up, so
     // take the fullest 1 cm bin and average the points within a bin of it.

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
+#include <span>
 #include <vector>
 
 namespace roomsense::detail {
@@ -80,6 +81,18 @@ class Candidates {
     if (size_ % kBlock == 0) blocks_.push_back(std::make_unique<Item[]>(kBlock));
     blocks_.back()[size_ % kBlock] = item;
     ++size_;
+  }
+  // Items of a Candidates made with the same grid, levels and shapes, checked as push_item checks them.
+  void push_items(std::span<const Item> items) {
+    for (const Item& item : items)
+      if (item.shape >= shapes_.size()) throw std::logic_error("a candidate outside its search's shapes");
+    while (!items.empty()) {
+      if (size_ % kBlock == 0) blocks_.push_back(std::make_unique<Item[]>(kBlock));
+      const std::size_t n = std::min(items.size(), kBlock - size_ % kBlock);
+      std::copy_n(items.begin(), n, blocks_.back().get() + size_ % kBlock);
+      size_ += n;
+      items = items.subspan(n);
+    }
   }
   const Item& item(std::size_t i) const { return blocks_[i / kBlock][i % kBlock]; }
   std::size_t size() const { return size_; }

@@ -184,62 +184,80 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
   const bool known = kept.packed_generation + 1 == generation_;
   kept.source.clear();
   kept.replay = {};
-  using Keyed = std::pair<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, std::uint8_t>;
-  std::vector<std::vector<Keyed>> before(kept.pieces.size());
-  std::vector<std::vector<std::uint8_t>> matched(kept.pieces.size());
-  for (Replaced& r : replaced) {
-    if (!known) continue;
-    for (std::size_t k = 0; k < r.items.size(); ++k) before[r.slot].push_back({key_of(r.items[k]), r.states[k]});
-    std::sort(before[r.slot].begin(), before[r.slot].end());
-    matched[r.slot].assign(r.items.size(), 0);
-  }
-  const auto previous_state = [&](std::size_t slot, std::size_t k) -> std::uint8_t {
-    if (!known) return kAbsent;
-    if (matched[slot].empty()) return kept.states[slot][k];
-    const auto key = key_of(kept.pieces[slot][k]);
-    const auto it = std::lower_bound(before[slot].begin(), before[slot].end(), Keyed{key, 0});
-    if (it == before[slot].end() || it->first != key) return kAbsent;
-    // A square found again may pack in another place of the order (its contact may have changed): taken as
-    // gone and new. A wall's order is the search's, which keeps it among the others.
-    if (!walls) return kAbsent;
-    matched[slot][std::size_t(it - before[slot].begin())] = 1;
-    return it->second;
-  };
-  // Walls: the bands in order, each rectangle unless an earlier band found its centre (as the whole search
-  // skips it). Squares: layer by layer, band by band.
   Candidates out = found.empty_like();
-  KeyTable centres;
   std::size_t count = 0;
   for (const auto& piece : kept.pieces) count += piece.size();
-  if (walls) centres.reserve(count);
   kept.source.reserve(count);
   kept.replay.previous.reserve(count);
-  if (!walls) kept.replay.ranks.reserve(count);
-  for (std::size_t slot = 0; slot < kept.pieces.size(); ++slot)
-    for (std::size_t k = 0; k < kept.pieces[slot].size(); ++k) {
-      const Candidates::Item& item = kept.pieces[slot][k];
-      const std::uint8_t state = previous_state(slot, k);
-      if (walls) {
+  const auto previous_of = [](std::uint8_t state) -> std::int8_t {
+    return state == kPacked ? 1 : state == kRefused ? 0 : -1;
+  };
+  if (!walls) {
+    // Squares: layer by layer, band by band. A square of a replaced slot, found again or not, counts as gone
+    // and new (its contact, and with it its place in packing order, may have changed).
+    std::vector<std::uint8_t> is_replaced(kept.pieces.size(), 0);
+    for (const Replaced& r : replaced) {
+      is_replaced[r.slot] = 1;
+      for (std::size_t k = 0; known && k < r.items.size(); ++k)
+        if (r.states[k] == kPacked) kept.replay.gone.push_back(found.decode(r.items[k]).unpack());
+    }
+    kept.replay.ranks.reserve(count);
+    for (std::size_t slot = 0; slot < kept.pieces.size(); ++slot) {
+      const std::vector<Candidates::Item>& items = kept.pieces[slot];
+      out.push_items(items);
+      const bool as_before = known && !is_replaced[slot];  // a replaced slot's states and ranks are unknown
+      for (std::size_t k = 0; k < items.size(); ++k) {
+        kept.source.push_back({std::uint32_t(slot), std::uint32_t(k)});
+        kept.replay.previous.push_back(as_before ? previous_of(kept.states[slot][k]) : std::int8_t{-1});
+        kept.replay.ranks.push_back(known ? kept.ranks[slot][k] : PackReplay::kUnknownRank);
+      }
+    }
+  } else {
+    // Walls: a replaced slot's rectangles found again keep their packing (a wall's order is the search's, which
+    // keeps it among the others); the bands in order, each rectangle unless an earlier band found its centre
+    // (as the whole search skips it).
+    using Keyed = std::pair<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, std::uint8_t>;
+    std::vector<std::vector<Keyed>> before(kept.pieces.size());
+    std::vector<std::vector<std::uint8_t>> matched(kept.pieces.size());
+    for (Replaced& r : replaced) {
+      if (!known) continue;
+      for (std::size_t k = 0; k < r.items.size(); ++k) before[r.slot].push_back({key_of(r.items[k]), r.states[k]});
+      std::sort(before[r.slot].begin(), before[r.slot].end());
+      matched[r.slot].assign(r.items.size(), 0);
+    }
+    const auto previous_state = [&](std::size_t slot, std::size_t k) -> std::uint8_t {
+      if (!known) return kAbsent;
+      if (matched[slot].empty()) return kept.states[slot][k];
+      const auto key = key_of(kept.pieces[slot][k]);
+      const auto it = std::lower_bound(before[slot].begin(), before[slot].end(), Keyed{key, 0});
+      if (it == before[slot].end() || it->first != key) return kAbsent;
+      matched[slot][std::size_t(it - before[slot].begin())] = 1;
+      return it->second;
+    };
+    KeyTable centres;
+    centres.reserve(count);
+    for (std::size_t slot = 0; slot < kept.pieces.size(); ++slot)
+      for (std::size_t k = 0; k < kept.pieces[slot].size(); ++k) {
+        const Candidates::Item& item = kept.pieces[slot][k];
+        const std::uint8_t state = previous_state(slot, k);
         const Candidate c = found.decode(item).unpack();
         const glm::ivec3 sum = corner_sum(c);
         if (!centres.insert(pack_key(sum.x, sum.y, sum.z))) {
           if (state == kPacked) kept.replay.gone.push_back(c);
           continue;
         }
+        out.push_item(item);
+        kept.source.push_back({std::uint32_t(slot), std::uint32_t(k)});
+        kept.replay.previous.push_back(previous_of(state));
       }
-      out.push_item(item);
-      kept.source.push_back({std::uint32_t(slot), std::uint32_t(k)});
-      kept.replay.previous.push_back(state == kPacked ? 1 : state == kRefused ? 0 : -1);
-      // A replaced slot's ranks are unknown (kUnknownRank): its features changed.
-      if (!walls) kept.replay.ranks.push_back(known ? kept.ranks[slot][k] : PackReplay::kUnknownRank);
-    }
-  // Packed before, not found again.
-  for (std::size_t slot = 0; slot < before.size(); ++slot)
-    for (std::size_t k = 0; k < before[slot].size(); ++k)
-      if (!matched[slot][k] && before[slot][k].second == kPacked) {
-        const auto [hi, lo, shape] = before[slot][k].first;
-        kept.replay.gone.push_back(found.decode({lo, hi, shape}).unpack());
-      }
+    // Packed before, not found again.
+    for (std::size_t slot = 0; slot < before.size(); ++slot)
+      for (std::size_t k = 0; k < before[slot].size(); ++k)
+        if (!matched[slot][k] && before[slot][k].second == kPacked) {
+          const auto [hi, lo, shape] = before[slot][k].first;
+          kept.replay.gone.push_back(found.decode({lo, hi, shape}).unpack());
+        }
+  }
   kept.replay_known = known;
   // The kept rectangles stay within twice the grid's bytes and 16 MB; past that a search keeps nothing.
   if (kept_bytes_ > 2 * spec_.voxel_count() + (std::size_t{16} << 20)) drop(kept);

@@ -2,6 +2,7 @@
 #include "roomsense/bounds.h"
 #include "roomsense/cancel.h"
 
+#include "mesh_memo.h"
 #include "parallel.h"
 
 #include <algorithm>
@@ -283,6 +284,12 @@ std::vector<std::uint8_t> room_bounds_volume(const VoxelGrid& grid, const Bounds
 BoundsMesh build_room_bounds(const VoxelGrid& grid, const BoundsStorey& storey,
                              const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
                              unsigned threads, std::stop_token stop) {
+  return detail::build_room_bounds(grid, storey, room_columns, params, threads, std::move(stop), nullptr);
+}
+
+BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& storey,
+                                     const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
+                                     unsigned threads, std::stop_token stop, MeshMemo* memo) {
   // On the room's columns and a margin only: a room of a large home costs what its own size does. The margin
   // holds the solid around the room (its walls, the next rooms' columns); where the room's free space runs on
   // past it (a window, an unscanned gap), the shell closes at the margin instead of the grid's edge.
@@ -318,14 +325,19 @@ BoundsMesh build_room_bounds(const VoxelGrid& grid, const BoundsStorey& storey,
   cropped.ceiling = &part_ceiling;
   std::vector<std::uint8_t> volume = room_bounds_volume(part, cropped, part_room, params, threads, stop);
   fill_edge_contacts(crop, volume);
-  return mesh_volume(crop, volume, threads, stop);
+  return detail::mesh_volume(crop, volume, threads, std::move(stop), memo);
 }
 
 BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys, const BoundsParams& params,
                         unsigned threads, std::stop_token stop) {
+  return detail::build_bounds(grid, storeys, params, threads, std::move(stop), nullptr);
+}
+
+BoundsMesh detail::build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,
+                                const BoundsParams& params, unsigned threads, std::stop_token stop, MeshMemo* memo) {
   std::vector<std::uint8_t> volume = bounds_volume(grid, storeys, params, threads, stop);
   fill_edge_contacts(grid.spec, volume);
-  return mesh_volume(grid.spec, volume, threads, stop);
+  return detail::mesh_volume(grid.spec, volume, threads, std::move(stop), memo);
 }
 
 }  // namespace roomsense

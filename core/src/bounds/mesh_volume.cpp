@@ -6,6 +6,7 @@
 #include "roomsense/bounds.h"
 #include "roomsense/cancel.h"
 
+#include "mesh_memo.h"
 #include "parallel.h"
 #include "polygon_triangulation.h"
 
@@ -42,6 +43,7 @@ constexpr Axes kAxes[] = {{2, 0, 1}, {0, 1, 2}, {1, 2, 0}};
 // The box of solid voxels: meshing stops at its faces (outside it every mask entry is 0).
 struct Box {
   int lo[3], hi[3];  // inclusive; hi < lo when empty
+  bool operator==(const Box&) const = default;
 };
 Box solid_box(const GridSpec& s, const std::vector<std::uint8_t>& volume) {
   Box box{{s.nx, s.ny, s.nz}, {-1, -1, -1}};
@@ -164,9 +166,30 @@ class SurfaceCorners {
   std::vector<std::uint64_t> bits_;
 };
 
+// One slice's share of an axis's MeshBuilder: the points it added, in order, and its triangles over them. Every
+// point of a slice lies in the slice's plane, so no other slice of the axis has it: a slice adds each of its
+// points, and its triangles use those alone.
+struct SliceRecord {
+  std::vector<Point> points;
+  std::vector<std::uint32_t> triangles;  // into `points`
+};
+
 // One axis's triangles over its own numbering of the points; the axes are merged in order at the end.
 class MeshBuilder {
  public:
+  // Where a slice begins, and what it added since (a SliceRecord).
+  std::pair<std::size_t, std::size_t> mark() const { return {points_.size(), indices_.size()}; }
+  SliceRecord since(std::pair<std::size_t, std::size_t> mark) const {
+    SliceRecord r{{points_.begin() + std::ptrdiff_t(mark.first), points_.end()}, {}};
+    for (std::size_t i = mark.second; i < indices_.size(); ++i) r.triangles.push_back(indices_[i] - std::uint32_t(mark.first));
+    return r;
+  }
+  // Adds a slice as meshing it added it.
+  void replay(const SliceRecord& r) {
+    const auto first = std::uint32_t(points_.size());
+    for (const Point& p : r.points) vertex(p);
+    for (const std::uint32_t i : r.triangles) indices_.push_back(first + i);
+  }
   std::uint32_t vertex(const Point& p) {
     const auto [it, inserted] = index_.try_emplace(p, std::uint32_t(points_.size()));
     if (inserted) points_.push_back(p);
@@ -328,8 +351,16 @@ class SliceMesher {
   std::array<std::ptrdiff_t, 4> neighbour_;  // the index steps of directions 0..3's neighbours
 };
 
+// Each slice of an axis, by c - c0 + 1 (slice c lies between voxel layers c and c + 1): the previous volume's
+// record where both layers are as they were (`kept`), else meshed; `records`, where not null, gets every slice's.
+struct SliceReuse {
+  const std::vector<SliceRecord>* kept = nullptr;
+  const std::vector<std::uint8_t>* changed = nullptr;  // per voxel layer along the axis
+  std::vector<SliceRecord>* records = nullptr;
+};
+
 void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const Box& box, const Axes& ax,
-               const SurfaceCorners& corners, MeshBuilder& out, const std::stop_token& stop) {
+               const SurfaceCorners& corners, MeshBuilder& out, const std::stop_token& stop, const SliceReuse& reuse) {
   // Strides of GridSpec::index per axis: x -> ny, y -> 1, z -> nx * ny.
   const std::ptrdiff_t stride[3] = {s.ny, 1, std::ptrdiff_t(s.nx) * s.ny};
   const std::ptrdiff_t sa = stride[ax.a], sb = stride[ax.b], sc = stride[ax.c];
@@ -365,8 +396,17 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
       }
   }
   std::vector<int> differing;
+  if (reuse.records) reuse.records->resize(std::size_t(c_end - c0 + 2));
   for (int c = c0 - 1; c <= c_end; ++c) {
     stop_point(stop);
+    const std::size_t slot = std::size_t(c - c0 + 1);
+    if (reuse.kept && !(c >= c0 && (*reuse.changed)[std::size_t(c)]) && !(c + 1 <= c_end && (*reuse.changed)[std::size_t(c + 1)])) {
+      const SliceRecord& kept = (*reuse.kept)[slot];
+      out.replay(kept);
+      if (reuse.records) (*reuse.records)[slot] = kept;
+      continue;
+    }
+    const auto mark = out.mark();
     const std::uint8_t* below = c >= c0 ? base + c * sc : nullptr;
     const std::uint8_t* above = c + 1 <= c_end ? base + (c + 1) * sc : nullptr;
     const auto face = [&](std::ptrdiff_t off) {
@@ -391,34 +431,89 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
         for (const int a : differing)
           if (const signed char m = face(a * sa + b); m != 0) slice.set(a, b, m);
     }
-    if (slice.empty()) continue;
-    slice.mesh(
-        corners,
-        [&](int a, int b) {
-          Point p;
-          p.v[ax.a] = a0 + a;
-          p.v[ax.b] = b0 + b;
-          p.v[ax.c] = c + 1;
-          return p;
-        },
-        out, stop);
+    if (!slice.empty())
+      slice.mesh(
+          corners,
+          [&](int a, int b) {
+            Point p;
+            p.v[ax.a] = a0 + a;
+            p.v[ax.b] = b0 + b;
+            p.v[ax.c] = c + 1;
+            return p;
+          },
+          out, stop);
+    if (reuse.records) (*reuse.records)[slot] = out.since(mark);
   }
+}
+
+// Which voxel layers along each axis differ between two volumes of one grid.
+std::array<std::vector<std::uint8_t>, 3> changed_layers(const GridSpec& s, const std::vector<std::uint8_t>& before,
+                                                         const std::vector<std::uint8_t>& after) {
+  std::array<std::vector<std::uint8_t>, 3> changed{std::vector<std::uint8_t>(std::size_t(s.nx), 0),
+                                                   std::vector<std::uint8_t>(std::size_t(s.ny), 0),
+                                                   std::vector<std::uint8_t>(std::size_t(s.nz), 0)};
+  const std::size_t ny = std::size_t(s.ny);
+  for (std::size_t col = 0; col < s.column_count(); ++col) {
+    const std::uint8_t *a = before.data() + col * ny, *b = after.data() + col * ny;
+    if (std::memcmp(a, b, ny) == 0) continue;
+    changed[0][col % std::size_t(s.nx)] = changed[2][col / std::size_t(s.nx)] = 1;
+    for (std::size_t y = 0; y < ny; ++y)
+      if (a[y] != b[y]) changed[1][y] = 1;
+  }
+  return changed;
 }
 
 }  // namespace
 
+struct detail::MeshMemo::State {
+  GridSpec spec{};
+  std::vector<std::uint8_t> volume;
+  Box box{};
+  std::array<std::vector<SliceRecord>, 3> slices;  // per axis (kAxes), per slice
+};
+
+detail::MeshMemo::MeshMemo() = default;
+detail::MeshMemo::~MeshMemo() = default;
+detail::MeshMemo::MeshMemo(MeshMemo&&) noexcept = default;
+detail::MeshMemo& detail::MeshMemo::operator=(MeshMemo&&) noexcept = default;
+
 BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& volume, unsigned threads,
                        std::stop_token stop) {
+  return detail::mesh_volume(spec, volume, threads, std::move(stop), nullptr);
+}
+
+BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& volume, unsigned threads,
+                               std::stop_token stop, MeshMemo* memo) {
   const Box box = solid_box(spec, volume);
-  if (box.hi[0] < box.lo[0]) return {};
+  if (box.hi[0] < box.lo[0]) {
+    if (memo) memo->state_.reset();
+    return {};
+  }
+  // The previous volume's slices, where it had this grid and solid box.
+  const MeshMemo::State* kept = memo && memo->state_ && memo->state_->spec == spec && memo->state_->box == box &&
+                                        memo->state_->volume.size() == volume.size()
+                                    ? memo->state_.get()
+                                    : nullptr;
+  std::array<std::vector<std::uint8_t>, 3> changed;
+  if (kept) changed = changed_layers(spec, kept->volume, volume);
+  auto next = memo ? std::make_unique<MeshMemo::State>() : nullptr;
   const SurfaceCorners corners(spec, volume, box, threads, stop);
   MeshBuilder parts[3];
-  detail::parallel_tasks(3, threads, [&](std::size_t axis) { mesh_axis(spec, volume, box, kAxes[axis], corners, parts[axis], stop); });
+  detail::parallel_tasks(3, threads, [&](std::size_t axis) {
+    const int c = kAxes[axis].c;
+    mesh_axis(spec, volume, box, kAxes[axis], corners, parts[axis], stop,
+              {kept ? &kept->slices[axis] : nullptr, kept ? &changed[std::size_t(c)] : nullptr,
+               next ? &next->slices[axis] : nullptr});
+  });
   BoundsMesh mesh;
   std::unordered_map<Point, std::uint32_t, PointHash> index;
   for (const MeshBuilder& part : parts) {
     stop_point(stop);
     part.append_to(mesh, index, spec);
+  }
+  if (memo) {
+    next->spec = spec, next->volume = volume, next->box = box;
+    memo->state_ = std::move(next);
   }
   return mesh;
 }

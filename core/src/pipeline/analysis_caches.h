@@ -3,6 +3,7 @@
 #pragma once
 #include "roomsense/analysis.h"
 #include "../areas/search_cache.h"
+#include "../bounds/mesh_memo.h"
 #include "../input/input_view.h"
 #include "surface_heights.h"
 
@@ -72,6 +73,7 @@ struct AnalysisCaches {
   std::optional<DerivedFromVoxels> derived;           // the latest analysis's
   CombinedScan combined;
   ChunkBandSums band_sums;  // of `combined`
+  std::vector<MeshMemo> bounds;  // the home's bounds mesh, then each room's (AnalysisResult::room_bounds)
 };
 
 // analyze() (analysis.h), served by `caches` where not null: its area searches, features and bounds always;

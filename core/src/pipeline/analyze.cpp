@@ -68,10 +68,12 @@ void assign_rooms(AnalysisResult& r) {
 // The home's bounds and each room's (index as r.rooms). Every mesh is its own task, on one thread each: a
 // home's rooms are independent, so two cores build two at a time (one after another, five rooms of
 // SU_Apartment cost as much as the rest of its analysis).
-void build_all_bounds(AnalysisResult& r, const AnalysisOptions& options) {
+void build_all_bounds(AnalysisResult& r, const AnalysisOptions& options, std::vector<detail::MeshMemo>* memos) {
   const std::vector<BoundsStorey> storeys = bounds_storeys(r);
+  const auto memo = [&](std::size_t k) { return memos ? &(*memos)[k] : nullptr; };
   if (r.rooms.size() <= 1) {
-    r.bounds = build_bounds(r.voxels.grid, storeys, options.bounds, options.threads, options.stop);
+    if (memos) memos->resize(1);
+    r.bounds = detail::build_bounds(r.voxels.grid, storeys, options.bounds, options.threads, options.stop, memo(0));
     r.room_bounds.assign(r.rooms.size(), r.bounds);
     return;
   }
@@ -89,15 +91,17 @@ void build_all_bounds(AnalysisResult& r, const AnalysisOptions& options) {
     for (int k = 0; k < split.count; ++k) jobs.push_back({i, rooms_of, k});
   }
   r.room_bounds.assign(jobs.size(), {});
+  if (memos) memos->resize(jobs.size() + 1);
   detail::parallel_tasks(jobs.size() + 1, options.threads, [&](std::size_t t) {
     stop_point(options.stop);
     if (t == 0) {
-      r.bounds = build_bounds(r.voxels.grid, storeys, options.bounds, 1, options.stop);
+      r.bounds = detail::build_bounds(r.voxels.grid, storeys, options.bounds, 1, options.stop, memo(0));
       return;
     }
     const RoomJob& job = jobs[t - 1];
-    r.room_bounds[t - 1] = build_room_bounds(r.voxels.grid, storeys[job.storey], room_mask(*job.rooms_of, job.room),
-                                             options.bounds, 1, options.stop);
+    r.room_bounds[t - 1] = detail::build_room_bounds(r.voxels.grid, storeys[job.storey],
+                                                     room_mask(*job.rooms_of, job.room), options.bounds, 1,
+                                                     options.stop, memo(t));
   });
 }
 
@@ -321,7 +325,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
       r.bounds = derived->bounds;
       r.room_bounds = derived->room_bounds;
     } else {
-      build_all_bounds(r, options);
+      build_all_bounds(r, options, caches ? &caches->bounds : nullptr);
       if (derived) derived->has_bounds = true, derived->bounds = r.bounds, derived->room_bounds = r.room_bounds;
     }
     r.timings.bounds = clock.lap();

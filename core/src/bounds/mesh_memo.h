@@ -1,0 +1,38 @@
+// Beyond the thesis (issue 19): the bounds of an IncrementalAnalysis meshed again only where the volume changed.
+#pragma once
+#include "roomsense/bounds.h"
+
+#include <memory>
+#include <stop_token>
+
+namespace roomsense::detail {
+
+// What mesh_volume kept of the volume it meshed last: the volume, and each slice's polygons (their points and
+// triangles). A slice between two voxel layers that are as they were meshes as it did (its mask, and the surface
+// corners in its plane, come from those two layers alone), so mesh_volume meshes again only the slices through
+// a change and replays the others, with the same result as meshing them all.
+class MeshMemo {
+ public:
+  MeshMemo();
+  ~MeshMemo();
+  MeshMemo(MeshMemo&&) noexcept;
+  MeshMemo& operator=(MeshMemo&&) noexcept;
+  struct State;
+
+ private:
+  friend BoundsMesh mesh_volume(const GridSpec&, const std::vector<std::uint8_t>&, unsigned, std::stop_token,
+                                MeshMemo*);
+  std::unique_ptr<State> state_;
+};
+
+// mesh_volume, build_bounds and build_room_bounds (bounds.h), served by `memo` where it is not null: they read
+// it, and keep this volume's slices in it once they finish.
+BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& volume, unsigned threads,
+                       std::stop_token stop, MeshMemo* memo);
+BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys, const BoundsParams& params,
+                        unsigned threads, std::stop_token stop, MeshMemo* memo);
+BoundsMesh build_room_bounds(const VoxelGrid& grid, const BoundsStorey& storey,
+                             const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
+                             unsigned threads, std::stop_token stop, MeshMemo* memo);
+
+}  // namespace roomsense::detail

@@ -50,57 +50,101 @@ void fill_plane_holes(const GridSpec& s, const FloorCeiling& levels, std::vector
 // takes the height its border shares most with its neighbours. Scans carry surfaces jittering by a voxel
 // and specks of noise; each such plateau costs the bounds mesh a ring of corners. Repeated until no small
 // plateau is left, at most a few passes, as merging one can leave its neighbour small.
+//
+// A pass visits the plateaus as they were when it began, in the order of their first column, and flattens each
+// small one with a border, reading its border's heights as the pass left them so far. A plateau a pass did not
+// flatten and whose columns and neighbours it left as they were is not flattened by the next pass either (it
+// is as large, and had the same border), so a pass after the first looks only at the plateaus with a column
+// the last one changed or next to one. A plateau is followed only as far as min_cells columns.
 void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& room, int min_cells,
                             std::vector<int>& height) {
   if (min_cells <= 1) return;
-  std::vector<int> label(height.size());
-  std::vector<std::size_t> region, stack;
+  const std::size_t nx = std::size_t(s.nx);
+  const auto for_neighbours = [&](std::size_t c, auto&& f) {
+    const std::size_t x = c % nx, z = c / nx;
+    if (x > 0) f(c - 1);
+    if (x + 1 < nx) f(c + 1);
+    if (z > 0) f(c - nx);
+    if (z + 1 < std::size_t(s.nz)) f(c + nx);
+  };
+  // The columns to look from: every room column at first, then those the last pass changed and their neighbours.
+  std::vector<std::size_t> from;
+  for (std::size_t c = 0; c < room.size(); ++c)
+    if (room[c]) from.push_back(c);
+  std::vector<int> owner(height.size(), -1);  // the search that reached a column in this pass
+  std::vector<std::uint8_t> large;            // per search: it found min_cells columns or more
+  std::vector<std::size_t> reached, cells, stack, changed;
+  struct Small {
+    std::size_t first, begin, end;  // its first column; its columns in `small_cells`
+  };
+  std::vector<Small> smalls;
+  std::vector<std::size_t> small_cells;
   std::vector<std::pair<int, int>> border;  // (neighbour height, shared edges)
-  for (int pass = 0; pass < 8; ++pass) {
-    bool changed = false;
-    std::fill(label.begin(), label.end(), -1);
-    int next = 0;
-    for (std::size_t seed = 0; seed < height.size(); ++seed) {
-      if (!room[seed] || label[seed] >= 0) continue;
-      const int h = height[seed];
-      region.clear();
-      border.clear();
-      stack.assign(1, seed);
-      label[seed] = next;
-      while (!stack.empty()) {
+  for (int pass = 0; pass < 8 && !from.empty(); ++pass) {
+    // The small plateaus reached from `from`, as they are at the start of the pass.
+    smalls.clear();
+    small_cells.clear();
+    large.clear();
+    for (const std::size_t start : from) {
+      if (owner[start] >= 0) continue;
+      const int id = int(large.size()), h = height[start];
+      bool is_large = false;
+      cells.clear();
+      stack.assign(1, start);
+      owner[start] = id;
+      reached.push_back(start);
+      while (!stack.empty() && !is_large) {
         const std::size_t c = stack.back();
         stack.pop_back();
-        region.push_back(c);
-        const int x = int(c % std::size_t(s.nx)), z = int(c / std::size_t(s.nx));
-        const int nbr[4][2] = {{x - 1, z}, {x + 1, z}, {x, z - 1}, {x, z + 1}};
-        for (const auto& n : nbr) {
-          if (n[0] < 0 || n[1] < 0 || n[0] >= s.nx || n[1] >= s.nz) continue;
-          const std::size_t nc = s.column(n[0], n[1]);
-          if (!room[nc]) continue;
-          if (height[nc] == h) {
-            if (label[nc] < 0) {
-              label[nc] = next;
-              stack.push_back(nc);
-            }
-            continue;
+        cells.push_back(c);
+        is_large = int(cells.size()) >= min_cells;
+        for_neighbours(c, [&](std::size_t n) {
+          if (!room[n] || height[n] != h) return;
+          if (owner[n] < 0) {
+            owner[n] = id;
+            reached.push_back(n);
+            stack.push_back(n);
+          } else if (owner[n] != id) {
+            is_large = true;  // a search of the same plateau stopped at min_cells columns
           }
-          const auto it = std::find_if(border.begin(), border.end(), [&](const auto& e) { return e.first == height[nc]; });
-          if (it == border.end()) border.push_back({height[nc], 1});
-          else ++it->second;
-        }
+        });
       }
-      ++next;
-      if (int(region.size()) >= min_cells || border.empty()) continue;
-      // The most shared border; on a tie the nearer height, then the lower.
-      const auto best = std::min_element(border.begin(), border.end(), [&](const auto& p, const auto& q) {
-        if (p.second != q.second) return p.second > q.second;
-        if (std::abs(p.first - h) != std::abs(q.first - h)) return std::abs(p.first - h) < std::abs(q.first - h);
-        return p.first < q.first;
-      });
-      for (const std::size_t c : region) height[c] = best->first;
-      changed = true;
+      large.push_back(is_large ? 1 : 0);
+      if (is_large) continue;
+      smalls.push_back({*std::min_element(cells.begin(), cells.end()), small_cells.size(), small_cells.size() + cells.size()});
+      small_cells.insert(small_cells.end(), cells.begin(), cells.end());
     }
-    if (!changed) break;
+    for (const std::size_t c : reached) owner[c] = -1;
+    reached.clear();
+    std::sort(smalls.begin(), smalls.end(), [](const Small& a, const Small& b) { return a.first < b.first; });
+    changed.clear();
+    for (const Small& p : smalls) {
+      const int h = height[small_cells[p.begin]];
+      border.clear();
+      for (std::size_t k = p.begin; k < p.end; ++k)
+        for_neighbours(small_cells[k], [&](std::size_t n) {
+          if (!room[n] || height[n] == h) return;
+          const auto it = std::find_if(border.begin(), border.end(), [&](const auto& e) { return e.first == height[n]; });
+          if (it == border.end()) border.push_back({height[n], 1});
+          else ++it->second;
+        });
+      if (border.empty()) continue;
+      // The most shared border; on a tie the nearer height, then the lower.
+      const auto best = std::min_element(border.begin(), border.end(), [&](const auto& a, const auto& b) {
+        if (a.second != b.second) return a.second > b.second;
+        if (std::abs(a.first - h) != std::abs(b.first - h)) return std::abs(a.first - h) < std::abs(b.first - h);
+        return a.first < b.first;
+      });
+      for (std::size_t k = p.begin; k < p.end; ++k) height[small_cells[k]] = best->first;
+      changed.insert(changed.end(), small_cells.begin() + std::ptrdiff_t(p.begin), small_cells.begin() + std::ptrdiff_t(p.end));
+    }
+    from.clear();
+    for (const std::size_t c : changed) {
+      from.push_back(c);
+      for_neighbours(c, [&](std::size_t n) {
+        if (room[n]) from.push_back(n);
+      });
+    }
   }
 }
 

@@ -177,17 +177,20 @@ struct SliceRecord {
 // One axis's triangles over its own numbering of the points; the axes are merged in order at the end.
 class MeshBuilder {
  public:
-  // Where a slice begins, and what it added since (a SliceRecord).
-  std::pair<std::size_t, std::size_t> mark() const { return {points_.size(), indices_.size()}; }
+  // Begins a slice: no point of an earlier slice lies in its plane. Returns where it begins, for since().
+  std::pair<std::size_t, std::size_t> begin_slice() {
+    index_.clear();
+    return {points_.size(), indices_.size()};
+  }
   SliceRecord since(std::pair<std::size_t, std::size_t> mark) const {
     SliceRecord r{{points_.begin() + std::ptrdiff_t(mark.first), points_.end()}, {}};
     for (std::size_t i = mark.second; i < indices_.size(); ++i) r.triangles.push_back(indices_[i] - std::uint32_t(mark.first));
     return r;
   }
-  // Adds a slice as meshing it added it.
+  // Adds a slice as meshing it added it (its points are new to the builder, and no later slice looks them up).
   void replay(const SliceRecord& r) {
     const auto first = std::uint32_t(points_.size());
-    for (const Point& p : r.points) vertex(p);
+    points_.insert(points_.end(), r.points.begin(), r.points.end());
     for (const std::uint32_t i : r.triangles) indices_.push_back(first + i);
   }
   std::uint32_t vertex(const Point& p) {
@@ -212,7 +215,7 @@ class MeshBuilder {
  private:
   std::vector<Point> points_;
   std::vector<std::uint32_t> indices_;
-  std::unordered_map<Point, std::uint32_t, PointHash> index_;
+  std::unordered_map<Point, std::uint32_t, PointHash> index_;  // the points of the slice being meshed
 };
 
 // One slice's mask (Eq. 3.63 with the orientation folded in: +1 where the face points +c, -1 where it points
@@ -406,7 +409,7 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
       if (reuse.records) (*reuse.records)[slot] = kept;
       continue;
     }
-    const auto mark = out.mark();
+    const auto mark = out.begin_slice();
     const std::uint8_t* below = c >= c0 ? base + c * sc : nullptr;
     const std::uint8_t* above = c + 1 <= c_end ? base + (c + 1) * sc : nullptr;
     const auto face = [&](std::ptrdiff_t off) {

@@ -138,8 +138,9 @@ ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_compute(rs_analyzer* analyzer, const
  * compute runs: the change waits for the next rs_analyzer_compute_chunks, which analyses every chunk held,
  * in id order, as one scan, and gives the same result as rs_analyzer_compute on that scan. It voxelizes only
  * the chunks changed since the last one (while the grid's extent stays), derives again only what the change
- * can reach (the area searches near it; features and bounds when the voxels changed), and when nothing
- * changed it keeps the previous result at once. rs_analyzer_compute does not touch the chunks. */
+ * can reach (the area searches near it; features when the voxels changed; the bounds meshes through the voxel
+ * layers that changed; the input checks and surface heights of the changed chunks), and when nothing changed
+ * it keeps the previous result at once. rs_analyzer_compute does not touch the chunks. */
 ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_set_chunk(rs_analyzer* analyzer, uint64_t chunk_id, const float* xyz,
                                                       uint32_t vertex_count, const uint32_t* indices,
                                                       uint32_t index_count);

@@ -6,15 +6,20 @@
 // timings aside. What it reuses between results, each only where what it reads is as before:
 // - each chunk's voxels (its triangles' marks on the grid, kept per chunk while the grid and the chunk are
 //   unchanged): a change voxelizes only the chunks it touched;
+// - the combined scan, copied again from the first changed chunk (in id order) on, and each chunk's input
+//   checks (its finite vertices' bounds, against the outlier ranges) and its surface heights' sums (exact in
+//   any grouping), so unchanged chunks cost those passes nothing;
 // - the features and bounds, where the grid, the labels' voxels and the storeys' levels are the previous
 //   result's (a chunk refined within its voxels);
 // - each area search's rectangles by bands of 8 grid rows: a band is searched again only within the search's
 //   reach of a row whose features changed (areas/search_cache.h);
 // - an area type's whole reduction (deduplication, packing) where nothing its searches read changed, and its
 //   growth where its packed areas are also as before;
-// - packing's decisions away from the rectangles that changed (areas/reduce.h: PackReplay).
-// Levels, surface heights, reach and the rest of the features, areas and bounds are derived again. An
-// unchanged set of chunks returns the previous result at once.
+// - packing's decisions away from the rectangles that changed (areas/reduce.h: PackReplay);
+// - each bounds mesh's slices (the home's, each room's): only the slices through voxel layers whose bounds
+//   volume changed are meshed again (bounds/mesh_memo.h).
+// Levels, reach, the rest of the features, areas and bounds volumes are derived again. An unchanged set of
+// chunks returns the previous result at once.
 #pragma once
 #include "roomsense/analysis.h"
 #include "roomsense/scan.h"

@@ -41,28 +41,26 @@ struct CombinedScan {
   Scan scan;
   std::vector<Placed> placed;  // each chunk in `scan`, in order
   KnownInput known;            // a run per placed chunk; every index in range
+  // Where chunk k's vertices and indices end in `scan`'s.
+  std::size_t vertex_end(std::size_t k) const { return k + 1 < placed.size() ? placed[k + 1].vertex : scan.vertices.size(); }
+  std::size_t index_end(std::size_t k) const { return k + 1 < placed.size() ? placed[k + 1].index : scan.indices.size(); }
 };
 
 // The surface heights' sums (surface_heights.h) of a combined scan's bands, chunk by chunk: a band's sum is the
-// sum of its chunks' (ExactSum), and a chunk's is kept while the chunk and the band are as before, so an
+// sum of its chunks' (ExactSum), and a chunk's are kept while the chunk and the bands are as before, so an
 // analysis passes over the triangles of the chunks that changed, not all of them.
 class ChunkBandSums {
  public:
-  using Limits = std::pair<float, float>;  // band_limits
-  struct Band {
-    Limits limits;
-    std::vector<BandSum> chunks;  // per placed chunk
-  };
-  // The band's sums in each chunk of `c` (its triangles as they are: the input checks removed nothing), the
-  // kept ones where they are known. May run side by side with other calls of band().
-  Band band(const CombinedScan& c, Limits limits) const;
-  // Keeps `bands` (of c's chunks) for the next analysis, and no others.
-  void keep(const CombinedScan& c, const std::vector<Band>& bands);
+  // Each band's sums over c's chunks (their triangles as they are: the input checks removed nothing): the kept
+  // ones where they are known, the others one pass over the chunk each, `threads` chunks at a time. Keeps these
+  // for the next analysis, and no others.
+  std::vector<BandSum> sums(const CombinedScan& c, std::span<const BandLimits> bands, unsigned threads);
 
  private:
   struct Kept {
     std::uint64_t hash = 0;
-    std::vector<std::pair<Limits, BandSum>> bands;
+    std::vector<BandLimits> bands;
+    std::vector<BandSum> sums;  // per band
   };
   std::map<std::uint64_t, Kept> chunks_;  // by chunk id
 };

@@ -210,29 +210,36 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     count_columns(r.voxels.grid, r.voxels.levels, r.voxels.column_counts, r.voxels.column_any);
   }
   const FloorCeiling& levels = *r.voxels.levels;
-  // Each band's height from its chunks' sums where the scan is in chunks and the input checks removed nothing.
-  const bool by_chunks = chunks != nullptr && in.indices.data() == scan.indices.data() && !in.indices.empty();
-  std::vector<ChunkBandSums::Band> bands(by_chunks ? 2 * all.size() : 0);
-  const auto height = [&](std::size_t k, int lower, int upper) {
-    if (!by_chunks) return detail::surface_height(spec, in.vertices, in.indices, lower, upper);
-    bands[k] = caches->band_sums.band(*chunks, band_limits(spec, lower, upper));
-    BandSum sum;
-    for (const BandSum& part : bands[k].chunks) sum += part;
-    return sum.exact() ? band_height(sum, bands[k].limits)
-                       : detail::surface_height(spec, in.vertices, in.indices, lower, upper);
-  };
-  // Each storey's floor and ceiling heights, each a pass over the triangles: side by side. A raised storey's
-  // ceiling is its ridge: the highest point of the roof.
+  // Each storey's floor and ceiling heights: the sums over the triangles in their bands, in one pass over the
+  // triangles shared by the two workers, or from each chunk's sums where the scan is in chunks and the input
+  // checks removed nothing. A raised storey's ceiling is its ridge: the highest point of the roof.
   std::vector<float> heights(2 * all.size());
-  detail::parallel_tasks(heights.size(), options.threads, [&](std::size_t k) {
+  std::vector<BandLimits> bands;
+  std::vector<std::size_t> band_of(heights.size());
+  for (std::size_t k = 0; k < heights.size(); ++k) {
     const FloorCeiling& fc = *all[k / 2];
-    if (k % 2 == 0) heights[k] = height(k, fc.floor_peak, fc.floor);
-    else if (raised[k / 2]) heights[k] = detail::surface_top(spec, in.vertices, fc.ceiling, fc.ceiling_peak);
-    else heights[k] = height(k, fc.ceiling, fc.ceiling_peak);
-  });
-  if (by_chunks) {
-    std::erase_if(bands, [](const ChunkBandSums::Band& b) { return b.chunks.empty(); });
-    caches->band_sums.keep(*chunks, bands);
+    if (k % 2 == 1 && raised[k / 2]) heights[k] = detail::surface_top(spec, in.vertices, fc.ceiling, fc.ceiling_peak);
+    else band_of[k] = bands.size(), bands.push_back(k % 2 == 0 ? band_limits(spec, fc.floor_peak, fc.floor)
+                                                               : band_limits(spec, fc.ceiling, fc.ceiling_peak));
+  }
+  if (!in.indices.empty()) {
+    const bool by_chunks = chunks != nullptr && in.indices.data() == scan.indices.data();
+    const std::vector<BandSum> sums = by_chunks ? caches->band_sums.sums(*chunks, bands, options.threads)
+                                                : band_sums(in.vertices, in.indices, bands, options.threads);
+    for (std::size_t k = 0; k < heights.size(); ++k) {
+      if (k % 2 == 1 && raised[k / 2]) continue;
+      const BandSum& sum = sums[band_of[k]];
+      const FloorCeiling& fc = *all[k / 2];
+      heights[k] = sum.exact() ? band_height(sum, bands[band_of[k]])
+                   : k % 2 == 0 ? detail::surface_height(spec, in.vertices, in.indices, fc.floor_peak, fc.floor)
+                                : detail::surface_height(spec, in.vertices, in.indices, fc.ceiling, fc.ceiling_peak);
+    }
+  } else {
+    detail::parallel_tasks(heights.size(), options.threads, [&](std::size_t k) {
+      const FloorCeiling& fc = *all[k / 2];
+      if (k % 2 == 0) heights[k] = detail::surface_height(spec, in.vertices, in.indices, fc.floor_peak, fc.floor);
+      else if (!raised[k / 2]) heights[k] = detail::surface_height(spec, in.vertices, in.indices, fc.ceiling, fc.ceiling_peak);
+    });
   }
   r.floor_y = heights[0];
   r.ceiling_y = heights[1];

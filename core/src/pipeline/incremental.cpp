@@ -266,10 +266,7 @@ const AnalysisResult& IncrementalAnalysis::result() {
   std::vector<ChunkVoxelStage::Layout> layout;
   for (std::size_t k = 0; k < c.placed.size(); ++k) {
     const detail::CombinedScan::Placed& p = c.placed[k];
-    const bool last = k + 1 == c.placed.size();
-    const std::size_t vertex_end = last ? c.scan.vertices.size() : c.placed[k + 1].vertex,
-                      index_end = last ? c.scan.indices.size() : c.placed[k + 1].index;
-    layout.push_back({p.id, p.hash, p.vertex, vertex_end - p.vertex, p.index, index_end - p.index});
+    layout.push_back({p.id, p.hash, p.vertex, c.vertex_end(k) - p.vertex, p.index, c.index_end(k) - p.index});
   }
   stage_->set_layout(std::move(layout), c.scan.vertices.size(), c.scan.indices.size());
   result_.reset();

@@ -1,5 +1,7 @@
 #include "surface_heights.h"
 
+#include "../parallel.h"
+
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
@@ -8,68 +10,60 @@
 
 namespace roomsense::detail {
 
-void ExactSum::carry_in(std::int64_t whole, std::uint64_t fraction, std::uint64_t magnitude) {
-  fraction_ += fraction;
-  // Wraps silently only where the bound says inexact: |whole_| <= magnitude_ always.
-  whole_ = std::int64_t(std::uint64_t(whole_) + std::uint64_t(whole) + (fraction_ < fraction ? 1u : 0u));
-  magnitude_ = magnitude_ > kMaxMagnitude - std::min(magnitude, kMaxMagnitude) ? kMaxMagnitude + 1 : magnitude_ + magnitude;
-}
-
-void ExactSum::add(double term) {
-  if (!(std::fabs(term) < 0x1p40)) {
-    magnitude_ = kMaxMagnitude + 1;
-    return;
-  }
-  const double whole = std::floor(term);
-  // term - whole is exact (the bits of term below 1) and in [0, 1); scaled by 2^-64 exactly, truncated.
-  carry_in(std::int64_t(whole), std::uint64_t(std::ldexp(term - whole, 64)), std::uint64_t(std::fabs(whole)) + 1);
-}
-
-ExactSum& ExactSum::operator+=(const ExactSum& other) {
-  carry_in(other.whole_, other.fraction_, other.magnitude_);
-  return *this;
-}
-
-double ExactSum::value() const { return double(whole_) + std::ldexp(double(fraction_), -64); }
-
-std::pair<float, float> band_limits(const GridSpec& spec, int lo, int hi) {
+BandLimits band_limits(const GridSpec& spec, int lo, int hi) {
   return {spec.origin.y + (float(lo) - kVoxelTestEpsilon) * spec.voxel_size,
           spec.origin.y + (float(hi + 1) - kVoxelTestEpsilon) * spec.voxel_size};
 }
 
 namespace {
 
-// Calls f(cy, area2) for each near-horizontal triangle of `indices` whose centroid's height cy lies in the band
-// (area2: twice its area).
-template <class F>
-void for_band_triangles(std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,
-                        std::pair<float, float> limits, F&& f) {
-  const auto [y_lo, y_hi] = limits;
-  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
-    const glm::vec3 &a = vertices[indices[t]], &b = vertices[indices[t + 1]], &c = vertices[indices[t + 2]];
-    const float cy = (a.y + b.y + c.y) / 3.0f;
-    if (!(cy >= y_lo && cy < y_hi)) continue;  // most triangles: no cross product for them
-    const glm::vec3 n = glm::cross(b - a, c - a);
-    const float area2 = glm::length(n);
-    // Near-horizontal (within ~25°) either way up: scans disagree on winding.
-    if (area2 <= 0.0f || std::fabs(n.y) < 0.9f * area2) continue;
-    f(cy, area2);
-  }
+bool in_band(float y, BandLimits band) { return y >= band.first && y < band.second; }
+
+// Twice a triangle's area where it is near-horizontal (within ~25°, either way up: scans disagree on winding),
+// else 0.
+float horizontal_area2(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  const glm::vec3 n = glm::cross(b - a, c - a);
+  const float area2 = glm::length(n);
+  return area2 > 0.0f && std::fabs(n.y) >= 0.9f * area2 ? area2 : 0.0f;
 }
 
 }  // namespace
 
-BandSum band_sum(std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,
-                 std::pair<float, float> limits) {
-  BandSum sum;
-  for_band_triangles(vertices, indices, limits, [&](float cy, float area2) {
-    sum.weighted.add(double(cy) * area2);  // a product of two floats: exact in a double
-    sum.weight.add(area2);
-  });
-  return sum;
+std::vector<BandSum> band_sums(std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,
+                               std::span<const BandLimits> bands) {
+  std::vector<BandSum> sums(bands.size());
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const glm::vec3 &a = vertices[indices[t]], &b = vertices[indices[t + 1]], &c = vertices[indices[t + 2]];
+    const float cy = (a.y + b.y + c.y) / 3.0f;
+    float area2 = -1.0f;  // most triangles lie in no band: no cross product for them
+    for (std::size_t k = 0; k < bands.size(); ++k) {
+      if (!in_band(cy, bands[k])) continue;
+      if (area2 < 0.0f) area2 = horizontal_area2(a, b, c);
+      if (area2 == 0.0f) break;
+      sums[k].weighted.add(double(cy) * area2);  // a product of two floats: exact in a double
+      sums[k].weight.add(area2);
+    }
+  }
+  return sums;
 }
 
-float band_height(const BandSum& sum, std::pair<float, float> limits) {
+std::vector<BandSum> band_sums(std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,
+                               std::span<const BandLimits> bands, unsigned threads) {
+  // Blocks taken by whichever worker is free: a scan's floor and ceiling triangles lie in runs of its own order.
+  constexpr std::size_t kBlock = 8192;
+  const std::size_t triangles = indices.size() / 3, blocks = (triangles + kBlock - 1) / kBlock;
+  std::vector<std::vector<BandSum>> parts(blocks);
+  parallel_tasks(blocks, threads, [&](std::size_t b) {
+    const std::size_t begin = b * kBlock, end = std::min(triangles, begin + kBlock);
+    parts[b] = band_sums(vertices, indices.subspan(3 * begin, 3 * (end - begin)), bands);
+  });
+  std::vector<BandSum> sums(bands.size());
+  for (const std::vector<BandSum>& part : parts)
+    for (std::size_t k = 0; k < part.size(); ++k) sums[k] += part[k];
+  return sums;
+}
+
+float band_height(const BandSum& sum, BandLimits limits) {
   const double weight = sum.weight.value();
   if (weight > 0.0) return float(sum.weighted.value() / weight);
   return 0.5f * (limits.first + limits.second);
@@ -77,18 +71,22 @@ float band_height(const BandSum& sum, std::pair<float, float> limits) {
 
 float surface_height(const GridSpec& spec, std::span<const glm::vec3> vertices,
                      std::span<const std::uint32_t> indices, int lo, int hi) {
-  const std::pair<float, float> limits = band_limits(spec, lo, hi);
+  const BandLimits limits = band_limits(spec, lo, hi);
   const auto [y_lo, y_hi] = limits;
-  const auto in_band = [&](float y) { return y >= y_lo && y < y_hi; };
   double weighted = 0.0, weight = 0.0;
   if (!indices.empty()) {
-    const BandSum sum = band_sum(vertices, indices, limits);
+    const BandSum sum = band_sums(vertices, indices, std::span(&limits, 1)).front();
     if (sum.exact()) return band_height(sum, limits);
     // Terms too large for the fixed point (coordinates of 10^6 m and more): summed in order.
-    for_band_triangles(vertices, indices, limits, [&](float cy, float area2) {
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+      const glm::vec3 &a = vertices[indices[t]], &b = vertices[indices[t + 1]], &c = vertices[indices[t + 2]];
+      const float cy = (a.y + b.y + c.y) / 3.0f;
+      if (!in_band(cy, limits)) continue;
+      const float area2 = horizontal_area2(a, b, c);
+      if (area2 == 0.0f) continue;
       weighted += double(cy) * area2;
       weight += area2;
-    });
+    }
   } else {
     // A point cloud has no normals: wall points spread evenly over the band while the surface's pile up, so
     // take the fullest 1 cm bin and average the points within a bin of it.
@@ -96,10 +94,10 @@ float surface_height(const GridSpec& spec, std::span<const glm::vec3> vertices,
     std::vector<std::uint32_t> bins(std::size_t(std::max(1.0f, std::ceil((y_hi - y_lo) / kBin))), 0);
     const auto bin_of = [&](float y) { return std::min(bins.size() - 1, std::size_t((y - y_lo) / kBin)); };
     for (const glm::vec3& v : vertices)
-      if (in_band(v.y)) ++bins[bin_of(v.y)];
+      if (in_band(v.y, limits)) ++bins[bin_of(v.y)];
     const std::size_t peak = std::size_t(std::max_element(bins.begin(), bins.end()) - bins.begin());
     for (const glm::vec3& v : vertices)
-      if (in_band(v.y) && bin_of(v.y) + 1 >= peak && bin_of(v.y) <= peak + 1) {
+      if (in_band(v.y, limits) && bin_of(v.y) + 1 >= peak && bin_of(v.y) <= peak + 1) {
         weighted += v.y;
         weight += 1.0;
       }

@@ -3,29 +3,39 @@
 #include "roomsense/analysis.h"
 #include "roomsense/features.h"
 
+#include <cmath>
 #include <cstdint>
 #include <span>
+#include <utility>
+#include <vector>
 
 namespace roomsense::detail {
 
-// A sum of doubles kept in fixed point, in units of 2^-64, so that it comes out the same however its terms are
-// grouped: the surface heights of an IncrementalAnalysis add up each chunk's sums, and must equal one pass over
-// the combined scan. A term's bits below 2^-64 are dropped. A term of 2^40 or more, or terms whose magnitudes
-// add up past 2^61, make the sum inexact (the caller then sums in one pass, in order); that too is a property of
-// the terms, not of their grouping.
+// A sum of doubles kept in fixed point, in units of 2^-48 in 128 bits, so that it comes out the same however its
+// terms are grouped: the surface heights of an IncrementalAnalysis add up each chunk's sums, and must equal one
+// pass over the combined scan. Each term is truncated to whole units (at most 3.6e-15 off); a term of 2^15 or
+// more (or not finite) makes the sum inexact, and the caller then sums in one pass, in order. That too is a
+// property of the terms, not of their grouping, and 2^64 terms of 2^63 units fit.
 class ExactSum {
  public:
-  void add(double term);
-  ExactSum& operator+=(const ExactSum& other);
-  double value() const;
-  bool exact() const { return magnitude_ <= kMaxMagnitude; }
+  void add(double term) {
+    if (!(std::fabs(term) < 0x1p15)) {
+      in_range_ = false;
+      return;
+    }
+    sum_ += Wide(std::int64_t(term * 0x1p48));  // scaling by 2^48 is exact; the cast truncates
+  }
+  ExactSum& operator+=(const ExactSum& other) {
+    sum_ += other.sum_, in_range_ = in_range_ && other.in_range_;
+    return *this;
+  }
+  double value() const { return std::ldexp(double(sum_), -48); }
+  bool exact() const { return in_range_; }
 
  private:
-  static constexpr std::uint64_t kMaxMagnitude = std::uint64_t{1} << 61;
-  void carry_in(std::int64_t whole, std::uint64_t fraction, std::uint64_t magnitude);
-  std::int64_t whole_ = 0;      // the sum's integer part (floor)
-  std::uint64_t fraction_ = 0;  // and its fraction, in units of 2^-64
-  std::uint64_t magnitude_ = 0;  // a bound on |whole_| over any grouping: the terms' |floor| + 1, summed
+  __extension__ typedef __int128 Wide;
+  Wide sum_ = 0;
+  bool in_range_ = true;
 };
 
 // surface_height's sums over some triangles of a scan in one band of levels.
@@ -39,12 +49,16 @@ struct BandSum {
 };
 // The band [lo, hi]'s limits in metres, as triangle mode sees the levels (test cubes sit kVoxelTestEpsilon below
 // the voxels).
-std::pair<float, float> band_limits(const GridSpec& spec, int lo, int hi);
-// The sums over `indices` (some of a scan's triangles, in `vertices`) in the band `limits`.
-BandSum band_sum(std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,
-                 std::pair<float, float> limits);
+using BandLimits = std::pair<float, float>;
+BandLimits band_limits(const GridSpec& spec, int lo, int hi);
+// Each band's sums over `indices` (some of a scan's triangles, in `vertices`), in one pass over them.
+std::vector<BandSum> band_sums(std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,
+                               std::span<const BandLimits> bands);
+// The same, the triangles split among `threads` workers (the sums do not depend on how).
+std::vector<BandSum> band_sums(std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,
+                               std::span<const BandLimits> bands, unsigned threads);
 // surface_height from the band's sums over all the scan's triangles, where they are exact.
-float band_height(const BandSum& sum, std::pair<float, float> limits);
+float band_height(const BandSum& sum, BandLimits limits);
 
 // The height of the scanned surface in the levels [lo, hi]: the area-weighted mean height of near-horizontal
 // triangles there, or of the vertices there for a point cloud; the middle of the band if neither exists.

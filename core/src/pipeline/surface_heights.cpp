@@ -72,7 +72,7 @@ float band_height(const BandSum& sum, BandLimits limits) {
 float surface_height(const GridSpec& spec, std::span<const glm::vec3> vertices,
                      std::span<const std::uint32_t> indices, int lo, int hi) {
   const BandLimits limits = band_limits(spec, lo, hi);
-  const auto [y_lo, y_hi] = limits;
+  const float y_lo = limits.first, y_hi = limits.second;
   double weighted = 0.0, weight = 0.0;
   if (!indices.empty()) {
     const BandSum sum = band_sums(vertices, indices, std::span(&limits, 1)).front();

@@ -6,6 +6,7 @@
 #include "parallel.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace roomsense {
@@ -72,7 +73,6 @@ void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& 
   for (std::size_t c = 0; c < room.size(); ++c)
     if (room[c]) from.push_back(c);
   std::vector<int> owner(height.size(), -1);  // the search that reached a column in this pass
-  std::vector<std::uint8_t> large;            // per search: it found min_cells columns or more
   std::vector<std::size_t> reached, cells, stack, changed;
   struct Small {
     std::size_t first, begin, end;  // its first column; its columns in `small_cells`
@@ -84,10 +84,10 @@ void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& 
     // The small plateaus reached from `from`, as they are at the start of the pass.
     smalls.clear();
     small_cells.clear();
-    large.clear();
+    int searches = 0;
     for (const std::size_t start : from) {
       if (owner[start] >= 0) continue;
-      const int id = int(large.size()), h = height[start];
+      const int id = searches++, h = height[start];
       bool is_large = false;
       cells.clear();
       stack.assign(1, start);
@@ -109,7 +109,6 @@ void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& 
           }
         });
       }
-      large.push_back(is_large ? 1 : 0);
       if (is_large) continue;
       smalls.push_back({*std::min_element(cells.begin(), cells.end()), small_cells.size(), small_cells.size() + cells.size()});
       small_cells.insert(small_cells.end(), cells.begin(), cells.end());
@@ -364,12 +363,22 @@ BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& 
       part_storey[to] = (*storey.room)[from];
       if (storey.ceiling != nullptr) part_ceiling[to] = (*storey.ceiling)[from];
     }
+  // The room's inputs as they were: its mesh as it was.
+  MeshMemo::RoomInputs inputs;
+  if (memo) {
+    inputs = {crop, part.cells, part_room, part_storey, part_ceiling, storey.levels, storey.y_end,
+              std::bit_cast<std::uint32_t>(params.min_plateau_area)};
+    if (memo->room == inputs) return memo->room_mesh;
+    memo->room.reset();  // kept again below, once the mesh is built
+  }
   BoundsStorey cropped = storey;
   cropped.room = &part_storey;
   cropped.ceiling = &part_ceiling;
   std::vector<std::uint8_t> volume = room_bounds_volume(part, cropped, part_room, params, threads, stop);
   fill_edge_contacts(crop, volume);
-  return detail::mesh_volume(crop, volume, threads, std::move(stop), memo);
+  BoundsMesh mesh = detail::mesh_volume(crop, volume, threads, std::move(stop), memo);
+  if (memo) memo->room = std::move(inputs), memo->room_mesh = mesh;
+  return mesh;
 }
 
 BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys, const BoundsParams& params,

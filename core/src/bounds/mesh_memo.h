@@ -3,6 +3,7 @@
 #include "roomsense/bounds.h"
 
 #include <memory>
+#include <optional>
 #include <stop_token>
 
 namespace roomsense::detail {
@@ -11,6 +12,10 @@ namespace roomsense::detail {
 // triangles). A slice between two voxel layers that are as they were meshes as it did (its mask, and the surface
 // corners in its plane, come from those two layers alone), so mesh_volume meshes again only the slices through
 // a change and replays the others, with the same result as meshing them all.
+//
+// build_room_bounds also keeps what it built a room's mesh from (`room`: the room's crop of the grid, its masks,
+// ceilings, levels and parameters) and the mesh: the same inputs give the same mesh, which a change elsewhere in
+// the home leaves to the rooms it did not reach.
 class MeshMemo {
  public:
   MeshMemo();
@@ -18,6 +23,18 @@ class MeshMemo {
   MeshMemo(MeshMemo&&) noexcept;
   MeshMemo& operator=(MeshMemo&&) noexcept;
   struct State;
+
+  struct RoomInputs {
+    GridSpec crop{};
+    std::vector<std::uint8_t> cells, room, storey;
+    std::vector<int> ceiling;
+    FloorCeiling levels{};
+    int y_end = 0;
+    std::uint32_t min_plateau_area_bits = 0;  // BoundsParams, bit for bit
+    bool operator==(const RoomInputs&) const = default;
+  };
+  std::optional<RoomInputs> room;  // where the mesh below is a room's
+  BoundsMesh room_mesh;
 
  private:
   friend BoundsMesh mesh_volume(const GridSpec&, const std::vector<std::uint8_t>&, unsigned, std::stop_token,

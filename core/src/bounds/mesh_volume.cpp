@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <optional>
 #include <unordered_map>
 
 namespace roomsense {
@@ -363,18 +364,24 @@ struct SliceReuse {
 };
 
 void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const Box& box, const Axes& ax,
-               const SurfaceCorners& corners, MeshBuilder& out, const std::stop_token& stop, const SliceReuse& reuse) {
+               const SurfaceCorners* corners, MeshBuilder& out, const std::stop_token& stop, const SliceReuse& reuse) {
   // Strides of GridSpec::index per axis: x -> ny, y -> 1, z -> nx * ny.
   const std::ptrdiff_t stride[3] = {s.ny, 1, std::ptrdiff_t(s.nx) * s.ny};
   const std::ptrdiff_t sa = stride[ax.a], sb = stride[ax.b], sc = stride[ax.c];
   const int a0 = box.lo[ax.a], b0 = box.lo[ax.b], c0 = box.lo[ax.c];
   const int na = box.hi[ax.a] - a0 + 1, nb = box.hi[ax.b] - b0 + 1, c_end = box.hi[ax.c];
   const std::uint8_t* base = volume.data() + a0 * sa + b0 * sb;
-  SliceMesher slice(na, nb);
+  // Slice c is replayed where layers c and c + 1 are as they were; with every slice replayed nothing is meshed.
+  const auto replayed = [&](int c) {
+    return reuse.kept && !(c >= c0 && (*reuse.changed)[std::size_t(c)]) && !(c + 1 <= c_end && (*reuse.changed)[std::size_t(c + 1)]);
+  };
+  bool meshes = false;
+  for (int c = c0 - 1; c <= c_end && !meshes; ++c) meshes = !replayed(c);
+  SliceMesher slice(meshes ? na : 0, meshes ? nb : 0);
   // Slice c lies between voxel layers c and c + 1; outside the box both are empty. Along y (stride 1) the
   // faces are found once, column by column, and kept per slice, each slice's in row order.
   std::vector<std::vector<std::array<int, 2>>> y_faces;
-  if (sc == 1) {
+  if (sc == 1 && meshes) {
     y_faces.resize(std::size_t(c_end - c0 + 2));
     for (int b = 0; b < nb; ++b)
       for (int a = 0; a < na; ++a) {
@@ -403,7 +410,7 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
   for (int c = c0 - 1; c <= c_end; ++c) {
     stop_point(stop);
     const std::size_t slot = std::size_t(c - c0 + 1);
-    if (reuse.kept && !(c >= c0 && (*reuse.changed)[std::size_t(c)]) && !(c + 1 <= c_end && (*reuse.changed)[std::size_t(c + 1)])) {
+    if (replayed(c)) {
       const SliceRecord& kept = (*reuse.kept)[slot];
       out.replay(kept);
       if (reuse.records) (*reuse.records)[slot] = kept;
@@ -436,7 +443,7 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
     }
     if (!slice.empty())
       slice.mesh(
-          corners,
+          *corners,  // meshing a slice: the volume changed, and its corners were found
           [&](int a, int b) {
             Point p;
             p.v[ax.a] = a0 + a;
@@ -500,11 +507,16 @@ BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint
   std::array<std::vector<std::uint8_t>, 3> changed;
   if (kept) changed = changed_layers(spec, kept->volume, volume);
   auto next = memo ? std::make_unique<MeshMemo::State>() : nullptr;
-  const SurfaceCorners corners(spec, volume, box, threads, stop);
+  // Every slice replayed: no corner is read.
+  bool all_kept = kept != nullptr;
+  for (const std::vector<std::uint8_t>& layers : changed)
+    all_kept = all_kept && std::find(layers.begin(), layers.end(), std::uint8_t{1}) == layers.end();
+  std::optional<SurfaceCorners> corners;
+  if (!all_kept) corners.emplace(spec, volume, box, threads, stop);
   MeshBuilder parts[3];
   detail::parallel_tasks(3, threads, [&](std::size_t axis) {
     const int c = kAxes[axis].c;
-    mesh_axis(spec, volume, box, kAxes[axis], corners, parts[axis], stop,
+    mesh_axis(spec, volume, box, kAxes[axis], corners ? &*corners : nullptr, parts[axis], stop,
               {kept ? &kept->slices[axis] : nullptr, kept ? &changed[std::size_t(c)] : nullptr,
                next ? &next->slices[axis] : nullptr});
   });

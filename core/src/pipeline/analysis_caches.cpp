@@ -14,6 +14,7 @@ std::vector<BandSum> ChunkBandSums::sums(const CombinedScan& c, std::span<const 
   for (std::size_t k = 0; k < c.placed.size(); ++k) {
     const CombinedScan::Placed& p = c.placed[k];
     const auto it = chunks_.find(p.id);
+    // Moved out: should this analysis fail, an entry left behind has no bands, and is never taken for kept.
     if (it != chunks_.end() && it->second.hash == p.hash && it->second.bands == wanted) now.emplace(p.id, std::move(it->second));
     else missing.push_back(k);
   }

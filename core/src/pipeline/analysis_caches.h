@@ -1,5 +1,6 @@
-// What an IncrementalAnalysis keeps between its analyses besides each chunk's voxels: each storey's area
-// searches by bands of rows (areas/search_cache.h).
+// What an IncrementalAnalysis keeps between its analyses besides each chunk's voxels: its combined scan with each
+// chunk's input summary and surface sums, each storey's area searches by bands of rows (areas/search_cache.h), the
+// features and bounds of the latest voxels, and each bounds mesh's slices (bounds/mesh_memo.h).
 #pragma once
 #include "roomsense/analysis.h"
 #include "../areas/search_cache.h"
@@ -8,7 +9,6 @@
 #include "surface_heights.h"
 
 #include <map>
-
 #include <memory>
 #include <optional>
 #include <vector>

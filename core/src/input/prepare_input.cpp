@@ -12,8 +12,9 @@ namespace {
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// The [q, 1-q] quantiles of one axis over the kept vertices (`keep` empty: all), widened by the outlier margin. Quantiles of an evenly strided sample
-// of at most kQuantileSample vertices are as good for this and keep large scans cheap.
+// The [q, 1-q] quantiles of one axis over the kept vertices (`keep` empty: all), widened by the outlier margin.
+// Quantiles of an evenly strided sample of at most kQuantileSample vertices are as good for this and keep large
+// scans cheap.
 constexpr std::size_t kQuantileSample = 16384;
 std::pair<float, float> robust_range(const std::vector<glm::vec3>& vertices, const std::vector<std::uint8_t>& keep, int axis) {
   std::vector<float> values;
@@ -133,13 +134,11 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
   }
 
   const bool renumbered = out.skipped_vertices != 0 || out.outlier_vertices != 0;  // else: the usual case
+  // The kept vertices' bounds: the runs' where none was removed.
   if (renumbered) {
     renumber_kept(scan, keep, out);
-    out.lo = out.hi = out.vertices.front();
-    for (const glm::vec3& v : out.vertices) {
-      out.lo = glm::min(out.lo, v);
-      out.hi = glm::max(out.hi, v);
-    }
+    const detail::VertexRun kept = detail::summarize_vertices(out.vertices);
+    out.lo = kept.lo, out.hi = kept.hi;
   } else {
     out.lo = glm::vec3(INFINITY), out.hi = glm::vec3(-INFINITY);
     for (const detail::VertexRun& run : runs) {

@@ -41,8 +41,7 @@ struct CombinedScan {
   Scan scan;
   std::vector<Placed> placed;  // each chunk in `scan`, in order
   KnownInput known;            // a run per placed chunk; every index in range
-  // Where chunk k's vertices and indices end in `scan`'s.
-  std::size_t vertex_end(std::size_t k) const { return k + 1 < placed.size() ? placed[k + 1].vertex : scan.vertices.size(); }
+  // Where chunk k's indices end in `scan`'s.
   std::size_t index_end(std::size_t k) const { return k + 1 < placed.size() ? placed[k + 1].index : scan.indices.size(); }
 };
 

@@ -213,34 +213,30 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   // Each storey's floor and ceiling heights: the sums over the triangles in their bands, in one pass over the
   // triangles shared by the two workers, or from each chunk's sums where the scan is in chunks and the input
   // checks removed nothing. A raised storey's ceiling is its ridge: the highest point of the roof.
-  std::vector<float> heights(2 * all.size());
-  std::vector<BandLimits> bands;
-  std::vector<std::size_t> band_of(heights.size());
-  for (std::size_t k = 0; k < heights.size(); ++k) {
+  // Height k is storey k / 2's floor (k even) or ceiling, in the levels [lo, hi].
+  const auto levels_of = [&](std::size_t k) {
     const FloorCeiling& fc = *all[k / 2];
-    if (k % 2 == 1 && raised[k / 2]) heights[k] = detail::surface_top(spec, in.vertices, fc.ceiling, fc.ceiling_peak);
-    else band_of[k] = bands.size(), bands.push_back(k % 2 == 0 ? band_limits(spec, fc.floor_peak, fc.floor)
-                                                               : band_limits(spec, fc.ceiling, fc.ceiling_peak));
-  }
-  if (!in.indices.empty()) {
-    const bool by_chunks = chunks != nullptr && in.indices.data() == scan.indices.data();
-    const std::vector<BandSum> sums = by_chunks ? caches->band_sums.sums(*chunks, bands, options.threads)
-                                                : band_sums(in.vertices, in.indices, bands, options.threads);
-    for (std::size_t k = 0; k < heights.size(); ++k) {
-      if (k % 2 == 1 && raised[k / 2]) continue;
-      const BandSum& sum = sums[band_of[k]];
-      const FloorCeiling& fc = *all[k / 2];
-      heights[k] = sum.exact() ? band_height(sum, bands[band_of[k]])
-                   : k % 2 == 0 ? detail::surface_height(spec, in.vertices, in.indices, fc.floor_peak, fc.floor)
-                                : detail::surface_height(spec, in.vertices, in.indices, fc.ceiling, fc.ceiling_peak);
-    }
-  } else {
-    detail::parallel_tasks(heights.size(), options.threads, [&](std::size_t k) {
-      const FloorCeiling& fc = *all[k / 2];
-      if (k % 2 == 0) heights[k] = detail::surface_height(spec, in.vertices, in.indices, fc.floor_peak, fc.floor);
-      else if (!raised[k / 2]) heights[k] = detail::surface_height(spec, in.vertices, in.indices, fc.ceiling, fc.ceiling_peak);
-    });
-  }
+    return k % 2 == 0 ? std::pair(fc.floor_peak, fc.floor) : std::pair(fc.ceiling, fc.ceiling_peak);
+  };
+  const auto ridge = [&](std::size_t k) { return k % 2 == 1 && raised[k / 2]; };
+  std::vector<float> heights(2 * all.size());
+  std::vector<BandLimits> bands;  // of the heights but ridges, in order
+  std::vector<std::size_t> band_of(heights.size());
+  for (std::size_t k = 0; k < heights.size(); ++k)
+    if (!ridge(k)) band_of[k] = bands.size(), bands.push_back(band_limits(spec, levels_of(k).first, levels_of(k).second));
+  std::vector<BandSum> sums;  // as `bands`; none for a point cloud
+  if (!in.indices.empty())
+    sums = chunks != nullptr && in.indices.data() == scan.indices.data()
+               ? caches->band_sums.sums(*chunks, bands, options.threads)
+               : band_sums(in.vertices, in.indices, bands, options.threads);
+  // From the sums at once; a ridge, a point cloud's (or terms past the sums) a pass each, side by side.
+  detail::parallel_tasks(heights.size(), sums.empty() ? options.threads : 1, [&](std::size_t k) {
+    const auto [lo, hi] = levels_of(k);
+    const std::size_t b = band_of[k];
+    heights[k] = ridge(k)                           ? detail::surface_top(spec, in.vertices, lo, hi)
+                 : !sums.empty() && sums[b].exact() ? band_height(sums[b], bands[b])
+                                                    : detail::surface_height(spec, in.vertices, in.indices, lo, hi);
+  });
   r.floor_y = heights[0];
   r.ceiling_y = heights[1];
   // Eq. 3.9/3.10 keep levels 1.5 m apart, but the surfaces inside them may be closer (a lone wall's two

@@ -51,44 +51,37 @@ std::uint64_t content_hash(const Scan& scan) {
 
 }  // namespace
 
-// Serves the voxel stage of analyze() from the chunks' kept voxels. Before each analysis the owner says where
-// each chunk's triangles lie in the combined scan (set_layout).
+// Serves the voxel stage of analyze() from the chunks' kept voxels. Before each analysis the owner gives it the
+// combined scan, which says where each chunk's triangles lie (set_chunks).
 class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
  public:
-  struct Layout {
-    std::uint64_t id = 0, hash = 0;
-    std::size_t first_vertex = 0, vertex_count = 0, first_index = 0, index_count = 0;
-  };
-
   explicit ChunkVoxelStage(unsigned threads) : threads_(threads) {}
   std::string name() const override { return CpuVoxelStage().name(); }
 
-  void set_layout(std::vector<Layout> layout, std::size_t vertices, std::size_t indices) {
-    layout_ = std::move(layout);
-    combined_vertices_ = vertices;
-    combined_indices_ = indices;
-  }
+  void set_chunks(const detail::CombinedScan& combined) { combined_ = &combined; }
   std::size_t revoxelized() const { return revoxelized_; }
 
   VoxelStageResult run(const VoxelizeRequest& request) override {
     revoxelized_ = 0;
     // prepare_input dropped or renumbered something, or there are no triangles: the stage in full.
-    if (request.mode != VoxelMode::Triangles || request.grid_vertices.size() != combined_vertices_ ||
-        request.indices.size() != combined_indices_) {
+    const detail::CombinedScan& c = *combined_;
+    if (request.mode != VoxelMode::Triangles || request.grid_vertices.size() != c.scan.vertices.size() ||
+        request.indices.size() != c.scan.indices.size()) {
       kept_.clear();
-      revoxelized_ = layout_.size();
+      revoxelized_ = c.placed.size();
       return CpuVoxelStage(threads_).run(request);
     }
     if (request.spec != spec_) kept_.clear(), spec_ = request.spec;
     std::map<std::uint64_t, Kept> now;
     try {
-      for (const Layout& chunk : layout_) {
+      for (std::size_t k = 0; k < c.placed.size(); ++k) {
+        const detail::CombinedScan::Placed& chunk = c.placed[k];
         const auto it = kept_.find(chunk.id);
         if (it != kept_.end() && it->second.hash == chunk.hash) {
           now.emplace(chunk.id, std::move(it->second));
           continue;
         }
-        now.emplace(chunk.id, voxelize_chunk(request, chunk));
+        now.emplace(chunk.id, voxelize_chunk(request, chunk.hash, request.indices.subspan(chunk.index, c.index_end(k) - chunk.index)));
         ++revoxelized_;
       }
     } catch (...) {
@@ -121,13 +114,14 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     std::uint64_t tests = 0;
   };
 
-  // The chunk's triangles alone on the grid; its marks lie within its vertices' box (box_index per axis).
-  Kept voxelize_chunk(const VoxelizeRequest& request, const Layout& chunk) {
+  // The chunk's triangles (`indices`, part of the request's) alone on the grid; its marks lie within its vertices'
+  // box (box_index per axis).
+  Kept voxelize_chunk(const VoxelizeRequest& request, std::uint64_t hash, std::span<const std::uint32_t> indices) {
     Kept k;
-    k.hash = chunk.hash;
-    if (chunk.index_count == 0) return k;
+    k.hash = hash;
+    if (indices.empty()) return k;
     VoxelizeRequest part = request;
-    part.indices = request.indices.subspan(chunk.first_index, chunk.index_count);
+    part.indices = indices;
     // One scratch grid for every chunk, cleared over each chunk's box after use: a chunk costs its box, not the
     // grid (the first result of a room in a hundred chunks cleared the whole grid a hundred times).
     // A failure here reaches run(), which drops the scratch grid with whatever marks it holds.
@@ -153,8 +147,7 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
   }
 
   unsigned threads_;
-  std::vector<Layout> layout_;
-  std::size_t combined_vertices_ = 0, combined_indices_ = 0;
+  const detail::CombinedScan* combined_ = nullptr;  // the owner's, set before each analysis
   GridSpec spec_{};
   std::map<std::uint64_t, Kept> kept_;
   std::size_t revoxelized_ = 0;
@@ -262,15 +255,9 @@ const AnalysisResult& IncrementalAnalysis::result() {
   reused_ = !dirty_ && result_.has_value();
   if (reused_) return *result_;
   update_combined();
-  const detail::CombinedScan& c = caches_->combined;
-  std::vector<ChunkVoxelStage::Layout> layout;
-  for (std::size_t k = 0; k < c.placed.size(); ++k) {
-    const detail::CombinedScan::Placed& p = c.placed[k];
-    layout.push_back({p.id, p.hash, p.vertex, c.vertex_end(k) - p.vertex, p.index, c.index_end(k) - p.index});
-  }
-  stage_->set_layout(std::move(layout), c.scan.vertices.size(), c.scan.indices.size());
+  stage_->set_chunks(caches_->combined);
   result_.reset();
-  result_ = detail::analyze(c.scan, options_, caches_.get());
+  result_ = detail::analyze(caches_->combined.scan, options_, caches_.get());
   dirty_ = false;
   return *result_;
 }

@@ -77,7 +77,7 @@ float surface_height(const GridSpec& spec, std::span<const glm::vec3> vertices,
   if (!indices.empty()) {
     const BandSum sum = band_sums(vertices, indices, std::span(&limits, 1)).front();
     if (sum.exact()) return band_height(sum, limits);
-    // Terms too large for the fixed point (coordinates of 10^6 m and more): summed in order.
+    // Terms past the fixed point's (a height times an area of 2^15 and more): summed in order.
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
       const glm::vec3 &a = vertices[indices[t]], &b = vertices[indices[t + 1]], &c = vertices[indices[t + 2]];
       const float cy = (a.y + b.y + c.y) / 3.0f;

@@ -1,6 +1,9 @@
 // A minimal fork-join loop. Each worker owns a fixed contiguous slice of [0, n), so results never depend
-// on timing or on the thread count.
+// on timing or on the thread count. The workers run on the thread's current pool (worker_pool.h), or on threads
+// started for the loop where there is none.
 #pragma once
+#include "worker_pool.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
@@ -16,6 +19,24 @@ inline unsigned resolve_threads(unsigned requested) {
   if (requested != 0) return requested;
   const unsigned hw = std::thread::hardware_concurrency();
   return hw == 0 ? 1 : hw;
+}
+
+// Runs work(w) for every w in [0, workers): w = 0 on this thread, the others on the current pool or on threads
+// of their own. `work` must not throw.
+template <class Work>
+void run_workers(std::size_t workers, Work&& work) {
+  if (workers <= 1) {
+    if (workers == 1) work(std::size_t{0});
+    return;
+  }
+  if (WorkerPool* pool = WorkerPool::current(); pool != nullptr && pool->threads() > 0) {
+    pool->run(workers, [&work](std::size_t w) { work(w); });
+    return;
+  }
+  std::vector<std::jthread> threads;
+  threads.reserve(workers - 1);
+  for (std::size_t w = 1; w < workers; ++w) threads.emplace_back(work, w);
+  work(std::size_t{0});
 }
 
 // How many workers parallel_for uses: at most `threads`, each with a slice of at least min_grain items.
@@ -43,12 +64,7 @@ void parallel_for(std::size_t n, unsigned threads, std::size_t min_grain, Body&&
       if (!failure) failure = std::current_exception();
     }
   };
-  {
-    std::vector<std::jthread> pool;
-    pool.reserve(workers - 1);
-    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(run, w);
-    run(0);
-  }
+  run_workers(workers, run);
   if (failure) std::rethrow_exception(failure);
 }
 
@@ -65,7 +81,7 @@ void parallel_tasks(std::size_t n, unsigned threads, Task&& task) {
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;  // the first exception of any worker, rethrown here once all have joined
   std::mutex failure_mutex;
-  const auto work = [&] {
+  const auto work = [&](std::size_t) {
     try {
       for (std::size_t i = next++; i < n; i = next++) task(i);
     } catch (...) {
@@ -74,12 +90,7 @@ void parallel_tasks(std::size_t n, unsigned threads, Task&& task) {
       if (!failure) failure = std::current_exception();
     }
   };
-  {
-    std::vector<std::jthread> pool;
-    pool.reserve(workers - 1);
-    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
-    work();
-  }
+  run_workers(workers, work);
   if (failure) std::rethrow_exception(failure);
 }
 
@@ -102,7 +113,7 @@ void parallel_graph(const std::vector<std::vector<std::size_t>>& after, unsigned
   std::mutex mutex;
   std::condition_variable changed;
   std::exception_ptr failure;
-  const auto work = [&] {
+  const auto work = [&](std::size_t) {
     std::unique_lock lock(mutex);
     while (!failure && started_count < n) {
       std::size_t i = 0;
@@ -127,11 +138,7 @@ void parallel_graph(const std::vector<std::vector<std::size_t>>& after, unsigned
     }
   };
   const std::size_t workers = std::min<std::size_t>(resolve_threads(threads), n);
-  {
-    std::vector<std::jthread> pool;
-    for (std::size_t w = 1; w < workers; ++w) pool.emplace_back(work);
-    work();
-  }
+  run_workers(workers, work);
   if (failure) std::rethrow_exception(failure);
 }
 

@@ -3,10 +3,10 @@
 // and the wall openings after F.
 #include "roomsense/features.h"
 #include "roomsense/cancel.h"
+#include "../parallel.h"
 
 #include <algorithm>
 #include <cmath>
-#include <future>
 
 namespace roomsense {
 
@@ -57,19 +57,11 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
       if (f.ceiling_facet[c] == kNoFacet) tiles[c] = 0;
     return tiles;
   };
-  if (threads == 1) {
-    f.furniture = detect_furniture(grid, f.levels, f.ceiling, f.y_end, f.walls, furniture_clear, rough);
-    f.free_floor = floor();
-    f.free_ceiling = ceiling();
-  } else {
-    auto furniture = std::async(std::launch::async, [&] {
-      return detect_furniture(grid, f.levels, f.ceiling, f.y_end, f.walls, furniture_clear, rough);
-    });
-    auto free_ceiling = std::async(std::launch::async, ceiling);
-    f.free_floor = floor();
-    f.furniture = furniture.get();
-    f.free_ceiling = free_ceiling.get();
-  }
+  detail::parallel_tasks(3, threads, [&](std::size_t task) {
+    if (task == 0) f.furniture = detect_furniture(grid, f.levels, f.ceiling, f.y_end, f.walls, furniture_clear, rough);
+    if (task == 1) f.free_ceiling = ceiling();
+    if (task == 2) f.free_floor = floor();
+  });
   for (std::size_t c = 0; c < inside.size(); ++c)
     if (!inside[c]) f.furniture[c] = kNoFurniture;
   apply_furniture_labels(grid.spec, f.levels, labels, f.free_floor, f.furniture);

@@ -6,6 +6,7 @@
 #include "../areas/search_cache.h"
 #include "../bounds/mesh_memo.h"
 #include "../input/input_view.h"
+#include "../worker_pool.h"
 #include "surface_heights.h"
 
 #include <map>
@@ -71,6 +72,7 @@ struct AnalysisCaches {
   CombinedScan combined;
   ChunkBandSums band_sums;  // of `combined`
   std::vector<MeshMemo> bounds;  // the home's bounds mesh, then each room's (AnalysisResult::room_bounds)
+  std::unique_ptr<WorkerPool> workers;  // the analyses' threads, kept between them
 };
 
 // analyze() (analysis.h), served by `caches` where not null: its area searches, features and bounds always;

@@ -1,0 +1,94 @@
+#include "worker_pool.h"
+
+#include <algorithm>
+#include <exception>
+
+namespace roomsense::detail {
+namespace {
+thread_local WorkerPool* t_current = nullptr;
+}
+
+// Lives on the stack of run(), which returns only once every job has ended; a pool thread touches it only
+// under the lock, and not after counting its job ended.
+struct WorkerPool::Batch {
+  const std::function<void(std::size_t)>* job = nullptr;
+  std::size_t n = 0, taken = 0, ended = 0;
+  std::exception_ptr failure;
+  std::condition_variable all_ended;
+};
+
+WorkerPool::WorkerPool(unsigned threads) {
+  threads_.reserve(threads);
+  for (unsigned t = 0; t < threads; ++t) threads_.emplace_back([this] { serve(); });
+}
+
+WorkerPool::~WorkerPool() {
+  {
+    const std::lock_guard lock(mutex_);
+    ending_ = true;
+  }
+  work_.notify_all();
+  threads_.clear();  // joins
+}
+
+WorkerPool* WorkerPool::current() { return t_current; }
+
+void WorkerPool::execute(Batch& b, std::size_t i) {
+  std::exception_ptr error;
+  try {
+    (*b.job)(i);
+  } catch (...) {
+    error = std::current_exception();
+  }
+  const std::lock_guard lock(mutex_);
+  if (error && !b.failure) b.failure = error;
+  if (++b.ended == b.n) b.all_ended.notify_all();
+}
+
+void WorkerPool::run(std::size_t n, const std::function<void(std::size_t)>& job) {
+  if (n == 0) return;
+  Batch b;
+  b.job = &job, b.n = n;
+  if (n > 1 && !threads_.empty()) {
+    {
+      const std::lock_guard lock(mutex_);
+      queue_.push_back(&b);
+    }
+    if (n == 2) work_.notify_one();
+    else work_.notify_all();
+  }
+  for (;;) {
+    std::size_t i = 0;
+    {
+      const std::lock_guard lock(mutex_);
+      if (b.taken == n) break;
+      i = b.taken++;
+      if (b.taken == n && n > 1 && !threads_.empty()) queue_.erase(std::find(queue_.begin(), queue_.end(), &b));
+    }
+    execute(b, i);
+  }
+  std::unique_lock lock(mutex_);
+  b.all_ended.wait(lock, [&] { return b.ended == n; });
+  if (b.failure) std::rethrow_exception(b.failure);
+}
+
+void WorkerPool::serve() {
+  t_current = this;
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    work_.wait(lock, [&] { return ending_ || !queue_.empty(); });
+    if (queue_.empty()) return;  // ending, and no batch waits
+    Batch& b = *queue_.front();
+    const std::size_t i = b.taken++;
+    if (b.taken == b.n) queue_.pop_front();
+    lock.unlock();
+    execute(b, i);
+    lock.lock();
+  }
+}
+
+PoolScope::PoolScope(WorkerPool* pool) : previous_(t_current) { t_current = pool; }
+
+PoolScope::~PoolScope() { t_current = previous_; }
+
+}  // namespace roomsense::detail

@@ -1,0 +1,97 @@
+// WorkerPool (core/src/worker_pool.h, internal): the threads an analysis keeps for its parallel loops. Every job
+// runs once, loops inside loops finish on a pool of any size (the caller runs what no pool thread took), a job's
+// exception reaches the caller after every job ended, and parallel.h's loops use the pool of their thread.
+#include "../../core/src/parallel.h"
+#include "../../core/src/worker_pool.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using roomsense::detail::PoolScope;
+using roomsense::detail::WorkerPool;
+
+TEST(WorkerPool, RunsEveryJobOnceOnAnyPoolSize) {
+  for (const unsigned threads : {0u, 1u, 3u}) {
+    WorkerPool pool(threads);
+    for (std::size_t n = 0; n < 40; ++n) {
+      std::vector<std::atomic<int>> runs(n);
+      pool.run(n, [&](std::size_t i) { ++runs[i]; });
+      for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(runs[i].load(), 1) << threads << " threads, job " << i << " of " << n;
+    }
+  }
+}
+
+TEST(WorkerPool, LoopsInsideLoopsFinishOnAPoolOfOneThread) {
+  WorkerPool pool(1);
+  const PoolScope scope(&pool);
+  std::atomic<long> sum = 0;
+  // Three levels of parallel loops: the pool's one thread is always busy in an outer job while inner ones wait.
+  roomsense::detail::parallel_tasks(4, 8, [&](std::size_t a) {
+    roomsense::detail::parallel_for(64, 8, 1, [&](std::size_t begin, std::size_t end, std::size_t) {
+      for (std::size_t b = begin; b < end; ++b)
+        roomsense::detail::parallel_tasks(3, 8, [&](std::size_t c) { sum += long(a * 1000 + b * 10 + c); });
+    });
+  });
+  long expected = 0;
+  for (long a = 0; a < 4; ++a)
+    for (long b = 0; b < 64; ++b)
+      for (long c = 0; c < 3; ++c) expected += a * 1000 + b * 10 + c;
+  EXPECT_EQ(sum.load(), expected);
+}
+
+TEST(WorkerPool, AJobsExceptionReachesTheCallerOnceEveryJobEnded) {
+  WorkerPool pool(2);
+  std::atomic<int> ended = 0;
+  EXPECT_THROW(pool.run(16,
+                        [&](std::size_t i) {
+                          std::this_thread::sleep_for(std::chrono::milliseconds(i % 3));
+                          ++ended;
+                          if (i == 5) throw std::runtime_error("job 5");
+                        }),
+               std::runtime_error);
+  EXPECT_EQ(ended.load(), 16);
+  // The pool serves the next run as before.
+  std::atomic<int> runs = 0;
+  pool.run(8, [&](std::size_t) { ++runs; });
+  EXPECT_EQ(runs.load(), 8);
+}
+
+TEST(WorkerPool, ParallelLoopsUseTheirThreadsPool) {
+  EXPECT_EQ(WorkerPool::current(), nullptr);
+  WorkerPool pool(2);
+  std::set<std::thread::id> ids;
+  std::mutex ids_mutex;
+  {
+    const PoolScope scope(&pool);
+    EXPECT_EQ(WorkerPool::current(), &pool);
+    // Slow enough tasks that the pool's threads take some: only the caller's and the pool's threads run them, and
+    // the pool's see their pool as current.
+    for (int round = 0; round < 50; ++round)
+      roomsense::detail::parallel_tasks(6, 3, [&](std::size_t) {
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+        EXPECT_EQ(WorkerPool::current(), &pool);
+        const std::lock_guard lock(ids_mutex);
+        ids.insert(std::this_thread::get_id());
+      });
+    {
+      const PoolScope none(nullptr);
+      EXPECT_EQ(WorkerPool::current(), nullptr);
+    }
+    EXPECT_EQ(WorkerPool::current(), &pool);
+  }
+  EXPECT_EQ(WorkerPool::current(), nullptr);
+  EXPECT_LE(ids.size(), 3u);
+  EXPECT_GE(ids.size(), 2u);
+  EXPECT_TRUE(ids.count(std::this_thread::get_id()));
+}
+
+}  // namespace

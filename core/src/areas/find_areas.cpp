@@ -247,11 +247,33 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     release_walls();
     finish(0);
   };
-  // Squares one size at a time, large first: deduplicated (V_Floor for reach), packed and dropped before the
-  // next size is searched, so a type holds one size's candidates at a time (on a 50 x 50 m floor, millions).
+  // Squares one size at a time, large first: deduplicated (V_Floor for reach) and packed, each in its own chain
+  // of tasks (neither reads the other), and dropped once both are done, before the next size is searched where
+  // a type's candidates are many (on a 50 x 50 m floor, millions).
   std::array<std::unique_ptr<CentreDeduplicator>, 4> deduplicators;
   std::array<std::unique_ptr<SquarePacker>, 4> packers;
-  const auto reduce_squares = [&](std::size_t type, std::size_t size) {
+  std::array<std::array<std::atomic<int>, 3>, 4> square_users;  // of found[type][size]: its dedup and packing
+  for (auto& type_users : square_users)
+    for (std::atomic<int>& users : type_users) users = 2;
+  const auto release_squares = [&](std::size_t type, std::size_t size) {
+    if (--square_users[type][size] == 0) found[type][size] = Candidates();
+  };
+  const auto deduplicate_squares = [&](std::size_t type, std::size_t size) {
+    if (reused[type]) return;  // packing's last task takes the whole reduction
+    if (size == 0) deduplicators[type] = std::make_unique<CentreDeduplicator>(spec, stop);
+    // V_Floor: kept in voxels only for an IncrementalAnalysis (which may place it again at another floor height);
+    // a large floor's are many, so the whole analysis holds them in metres alone.
+    red[type].deduplicated += deduplicators[type]->add(found[type][size], kAreaSizes[size], [&](const Sized& s) {
+      if (type != 1) return;
+      if (cache) red[type].for_reach.push_back(s);
+      else floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
+    });
+    release_squares(type, size);
+    if (size + 1 < kAreaSizes.size()) return;
+    deduplicators[type].reset();
+    if (type == 1) finish_floors_for_reach();
+  };
+  const auto pack_squares = [&](std::size_t type, std::size_t size) {
     if (reused[type]) {
       if (size + 1 < kAreaSizes.size()) return;
       red[type] = *reused[type];
@@ -260,7 +282,6 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       return;
     }
     if (size == 0) {
-      deduplicators[type] = std::make_unique<CentreDeduplicator>(spec, stop);
       const TileMap is_tile{spec, type == 1 ? std::span<const std::uint8_t>(features.free_floor)
                                   : type == 2 ? std::span<const std::uint8_t>(features.free_ceiling)
                                               : std::span<const std::uint8_t>(),
@@ -269,35 +290,25 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       packers[type] = std::make_unique<SquarePacker>(spec, type == 3 ? params.reduction_offset - 1 : 0, dominant_deg,
                                                      is_tile, stop);
     }
-    Candidates& squares = found[type][size];
-    const AreaSize area_size = kAreaSizes[size];
-    // V_Floor: kept in voxels only for an IncrementalAnalysis (which may place it again at another floor height);
-    // a large floor's are many, so the whole analysis holds them in metres alone.
-    red[type].deduplicated += deduplicators[type]->add(squares, area_size, [&](const Sized& s) {
-      if (type != 1) return;
-      if (cache) red[type].for_reach.push_back(s);
-      else floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
-    });
+    const Candidates& squares = found[type][size];
     std::vector<std::uint32_t> ranks;
     const std::vector<std::size_t> packed =
         packers[type]->pack(squares, cache ? cache->replay(type, size) : nullptr, cache ? &ranks : nullptr);
-    for (std::size_t i : packed) red[type].kept.push_back(Sized{squares[i], area_size});
+    for (std::size_t i : packed) red[type].kept.push_back(Sized{squares[i], kAreaSizes[size]});
     if (cache) cache->record_packing(type, size, packed, ranks);
     red[type].found += squares.size();
-    squares = Candidates();
+    release_squares(type, size);
     if (size + 1 < kAreaSizes.size()) return;
-    deduplicators[type].reset();
     packers[type].reset();
-    if (type == 1) finish_floors_for_reach();
     finish(type);
   };
   // The work as a graph (parallel_graph): the three wall searches; then the walls' deduplication and, beside
-  // it, their packing (which frees their candidates early); after the deduplication V_Wall's areas, and each type's square
-  // searches, side by side, the types most costly to search first, and each size's reduction after its search
-  // and the previous size's. Where one size's candidates would be large (about two per tile, 12 bytes each,
-  // past kChainBytes: a floor of some 400 m² and more), a size's search also waits for the previous size's
-  // reduction, so that the type holds one size's candidates at a time (on a 50 x 50 m floor, 6 MB each)
-  // rather than searching them side by side.
+  // it, their packing (which frees their candidates early); after the deduplication V_Wall's areas, and each
+  // type's square searches, side by side, the types most costly to search first, and each size's packing and
+  // deduplication after its search and the previous size's. Where one size's candidates would be large (about
+  // two per tile, 12 bytes each, past kChainBytes: a floor of some 400 m² and more), a size's search also waits
+  // for the previous size's reduction, so that the type holds one size's candidates at a time (on a 50 x 50 m
+  // floor, 6 MB each) rather than searching them side by side.
   constexpr double kChainBytes = 1 << 20;
   const auto chained = [&](std::size_t type) { return 2.0 * starts[type] * double(Candidates::kBytesEach) > kChainBytes; };
   constexpr std::size_t kDeduplicateWalls = 3;
@@ -310,14 +321,19 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   std::vector<std::size_t> square_searches;
   for (const std::size_t type : square_types)
     for (std::size_t size = 0; size < kAreaSizes.size(); ++size) {
-      // Tasks alternate: search, reduction. The previous size's reduction is the task before this search.
-      const std::size_t previous_reduction = tasks.size() - 1;
-      square_searches.push_back(tasks.size());
-      after.push_back({size > 0 && chained(type) ? previous_reduction : kDeduplicateWalls});
+      // Tasks come in threes: search, packing, deduplication (packing's chain is the longer: growth ends it).
+      const std::size_t search_task = tasks.size();
+      const std::size_t previous_pack = search_task - 2, previous_deduplication = search_task - 1;
+      square_searches.push_back(search_task);
+      after.push_back(size > 0 && chained(type) ? std::vector<std::size_t>{previous_pack, previous_deduplication}
+                                                : std::vector<std::size_t>{kDeduplicateWalls});
       tasks.push_back([&search, type, size] { search(3 * type + size); });
-      after.push_back(size == 0 ? std::vector<std::size_t>{tasks.size() - 1}
-                                : std::vector<std::size_t>{tasks.size() - 1, previous_reduction});
-      tasks.push_back([&reduce_squares, type, size] { reduce_squares(type, size); });
+      after.push_back(size == 0 ? std::vector<std::size_t>{search_task}
+                                : std::vector<std::size_t>{search_task, previous_pack});
+      tasks.push_back([&pack_squares, type, size] { pack_squares(type, size); });
+      after.push_back(size == 0 ? std::vector<std::size_t>{search_task}
+                                : std::vector<std::size_t>{search_task, previous_deduplication});
+      tasks.push_back([&deduplicate_squares, type, size] { deduplicate_squares(type, size); });
     }
   // The search time ends with the last search, the reduction's with the graph.
   std::mutex searches_mutex;

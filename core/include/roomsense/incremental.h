@@ -12,7 +12,8 @@
 // - the features and bounds, where the grid, the labels' voxels and the storeys' levels are the previous
 //   result's (a chunk refined within its voxels);
 // - each area search's rectangles by bands of 8 grid rows: a band is searched again only within the search's
-//   reach of a row whose features changed (areas/search_cache.h);
+//   reach of a row whose features changed, and a square search's band only within reach of the columns that
+//   changed (areas/search_cache.h);
 // - an area type's whole reduction (deduplication, packing) where nothing its searches read changed, and its
 //   growth where its packed areas are also as before;
 // - packing's decisions away from the rectangles that changed (areas/reduce.h: PackReplay);

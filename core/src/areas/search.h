@@ -38,9 +38,12 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features);
 // lies in one band, but a wall rectangle's centre may be found again by a later band, which the whole
 // search would skip (SearchCache drops it). The output says where each band's rectangles end (`pieces`):
 // per band for walls, per layer and band (layer-major, as the output) for squares.
+// A square search also searches only the centres of a band whose cell's column lies in the band's `columns`
+// (the others' squares are as they were); a wall search reads only `searched`.
 struct RowBands {
   int rows = 0;
   std::vector<std::uint8_t> searched;  // per band of the grid: 1 to search it
+  std::vector<glm::ivec2> columns;     // per band: the centres' columns searched, inclusive
   int band(int z) const { return z / rows; }
   bool searches(int z) const { return searched[std::size_t(z / rows)] != 0; }
 };

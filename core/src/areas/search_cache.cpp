@@ -1,6 +1,7 @@
 // SearchCache (search_cache.h): what each band of a search reads lies within the search's reach of its rows
 // (wall_search_reach, square_search_reach), so a band none of whose rows within that reach changed finds what
-// it found before.
+// it found before; and what a square's centre reads lies within that reach of its cell, so a centre no changed
+// column is within reach of finds what it found before.
 #include "search_cache.h"
 
 #include "key_table.h"
@@ -14,20 +15,34 @@
 namespace roomsense::detail {
 namespace {
 
-// Marks row z where a per-column (`per_column` 1) or per-voxel (ny) array differs from its previous copy.
+// Widens row z's span of changed columns to every column where a per-column (`per_column` 1) or per-voxel (ny)
+// array differs from its previous copy.
 template <class T>
 void mark_changed(const std::vector<T>& now, const std::vector<T>& before, std::size_t per_column, const GridSpec& spec,
-                  std::vector<std::uint8_t>& rows) {
-  if (now.size() != before.size()) {  // one of them empty (wall_blocked): every row
-    std::fill(rows.begin(), rows.end(), std::uint8_t{1});
+                  std::vector<glm::ivec2>& rows) {
+  if (now.size() != before.size()) {  // one of them empty (wall_blocked): every column
+    std::fill(rows.begin(), rows.end(), glm::ivec2(0, spec.nx - 1));
     return;
   }
   if (now.empty()) return;
   const std::size_t row = std::size_t(spec.nx) * per_column;
-  for (int z = 0; z < spec.nz; ++z)
-    if (!rows[std::size_t(z)] &&
-        std::memcmp(now.data() + std::size_t(z) * row, before.data() + std::size_t(z) * row, row * sizeof(T)) != 0)
-      rows[std::size_t(z)] = 1;
+  const auto differs = [&](std::size_t z, int x) {
+    const std::size_t at = z * row + std::size_t(x) * per_column;
+    return std::memcmp(now.data() + at, before.data() + at, per_column * sizeof(T)) != 0;
+  };
+  for (int z = 0; z < spec.nz; ++z) {
+    const std::size_t at = std::size_t(z) * row;
+    if (std::memcmp(now.data() + at, before.data() + at, row * sizeof(T)) == 0) continue;
+    glm::ivec2& span = rows[std::size_t(z)];
+    int first = 0, last = spec.nx - 1;
+    while (!differs(std::size_t(z), first)) ++first;
+    while (!differs(std::size_t(z), last)) --last;
+    span = glm::ivec2(std::min(span.x, first), std::max(span.y, last));
+  }
+}
+
+bool any_changed(const std::vector<glm::ivec2>& rows) {
+  return std::any_of(rows.begin(), rows.end(), [](const glm::ivec2& span) { return span.x <= span.y; });
 }
 
 }  // namespace
@@ -39,12 +54,13 @@ void SearchCache::begin(const GridSpec& spec, const RoomFeatures& features) {
   for (const CeilingFacet& f : features.facets) facet_levels.push_back(f.level);
   all_changed_ = spec != spec_ || features.levels != levels_ || features.y_end != y_end_ ||
                  facet_levels != facet_levels_;
-  for (std::vector<std::uint8_t>& rows : changed_rows_) rows.assign(std::size_t(spec.nz), all_changed_ ? 1 : 0);
+  const glm::ivec2 none(spec.nx, -1), all(0, spec.nx - 1);
+  for (std::vector<glm::ivec2>& rows : changed_rows_) rows.assign(std::size_t(spec.nz), all_changed_ ? all : none);
   if (!all_changed_) {
     const auto ny = std::size_t(spec.ny);
-    std::vector<std::uint8_t> walls(std::size_t(spec.nz), 0);
+    std::vector<glm::ivec2> walls(std::size_t(spec.nz), none);
     mark_changed(features.walls, walls_, 1, spec, walls);
-    for (std::vector<std::uint8_t>& rows : changed_rows_) rows = walls;  // no type's rectangle covers a wall
+    for (std::vector<glm::ivec2>& rows : changed_rows_) rows = walls;  // no type's rectangle covers a wall
     mark_changed(features.normals, normals_, ny, spec, changed_rows_[0]);
     mark_changed(features.wall_blocked, wall_blocked_, ny, spec, changed_rows_[0]);
     mark_changed(features.ceiling, ceiling_, 1, spec, changed_rows_[0]);  // where walls grow up to
@@ -62,9 +78,8 @@ void SearchCache::begin(const GridSpec& spec, const RoomFeatures& features) {
 const SearchCache::TypeReduction* SearchCache::unchanged_type(std::size_t type, const AreaParams& params,
                                                               double dominant_deg) {
   KeptType& kept_type = types_[type];
-  const std::vector<std::uint8_t>& rows = changed_rows_[type];
   if (all_changed_ || kept_type.generation + 1 != generation_ || !(params == kept_type.params) ||
-      (type > 0 && kept_type.reduction.dominant_deg != dominant_deg) || std::find(rows.begin(), rows.end(), 1) != rows.end())
+      (type > 0 && kept_type.reduction.dominant_deg != dominant_deg) || any_changed(changed_rows_[type]))
     return nullptr;
   kept_type.generation = generation_;
   // The searches would find what they kept, and packing decide as it did.
@@ -100,9 +115,8 @@ bool same_bits(const Area& a, const Area& b) {
 
 const std::vector<Area>* SearchCache::grown(std::size_t type, const std::vector<Area>& before, const AreaParams& params) {
   Grown& g = grown_[type];
-  const std::vector<std::uint8_t>& rows = changed_rows_[type];
   if (all_changed_ || g.generation + 1 != generation_ || !(params == g.params) || before.size() != g.before.size() ||
-      std::find(rows.begin(), rows.end(), 1) != rows.end() ||
+      any_changed(changed_rows_[type]) ||
       !std::equal(before.begin(), before.end(), g.before.begin(), [](const Area& a, const Area& b) { return same_bits(a, b); }))
     return nullptr;
   g.generation = generation_;
@@ -116,7 +130,8 @@ void SearchCache::keep_grown(std::size_t type, std::vector<Area> before, std::ve
 RowBands SearchCache::plan(Kept& kept, std::size_t type, int layers, const SizeRange& range, float fill,
                            double dominant_deg, int reach) {
   const int bands = std::max(1, (spec_.nz + kBandRows - 1) / kBandRows);
-  RowBands out{kBandRows, std::vector<std::uint8_t>(std::size_t(bands), 1)};
+  RowBands out{kBandRows, std::vector<std::uint8_t>(std::size_t(bands), 1),
+               std::vector<glm::ivec2>(std::size_t(bands), glm::ivec2(0, spec_.nx - 1))};
   const bool same = kept.generation + 1 == generation_ && !all_changed_ && kept.min_d == range.min_d && kept.max_d == range.max_d &&
                     kept.height_ratio == range.height_ratio && kept.fill == fill &&
                     kept.dominant_deg == dominant_deg && kept.layers == layers && kept.bands == bands;
@@ -128,10 +143,15 @@ RowBands SearchCache::plan(Kept& kept, std::size_t type, int layers, const SizeR
     kept.states.resize(kept.pieces.size());
     kept.ranks.resize(kept.pieces.size());
   } else {
-    const std::vector<std::uint8_t>& changed = changed_rows_[type];
+    // A band's columns: those within reach of a column changed in a row within reach.
+    const std::vector<glm::ivec2>& changed = changed_rows_[type];
     for (int b = 0; b < bands; ++b) {
       const int lo = std::max(0, b * kBandRows - reach), hi = std::min(spec_.nz, (b + 1) * kBandRows + reach);
-      out.searched[std::size_t(b)] = std::any_of(changed.begin() + lo, changed.begin() + hi, [](std::uint8_t c) { return c != 0; });
+      glm::ivec2 columns(spec_.nx, -1);
+      for (int z = lo; z < hi; ++z)
+        columns = glm::ivec2(std::min(columns.x, changed[std::size_t(z)].x), std::max(columns.y, changed[std::size_t(z)].y));
+      out.searched[std::size_t(b)] = columns.x <= columns.y;
+      out.columns[std::size_t(b)] = glm::ivec2(std::max(0, columns.x - reach), std::min(spec_.nx - 1, columns.y + reach));
     }
   }
   total_ += std::size_t(bands);
@@ -154,26 +174,60 @@ std::tuple<std::uint32_t, std::uint32_t, std::uint32_t> key_of(const Candidates:
 }  // namespace
 
 std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, const RowBands& bands, const Candidates& found,
-                                                        const std::vector<Piece>& pieces) {
+                                                        const std::vector<Piece>& pieces, bool walls) {
   const std::size_t band_count = bands.searched.size();
+  // Each searched slot's new rectangles, [begin, end) of `found`.
+  std::vector<std::pair<std::size_t, std::size_t>> fresh(kept.pieces.size(), {0, 0});
+  std::size_t begin = 0;
+  for (const Piece& p : pieces) {
+    fresh[std::size_t(p.layer) * band_count + std::size_t(p.band)] = {begin, p.end};
+    begin = p.end;
+  }
+  // A square's centre on the half-voxel lattice (x, z): its cell's column is x / 2.
+  const auto centre_of = [&](const Candidates::Item& item) {
+    const glm::ivec3 sum = corner_sum(found.decode(item).unpack());
+    return glm::ivec2(sum.x / 2, sum.z / 2);
+  };
+  const auto before = [](const glm::ivec2& a, const glm::ivec2& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; };
   std::vector<Replaced> old;
   for (std::size_t b = 0; b < band_count; ++b) {
     if (!bands.searched[b]) continue;
+    const glm::ivec2 columns = bands.columns[b];
     for (int layer = 0; layer < kept.layers; ++layer) {
       const std::size_t slot = std::size_t(layer) * band_count + b;
-      kept_bytes_ -= kept.pieces[slot].size() * kBytesEach;
-      old.push_back({slot, std::exchange(kept.pieces[slot], {}), std::exchange(kept.states[slot], {}),
-                     std::exchange(kept.ranks[slot], {})});
+      Replaced r{slot, std::exchange(kept.pieces[slot], {}), std::exchange(kept.states[slot], {}),
+                 std::exchange(kept.ranks[slot], {})};
+      kept_bytes_ -= r.items.size() * kBytesEach;
+      std::vector<Candidates::Item>& items = kept.pieces[slot];
+      std::vector<std::uint8_t>& states = kept.states[slot];
+      std::vector<std::uint32_t>& ranks = kept.ranks[slot];
+      const auto [first, end] = fresh[slot];
+      const auto add_fresh = [&](std::size_t i) {
+        items.push_back(found.item(i)), states.push_back(kAbsent), ranks.push_back(PackReplay::kUnknownRank);
+      };
+      if (walls) {  // the band whole
+        for (std::size_t i = first; i < end; ++i) add_fresh(i);
+      } else {
+        // Squares: the slot's squares whose centre lies outside the columns searched are as they were, with
+        // their packing and rank (which read no changed column either); the search found the others anew. Both
+        // in search order: by centre, z then x.
+        Replaced gone{slot, {}, {}, {}};
+        std::size_t i = first;
+        for (std::size_t k = 0; k < r.items.size(); ++k) {
+          const glm::ivec2 centre = centre_of(r.items[k]);
+          if (centre.x / 2 >= columns.x && centre.x / 2 <= columns.y) {
+            gone.items.push_back(r.items[k]), gone.states.push_back(r.states[k]), gone.ranks.push_back(r.ranks[k]);
+            continue;
+          }
+          for (; i < end && before(centre_of(found.item(i)), centre); ++i) add_fresh(i);
+          items.push_back(r.items[k]), states.push_back(r.states[k]), ranks.push_back(r.ranks[k]);
+        }
+        for (; i < end; ++i) add_fresh(i);
+        r = std::move(gone);
+      }
+      kept_bytes_ += items.size() * kBytesEach;
+      old.push_back(std::move(r));
     }
-  }
-  std::size_t begin = 0;
-  for (const Piece& p : pieces) {
-    const std::size_t slot = std::size_t(p.layer) * band_count + std::size_t(p.band);
-    for (std::size_t i = begin; i < p.end; ++i) kept.pieces[slot].push_back(found.item(i));
-    kept.states[slot].assign(p.end - begin, kAbsent);
-    kept.ranks[slot].assign(p.end - begin, PackReplay::kUnknownRank);
-    kept_bytes_ += (p.end - begin) * kBytesEach;
-    begin = p.end;
   }
   kept.generation = generation_;
   return old;
@@ -193,22 +247,18 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
     return state == kPacked ? 1 : state == kRefused ? 0 : -1;
   };
   if (!walls) {
-    // Squares: layer by layer, band by band. A square of a replaced slot, found again or not, counts as gone
-    // and new (its contact, and with it its place in packing order, may have changed).
-    std::vector<std::uint8_t> is_replaced(kept.pieces.size(), 0);
-    for (const Replaced& r : replaced) {
-      is_replaced[r.slot] = 1;
+    // Squares: layer by layer, band by band. A square the search found anew (found again or not) counts as
+    // gone and new: its contact, and with it its place in packing order, may have changed.
+    for (const Replaced& r : replaced)
       for (std::size_t k = 0; known && k < r.items.size(); ++k)
         if (r.states[k] == kPacked) kept.replay.gone.push_back(found.decode(r.items[k]).unpack());
-    }
     kept.replay.ranks.reserve(count);
     for (std::size_t slot = 0; slot < kept.pieces.size(); ++slot) {
       const std::vector<Candidates::Item>& items = kept.pieces[slot];
       out.push_items(items);
-      const bool as_before = known && !is_replaced[slot];  // a replaced slot's states and ranks are unknown
       for (std::size_t k = 0; k < items.size(); ++k) {
         kept.source.push_back({std::uint32_t(slot), std::uint32_t(k)});
-        kept.replay.previous.push_back(as_before ? previous_of(kept.states[slot][k]) : std::int8_t{-1});
+        kept.replay.previous.push_back(known ? previous_of(kept.states[slot][k]) : std::int8_t{-1});
         kept.replay.ranks.push_back(known ? kept.ranks[slot][k] : PackReplay::kUnknownRank);
       }
     }
@@ -293,7 +343,7 @@ Candidates SearchCache::walls(std::size_t size, const GridSpec& spec, const Room
   std::vector<Piece> pieces;
   if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::WallTop);
   const Candidates found = search_walls(spec, features, normals, range, fill, stop, {&bands, &pieces, &kept.ring});
-  return assemble(kept, found, replace(kept, bands, found, pieces), true);
+  return assemble(kept, found, replace(kept, bands, found, pieces, true), true);
 }
 
 Candidates SearchCache::squares(std::size_t type, std::size_t size, const GridSpec& spec, const RoomFeatures& features,
@@ -306,7 +356,7 @@ Candidates SearchCache::squares(std::size_t type, std::size_t size, const GridSp
   if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::Square);
   const Candidates found =
       search_squares(spec, features, surface, range, fill, dominant_deg, stop, {&bands, &pieces, &kept.ring});
-  return assemble(kept, found, replace(kept, bands, found, pieces), false);
+  return assemble(kept, found, replace(kept, bands, found, pieces, false), false);
 }
 
 }  // namespace roomsense::detail

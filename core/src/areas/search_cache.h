@@ -1,7 +1,9 @@
 // Beyond the thesis (issue 19): what find_areas found for one storey, kept between the analyses of an
 // IncrementalAnalysis: the 12 searches' rectangles by bands of grid rows (search.h's RowBands), so that an
-// analysis searches again only the bands whose rectangles may read a row whose features changed; each
-// rectangle's packing decision and rank, for packing's replay (reduce.h); each area type's reduction and
+// analysis searches again only the bands whose rectangles may read a row whose features changed, and in a
+// square search's band only the centres within reach of a changed column; each rectangle's packing decision
+// and rank (a square's kept where its centre was not searched again), for packing's replay (reduce.h); each
+// area type's reduction and
 // growth, for a type nothing of which changed. Every result equals the whole analysis's exactly
 // (tests/unit/incremental_test.cpp replays rooms chunk by chunk against full analyses).
 #pragma once
@@ -86,13 +88,15 @@ class SearchCache {
     std::vector<std::uint8_t> states;
     std::vector<std::uint32_t> ranks;
   };
-  // Which bands to search: all where `kept` does not match, else those within `reach` rows of a changed row.
+  // Which bands to search: all where `kept` does not match, else those within `reach` rows of a changed row,
+  // each over the columns within `reach` of the changed columns of those rows.
   RowBands plan(Kept& kept, std::size_t type, int layers, const SizeRange& range, float fill, double dominant_deg,
                 int reach);
   void drop(Kept& kept);
-  // Puts the searched bands' pieces of `found` in place of the kept ones, and returns those.
+  // Puts the searched bands' pieces of `found` in place of the kept ones (walls: the whole band; squares: the
+  // band's columns searched), and returns what they replaced.
   std::vector<Replaced> replace(Kept& kept, const RowBands& bands, const Candidates& found,
-                                const std::vector<Piece>& pieces);
+                                const std::vector<Piece>& pieces, bool walls);
   // The search's list from the kept pieces, with its packing's replay; drops everything when the cache would
   // outgrow its bound.
   Candidates assemble(Kept& kept, const Candidates& found, std::vector<Replaced> replaced, bool walls);
@@ -114,7 +118,8 @@ class SearchCache {
   // corner pairs) or cut short (a stop, an error) since searches everything again.
   std::uint64_t generation_ = 0;
   bool all_changed_ = true;
-  std::array<std::vector<std::uint8_t>, 4> changed_rows_;  // per type, per row z
+  // Per type and row z: the span of columns whose features (the type's searches') changed; empty (x > y) where none.
+  std::array<std::vector<glm::ivec2>, 4> changed_rows_;
   // What the searches read, as the previous analysis had it.
   GridSpec spec_{};
   FloorCeiling levels_{};

@@ -210,12 +210,15 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     const glm::ivec2 near_firsts_hi = glm::min(firsts.hi + corner_reach, glm::ivec2(spec.nx - 1, spec.nz - 1));
     // By bands: the rows of centres searched, and the cells their squares read (within corner_reach).
     if constexpr (kBanded) {
-      int lo = spec.nz, hi = -1;
+      glm::ivec2 lo(spec.nx, spec.nz), hi(-1);
       for (int z = near_firsts_lo.y; z <= near_firsts_hi.y; ++z)
-        if (banded.bands->searches(z)) lo = std::min(lo, z), hi = z;
-      if (lo > hi) continue;
-      region.lo.y = std::max(region.lo.y, lo - corner_reach - 1);
-      region.hi.y = std::min(region.hi.y, hi + corner_reach + 1);
+        if (banded.bands->searches(z)) {
+          const glm::ivec2 columns = banded.bands->columns[std::size_t(banded.bands->band(z))];
+          lo = glm::min(lo, glm::ivec2(columns.x, z)), hi = glm::max(hi, glm::ivec2(columns.y, z));
+        }
+      if (lo.y > hi.y) continue;
+      region.lo = glm::max(region.lo, lo - corner_reach - 1);
+      region.hi = glm::min(region.hi, hi + corner_reach + 1);
     }
     // Corner 1 must be a tile of this level; the other cells may also be one level higher (§3.3.4).
     const auto is_first = [&](std::size_t col) { return layer_of(col) == layer; };
@@ -290,8 +293,12 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
         band = b;
       }
       const int p = cz & 1;  // dx - dz and dx + dz share their parity: cx - cz is even
-      const int hx_first = near_firsts_lo.x;  // cx = 2 hx + p <= 2 (nx - 1)
-      const int centres_in_row = std::min(near_firsts_hi.x, spec.nx - 1 - p) - hx_first + 1;
+      int hx_first = near_firsts_lo.x, hx_last = std::min(near_firsts_hi.x, spec.nx - 1 - p);  // cx = 2 hx + p
+      if constexpr (kBanded) {
+        const glm::ivec2 columns = banded.bands->columns[std::size_t(band)];
+        hx_first = std::max(hx_first, columns.x), hx_last = std::min(hx_last, columns.y);
+      }
+      const int centres_in_row = hx_last - hx_first + 1;
       if (centres_in_row <= 0) continue;
       const std::size_t words = (std::size_t(centres_in_row) + 63) / 64;
       open_here.assign(words, 0);

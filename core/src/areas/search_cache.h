@@ -3,9 +3,8 @@
 // analysis searches again only the bands whose rectangles may read a row whose features changed, and in a
 // square search's band only the centres within reach of a changed column; each rectangle's packing decision
 // and rank (a square's kept where its centre was not searched again), for packing's replay (reduce.h); each
-// area type's reduction and
-// growth, for a type nothing of which changed. Every result equals the whole analysis's exactly
-// (tests/unit/incremental_test.cpp replays rooms chunk by chunk against full analyses).
+// area type's reduction and growth, for a type nothing of which changed. Every result equals the whole
+// analysis's exactly (tests/unit/incremental_test.cpp replays rooms chunk by chunk against full analyses).
 #pragma once
 #include "reduce.h"
 #include "ring_offsets.h"

@@ -122,10 +122,13 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     const double d = std::fabs(a - dominant_deg);
     return std::min(d, 90.0 - d);
   };
-  std::stable_sort(ring.begin(), ring.end(),
-                   [&](const RingOffset& a, const RingOffset& b) { return misalignment(a) < misalignment(b); });
+  // Each offset's misalignment once, not an atan2 per comparison (rings of large squares hold thousands).
+  std::vector<std::pair<double, std::size_t>> order(ring.size());
+  for (std::size_t i = 0; i < ring.size(); ++i) order[i] = {misalignment(ring[i]), i};
+  std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::array<std::vector<RingOffset>, 2> by_parity;
-  for (RingOffset& o : ring) by_parity[std::size_t((o.dx - o.dz) & 1)].push_back(std::move(o));
+  for (const auto& [key, i] : order)
+    by_parity[std::size_t((ring[i].dx - ring[i].dz) & 1)].push_back(std::move(ring[i]));
   const FloorCeiling& levels = features.levels;
   // The layers (square_layers): levels from y_from, or facets.
   const bool by_facet = surface == Surface::Ceiling && !features.facets.empty();

@@ -8,13 +8,12 @@ namespace {
 thread_local WorkerPool* t_current = nullptr;
 }
 
-// Lives on the stack of run(), which returns only once every job has ended; a pool thread touches it only
+// Lives on the stack of run(), which returns only once every job has ended; another thread touches it only
 // under the lock, and not after counting its job ended.
 struct WorkerPool::Batch {
   const std::function<void(std::size_t)>* job = nullptr;
   std::size_t n = 0, taken = 0, ended = 0;
   std::exception_ptr failure;
-  std::condition_variable all_ended;
 };
 
 WorkerPool::WorkerPool(unsigned threads) {
@@ -42,7 +41,7 @@ void WorkerPool::execute(Batch& b, std::size_t i) {
   }
   const std::lock_guard lock(mutex_);
   if (error && !b.failure) b.failure = error;
-  if (++b.ended == b.n) b.all_ended.notify_all();
+  if (++b.ended == b.n) work_.notify_all();  // its caller may wait among the pool's threads
 }
 
 void WorkerPool::run(std::size_t n, const std::function<void(std::size_t)>& job) {
@@ -67,8 +66,19 @@ void WorkerPool::run(std::size_t n, const std::function<void(std::size_t)>& job)
     }
     execute(b, i);
   }
+  // Until the pool's threads end this batch's last jobs, this thread takes any other batch's (a loop inside one
+  // of them, or beside this one), rather than wait idle.
   std::unique_lock lock(mutex_);
-  b.all_ended.wait(lock, [&] { return b.ended == n; });
+  for (;;) {
+    work_.wait(lock, [&] { return b.ended == n || !queue_.empty(); });
+    if (b.ended == n) break;
+    Batch& other = *queue_.front();
+    const std::size_t i = other.taken++;
+    if (other.taken == other.n) queue_.pop_front();
+    lock.unlock();
+    execute(other, i);
+    lock.lock();
+  }
   if (b.failure) std::rethrow_exception(b.failure);
 }
 

@@ -25,6 +25,7 @@ class WorkerPool {
   // Runs job(i) for every i in [0, n) on the calling thread and the pool's, and returns once all have ended;
   // the first exception of a job is rethrown then. The caller runs every job no pool thread has taken, so it
   // never waits for a pool thread that is busy elsewhere: a loop inside another loop's job cannot deadlock.
+  // While the last of its jobs run elsewhere, the caller runs other batches' jobs.
   void run(std::size_t n, const std::function<void(std::size_t)>& job);
 
   // The pool parallel.h's loops use on this thread: the innermost PoolScope's, or on a pool's own thread that
@@ -38,7 +39,7 @@ class WorkerPool {
   void execute(Batch& b, std::size_t i);
 
   std::mutex mutex_;
-  std::condition_variable work_;  // a batch has jobs not taken, or the pool ends
+  std::condition_variable work_;  // a batch has jobs not taken, a batch ended, or the pool ends
   std::deque<Batch*> queue_;      // batches with jobs not taken, oldest first
   bool ending_ = false;
   std::vector<std::jthread> threads_;

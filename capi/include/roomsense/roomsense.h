@@ -170,7 +170,8 @@ ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_wait(rs_analyzer* analyzer, uint32_t
 typedef struct rs_vec3 { float x, y, z; } rs_vec3;
 typedef struct rs_quat { float x, y, z, w; } rs_quat;  /* as XrQuaternionf */
 
-typedef struct rs_timings {  /* milliseconds, per stage of the pipeline */
+typedef struct rs_timings {  /* milliseconds, per stage of the pipeline; areas and bounds overlap: total is the
+                                * analysis's own time, not the stages' sum */
   double prepare, voxelize, features, areas, reduce, classify, bounds, total;
 } rs_timings;
 

@@ -57,7 +57,9 @@ struct Room {
   float ceiling_y = 0.0f;
 };
 
-struct StageTimings {  // milliseconds
+// Milliseconds. The area stages (areas, reduce, classify) and bounds run side by side: total is the analysis's
+// own time, less than the stages' sum.
+struct StageTimings {
   double prepare = 0, voxelize = 0, features = 0, areas = 0, reduce = 0, classify = 0, bounds = 0, total = 0;
 };
 

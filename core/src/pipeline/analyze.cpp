@@ -36,9 +36,8 @@ class Stopwatch {
 
 std::string metres(float value) { return fixed_or_g(value, 2) + " m"; }
 
-// Issue 15: the rooms of every storey in one list, and each area's room: the room of the column under a
-// horizontal area's centre or in front of a wall area's, or the nearest within 0.3 m.
-void assign_rooms(AnalysisResult& r) {
+// Issue 15: the rooms of every storey in one list.
+void list_rooms(AnalysisResult& r) {
   const GridSpec& s = r.voxels.grid.spec;
   const double cell = double(s.voxel_size) * double(s.voxel_size);
   for (std::uint32_t i = 0; i < r.storeys.size(); ++i) {
@@ -59,6 +58,12 @@ void assign_rooms(AnalysisResult& r) {
                          storey.floor_y, storey.ceiling_y});
     }
   }
+}
+
+// Issue 15: each area's room: the room of the column under a horizontal area's centre or in front of a wall
+// area's, or the nearest within 0.3 m.
+void assign_area_rooms(AnalysisResult& r) {
+  const GridSpec& s = r.voxels.grid.spec;
   for (Area& a : r.areas)
     a.room = room_at_point(r, a.storey, a.type == AreaType::Wall ? a.center + 0.5f * s.voxel_size * a.normal : a.center);
 }
@@ -136,7 +141,7 @@ int room_at_point(const AnalysisResult& result, std::uint32_t storey, const glm:
 AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options) { return detail::analyze(scan, options, nullptr); }
 
 AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options, AnalysisCaches* caches) {
-  Stopwatch clock;
+  Stopwatch clock, total_clock;
   // The threads of every parallel loop below: started once per analysis, or kept by an IncrementalAnalysis.
   std::unique_ptr<detail::WorkerPool> own_workers;
   std::unique_ptr<detail::WorkerPool>& workers = caches ? caches->workers : own_workers;
@@ -296,17 +301,40 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
 
   for (std::uint32_t i = 0; i < r.storeys.size(); ++i)
     r.storeys[i].ceiling_planes = detail::ceiling_planes(spec, in.vertices, in.indices, r.storey_features(i));
-  // Each storey's areas, side by side: one storey's search leaves a worker idle now and then, the next fills it.
+  list_rooms(r);
+  // The areas (each storey's, side by side: one storey's search leaves a worker idle now and then, the next
+  // fills it) and the bounds, which read the features alone, beside them: the area search's task graph leaves
+  // a worker idle at times, the bounds' meshes fill it.
   std::vector<AreaResult> storey_areas(options.find_areas ? r.storeys.size() : 0);
   if (caches)
     while (caches->storeys.size() < storey_areas.size()) caches->storeys.push_back(std::make_unique<SearchCache>());
-  Stopwatch areas_clock;
-  detail::parallel_tasks(storey_areas.size(), options.threads, [&](std::size_t i) {
-    const Storey& storey = r.storeys[i];
-    storey_areas[i] = find_areas(r.voxels.grid, r.storey_features(i),
-                                 {storey.floor_y, storey.ceiling_y, storey.ceiling_planes}, options.areas,
-                                 options.features, options.threads, options.stop,
-                                 caches ? caches->storeys[i].get() : nullptr);
+  double areas_wall = 0.0;
+  const auto find_all_areas = [&] {
+    Stopwatch areas_clock;
+    detail::parallel_tasks(storey_areas.size(), options.threads, [&](std::size_t i) {
+      const Storey& storey = r.storeys[i];
+      storey_areas[i] = find_areas(r.voxels.grid, r.storey_features(i),
+                                   {storey.floor_y, storey.ceiling_y, storey.ceiling_planes}, options.areas,
+                                   options.features, options.threads, options.stop,
+                                   caches ? caches->storeys[i].get() : nullptr);
+    });
+    areas_wall = areas_clock.lap();
+  };
+  const auto build_bounds = [&] {
+    Stopwatch bounds_clock;
+    stop_point(options.stop);
+    if (derived && derived->has_bounds) {
+      r.bounds = derived->bounds;
+      r.room_bounds = derived->room_bounds;
+    } else {
+      build_all_bounds(r, options, caches ? &caches->bounds : nullptr);
+      if (derived) derived->has_bounds = true, derived->bounds = r.bounds, derived->room_bounds = r.room_bounds;
+    }
+    r.timings.bounds = bounds_clock.lap();
+  };
+  detail::parallel_tasks(2, options.threads, [&](std::size_t task) {
+    if (task == 0) find_all_areas();
+    else if (options.build_bounds) build_bounds();
   });
   for (std::uint32_t i = 0; i < storey_areas.size(); ++i) {
     AreaResult& found = storey_areas[i];
@@ -324,25 +352,13 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     r.timings.classify += found.timings.classify;
   }
   // Storeys searched side by side: their stage times, scaled to the time they took together.
-  const double areas_wall = areas_clock.lap(), areas_summed = r.timings.areas + r.timings.reduce + r.timings.classify;
+  const double areas_summed = r.timings.areas + r.timings.reduce + r.timings.classify;
   if (storey_areas.size() > 1 && areas_summed > 0.0)
     for (double* t : {&r.timings.areas, &r.timings.reduce, &r.timings.classify}) *t *= areas_wall / areas_summed;
-  assign_rooms(r);
-  clock.lap();
+  assign_area_rooms(r);
   stop_point(options.stop);
-  if (options.build_bounds) {
-    if (derived && derived->has_bounds) {
-      r.bounds = derived->bounds;
-      r.room_bounds = derived->room_bounds;
-    } else {
-      build_all_bounds(r, options, caches ? &caches->bounds : nullptr);
-      if (derived) derived->has_bounds = true, derived->bounds = r.bounds, derived->room_bounds = r.room_bounds;
-    }
-    r.timings.bounds = clock.lap();
-  }
   if (caches) caches->derived = std::move(derived);
-  r.timings.total = r.timings.prepare + r.timings.voxelize + r.timings.features + r.timings.areas +
-                    r.timings.reduce + r.timings.classify + r.timings.bounds;
+  r.timings.total = total_clock.lap();  // the areas and the bounds overlap: not the stages' sum
   return r;
 }
 

@@ -1,5 +1,7 @@
 #include "worker_pool.h"
 
+#include "parallel.h"
+
 #include <algorithm>
 #include <exception>
 
@@ -95,6 +97,13 @@ void WorkerPool::serve() {
     execute(b, i);
     lock.lock();
   }
+}
+
+WorkerPool* pool_for(std::unique_ptr<WorkerPool>& slot, unsigned threads) {
+  threads = resolve_threads(threads);
+  if (threads == 1) slot.reset();
+  else if (!slot || slot->threads() != threads - 1) slot = std::make_unique<WorkerPool>(threads - 1);
+  return slot.get();
 }
 
 PoolScope::PoolScope(WorkerPool* pool) : previous_(t_current) { t_current = pool; }

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -44,6 +45,10 @@ class WorkerPool {
   bool ending_ = false;
   std::vector<std::jthread> threads_;
 };
+
+// A pool for `threads` workers in all (the caller and threads - 1 of the pool's; 0: one per core), kept in
+// `slot` and made anew there when it has another size; null for one worker.
+WorkerPool* pool_for(std::unique_ptr<WorkerPool>& slot, unsigned threads);
 
 // Makes `pool` (null: none) the current pool of this thread until the scope ends.
 class PoolScope {

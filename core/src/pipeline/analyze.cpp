@@ -144,11 +144,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   Stopwatch clock, total_clock;
   // The threads of every parallel loop below: started once per analysis, or kept by an IncrementalAnalysis.
   std::unique_ptr<detail::WorkerPool> own_workers;
-  std::unique_ptr<detail::WorkerPool>& workers = caches ? caches->workers : own_workers;
-  const unsigned extra_threads = detail::resolve_threads(options.threads) - 1;
-  if (extra_threads == 0) workers.reset();
-  else if (!workers || workers->threads() != extra_threads) workers = std::make_unique<detail::WorkerPool>(extra_threads);
-  const detail::PoolScope scope(workers.get());
+  const detail::PoolScope scope(detail::pool_for(caches ? caches->workers : own_workers, options.threads));
   AnalysisResult r;
   stop_point(options.stop);
   // An IncrementalAnalysis's combined scan: what it knows of each chunk.

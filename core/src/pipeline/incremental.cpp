@@ -9,6 +9,7 @@
 #include "roomsense/incremental.h"
 
 #include "analysis_caches.h"
+#include "../parallel.h"
 
 #include "roomsense/error.h"
 #include "roomsense/voxelize.h"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
+#include <optional>
 #include <span>
 
 namespace roomsense {
@@ -180,47 +182,81 @@ bool IncrementalAnalysis::remove_chunk(std::uint64_t id) {
 
 namespace {
 
-// Appends `from` to `to`, each index moved past the `to`'s vertices before; throws BadIndices for an index
-// past `vertices` (the chunk's own), in chunk `id`.
-void append_indices(std::vector<std::uint32_t>& to, std::span<const std::uint32_t> from, std::size_t vertices,
-                    std::uint32_t base, std::uint64_t id) {
-  const auto worst = std::max_element(from.begin(), from.end());
-  if (worst != from.end() && *worst >= vertices)
+// Throws BadIndices for an index of chunk `id` past its own vertices. Such an index, moved past the vertices
+// before the chunk, would stay past them (so analyze() would refuse it as it would the chunk alone) unless it
+// landed in a later chunk: checked here instead.
+void check_indices(std::uint64_t id, const Scan& s) {
+  const auto worst = std::max_element(s.indices.begin(), s.indices.end());
+  if (worst != s.indices.end() && *worst >= s.vertices.size())
     throw Error(ErrorCode::BadIndices, "chunk " + std::to_string(id) + ": index " + std::to_string(*worst) +
-                                           " is out of range (" + std::to_string(vertices) + " vertices)");
-  const std::size_t at = to.size();
-  to.resize(at + from.size());
-  for (std::size_t k = 0; k < from.size(); ++k) to[at + k] = base + from[k];
+                                           " is out of range (" + std::to_string(s.vertices.size()) + " vertices)");
 }
 
-// Appends chunk `id`'s arrays to `out`, its indices moved past the vertices before it.
-void append_chunk(Scan& out, std::uint64_t id, const Scan& s) {
-  // An index past the chunk's own vertices stays past them (+ the chunks before), so analyze() refuses it
-  // as it would the chunk alone, unless it lands in a later chunk: checked here instead.
-  append_indices(out.indices, s.indices, s.vertices.size(), std::uint32_t(out.vertices.size()), id);
-  out.vertices.insert(out.vertices.end(), s.vertices.begin(), s.vertices.end());
-  const auto label_base = std::uint32_t(out.labels.vertices.size());
-  out.labels.vertices.insert(out.labels.vertices.end(), s.labels.vertices.begin(), s.labels.vertices.end());
-  for (const std::uint32_t i : s.labels.indices) out.labels.indices.push_back(label_base + i);
-  out.labels.labels.insert(out.labels.labels.end(), s.labels.labels.begin(), s.labels.labels.end());
+// Writes `from` at `to`, each index moved by `base`.
+void copy_indices(std::uint32_t* to, std::span<const std::uint32_t> from, std::uint32_t base) {
+  for (std::size_t k = 0; k < from.size(); ++k) to[k] = base + from[k];
+}
+
+// Writes chunk `s`'s arrays into `out` where `at` places them, its indices moved past the vertices before it.
+void place_chunk(Scan& out, const detail::CombinedScan::Placed& at, const Scan& s) {
+  std::copy(s.vertices.begin(), s.vertices.end(), out.vertices.begin() + std::ptrdiff_t(at.vertex));
+  copy_indices(out.indices.data() + at.index, s.indices, std::uint32_t(at.vertex));
+  std::copy(s.labels.vertices.begin(), s.labels.vertices.end(), out.labels.vertices.begin() + std::ptrdiff_t(at.label_vertex));
+  copy_indices(out.labels.indices.data() + at.label_index, s.labels.indices, std::uint32_t(at.label_vertex));
+  std::copy(s.labels.labels.begin(), s.labels.labels.end(), out.labels.labels.begin() + std::ptrdiff_t(at.label));
+}
+
+// The arrays of `chunks` in order, placed after what `out` holds: where each goes.
+std::vector<detail::CombinedScan::Placed> place_after(const Scan& out,
+                                                      std::span<const std::pair<std::uint64_t, const Scan*>> chunks,
+                                                      std::span<const std::uint64_t> hashes) {
+  std::vector<detail::CombinedScan::Placed> placed;
+  detail::CombinedScan::Placed next{0, 0, out.vertices.size(), out.indices.size(), out.labels.vertices.size(),
+                                    out.labels.indices.size(), out.labels.labels.size()};
+  for (std::size_t k = 0; k < chunks.size(); ++k) {
+    const Scan& s = *chunks[k].second;
+    next.id = chunks[k].first, next.hash = hashes.empty() ? 0 : hashes[k];
+    placed.push_back(next);
+    next.vertex += s.vertices.size(), next.index += s.indices.size(), next.label_vertex += s.labels.vertices.size();
+    next.label_index += s.labels.indices.size(), next.label += s.labels.labels.size();
+  }
+  return placed;
+}
+
+// `out` grown to hold what `placed` places last.
+void grow_to(Scan& out, const detail::CombinedScan::Placed& last, const Scan& s) {
+  out.vertices.resize(last.vertex + s.vertices.size());
+  out.indices.resize(last.index + s.indices.size());
+  out.labels.vertices.resize(last.label_vertex + s.labels.vertices.size());
+  out.labels.indices.resize(last.label_index + s.labels.indices.size());
+  out.labels.labels.resize(last.label + s.labels.labels.size());
 }
 
 }  // namespace
 
 Scan IncrementalAnalysis::combined_scan() const {
+  std::vector<std::pair<std::uint64_t, const Scan*>> chunks;
+  for (const auto& [id, chunk] : chunks_) {
+    check_indices(id, chunk.scan);
+    chunks.push_back({id, &chunk.scan});
+  }
   Scan out;
-  for (const auto& [id, chunk] : chunks_) append_chunk(out, id, chunk.scan);
+  const std::vector<detail::CombinedScan::Placed> placed = place_after(out, chunks, {});
+  if (placed.empty()) return out;
+  grow_to(out, placed.back(), *chunks.back().second);
+  for (std::size_t k = 0; k < chunks.size(); ++k) place_chunk(out, placed[k], *chunks[k].second);
   return out;
 }
 
 void IncrementalAnalysis::update_combined() {
   detail::CombinedScan& c = caches_->combined;
-  // The chunks placed as before, from the first: kept; the rest copied again.
+  // The chunks placed as before, from the first: kept; the rest placed again.
   std::size_t same = 0;
   auto it = chunks_.begin();
   for (; same < c.placed.size() && it != chunks_.end(); ++same, ++it)
     if (c.placed[same].id != it->first || c.placed[same].hash != it->second.hash) break;
-  // The vertex runs of the chunks after those, by id, to be kept for the ones that come back unchanged.
+  // The vertex runs of the chunks after those, by id, kept for the ones that come back unchanged (their indices
+  // were checked when they were placed).
   std::vector<std::pair<detail::CombinedScan::Placed, detail::VertexRun>> later;
   for (std::size_t k = same; k < c.placed.size(); ++k) later.push_back({c.placed[k], c.known.runs[k]});
   if (same < c.placed.size()) {
@@ -233,19 +269,32 @@ void IncrementalAnalysis::update_combined() {
     c.placed.resize(same);
     c.known.runs.resize(same);
   }
+  std::vector<std::pair<std::uint64_t, const Scan*>> rest;
+  std::vector<std::uint64_t> hashes;
+  std::vector<std::optional<detail::VertexRun>> runs;  // kept, or summarized below
+  auto was = later.begin();
+  for (; it != chunks_.end(); ++it) {
+    while (was != later.end() && was->first.id < it->first) ++was;
+    const bool unchanged = was != later.end() && was->first.id == it->first && was->first.hash == it->second.hash;
+    if (!unchanged) check_indices(it->first, it->second.scan);
+    rest.push_back({it->first, &it->second.scan});
+    hashes.push_back(it->second.hash);
+    runs.push_back(unchanged ? std::optional(was->second) : std::nullopt);
+  }
   try {
-    auto was = later.begin();
-    for (; it != chunks_.end(); ++it) {
-      const Scan& s = it->second.scan;
-      c.placed.push_back({it->first, it->second.hash, c.scan.vertices.size(), c.scan.indices.size(),
-                          c.scan.labels.vertices.size(), c.scan.labels.indices.size(), c.scan.labels.labels.size()});
-      while (was != later.end() && was->first.id < it->first) ++was;
-      const bool unchanged = was != later.end() && was->first.id == it->first && was->first.hash == it->second.hash;
-      c.known.runs.push_back(unchanged ? was->second : detail::summarize_vertices(s.vertices));
-      append_chunk(c.scan, it->first, s);
-    }
+    const std::vector<detail::CombinedScan::Placed> placed = place_after(c.scan, rest, hashes);
+    if (!placed.empty()) grow_to(c.scan, placed.back(), *rest.back().second);
+    // Each chunk's own part of the arrays: the workers copy chunks side by side.
+    detail::parallel_for(rest.size(), options_.threads, 1, [&](std::size_t begin, std::size_t end, std::size_t) {
+      for (std::size_t k = begin; k < end; ++k) {
+        place_chunk(c.scan, placed[k], *rest[k].second);
+        if (!runs[k]) runs[k] = detail::summarize_vertices(rest[k].second->vertices);
+      }
+    });
+    c.placed.insert(c.placed.end(), placed.begin(), placed.end());
+    for (const std::optional<detail::VertexRun>& run : runs) c.known.runs.push_back(*run);
   } catch (...) {
-    c = {};  // a chunk half appended: the next result copies every chunk again
+    c = {};  // arrays half grown: the next result places every chunk again
     throw;
   }
   c.known.indices_in_range = true;
@@ -254,6 +303,8 @@ void IncrementalAnalysis::update_combined() {
 const AnalysisResult& IncrementalAnalysis::result() {
   reused_ = !dirty_ && result_.has_value();
   if (reused_) return *result_;
+  // The analysis's threads (analyze() makes the same pool current), for the copies too.
+  const detail::PoolScope scope(detail::pool_for(caches_->workers, options_.threads));
   update_combined();
   stage_->set_chunks(caches_->combined);
   result_.reset();

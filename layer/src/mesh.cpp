@@ -1,5 +1,7 @@
 #include "mesh.h"
 
+#include "roomsense/content_hash.h"
+
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -24,16 +26,10 @@ void transform_in_place(std::vector<glm::vec3>& vertices, const Rigid& pose) {
 
 std::uint64_t content_hash(const XrVector3f* vertices, std::size_t vertex_count, const std::uint32_t* indices,
                            std::size_t index_count) {
-  std::uint64_t h = 14695981039346656037ull;
-  auto mix = [&](const void* data, std::size_t bytes) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ull;
-  };
-  mix(&vertex_count, sizeof vertex_count);
-  if (vertex_count > 0) mix(vertices, vertex_count * sizeof(XrVector3f));
-  mix(&index_count, sizeof index_count);
-  if (index_count > 0) mix(indices, index_count * sizeof(std::uint32_t));
-  return h;
+  ContentHash h;
+  h.add_bytes(vertices, vertex_count * sizeof(XrVector3f));
+  h.add_bytes(indices, index_count * sizeof(std::uint32_t));
+  return h.value();
 }
 
 std::uint64_t content_hash(const MeshPiece& mesh) {

@@ -29,7 +29,8 @@ struct MeshPiece {
 std::vector<glm::vec3> transformed(const XrVector3f* vertices, std::size_t count, const Rigid& pose);
 void transform_in_place(std::vector<glm::vec3>& vertices, const Rigid& pose);
 
-// FNV-1a over the raw vertex and index bytes as the runtime served them (component space).
+// ContentHash (roomsense/content_hash.h) of the raw vertex and index bytes as the runtime served them (component
+// space).
 std::uint64_t content_hash(const XrVector3f* vertices, std::size_t vertex_count, const std::uint32_t* indices,
                            std::size_t index_count);
 

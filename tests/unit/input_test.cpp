@@ -1,5 +1,6 @@
 // Input hygiene, frames and the grid budget (thesis Eq. 3.1-3.5).
 #include "roomsense/analysis.h"
+#include "roomsense/content_hash.h"
 #include "roomsense/error.h"
 #include "roomsense/input.h"
 #include "roomsense/scan.h"
@@ -8,10 +9,41 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <random>
 #include <limits>
 
 namespace roomsense {
 namespace {
+
+// ContentHash tells every one-byte change of a mesh's arrays, and an array one zero byte longer, from the original
+// (an IncrementalAnalysis takes a chunk whose hash is unchanged for one sent again as it was).
+TEST(ContentHash, TellsEveryChangedByteAndLength) {
+  std::mt19937 random(7);
+  std::vector<float> vertices(3 * 101);
+  for (float& v : vertices) v = std::uniform_real_distribution<float>(-5.0f, 5.0f)(random);
+  const auto hash = [](const std::vector<float>& v) {
+    ContentHash h;
+    h.add(std::span<const float>(v));
+    return h.value();
+  };
+  const std::uint64_t original = hash(vertices);
+  EXPECT_EQ(hash(vertices), original);
+  for (std::size_t byte = 0; byte < vertices.size() * sizeof(float); ++byte)
+    for (const unsigned char flip : {0x01, 0x80}) {
+      std::vector<float> changed = vertices;
+      auto* bytes = reinterpret_cast<unsigned char*>(changed.data());
+      bytes[byte] ^= flip;
+      ASSERT_NE(hash(changed), original) << "byte " << byte;
+    }
+  std::vector<unsigned char> raw(vertices.size() * sizeof(float));
+  std::memcpy(raw.data(), vertices.data(), raw.size());
+  ContentHash shorter, longer;
+  shorter.add(std::span<const unsigned char>(raw));
+  raw.push_back(0);
+  longer.add(std::span<const unsigned char>(raw));
+  EXPECT_NE(shorter.value(), longer.value());
+}
 
 ErrorCode code_of(auto&& f) {
   try {

@@ -80,7 +80,7 @@ class SearchCache {
   static constexpr std::uint8_t kAbsent = 0, kRefused = 1, kPacked = 2;
   // What a kept rectangle takes: itself, its packing state and its rank.
   static constexpr std::size_t kBytesEach = sizeof(Candidates::Item) + sizeof(std::uint8_t) + sizeof(std::uint32_t);
-  // A slot a search replaced, as it was.
+  // What a search replaced in a slot, as it was: the whole slot (walls), or its squares within the columns searched.
   struct Replaced {
     std::size_t slot;
     std::vector<Candidates::Item> items;

@@ -11,6 +11,7 @@
 #include "analysis_caches.h"
 #include "../parallel.h"
 
+#include "roomsense/content_hash.h"
 #include "roomsense/error.h"
 #include "roomsense/voxelize.h"
 
@@ -23,26 +24,8 @@
 namespace roomsense {
 namespace {
 
-// FNV-1a over the bytes of each array, with the arrays' sizes between them.
-class Fnv {
- public:
-  template <class T>
-  void add(std::span<const T> values) {
-    add_value(values.size());
-    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
-    for (std::size_t i = 0; i < values.size_bytes(); ++i) hash_ = (hash_ ^ bytes[i]) * 0x100000001b3ull;
-  }
-  std::uint64_t value() const { return hash_; }
-
- private:
-  void add_value(std::uint64_t v) {
-    for (int i = 0; i < 8; ++i) hash_ = (hash_ ^ ((v >> (8 * i)) & 0xff)) * 0x100000001b3ull;
-  }
-  std::uint64_t hash_ = 0xcbf29ce484222325ull;
-};
-
 std::uint64_t content_hash(const Scan& scan) {
-  Fnv h;
+  ContentHash h;
   h.add(std::span<const glm::vec3>(scan.vertices));
   h.add(std::span<const std::uint32_t>(scan.indices));
   h.add(std::span<const glm::vec3>(scan.labels.vertices));

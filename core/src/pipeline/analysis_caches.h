@@ -1,6 +1,7 @@
 // What an IncrementalAnalysis keeps between its analyses besides each chunk's voxels: its combined scan with each
 // chunk's input summary and surface sums, each storey's area searches by bands of rows (areas/search_cache.h), the
-// features and bounds of the latest voxels, and each bounds mesh's slices (bounds/mesh_memo.h).
+// labels' voxels of the latest result (whose features and bounds it reads, not copies), each bounds mesh's slices
+// (bounds/mesh_memo.h) and the analyses' threads.
 #pragma once
 #include "roomsense/analysis.h"
 #include "../areas/search_cache.h"
@@ -15,21 +16,6 @@
 #include <vector>
 
 namespace roomsense::detail {
-
-// What the features and bounds of an analysis were derived from (the grid, the labels' voxels and the storeys'
-// levels), and they: an analysis of the same grid, labels and levels has the same (a scan refined within its
-// voxels).
-struct DerivedFromVoxels {
-  GridSpec spec{};
-  std::vector<std::uint8_t> cells;
-  LabelGrid labels;
-  std::vector<FloorCeiling> levels;  // per storey
-  std::optional<RoomFeatures> features;
-  std::vector<RoomFeatures> other_features;
-  bool has_bounds = false;
-  BoundsMesh bounds;
-  std::vector<BoundsMesh> room_bounds;
-};
 
 // An IncrementalAnalysis's chunks in id order as one scan, kept between analyses: a change copies the chunks
 // from the first one that changed on, not all of them, and summarizes each chunk's vertices once.
@@ -68,7 +54,11 @@ class ChunkBandSums {
 // For one AnalysisOptions: an IncrementalAnalysis's own.
 struct AnalysisCaches {
   std::vector<std::unique_ptr<SearchCache>> storeys;  // storey i of the latest analysis
-  std::optional<DerivedFromVoxels> derived;           // the latest analysis's
+  // The latest complete analysis's result (IncrementalAnalysis::result() keeps it alive through the next
+  // analysis; null where there is none) and the labels' voxels of its scan: an analysis of the same grid,
+  // labels and storey levels has its features and bounds (a scan refined within its voxels), copied from it.
+  const AnalysisResult* previous = nullptr;
+  LabelGrid previous_labels;
   CombinedScan combined;
   ChunkBandSums band_sums;  // of `combined`
   std::vector<MeshMemo> bounds;  // the home's bounds mesh, then each room's (AnalysisResult::room_bounds)

@@ -262,17 +262,20 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   r.other_features.resize(r.storeys.size() - 1);
   // An IncrementalAnalysis whose chunks changed within their voxels: the features (and below, the bounds) are
   // the previous analysis's.
-  std::vector<FloorCeiling> storey_levels;
-  for (const Storey& storey : r.storeys) storey_levels.push_back(storey.levels);
-  std::optional<DerivedFromVoxels> derived;
-  if (caches) derived = std::exchange(caches->derived, std::nullopt);
-  const bool same_input = derived && derived->spec == spec && derived->levels == storey_levels &&
-                          derived->cells == r.voxels.grid.cells && derived->labels.present == labels.present &&
-                          derived->labels.masks == labels.masks;
-  if (derived && !same_input) derived.reset();
+  const AnalysisResult* previous = caches ? caches->previous : nullptr;
+  const auto same_levels = [&] {
+    if (previous->storeys.size() != r.storeys.size()) return false;
+    for (std::size_t i = 0; i < r.storeys.size(); ++i)
+      if (previous->storeys[i].levels != r.storeys[i].levels) return false;
+    return true;
+  };
+  const bool same_input = previous != nullptr && previous->features && previous->voxels.grid.spec == spec &&
+                          same_levels() && previous->voxels.grid.cells == r.voxels.grid.cells &&
+                          caches->previous_labels.present == labels.present &&
+                          caches->previous_labels.masks == labels.masks;
   if (same_input) {
-    r.features = derived->features;
-    r.other_features = derived->other_features;
+    r.features = previous->features;
+    r.other_features = previous->other_features;
   } else detail::parallel_tasks(r.storeys.size(), options.threads, [&](std::size_t i) {
     stop_point(options.stop);
     if (i == 0) {
@@ -285,12 +288,6 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     r.other_features[i - 1] = detect_features(r.voxels.grid, r.storeys[i].levels, column_counts, column_any,
                                               options.features, options.threads, options.stop, labels);
   });
-  if (caches && !derived) {
-    derived.emplace();
-    derived->spec = spec, derived->cells = r.voxels.grid.cells, derived->labels = std::move(labels);
-    derived->levels = std::move(storey_levels);
-    derived->features = r.features, derived->other_features = r.other_features;
-  }
   r.status_message = "ok";
   r.timings.features = clock.lap();
   stop_point(options.stop);
@@ -319,12 +316,11 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   const auto build_bounds = [&] {
     Stopwatch bounds_clock;
     stop_point(options.stop);
-    if (derived && derived->has_bounds) {
-      r.bounds = derived->bounds;
-      r.room_bounds = derived->room_bounds;
+    if (same_input) {  // an IncrementalAnalysis keeps its options: the previous result has its bounds
+      r.bounds = previous->bounds;
+      r.room_bounds = previous->room_bounds;
     } else {
       build_all_bounds(r, options, caches ? &caches->bounds : nullptr);
-      if (derived) derived->has_bounds = true, derived->bounds = r.bounds, derived->room_bounds = r.room_bounds;
     }
     r.timings.bounds = bounds_clock.lap();
   };
@@ -353,7 +349,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     for (double* t : {&r.timings.areas, &r.timings.reduce, &r.timings.classify}) *t *= areas_wall / areas_summed;
   assign_area_rooms(r);
   stop_point(options.stop);
-  if (caches) caches->derived = std::move(derived);
+  if (caches) caches->previous_labels = std::move(labels);
   r.timings.total = total_clock.lap();  // the areas and the bounds overlap: not the stages' sum
   return r;
 }

@@ -290,7 +290,14 @@ const AnalysisResult& IncrementalAnalysis::result() {
   const detail::PoolScope scope(detail::pool_for(caches_->workers, options_.threads));
   update_combined();
   stage_->set_chunks(caches_->combined);
-  result_.reset();
+  // The previous result, alive through the analysis, which may take its features and bounds (a chunk refined
+  // within its voxels) and compares against it; gone once the analysis ends, or fails.
+  const std::optional<AnalysisResult> previous = std::exchange(result_, std::nullopt);
+  caches_->previous = previous ? &*previous : nullptr;
+  struct Forget {
+    detail::AnalysisCaches& caches;
+    ~Forget() { caches.previous = nullptr; }
+  } forget{*caches_};
   result_ = detail::analyze(caches_->combined.scan, options_, caches_.get());
   dirty_ = false;
   return *result_;

@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <mutex>
 #include <set>
 #include <stdexcept>
@@ -67,21 +68,28 @@ TEST(WorkerPool, AJobsExceptionReachesTheCallerOnceEveryJobEnded) {
 
 TEST(WorkerPool, ParallelLoopsUseTheirThreadsPool) {
   EXPECT_EQ(WorkerPool::current(), nullptr);
-  WorkerPool pool(2);
-  std::set<std::thread::id> ids;
-  std::mutex ids_mutex;
+  WorkerPool pool(1);
   {
     const PoolScope scope(&pool);
     EXPECT_EQ(WorkerPool::current(), &pool);
-    // Slow enough tasks that the pool's threads take some: only the caller's and the pool's threads run them, and
-    // the pool's see their pool as current.
-    for (int round = 0; round < 50; ++round)
-      roomsense::detail::parallel_tasks(6, 3, [&](std::size_t) {
-        std::this_thread::sleep_for(std::chrono::microseconds(200));
-        EXPECT_EQ(WorkerPool::current(), &pool);
-        const std::lock_guard lock(ids_mutex);
-        ids.insert(std::this_thread::get_id());
-      });
+    // Two tasks, each waiting (up to 10 s) until both have started: they end only when two threads run them, the
+    // caller and the pool's thread, whatever the scheduler's timing; the pool's thread sees its pool as current.
+    std::mutex mutex;
+    std::condition_variable both;
+    int started = 0;
+    bool waited_out = false;
+    std::set<std::thread::id> ids;
+    roomsense::detail::parallel_tasks(2, 2, [&](std::size_t) {
+      EXPECT_EQ(WorkerPool::current(), &pool);
+      std::unique_lock lock(mutex);
+      ids.insert(std::this_thread::get_id());
+      ++started;
+      both.notify_all();
+      if (!both.wait_for(lock, std::chrono::seconds(10), [&] { return started == 2; })) waited_out = true;
+    });
+    EXPECT_FALSE(waited_out);
+    EXPECT_EQ(ids.size(), 2u);
+    EXPECT_TRUE(ids.count(std::this_thread::get_id()));
     {
       const PoolScope none(nullptr);
       EXPECT_EQ(WorkerPool::current(), nullptr);
@@ -89,9 +97,6 @@ TEST(WorkerPool, ParallelLoopsUseTheirThreadsPool) {
     EXPECT_EQ(WorkerPool::current(), &pool);
   }
   EXPECT_EQ(WorkerPool::current(), nullptr);
-  EXPECT_LE(ids.size(), 3u);
-  EXPECT_GE(ids.size(), 2u);
-  EXPECT_TRUE(ids.count(std::this_thread::get_id()));
 }
 
 }  // namespace

@@ -74,12 +74,7 @@ void WorkerPool::run(std::size_t n, const std::function<void(std::size_t)>& job)
   for (;;) {
     work_.wait(lock, [&] { return b.ended == n || !queue_.empty(); });
     if (b.ended == n) break;
-    Batch& other = *queue_.front();
-    const std::size_t i = other.taken++;
-    if (other.taken == other.n) queue_.pop_front();
-    lock.unlock();
-    execute(other, i);
-    lock.lock();
+    run_front(lock);
   }
   if (b.failure) std::rethrow_exception(b.failure);
 }
@@ -90,13 +85,17 @@ void WorkerPool::serve() {
   for (;;) {
     work_.wait(lock, [&] { return ending_ || !queue_.empty(); });
     if (queue_.empty()) return;  // ending, and no batch waits
-    Batch& b = *queue_.front();
-    const std::size_t i = b.taken++;
-    if (b.taken == b.n) queue_.pop_front();
-    lock.unlock();
-    execute(b, i);
-    lock.lock();
+    run_front(lock);
   }
+}
+
+void WorkerPool::run_front(std::unique_lock<std::mutex>& lock) {
+  Batch& b = *queue_.front();
+  const std::size_t i = b.taken++;
+  if (b.taken == b.n) queue_.pop_front();
+  lock.unlock();
+  execute(b, i);
+  lock.lock();
 }
 
 WorkerPool* pool_for(std::unique_ptr<WorkerPool>& slot, unsigned threads) {

@@ -38,6 +38,8 @@ class WorkerPool {
   void serve();
   // Runs job i of b (taken under the lock, which is not held here), then counts it ended.
   void execute(Batch& b, std::size_t i);
+  // Takes the next job of the oldest batch in the queue (not empty) and runs it, the lock released meanwhile.
+  void run_front(std::unique_lock<std::mutex>& lock);
 
   std::mutex mutex_;
   std::condition_variable work_;  // a batch has jobs not taken, a batch ended, or the pool ends

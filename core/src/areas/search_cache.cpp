@@ -195,8 +195,8 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, const RowBan
     const glm::ivec2 columns = bands.columns[b];
     for (int layer = 0; layer < kept.layers; ++layer) {
       const std::size_t slot = std::size_t(layer) * band_count + b;
-      Replaced r{slot, std::exchange(kept.pieces[slot], {}), std::exchange(kept.states[slot], {}),
-                 std::exchange(kept.ranks[slot], {})};
+      Replaced r{slot, std::exchange(kept.pieces[slot], {}), std::exchange(kept.states[slot], {})};
+      const std::vector<std::uint32_t> old_ranks = std::exchange(kept.ranks[slot], {});
       kept_bytes_ -= r.items.size() * kBytesEach;
       std::vector<Candidates::Item>& items = kept.pieces[slot];
       std::vector<std::uint8_t>& states = kept.states[slot];
@@ -211,16 +211,16 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, const RowBan
         // Squares: the slot's squares whose centre lies outside the columns searched are as they were, with
         // their packing and rank (which read no changed column either); the search found the others anew. Both
         // in search order: by centre, z then x.
-        Replaced gone{slot, {}, {}, {}};
+        Replaced gone{slot, {}, {}};
         std::size_t i = first;
         for (std::size_t k = 0; k < r.items.size(); ++k) {
           const glm::ivec2 centre = centre_of(r.items[k]);
           if (centre.x / 2 >= columns.x && centre.x / 2 <= columns.y) {
-            gone.items.push_back(r.items[k]), gone.states.push_back(r.states[k]), gone.ranks.push_back(r.ranks[k]);
+            gone.items.push_back(r.items[k]), gone.states.push_back(r.states[k]);
             continue;
           }
           for (; i < end && before(centre_of(found.item(i)), centre); ++i) add_fresh(i);
-          items.push_back(r.items[k]), states.push_back(r.states[k]), ranks.push_back(r.ranks[k]);
+          items.push_back(r.items[k]), states.push_back(r.states[k]), ranks.push_back(old_ranks[k]);
         }
         for (; i < end; ++i) add_fresh(i);
         r = std::move(gone);

@@ -85,7 +85,6 @@ class SearchCache {
     std::size_t slot;
     std::vector<Candidates::Item> items;
     std::vector<std::uint8_t> states;
-    std::vector<std::uint32_t> ranks;
   };
   // Which bands to search: all where `kept` does not match, else those within `reach` rows of a changed row,
   // each over the columns within `reach` of the changed columns of those rows.

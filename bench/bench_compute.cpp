@@ -1,9 +1,15 @@
 // CPU vs Vulkan for the voxel stage (thesis §3.1-3.2): per stage and end to end, on the real scans
-// (../shared/rooms, skipped when missing) and on a synthetic room of about 78k vertices (thesis room 1).
-// Vulkan runs report where their time went as counters: host work list and copies against GPU passes
-// (timestamp queries). Set XDG_CACHE_HOME to keep Mesa's shader cache out of $HOME.
+// (../shared/rooms or ROOMSENSE_ROOMS_DIR, skipped when missing), on a synthetic room of about 78k vertices
+// (thesis room 1), the 20 x 14 m hall, and that hall refined to about 1M vertices. Every Vulkan case first
+// checks that the device gives the CPU's result bit for bit, and fails (skips with an error) where it does
+// not. Vulkan runs report where their time went as counters: host work list and copies against GPU passes
+// (timestamp queries). The `analysis/` cases time the whole analysis with each stage, the Vulkan stage
+// kept across runs or created for each one (as a one-off CLI run pays). CPU cases run on 2 threads (the
+// two-core reference machine) and, where the machine has more, on all of them. Set XDG_CACHE_HOME to keep
+// Mesa's shader cache out of $HOME.
 //
 //   roomsense_bench_compute --benchmark_min_time=0.5
+#include "roomsense/analysis.h"
 #include "roomsense/grid.h"
 #include "roomsense/input.h"
 #include "roomsense/scanio.h"
@@ -13,10 +19,12 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -25,6 +33,7 @@ using namespace roomsense;
 
 struct BenchRoom {
   std::string name;
+  Scan scan;
   GridSpec spec;
   std::vector<glm::vec3> grid_vertices;
   std::vector<std::uint32_t> indices;
@@ -43,6 +52,7 @@ BenchRoom prepare(std::string name, const Scan& scan) {
   const PreparedInput in = prepare_input(scan);
   BenchRoom room;
   room.name = std::move(name);
+  room.scan = scan;
   room.spec = make_grid_spec(in.lo, in.hi, kDefaultVoxelSize);
   room.grid_vertices = to_grid_units(in.vertices, room.spec);
   room.indices = in.indices;
@@ -68,11 +78,17 @@ void set_size_counters(benchmark::State& state, const BenchRoom& room) {
   state.counters["tris"] = double(room.indices.size() / 3);
 }
 
-void cpu_end_to_end(benchmark::State& state, const BenchRoom& room, VoxelMode mode) {
+void cpu_end_to_end(benchmark::State& state, const BenchRoom& room, VoxelMode mode, unsigned threads) {
   const VoxelizeRequest r = room.request(mode);
-  CpuVoxelStage cpu;
+  CpuVoxelStage cpu(threads);
   for (auto _ : state) benchmark::DoNotOptimize(cpu.run(r));
   set_size_counters(state, room);
+}
+
+bool same_result(const VoxelStageResult& a, const VoxelStageResult& b) {
+  return a.grid.spec.nx == b.grid.spec.nx && a.grid.spec.ny == b.grid.spec.ny && a.grid.spec.nz == b.grid.spec.nz &&
+         a.grid.cells == b.grid.cells && a.level_counts == b.level_counts && a.levels == b.levels &&
+         a.column_counts == b.column_counts && a.column_any == b.column_any;
 }
 
 // The CPU's stages one by one: voxelize (Eq. 3.6/3.7), |V_y| (3.8), levels (3.9/3.10), columns (3.11/3.12).
@@ -110,7 +126,11 @@ void vulkan_end_to_end(benchmark::State& state, const BenchRoom& room, VoxelMode
     return;
   }
   const VoxelizeRequest r = room.request(mode);
-  benchmark::DoNotOptimize(stage->run(r));  // warm: buffers sized, pipelines compiled
+  // Warm (buffers sized, pipelines compiled), and the device's result checked against the CPU's.
+  if (!same_result(stage->run(r), CpuVoxelStage().run(r))) {
+    state.SkipWithError(stage->last_timings().fell_back ? "fell back to the CPU" : "differs from the CPU result");
+    return;
+  }
   VulkanRunTimings sum;
   for (auto _ : state) {
     benchmark::DoNotOptimize(stage->run(r));
@@ -146,6 +166,36 @@ void vulkan_end_to_end(benchmark::State& state, const BenchRoom& room, VoxelMode
   state.SetLabel(stage->device().name);
 }
 
+enum class StageUse { Cpu, VulkanKept, VulkanPerRun };
+
+// The whole analysis (understanding and bounds) with the voxel stage `use` picks, on `threads` threads.
+void analysis(benchmark::State& state, const BenchRoom& room, StageUse use, unsigned threads) {
+  AnalysisOptions options;
+  options.threads = threads;
+  if (use == StageUse::VulkanKept) {
+    options.voxel_stage = vulkan();
+    if (options.voxel_stage == nullptr) {
+      state.SkipWithError("no Vulkan device");
+      return;
+    }
+  }
+  benchmark::DoNotOptimize(analyze(room.scan, options));  // warm
+  for (auto _ : state) {
+    std::unique_ptr<VulkanVoxelStage> own;
+    if (use == StageUse::VulkanPerRun) {
+      std::string why;
+      own = VulkanVoxelStage::create({}, &why);
+      if (!own) {
+        state.SkipWithError(why.c_str());
+        return;
+      }
+      options.voxel_stage = own.get();
+    }
+    benchmark::DoNotOptimize(analyze(room.scan, options));
+  }
+  set_size_counters(state, room);
+}
+
 // One-off cost of Vulkan: instance, device, pipelines (what a first run pays unless the stage is kept).
 void vulkan_create(benchmark::State& state) {
   for (auto _ : state) {
@@ -164,8 +214,23 @@ std::vector<BenchRoom>& rooms() {
   return all;
 }
 
+// `spec` with its triangle size scaled until the generated room has about `vertices` vertices.
+synth::RoomSpec refined(synth::RoomSpec spec, double vertices) {
+  for (int i = 0; i < 4; ++i) {
+    const double n = double(synth::generate(spec).vertices.size());
+    if (n <= 0 || std::abs(n - vertices) < 0.03 * vertices) break;
+    spec.cell *= float(std::sqrt(n / vertices));
+  }
+  return spec;
+}
+
+std::filesystem::path rooms_dir() {
+  if (const char* env = std::getenv("ROOMSENSE_ROOMS_DIR"); env != nullptr && *env != '\0') return env;
+  return ROOMSENSE_BENCH_ROOMS_DIR;
+}
+
 void load_rooms() {
-  const std::filesystem::path dir = ROOMSENSE_BENCH_ROOMS_DIR;
+  const std::filesystem::path dir = rooms_dir();
   const char* const scans[] = {"hololens1/holotoolkit_fake_spatial_mapping.obj", "hololens1/mrtk_example_spatial_mesh.obj",
                                "hololens2-su/SU_Apartment_world_mesh.obj",      "hololens2-su/SU_Kitchen_world_mesh.obj",
                                "quest-iwer/living_room_global_mesh.obj",        "quest-iwer/meeting_room_global_mesh.obj",
@@ -179,15 +244,10 @@ void load_rooms() {
     }
     rooms().push_back(prepare(path.stem().string(), scanio::load_mesh_file(path.string())));
   }
-  // The thesis's room 1 has about 78k vertices: refine the generator's triangle size until we are there.
-  synth::RoomSpec room1 = synth::thesis_room1();
-  for (int i = 0; i < 4; ++i) {
-    const double n = double(synth::generate(room1).vertices.size());
-    if (n <= 0 || std::abs(n - 78000.0) < 2000.0) break;
-    room1.cell *= float(std::sqrt(n / 78000.0));
-  }
-  rooms().push_back(prepare("synthetic_78k", synth::generate(room1)));
+  // The thesis's room 1 has about 78k vertices; the GPU goal is set on a scan of 1M.
+  rooms().push_back(prepare("synthetic_78k", synth::generate(refined(synth::thesis_room1(), 78000.0))));
   rooms().push_back(prepare("synthetic_hall", synth::generate(synth::hall_room())));
+  rooms().push_back(prepare("synthetic_hall_1m", synth::generate(refined(synth::hall_room(), 1.0e6))));
 }
 
 }  // namespace
@@ -196,13 +256,27 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   load_rooms();
   benchmark::RegisterBenchmark("vulkan/create_stage", vulkan_create)->Unit(benchmark::kMillisecond)->Iterations(3);
-  for (const BenchRoom& room : rooms())
+  // 2 threads: the reference machine; all of them, where there are more.
+  std::vector<unsigned> thread_counts{2};
+  if (const unsigned all = std::thread::hardware_concurrency(); all > 2) thread_counts.push_back(all);
+  for (const BenchRoom& room : rooms()) {
     for (VoxelMode mode : {VoxelMode::Vertices, VoxelMode::Triangles}) {
       const std::string suffix = room.name + "/" + mode_name(mode);
-      benchmark::RegisterBenchmark(("cpu/end_to_end/" + suffix).c_str(), cpu_end_to_end, room, mode)->Unit(benchmark::kMillisecond);
+      for (unsigned threads : thread_counts)
+        benchmark::RegisterBenchmark(("cpu/end_to_end/" + suffix + "/threads:" + std::to_string(threads)).c_str(),
+                                     cpu_end_to_end, room, mode, threads)
+            ->Unit(benchmark::kMillisecond);
       benchmark::RegisterBenchmark(("cpu/stages/" + suffix).c_str(), cpu_stages, room, mode)->Unit(benchmark::kMillisecond);
       benchmark::RegisterBenchmark(("vulkan/end_to_end/" + suffix).c_str(), vulkan_end_to_end, room, mode)->Unit(benchmark::kMillisecond);
     }
+    for (unsigned threads : thread_counts) {
+      const std::string suffix = "/threads:" + std::to_string(threads);
+      for (const auto& [use, name] : {std::pair{StageUse::Cpu, "cpu"}, std::pair{StageUse::VulkanKept, "vulkan_kept"},
+                                      std::pair{StageUse::VulkanPerRun, "vulkan_created"}})
+        benchmark::RegisterBenchmark(("analysis/" + room.name + "/" + name + suffix).c_str(), analysis, room, use, threads)
+            ->Unit(benchmark::kMillisecond);
+    }
+  }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -8,7 +8,7 @@
 layout(local_size_x = LOCAL_SIZE) in;
 
 layout(std430, set = 0, binding = 0) readonly buffer Vertices { float vertex_coords[]; };  // x,y,z per vertex, grid units
-// 3 per triangle, then from work_offset the triangle pass's work items (triangle, chunk), 2 words each.
+// 3 per triangle, then from work_offset the triangle pass's extra work items (triangle, chunk), 2 words each.
 layout(std430, set = 0, binding = 1) readonly buffer Indices { uint indices[]; };
 layout(std430, set = 0, binding = 2) coherent buffer Bits { uint bits[]; };                // V, bit-packed
 // The results, one buffer: [grid bytes | level counts | levels | column counts | column any bytes], each
@@ -18,7 +18,7 @@ layout(std430, set = 0, binding = 3) buffer Out { uint out_words[]; };
 layout(push_constant) uniform Params {
   int nx, ny, nz;
   uint vertex_count;
-  uint work_count;     // triangle-pass work items
+  uint work_count;     // triangle-pass work items: one per triangle, then the extra ones
   uint work_offset;    // word offset of the work items in `indices`
   uint voxel_count;
   uint column_count;

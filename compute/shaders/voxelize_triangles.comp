@@ -61,16 +61,22 @@ bool triangle_overlaps_voxel(vec3 a, vec3 b, vec3 c, int x, int y, int z) {
 }
 
 // Work item (t, chunk): voxels [chunk * kChunkVoxels, (chunk + 1) * kChunkVoxels) of triangle t's bounding
-// box, numbered y fastest, then x, then z. The host lists one item per kChunkVoxels of each box (a box of one
-// voxel is marked without a test), so a big triangle is spread over many invocations and no
-// invocation loops more than kChunkVoxels times. kChunkVoxels must match vulkan_voxel_stage.cpp.
+// box, numbered y fastest, then x, then z. Item t < triangles is (t, 0); the host lists the further chunks of
+// boxes past kChunkVoxels after the triangles' indices (triangle_work.h), so a big triangle is spread over
+// many invocations and no invocation loops more than kChunkVoxels times. A box of one voxel is marked without
+// a test. kChunkVoxels must match triangle_work.h.
 const uint kChunkVoxels = 512u;
 
 void main() {
   const uint item = item_index();
   if (item >= pc.work_count) return;
-  const uint t = indices[pc.work_offset + 2u * item];
-  const uint chunk = indices[pc.work_offset + 2u * item + 1u];
+  const uint triangles = pc.work_offset / 3u;  // the indices come first, 3 per triangle
+  uint t = item, chunk = 0u;
+  if (item >= triangles) {
+    const uint extra = pc.work_offset + 2u * (item - triangles);
+    t = indices[extra];
+    chunk = indices[extra + 1u];
+  }
   const vec3 a = vertex_at(indices[3u * t]);
   const vec3 b = vertex_at(indices[3u * t + 1u]);
   const vec3 c = vertex_at(indices[3u * t + 2u]);

@@ -1,5 +1,5 @@
-// The backend factory. Auto is conservative: Vulkan only on a real GPU and a grid past the crossover
-// (kVulkanCrossoverVoxels, compute/README.md); lavapipe never wins against the CPU path.
+// The backend factory. Auto picks Vulkan only where it wins end to end, its start included: on a real GPU
+// and past kVulkanCrossoverTriangles (roomsense/backend.h, compute/README.md); lavapipe never wins.
 #include "roomsense/voxel_stage_choice.h"
 
 #include "roomsense/vulkan_voxel_stage.h"
@@ -15,22 +15,22 @@ void set(std::string* note, std::string text) {
 
 }  // namespace
 
-std::unique_ptr<VoxelStage> make_voxel_stage(Backend backend, std::size_t problem_size_hint, std::string* note) {
+std::unique_ptr<VoxelStage> make_voxel_stage(Backend backend, const VoxelWorkload& workload, std::string* note) {
   if (backend == Backend::Cpu) {
     set(note, "cpu: requested");
     return std::make_unique<CpuVoxelStage>();
   }
   if (backend == Backend::Auto) {
-    if (problem_size_hint < kVulkanCrossoverVoxels) {
-      set(note, "cpu: auto, " + std::to_string(problem_size_hint) + " voxels is below the Vulkan crossover of " +
-                    std::to_string(kVulkanCrossoverVoxels));
-      return std::make_unique<CpuVoxelStage>();
-    }
     // A grid past the default budget is refused before any voxel stage runs (make_grid_spec): starting a GPU
     // driver in the app's process for it would be work, and driver state, for nothing.
-    if (problem_size_hint > kDefaultVoxelBudget) {
-      set(note, "cpu: auto, " + std::to_string(problem_size_hint) + " voxels is past the grid budget of " +
+    if (workload.voxels > kDefaultVoxelBudget) {
+      set(note, "cpu: auto, " + std::to_string(workload.voxels) + " voxels is past the grid budget of " +
                     std::to_string(kDefaultVoxelBudget) + ": no device probed");
+      return std::make_unique<CpuVoxelStage>();
+    }
+    if (workload.triangles < kVulkanCrossoverTriangles) {
+      set(note, "cpu: auto, " + std::to_string(workload.triangles) + " triangles is below the Vulkan crossover of " +
+                    std::to_string(kVulkanCrossoverTriangles) + " (a Vulkan stage's start costs more than it saves)");
       return std::make_unique<CpuVoxelStage>();
     }
     std::string why;

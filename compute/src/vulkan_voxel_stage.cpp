@@ -107,7 +107,7 @@ class VulkanVoxelStage::Impl {
   bool unified_ = false;
   GpuBuffer vertices_, indices_, bits_, out_;
   GpuBuffer upload_, readback_;  // staging, discrete GPUs only
-  std::vector<std::uint32_t> work_;  // the triangle pass's work list (triangle_work.h), reused
+  TriangleWork work_;  // the triangle pass's extra items (triangle_work.h), reused
   std::chrono::milliseconds timeout_;
   bool unusable_ = false;  // after a timeout or device loss every run goes to the CPU
   bool submitted_ = false;  // a submission not yet waited for (its run was cancelled)
@@ -367,24 +367,23 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
   const std::uint64_t triangles = request.mode == VoxelMode::Triangles ? request.indices.size() / 3 : 0;
   VulkanRunTimings t;
   auto t0 = Clock::now();
-  work_.clear();
   // The boxes are the GPU's work: past the budget the work list alone could take gigabytes. The CPU scans
   // only near each triangle's plane, so it may still fit the budget there.
-  const std::uint64_t tests =
-      count_box_tests(request.grid_vertices, request.indices.first(triangles * 3), s.nx, s.ny, s.nz);
-  if (tests > request.test_budget)
-    return fall_back(request, "the triangles' boxes need " + std::to_string(tests) +
-                                  " triangle-voxel tests, more than the work budget of " +
-                                  std::to_string(request.test_budget));
-  if (triangles > 0) build_triangle_work(request.grid_vertices, request.indices.first(triangles * 3), s.nx, s.ny, s.nz, work_);
+  if (!build_triangle_work(request.grid_vertices, request.indices.first(triangles * 3), s.nx, s.ny, s.nz,
+                           request.test_budget, work_))
+    return fall_back(request, "the triangles' boxes need more than the work budget of " +
+                                  std::to_string(request.test_budget) + " triangle-voxel tests");
+  const std::uint64_t tests = work_.tests;
   t.host_work_list_ms = ms_since(t0);
   const std::uint64_t index_words = triangles * 3;
-  if (index_words + work_.size() >= std::numeric_limits<std::uint32_t>::max() ||
-      (index_words + work_.size()) * 4 > ctx->properties().limits.maxStorageBufferRange)
+  const std::uint64_t work_words = work_.extra.size();
+  if (index_words + work_words >= std::numeric_limits<std::uint32_t>::max() ||
+      triangles + work_words / 2 >= std::numeric_limits<std::uint32_t>::max() ||
+      (index_words + work_words) * 4 > ctx->properties().limits.maxStorageBufferRange)
     return fall_back(request, "the triangle work list is too large for one buffer");
   // Empty inputs still get a (small) buffer: a zero-sized VkBuffer is invalid.
   const VkDeviceSize vertex_bytes = std::max<VkDeviceSize>(16, request.grid_vertices.size() * sizeof(glm::vec3));
-  const VkDeviceSize index_bytes = std::max<VkDeviceSize>(16, (index_words + work_.size()) * sizeof(std::uint32_t));
+  const VkDeviceSize index_bytes = std::max<VkDeviceSize>(16, (index_words + work_words) * sizeof(std::uint32_t));
   const VkDeviceSize bits_bytes = ((s.voxel_count() + 31) / 32) * 4;
   const VkDeviceSize out_bytes = out.total_words * 4;
 
@@ -393,7 +392,7 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
   pc.ny = s.ny;
   pc.nz = s.nz;
   pc.vertex_count = std::uint32_t(request.grid_vertices.size());
-  pc.work_count = std::uint32_t(work_.size() / 2);
+  pc.work_count = std::uint32_t(triangles + work_words / 2);  // one item per triangle, then the extra ones
   pc.work_offset = std::uint32_t(index_words);
   pc.voxel_count = std::uint32_t(s.voxel_count());
   pc.column_count = std::uint32_t(s.column_count());
@@ -416,7 +415,7 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
     if (!request.grid_vertices.empty())
       std::memcpy(vertex_dst, request.grid_vertices.data(), request.grid_vertices.size() * sizeof(glm::vec3));
     if (index_words > 0) std::memcpy(index_dst, request.indices.data(), index_words * sizeof(std::uint32_t));
-    if (!work_.empty()) std::memcpy(index_dst + index_words * 4, work_.data(), work_.size() * sizeof(std::uint32_t));
+    if (work_words > 0) std::memcpy(index_dst + index_words * 4, work_.extra.data(), work_words * sizeof(std::uint32_t));
     t.host_upload_ms = ms_since(t0);
 
     t0 = Clock::now();

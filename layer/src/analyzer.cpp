@@ -55,7 +55,7 @@ namespace {
 std::unique_ptr<VoxelStage> chosen_stage(const Scan& scan, float voxel_size, Backend backend) {
 #if ROOMSENSE_HAVE_COMPUTE
   std::string note;
-  std::unique_ptr<VoxelStage> stage = make_voxel_stage(backend, estimated_voxel_count(scan, voxel_size), &note);
+  std::unique_ptr<VoxelStage> stage = make_voxel_stage(backend, estimate_voxel_workload(scan, voxel_size), &note);
   if (backend == Backend::Vulkan && stage->name() != "vulkan") log_warn("backend: " + note);
   else log_info("backend: " + note);
   if (stage->name() == CpuVoxelStage().name()) return nullptr;

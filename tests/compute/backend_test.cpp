@@ -32,21 +32,30 @@ TEST(Backend, ReadsTheEnvironment) {
 
 TEST(Backend, CpuAndSmallAutoNeverTouchVulkan) {
   std::string note;
-  EXPECT_EQ(make_voxel_stage(Backend::Cpu, 1u << 30, &note)->name(), "cpu");
-  EXPECT_EQ(make_voxel_stage(Backend::Auto, 1000, &note)->name(), "cpu");
+  EXPECT_EQ(make_voxel_stage(Backend::Cpu, {1u << 30, 1u << 30}, &note)->name(), "cpu");
+  EXPECT_EQ(make_voxel_stage(Backend::Auto, {1000, 1000}, &note)->name(), "cpu");
   EXPECT_NE(note.find("below the Vulkan crossover"), std::string::npos) << note;
+}
+
+// A big grid of few triangles (vertex mode, or a coarse scan of a hall) is cheap on the CPU: a Vulkan
+// stage's start (360 ms on an H100) would cost more than the whole CPU voxel stage.
+TEST(Backend, AutoWeighsTrianglesNotTheGrid) {
+  std::string note;
+  EXPECT_EQ(make_voxel_stage(Backend::Auto, {kDefaultVoxelBudget, 0}, &note)->name(), "cpu");
+  EXPECT_NE(note.find("0 triangles is below the Vulkan crossover"), std::string::npos) << note;
+  EXPECT_EQ(make_voxel_stage(Backend::Auto, {kDefaultVoxelBudget, kVulkanCrossoverTriangles - 1}, &note)->name(), "cpu");
 }
 
 TEST(Backend, AutoProbesNoDeviceForAGridTheAnalysisRefuses) {
   std::string note;
-  EXPECT_EQ(make_voxel_stage(Backend::Auto, kDefaultVoxelBudget + 1, &note)->name(), "cpu");
+  EXPECT_EQ(make_voxel_stage(Backend::Auto, {kDefaultVoxelBudget + 1, kVulkanCrossoverTriangles}, &note)->name(), "cpu");
   EXPECT_NE(note.find("no device probed"), std::string::npos) << note;
 }
 
 TEST(Backend, AutoAvoidsLavapipe) {
   ROOMSENSE_REQUIRE_VULKAN(stage);
   std::string note;
-  const auto chosen = make_voxel_stage(Backend::Auto, kVulkanCrossoverVoxels * 4, &note);
+  const auto chosen = make_voxel_stage(Backend::Auto, {std::size_t{1} << 22, kVulkanCrossoverTriangles}, &note);
   const GpuKind kind = stage->device().kind;
   const bool gpu = kind == GpuKind::Discrete || kind == GpuKind::Integrated;
   EXPECT_EQ(chosen->name(), gpu ? "vulkan" : "cpu") << note;
@@ -54,7 +63,7 @@ TEST(Backend, AutoAvoidsLavapipe) {
 
 TEST(Backend, VulkanRequestGivesVulkanOrSaysWhyNot) {
   std::string note;
-  const auto chosen = make_voxel_stage(Backend::Vulkan, 0, &note);
+  const auto chosen = make_voxel_stage(Backend::Vulkan, {}, &note);
   ASSERT_NE(chosen, nullptr);
   if (chosen->name() == "cpu") {
     EXPECT_NE(note.find("Vulkan unavailable"), std::string::npos) << note;

@@ -83,7 +83,9 @@ LoadedAnalysis load_and_analyze(const AnalyzeOptions& options, const char*& step
   std::unique_ptr<VoxelStage> stage;
 #if ROOMSENSE_HAVE_COMPUTE
   std::string note;
-  stage = make_voxel_stage(parse_backend(backend), estimated_voxel_count(scan, options.voxel_size), &note);
+  VoxelWorkload workload = estimate_voxel_workload(scan, options.voxel_size);
+  if (analysis.mode == VoxelMode::Vertices) workload.triangles = 0;
+  stage = make_voxel_stage(parse_backend(backend), workload, &note);
   // Say why only when Vulkan was asked for and not given; auto's choice is in the JSON's grid.backend.
   if (backend == "vulkan" && stage->name() != "vulkan") std::fprintf(stderr, "roomsense analyze: %s\n", note.c_str());
 #else

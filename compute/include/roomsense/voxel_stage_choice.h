@@ -1,5 +1,5 @@
 // The voxel stage for a backend choice (roomsense/backend.h): the CPU stage, or the Vulkan one where it is
-// asked for, or where Auto finds a real GPU and a grid past the crossover.
+// asked for, or where Auto finds a real GPU and a workload past the crossover.
 #pragma once
 #include "roomsense/backend.h"
 #include "roomsense/voxelize.h"
@@ -10,11 +10,10 @@
 
 namespace roomsense {
 
-// The stage for `backend`. `problem_size_hint` is the grid's voxel count (GridSpec::voxel_count, or
-// estimated_voxel_count before there is a grid), used by Auto. Never returns nullptr: when Vulkan is asked for
-// but unavailable, it returns the CPU stage and says why in *note (also set to a one-line account of the choice
-// otherwise).
-std::unique_ptr<VoxelStage> make_voxel_stage(Backend backend, std::size_t problem_size_hint,
+// The stage for `backend`. Auto weighs `workload` (estimate_voxel_workload before there is a grid) against
+// kVulkanCrossoverTriangles. Never returns nullptr: when Vulkan is asked for but unavailable, it returns the
+// CPU stage and says why in *note (also set to a one-line account of the choice otherwise).
+std::unique_ptr<VoxelStage> make_voxel_stage(Backend backend, const VoxelWorkload& workload,
                                              std::string* note = nullptr);
 
 }  // namespace roomsense

@@ -19,13 +19,23 @@ const char* to_string(Backend backend);
 // *note, so a typo in the environment cannot stop an app.
 Backend backend_from_environment(Backend fallback = Backend::Auto, std::string* note = nullptr);
 
-// Auto picks Vulkan only on a discrete or integrated GPU and for grids of at least this many voxels; below
-// it, or on lavapipe, the CPU path is faster (measured: compute/README.md). Past the default grid budget
-// (kDefaultVoxelBudget), which the analysis refuses, it probes no device.
-inline constexpr std::size_t kVulkanCrossoverVoxels = std::size_t{1} << 21;
+// What a voxel stage will have to do, known before there is a grid: Auto's input.
+struct VoxelWorkload {
+  std::size_t voxels = 0;     // the grid's voxel count (GridSpec::voxel_count, or estimated from the scan)
+  std::size_t triangles = 0;  // triangles to voxelize; 0 in vertex mode
+};
 
-// The voxel count of the grid a scan's finite extents need, before outlier rejection: the size hint for
-// make_voxel_stage's Auto choice. 0 for a scan without finite vertices.
-std::size_t estimated_voxel_count(const Scan& scan, float voxel_size);
+// Auto picks Vulkan only on a discrete or integrated GPU, and only where it wins end to end with its start
+// included, because the CLI and the layer start a stage for each analysis. Measured on an H100 (NVIDIA
+// driver 580; compute/README.md): a stage starts in 360 ms, then voxelizes 2M triangles in 16.5 ms, host
+// work list and transfers included, where the CPU path takes 44.5 ms on two threads (about 22 ns per
+// triangle). So Vulkan wins past about 16M triangles. Vertex mode never gets there within the grid budget
+// (about 5 ms per million voxels on the CPU), and past the budget (kDefaultVoxelBudget), which the analysis
+// refuses, Auto probes no device.
+inline constexpr std::size_t kVulkanCrossoverTriangles = std::size_t{1} << 24;
+
+// The workload of analysing `scan` at `voxel_size` in triangle mode: the voxel count of the grid its finite
+// extents need, before outlier rejection (0 for a scan without finite vertices), and its triangles.
+VoxelWorkload estimate_voxel_workload(const Scan& scan, float voxel_size);
 
 }  // namespace roomsense

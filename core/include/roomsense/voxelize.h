@@ -32,8 +32,16 @@ std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const Gri
 // as a vertex does under Eq. 3.6. A triangle's voxel range per axis is box_index(min) .. box_index(max).
 // Only +, -, * and comparisons, in a fixed order: IEEE single precision gives every backend the same answer.
 inline constexpr float kVoxelTestEpsilon = 1.0f / 1024.0f;
+// floor(v) clamped to [0, n - 1], for any v (NaN gives 0): Eq. 3.6 per axis. Without std::floor, a libm
+// call on x86-64's baseline: below 0 and from n - 1 (an integer) on the clamp decides, and in between
+// truncation is the floor. Inline: the GPU stage's work list calls it six times per triangle.
+inline int clamp_index(float v, int n) {
+  if (!(v >= 0.0f)) return 0;
+  if (v >= float(n - 1)) return n - 1;
+  return int(v);
+}
 // The voxel whose test cube holds coordinate v (grid units), clamped to [0, n).
-int box_index(float v, int n);
+inline int box_index(float v, int n) { return clamp_index(v + kVoxelTestEpsilon, n); }
 bool triangle_overlaps_voxel(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, int x, int y, int z);
 
 struct FloorCeiling {

@@ -27,14 +27,6 @@ bool separated(float p0, float p1, float p2, float r) {
   return lo > r || hi < -r;
 }
 
-// floor(v) clamped to [0, n - 1], for any v (NaN gives 0). Without std::floor, a libm call here: below 0 and
-// from n - 1 (an integer) on the clamp decides, and in between truncation is the floor.
-int clamp_index(float v, int n) {
-  if (!(v >= 0.0f)) return 0;
-  if (v >= float(n - 1)) return n - 1;
-  return int(v);
-}
-
 void mark(std::uint8_t& cell) { std::atomic_ref<std::uint8_t>(cell).store(1, std::memory_order_relaxed); }
 bool marked(std::uint8_t& cell) { return std::atomic_ref<std::uint8_t>(cell).load(std::memory_order_relaxed) != 0; }
 
@@ -182,7 +174,6 @@ std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const Gri
   return out;
 }
 
-int box_index(float v, int n) { return clamp_index(v + kVoxelTestEpsilon, n); }
 
 std::string too_much_work_message(std::uint64_t budget) {
   return "voxelization needs more than " + std::to_string(budget) +

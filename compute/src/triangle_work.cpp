@@ -41,12 +41,12 @@ bool list_range(std::span<const glm::vec3> p, std::span<const std::uint32_t> ind
 }  // namespace
 
 bool build_triangle_work(std::span<const glm::vec3> p, std::span<const std::uint32_t> indices, int nx, int ny, int nz,
-                         std::uint64_t budget, TriangleWork& work) {
+                         std::uint64_t budget, TriangleWork& work, unsigned max_threads) {
   work.tests = 0;
   work.extra.clear();
   const std::size_t triangles = indices.size() / 3;
-  const std::size_t threads =
-      std::clamp<std::size_t>(triangles / kTrianglesPerThread, 1, std::max(1u, std::min(8u, std::thread::hardware_concurrency())));
+  if (max_threads == 0) max_threads = std::min(8u, std::thread::hardware_concurrency());
+  const std::size_t threads = std::clamp<std::size_t>(triangles / kTrianglesPerThread, 1, std::max(1u, max_threads));
   if (threads == 1) return list_range(p, indices, nx, ny, nz, 0, triangles, budget, work.tests, work.extra);
 
   // Contiguous ranges, concatenated in order: the same list as one thread's.

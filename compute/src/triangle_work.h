@@ -21,8 +21,9 @@ struct TriangleWork {
 
 // Fills `work` (its vector's capacity is reused). Bounding boxes follow voxelize_cpu.cpp exactly (floor,
 // then clamp into the grid). Returns false, with the list incomplete, as soon as the tests pass `budget`:
-// hostile boxes must not make the list itself gigabytes.
+// hostile boxes must not make the list itself gigabytes. Past 128k triangles per thread the triangles are
+// split over up to `max_threads` threads (0: the hardware's, at most 8); the list does not depend on it.
 bool build_triangle_work(std::span<const glm::vec3> grid_vertices, std::span<const std::uint32_t> indices, int nx,
-                         int ny, int nz, std::uint64_t budget, TriangleWork& work);
+                         int ny, int nz, std::uint64_t budget, TriangleWork& work, unsigned max_threads = 0);
 
 }  // namespace roomsense::compute

@@ -21,16 +21,15 @@ std::unique_ptr<VoxelStage> make_voxel_stage(Backend backend, const VoxelWorkloa
     return std::make_unique<CpuVoxelStage>();
   }
   if (backend == Backend::Auto) {
-    // A grid past the default budget is refused before any voxel stage runs (make_grid_spec): starting a GPU
-    // driver in the app's process for it would be work, and driver state, for nothing.
-    if (workload.voxels > kDefaultVoxelBudget) {
-      set(note, "cpu: auto, " + std::to_string(workload.voxels) + " voxels is past the grid budget of " +
-                    std::to_string(kDefaultVoxelBudget) + ": no device probed");
-      return std::make_unique<CpuVoxelStage>();
-    }
-    if (workload.triangles < kVulkanCrossoverTriangles) {
-      set(note, "cpu: auto, " + std::to_string(workload.triangles) + " triangles is below the Vulkan crossover of " +
-                    std::to_string(kVulkanCrossoverTriangles) + " (a Vulkan stage's start costs more than it saves)");
+    if (!auto_may_pick_vulkan(workload)) {
+      // A grid past the default budget is refused before any voxel stage runs (make_grid_spec): starting a GPU
+      // driver in the app's process for it would be work, and driver state, for nothing.
+      if (workload.voxels > kDefaultVoxelBudget)
+        set(note, "cpu: auto, " + std::to_string(workload.voxels) + " voxels is past the grid budget of " +
+                      std::to_string(kDefaultVoxelBudget) + ": no device probed");
+      else
+        set(note, "cpu: auto, " + std::to_string(workload.triangles) + " triangles is below the Vulkan crossover of " +
+                      std::to_string(kVulkanCrossoverTriangles) + " (a Vulkan stage's start costs more than it saves)");
       return std::make_unique<CpuVoxelStage>();
     }
     std::string why;

@@ -51,17 +51,23 @@ std::vector<SourceChunk> query_best_source(const InstanceState& instance, const 
 
 namespace {
 
-// The voxel stage `backend` asks for on this scan, with its line in the log; null for the CPU stage.
-std::unique_ptr<VoxelStage> chosen_stage(const Scan& scan, float voxel_size, Backend backend) {
+// The voxel stage `backend` asks for on this scan, with its line in the log; null for the CPU stage. A Vulkan
+// stage is kept in `kept` for later analyses where the choice stands: one costs 360 ms to start on an H100
+// (compute/README.md), more than a room's whole analysis.
+VoxelStage* chosen_stage(const Scan& scan, float voxel_size, Backend backend, std::unique_ptr<VoxelStage>& kept) {
 #if ROOMSENSE_HAVE_COMPUTE
+  const VoxelWorkload workload = estimate_voxel_workload(scan, voxel_size);
+  if (kept && (backend == Backend::Vulkan || (backend == Backend::Auto && auto_may_pick_vulkan(workload))))
+    return kept.get();
   std::string note;
-  std::unique_ptr<VoxelStage> stage = make_voxel_stage(backend, estimate_voxel_workload(scan, voxel_size), &note);
+  std::unique_ptr<VoxelStage> stage = make_voxel_stage(backend, workload, &note);
   if (backend == Backend::Vulkan && stage->name() != "vulkan") log_warn("backend: " + note);
   else log_info("backend: " + note);
   if (stage->name() == CpuVoxelStage().name()) return nullptr;
-  return stage;
+  kept = std::move(stage);
+  return kept.get();
 #else
-  (void)scan, (void)voxel_size;
+  (void)scan, (void)voxel_size, (void)kept;
   if (backend == Backend::Vulkan) log_warn("backend: this build has no Vulkan backend; cpu used");
   return nullptr;
 #endif
@@ -76,22 +82,22 @@ AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const
   AnalysisOptions options;
   options.voxel_size = voxel_size;
   options.stop = std::move(stop);
-  const std::unique_ptr<VoxelStage> stage = chosen_stage(scan, voxel_size, backend);
-  options.voxel_stage = stage.get();
+  std::unique_ptr<VoxelStage> stage;  // one analysis: nothing to keep it for
+  options.voxel_stage = chosen_stage(scan, voxel_size, backend, stage);
   return analyze(scan, options);
 }
 
 AnalysisResult analyze_pieces(IncrementalAnalysis& incremental, const std::vector<const MeshPiece*>& pieces,
                               const std::vector<const LabelledTriangles*>& labels, float voxel_size, Backend backend,
-                              std::stop_token stop) {
+                              std::unique_ptr<VoxelStage>& kept_stage, std::stop_token stop) {
   Scan merged = merge(pieces);
-  if (const std::unique_ptr<VoxelStage> stage = chosen_stage(merged, voxel_size, backend)) {  // the scan whole
+  if (VoxelStage* const stage = chosen_stage(merged, voxel_size, backend, kept_stage)) {  // the scan whole
     for (const LabelledTriangles* l : labels)
       if (l != nullptr) merged.labels.add(l->vertices, l->indices, l->labels);
     AnalysisOptions options;
     options.voxel_size = voxel_size;
     options.stop = std::move(stop);
-    options.voxel_stage = stage.get();
+    options.voxel_stage = stage;
     return analyze(merged, options);
   }
   // Piece i is chunk i: the chunks combined in id order are merge(pieces), their labels in the same order, so
@@ -275,7 +281,7 @@ void Analyzer::run(std::stop_token stop, Job job) {
       incremental_.emplace(options);
     }
     const AnalysisResult analysis =
-        analyze_pieces(*incremental_, pieces, labels, settings_.voxel_size, settings_.backend, stop);
+        analyze_pieces(*incremental_, pieces, labels, settings_.voxel_size, settings_.backend, stage_, stop);
     if (!analysis.ok()) throw std::runtime_error(analysis.status_message);
     if (stop.stop_requested()) return;
     const auto elapsed = std::chrono::steady_clock::now() - job.started;

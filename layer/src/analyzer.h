@@ -77,6 +77,7 @@ class Analyzer {
   // The analyses' chunks (the pieces of each compute by position), touched only by the worker: one runs at a
   // time, and start() joins the previous one first.
   std::optional<IncrementalAnalysis> incremental_;
+  std::unique_ptr<VoxelStage> stage_;  // a Vulkan stage, kept for the next analyses (worker only, as above)
   std::jthread worker_;
 };
 
@@ -88,9 +89,10 @@ std::shared_ptr<Analyzer> find_analyzer(XrRoomAnalyzerEXTX handle);
 AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const LabelledTriangles& labels,
                               float voxel_size, Backend backend, std::stop_token stop = {});
 // The same analysis (labels[i]: piece i's, or null), on the CPU backend through `incremental`, whose chunks
-// become the pieces: a piece unchanged since its last call keeps its voxels. Other backends analyse whole.
+// become the pieces: a piece unchanged since its last call keeps its voxels. Other backends analyse whole, on
+// the stage in `kept_stage` where it is still the choice; a stage started here is left there for the next call.
 AnalysisResult analyze_pieces(IncrementalAnalysis& incremental, const std::vector<const MeshPiece*>& pieces,
                               const std::vector<const LabelledTriangles*>& labels, float voxel_size, Backend backend,
-                              std::stop_token stop = {});
+                              std::unique_ptr<VoxelStage>& kept_stage, std::stop_token stop = {});
 
 }  // namespace roomsense::layer

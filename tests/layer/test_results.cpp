@@ -10,6 +10,7 @@
 // of the same types, sizes and reach, the same bounds counts); ROOMSENSE_SIM_CHUNK_SIZE=1000 serves the room
 // as one component (one pose), the default 2 m chunks as many.
 #include "compare.h"
+#include "passive_capture.h"
 #include "rooms.h"
 #include "roomsense/analysis.h"
 #include "roomsense/export.h"
@@ -21,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <set>
 
 namespace {
@@ -194,6 +196,41 @@ TEST(LayerResults, VulkanBackendMatchesTheCpuBackend) {
   ScopedEnv env("ROOMSENSE_BACKEND", std::string("vulkan"));
   EXPECT_EQ(run(XR_ROOM_COMPUTE_BACKEND_AUTO_EXTX)["grid"]["backend"], "vulkan");
   EXPECT_EQ(run(XR_ROOM_COMPUTE_BACKEND_CPU_EXTX)["grid"]["backend"], "cpu");
+}
+
+// An analyzer keeps the Vulkan stage it started (360 ms on an H100, compute/README.md) for its later computes:
+// two computes of a changed scan log one stage start, and both run on Vulkan.
+TEST(LayerResults, AnalyzerKeepsItsVulkanStage) {
+  ScopedEnv data_dirs("XDG_DATA_DIRS", std::string("/usr/local/share:/usr/share"));
+  for (const char* lib : {"libvulkan.so.1", "libvulkan_lvp.so"}) dlopen(lib, RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
+  const std::filesystem::path dir = temp_dir("kept_stage");
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path log = dir / "layer.log";
+  ScopedEnv file("ROOMSENSE_LOG_FILE", log.string());
+  ScopedEnv level("ROOMSENSE_LOG", std::string("info"));
+  const roomsense::Scan scan = roomsense::synth::generate_builtin_source("synthetic:default");
+  {
+    App app;
+    const XrRoomAnalyzerEXTX a = app.analyzer(XR_NULL_HANDLE, 0.0f, XR_ROOM_COMPUTE_BACKEND_VULKAN_EXTX);
+    app.submit(a, xr_vertices(scan), scan.indices);
+    ASSERT_EQ(app.compute(a, false), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+    const nlohmann::json first = nlohmann::json::parse(read_result(app.extx, a).json);
+    if (first["grid"]["backend"] != "vulkan") {
+      if (roomsense::test::running_in_ci()) FAIL() << "CI must have a Vulkan device (lavapipe)";
+      GTEST_SKIP() << "no Vulkan device: the layer fell back to the CPU path";
+    }
+    app.submit(a, xr_vertices(scan), scan.indices);  // a second piece: the input changed
+    ASSERT_EQ(app.compute(a, false), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+    EXPECT_EQ(nlohmann::json::parse(read_result(app.extx, a).json)["grid"]["backend"], "vulkan");
+  }
+  std::ifstream in(log);
+  int starts = 0, computes = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("backend: vulkan: requested") != std::string::npos) ++starts;
+    if (line.find("analysis completed") != std::string::npos) ++computes;
+  }
+  EXPECT_EQ(computes, 2);
+  EXPECT_EQ(starts, 1);
 }
 
 class LayerRealRoom : public testing::TestWithParam<const char*> {};

@@ -1,6 +1,7 @@
 // Choosing the voxel-stage backend: `--backend`, ROOMSENSE_BACKEND, or the extension's create info. The choice
 // is core's; the Vulkan stage it may pick lives in compute/ (voxel_stage_choice.h: make_voxel_stage).
 #pragma once
+#include "roomsense/grid.h"
 #include "roomsense/scan.h"
 
 #include <cstddef>
@@ -33,6 +34,11 @@ struct VoxelWorkload {
 // (about 5 ms per million voxels on the CPU), and past the budget (kDefaultVoxelBudget), which the analysis
 // refuses, Auto probes no device.
 inline constexpr std::size_t kVulkanCrossoverTriangles = std::size_t{1} << 24;
+
+// The workload side of Auto's rule; the device side is a discrete or integrated GPU.
+inline bool auto_may_pick_vulkan(const VoxelWorkload& w) {
+  return w.voxels <= kDefaultVoxelBudget && w.triangles >= kVulkanCrossoverTriangles;
+}
 
 // The workload of analysing `scan` at `voxel_size` in triangle mode: the voxel count of the grid its finite
 // extents need, before outlier rejection (0 for a scan without finite vertices), and its triangles.

@@ -8,18 +8,20 @@
 layout(local_size_x = LOCAL_SIZE) in;
 
 layout(std430, set = 0, binding = 0) readonly buffer Vertices { float vertex_coords[]; };  // x,y,z per vertex, grid units
-// 3 per triangle, then from work_offset the triangle pass's extra work items (triangle, chunk), 2 words each.
-layout(std430, set = 0, binding = 1) readonly buffer Indices { uint indices[]; };
-layout(std430, set = 0, binding = 2) coherent buffer Bits { uint bits[]; };                // V, bit-packed
+layout(std430, set = 0, binding = 1) readonly buffer Indices { uint indices[]; };  // 3 per triangle
+// V, bit-packed; from info_offset the triangle pass's sizing: its test count (2 words, low first), the number
+// of big boxes, and their triangles.
+layout(std430, set = 0, binding = 2) coherent buffer Bits { uint bits[]; };
 // The results, one buffer: [grid bytes | level counts | levels | column counts | column any bytes], each
-// region starting at a word offset given below.
+// region starting at a word offset given below; from work_offset the triangle pass's extra items
+// (triangle, chunk), 2 words each, written by the host.
 layout(std430, set = 0, binding = 3) buffer Out { uint out_words[]; };
 
 layout(push_constant) uniform Params {
   int nx, ny, nz;
   uint vertex_count;
-  uint work_count;     // triangle-pass work items: one per triangle, then the extra ones
-  uint work_offset;    // word offset of the work items in `indices`
+  uint work_count;     // triangle pass: the end of this dispatch's items
+  uint work_offset;    // word offset of the extra items in `out_words`
   uint voxel_count;
   uint column_count;
   int min_separation;
@@ -28,6 +30,9 @@ layout(push_constant) uniform Params {
   uint select_offset;  // 5 words: found, floor, ceiling, floor_peak, ceiling_peak
   uint columns_offset; // |V_xz|, column_count words
   uint any_offset;     // column_any, one byte per column, packed 4 per word
+  uint item_base;      // triangle pass: the first item of this dispatch
+  uint triangle_count; // triangle pass: items below it are the triangles' first chunks
+  uint info_offset;    // word offset of the triangle pass's sizing in `bits`
 } pc;
 
 // One work item per invocation, over a 2D dispatch (65535 groups per dimension is the guaranteed limit).

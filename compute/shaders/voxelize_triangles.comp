@@ -61,32 +61,62 @@ bool triangle_overlaps_voxel(vec3 a, vec3 b, vec3 c, int x, int y, int z) {
 }
 
 // Work item (t, chunk): voxels [chunk * kChunkVoxels, (chunk + 1) * kChunkVoxels) of triangle t's bounding
-// box, numbered y fastest, then x, then z. Item t < triangles is (t, 0); the host lists the further chunks of
-// boxes past kChunkVoxels after the triangles' indices (triangle_work.h), so a big triangle is spread over
-// many invocations and no invocation loops more than kChunkVoxels times. A box of one voxel is marked without
-// a test. kChunkVoxels must match triangle_work.h.
+// box, numbered y fastest, then x, then z. Item t < triangles is (t, 0): the first dispatch runs those and
+// also sizes the work, adding each box's tests to the 64-bit count in `bits` at pc.info_offset and listing
+// the triangles whose boxes pass kChunkVoxels after it. From that list the host writes the further chunks'
+// items (triangle_work.h) to `out_words` at pc.work_offset, and a second dispatch runs them (items from
+// `triangles` on). So a big triangle is spread over many invocations, no invocation loops more than
+// kChunkVoxels times, and the host does no work per triangle. A box of one voxel is marked without a test.
+// kChunkVoxels must match triangle_work.h.
 const uint kChunkVoxels = 512u;
 
+// The test count is summed per workgroup first: one global atomic per group, not one per triangle on a
+// single address.
+shared uint group_tests[2];  // low word, high word
+
 void main() {
-  const uint item = item_index();
-  if (item >= pc.work_count) return;
-  const uint triangles = pc.work_offset / 3u;  // the indices come first, 3 per triangle
-  uint t = item, chunk = 0u;
-  if (item >= triangles) {
-    const uint extra = pc.work_offset + 2u * (item - triangles);
-    t = indices[extra];
-    chunk = indices[extra + 1u];
+  if (gl_LocalInvocationIndex == 0u) {
+    group_tests[0] = 0u;
+    group_tests[1] = 0u;
   }
-  const vec3 a = vertex_at(indices[3u * t]);
-  const vec3 b = vertex_at(indices[3u * t + 1u]);
-  const vec3 c = vertex_at(indices[3u * t + 2u]);
+  barrier();
+  // No return before the second barrier: every invocation of the group must reach it.
+  const uint item = item_index() + pc.item_base;
+  const bool valid = item < pc.work_count;
+  const uint triangles = pc.triangle_count;
+  uint t = item, chunk = 0u;
+  if (valid && item >= triangles) {
+    const uint extra = pc.work_offset + 2u * (item - triangles);
+    t = out_words[extra];
+    chunk = out_words[extra + 1u];
+  }
+  vec3 a = vec3(0.0), b = vec3(0.0), c = vec3(0.0);
+  if (valid) {
+    a = vertex_at(indices[3u * t]);
+    b = vertex_at(indices[3u * t + 1u]);
+    c = vertex_at(indices[3u * t + 2u]);
+  }
   const vec3 lo = min(min(a, b), c);
   const vec3 hi = max(max(a, b), c);
   const int x0 = box_index(lo.x, pc.nx), x1 = box_index(hi.x, pc.nx);
   const int y0 = box_index(lo.y, pc.ny), y1 = box_index(hi.y, pc.ny);
   const int z0 = box_index(lo.z, pc.nz), z1 = box_index(hi.z, pc.nz);
   const uint sy = uint(y1 - y0 + 1), sx = uint(x1 - x0 + 1), sz = uint(z1 - z0 + 1);
-  const uint volume = sy * sx * sz;
+  const uint volume = valid ? sy * sx * sz : 0u;
+  if (chunk == 0u && volume > 1u) {  // the first chunk sizes the box's work
+    const uint before = atomicAdd(group_tests[0], volume);
+    if (before + volume < before) atomicAdd(group_tests[1], 1u);  // the carry
+    if (volume > kChunkVoxels) bits[pc.info_offset + 3u + atomicAdd(bits[pc.info_offset + 2u], 1u)] = t;
+  }
+  barrier();
+  if (gl_LocalInvocationIndex == 0u && (group_tests[0] | group_tests[1]) != 0u) {
+    const uint low = group_tests[0];
+    uint high = group_tests[1];
+    const uint before = atomicAdd(bits[pc.info_offset], low);
+    if (before + low < before) ++high;  // the carry
+    if (high != 0u) atomicAdd(bits[pc.info_offset + 1u], high);
+  }
+  if (volume == 0u) return;
   if (volume == 1u) {  // inside one test cube: no test needed, as on the CPU
     mark_voxel(voxel_index(x0, y0, z0));
     return;

@@ -1,8 +1,9 @@
-// The triangle pass's work, sized on the host. Every triangle is one item of the pass (its box's first
-// kChunkVoxels voxels); a box of more voxels gets an extra item (triangle, chunk) per further kChunkVoxels,
-// listed here. That spreads a big triangle over many GPU invocations and bounds every invocation's loop
-// (lavapipe ends an invocation silently after 65535 loop iterations), while the list stays as short as the
-// big triangles: an item per triangle on the host cost more than the whole GPU pass (compute/README.md).
+// The triangle pass's further work. The device runs every triangle's first chunk of kChunkVoxels box voxels,
+// counts the boxes' tests and lists the triangles whose boxes are bigger (shaders/voxelize_triangles.comp);
+// the host turns that list into an item (triangle, chunk) per further chunk, here, for a second dispatch.
+// That spreads a big triangle over many invocations and bounds every invocation's loop (lavapipe ends an
+// invocation silently after 65535 loop iterations), while the host does no work per triangle: listing every
+// triangle on the host cost more than all the GPU passes together (compute/README.md).
 #pragma once
 #include <glm/vec3.hpp>
 
@@ -14,16 +15,9 @@ namespace roomsense::compute {
 
 inline constexpr std::uint32_t kChunkVoxels = 512;  // kChunkVoxels in shaders/voxelize_triangles.comp
 
-struct TriangleWork {
-  std::uint64_t tests = 0;           // triangle-voxel tests of every box of more than one voxel
-  std::vector<std::uint32_t> extra;  // (triangle, chunk >= 1) word pairs, in triangle order
-};
-
-// Fills `work` (its vector's capacity is reused). Bounding boxes follow voxelize_cpu.cpp exactly (floor,
-// then clamp into the grid). Returns false, with the list incomplete, as soon as the tests pass `budget`:
-// hostile boxes must not make the list itself gigabytes. Past 128k triangles per thread the triangles are
-// split over up to `max_threads` threads (0: the hardware's, at most 8); the list does not depend on it.
-bool build_triangle_work(std::span<const glm::vec3> grid_vertices, std::span<const std::uint32_t> indices, int nx,
-                         int ny, int nz, std::uint64_t budget, TriangleWork& work, unsigned max_threads = 0);
+// Appends (t, k) word pairs, k = 1 .. the last chunk of t's box, for each triangle t of `big`, in that order.
+// Boxes follow voxelize_cpu.cpp exactly (box_index: floor, then clamp into the grid), as the shader's do.
+void list_extra_chunks(std::span<const glm::vec3> grid_vertices, std::span<const std::uint32_t> indices, int nx,
+                       int ny, int nz, std::span<const std::uint32_t> big, std::vector<std::uint32_t>& extra);
 
 }  // namespace roomsense::compute

@@ -22,8 +22,11 @@ struct PushConstants {
   std::uint32_t select_offset;
   std::uint32_t columns_offset;
   std::uint32_t any_offset;
+  std::uint32_t item_base;
+  std::uint32_t triangle_count;
+  std::uint32_t info_offset;
 };
-static_assert(sizeof(PushConstants) == 14 * 4);
+static_assert(sizeof(PushConstants) == 17 * 4);
 
 enum class Kernel { Vertices, Triangles, ExpandGrid, CountLevels, SelectLevels, CountColumns, Count };
 

@@ -1,6 +1,8 @@
-// VulkanVoxelStage: one command buffer, one submission per run():
-//   clear -> vertex voxels -> triangle voxels -> byte grid + |V_y| -> I_Floor/I_Ceiling -> |V_xz| + any
-// with a barrier between dependent passes. Buffers are sized from the grid and kept for later runs.
+// VulkanVoxelStage: one command buffer per submission, one submission per run() in vertex mode:
+//   clear -> vertex voxels -> byte grid + |V_y| -> I_Floor/I_Ceiling -> |V_xz| + any
+// and two in triangle mode: first clear -> every triangle's first chunk, sizing the rest -> read back the
+// big boxes; then their further chunks -> byte grid + |V_y| -> ... as above. A barrier separates dependent
+// passes. Buffers are sized from the grid and the mesh and kept for later runs.
 #include "roomsense/vulkan_voxel_stage.h"
 
 #include "roomsense/cancel.h"
@@ -56,8 +58,20 @@ struct OutLayout {
   }
 };
 
-// The timestamps written between passes.
-enum Stamp : std::uint32_t { kBegin, kUploaded, kVertices, kTriangles, kLevels, kSelect, kColumns, kReadback, kStampCount };
+// The timestamps written between passes. The first submission writes kBegin to kFirstChunks (in vertex mode
+// the second writes them, together), the second kResumed on.
+enum Stamp : std::uint32_t {
+  kBegin, kUploaded, kFirstChunks, kResumed, kUploadedExtras, kVertices, kTriangles, kLevels, kSelect, kColumns,
+  kReadback, kStampCount
+};
+
+// The bytes of one run's buffers.
+struct Sizes {
+  VkDeviceSize vertices = 0, indices = 0;
+  VkDeviceSize grid_bits = 0, bits = 0;  // V's bits, and with the triangle pass's sizing after them
+  VkDeviceSize info = 0;                 // that sizing: test count (2 words), big boxes, their triangles
+  VkDeviceSize out = 0, extras = 0;      // results, and the extra items after them
+};
 
 constexpr VkMemoryPropertyFlags kDeviceLocal = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
 constexpr VkMemoryPropertyFlags kHostCoherent = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
@@ -89,9 +103,16 @@ class VulkanVoxelStage::Impl {
  private:
   VoxelStageResult fall_back(const VoxelizeRequest& request, const std::string& why);
   std::string unsupported_reason(const VoxelizeRequest& request) const;
-  void ensure_buffers(VkDeviceSize vertex_bytes, VkDeviceSize index_bytes, VkDeviceSize bits_bytes, VkDeviceSize out_bytes);
-  void record(const VoxelizeRequest& request, const PushConstants& pc, VkDeviceSize vertex_bytes,
-              VkDeviceSize index_bytes, VkDeviceSize bits_bytes, VkDeviceSize out_bytes);
+  void grow(GpuBuffer& buffer, VkDeviceSize bytes, VkBufferUsageFlags usage,
+            std::initializer_list<VkMemoryPropertyFlags> preferences);
+  void ensure_buffers(const Sizes& z);
+  void begin_recording(const Sizes& z);
+  void record_first(const PushConstants& pc, const Sizes& z);
+  void record_main(const VoxelizeRequest& request, const PushConstants& pc, const Sizes& z, bool after_first);
+  bool submit_and_wait(const VoxelizeRequest& request);  // false: the GPU did not finish in time
+  void stamp(Stamp s);
+  void barrier(VkPipelineStageFlags src_stage, VkAccessFlags src, VkPipelineStageFlags dst_stage, VkAccessFlags dst);
+  void dispatch(Kernel k, std::uint64_t items);
   void read_timestamps();
   std::pair<std::uint32_t, std::uint32_t> groups(std::uint64_t items) const;
 
@@ -107,7 +128,8 @@ class VulkanVoxelStage::Impl {
   bool unified_ = false;
   GpuBuffer vertices_, indices_, bits_, out_;
   GpuBuffer upload_, readback_;  // staging, discrete GPUs only
-  TriangleWork work_;  // the triangle pass's extra items (triangle_work.h), reused
+  GpuBuffer info_readback_;      // the triangle pass's sizing, read between the submissions
+  std::vector<std::uint32_t> big_, extra_;  // big boxes' triangles and their further chunks (triangle_work.h)
   std::chrono::milliseconds timeout_;
   bool unusable_ = false;  // after a timeout or device loss every run goes to the CPU
   bool submitted_ = false;  // a submission not yet waited for (its run was cancelled)
@@ -209,41 +231,66 @@ VoxelStageResult VulkanVoxelStage::Impl::fall_back(const VoxelizeRequest& reques
   return cpu_.run(request);
 }
 
-void VulkanVoxelStage::Impl::ensure_buffers(VkDeviceSize vertex_bytes, VkDeviceSize index_bytes, VkDeviceSize bits_bytes,
-                                            VkDeviceSize out_bytes) {
-  constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-  constexpr VkBufferUsageFlags kDst = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-  constexpr VkBufferUsageFlags kSrc = VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-  const auto grow = [&](GpuBuffer& b, VkDeviceSize bytes, VkBufferUsageFlags usage,
-                        std::initializer_list<VkMemoryPropertyFlags> prefs) {
-    if (!b || b.size() < bytes) {
-      b = GpuBuffer();  // free first: peak memory stays at one copy
-      b = GpuBuffer(*ctx, bytes, usage, prefs);
-    }
-  };
-  if (unified_) {
-    grow(vertices_, vertex_bytes, kStorage, {kDeviceLocal | kHostCoherent});
-    grow(indices_, index_bytes, kStorage, {kDeviceLocal | kHostCoherent});
-    grow(out_, out_bytes, kStorage | kDst, {kDeviceLocal | kHostCached, kDeviceLocal | kHostCoherent});
-  } else {
-    grow(vertices_, vertex_bytes, kStorage | kDst, {kDeviceLocal, 0});
-    grow(indices_, index_bytes, kStorage | kDst, {kDeviceLocal, 0});
-    grow(out_, out_bytes, kStorage | kDst | kSrc, {kDeviceLocal, 0});
-    grow(upload_, vertex_bytes + index_bytes, kSrc, {kHostCoherent});
-    grow(readback_, out_bytes, kDst, {kHostCached, kHostCoherent});
+void VulkanVoxelStage::Impl::grow(GpuBuffer& b, VkDeviceSize bytes, VkBufferUsageFlags usage,
+                                  std::initializer_list<VkMemoryPropertyFlags> prefs) {
+  if (!b || b.size() < bytes) {
+    b = GpuBuffer();  // free first: peak memory stays at one copy
+    b = GpuBuffer(*ctx, bytes, usage, prefs);
   }
-  grow(bits_, bits_bytes, kStorage | kDst, {kDeviceLocal, 0});
 }
 
-void VulkanVoxelStage::Impl::record(const VoxelizeRequest& request, const PushConstants& pc, VkDeviceSize vertex_bytes,
-                                    VkDeviceSize index_bytes, VkDeviceSize bits_bytes, VkDeviceSize out_bytes) {
-  const DeviceFunctions& vk = ctx->vk();
-  const OutLayout out(request.spec);
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+constexpr VkBufferUsageFlags kDst = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+constexpr VkBufferUsageFlags kSrc = VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
 
-  const VkDescriptorBufferInfo infos[4] = {{vertices_.get(), 0, vertex_bytes},
-                                           {indices_.get(), 0, index_bytes},
-                                           {bits_.get(), 0, bits_bytes},
-                                           {out_.get(), 0, out_bytes}};
+void VulkanVoxelStage::Impl::ensure_buffers(const Sizes& z) {
+  const VkDeviceSize out_bytes = z.out + z.extras;
+  if (unified_) {
+    grow(vertices_, z.vertices, kStorage, {kDeviceLocal | kHostCoherent});
+    grow(indices_, z.indices, kStorage, {kDeviceLocal | kHostCoherent});
+    grow(out_, out_bytes, kStorage | kDst, {kDeviceLocal | kHostCached, kDeviceLocal | kHostCoherent});
+  } else {
+    grow(vertices_, z.vertices, kStorage | kDst, {kDeviceLocal, 0});
+    grow(indices_, z.indices, kStorage | kDst, {kDeviceLocal, 0});
+    grow(out_, out_bytes, kStorage | kDst | kSrc, {kDeviceLocal, 0});
+    grow(upload_, std::max(z.vertices + z.indices, z.extras), kSrc, {kHostCoherent});
+    grow(readback_, z.out, kDst, {kHostCached, kHostCoherent});
+  }
+  grow(bits_, z.bits, kStorage | kDst | kSrc, {kDeviceLocal, 0});
+  if (z.info > 0) grow(info_readback_, z.info, kDst, {kHostCached, kHostCoherent});
+}
+
+void VulkanVoxelStage::Impl::stamp(Stamp s) {
+  if (queries_) ctx->vk().vkCmdWriteTimestamp(cmd_, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries_.get(), s);
+}
+
+void VulkanVoxelStage::Impl::barrier(VkPipelineStageFlags src_stage, VkAccessFlags src, VkPipelineStageFlags dst_stage,
+                                     VkAccessFlags dst) {
+  VkMemoryBarrier mb{};
+  mb.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+  mb.srcAccessMask = src;
+  mb.dstAccessMask = dst;
+  ctx->vk().vkCmdPipelineBarrier(cmd_, src_stage, dst_stage, 0, 1, &mb, 0, nullptr, 0, nullptr);
+}
+
+void VulkanVoxelStage::Impl::dispatch(Kernel k, std::uint64_t items) {
+  const DeviceFunctions& vk = ctx->vk();
+  vk.vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[k]);
+  const auto [gx, gy] = groups(items);
+  vk.vkCmdDispatch(cmd_, gx, gy, 1);
+}
+
+constexpr VkPipelineStageFlags kCompute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+constexpr VkPipelineStageFlags kTransfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
+constexpr VkAccessFlags kShaderRW = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+
+// Binds this run's buffers and opens the command buffer (the previous submission has finished).
+void VulkanVoxelStage::Impl::begin_recording(const Sizes& z) {
+  const DeviceFunctions& vk = ctx->vk();
+  const VkDescriptorBufferInfo infos[4] = {{vertices_.get(), 0, z.vertices},
+                                           {indices_.get(), 0, z.indices},
+                                           {bits_.get(), 0, z.bits},
+                                           {out_.get(), 0, z.out + z.extras}};
   VkWriteDescriptorSet writes[4]{};
   for (std::uint32_t i = 0; i < 4; ++i) {
     writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
@@ -254,56 +301,79 @@ void VulkanVoxelStage::Impl::record(const VoxelizeRequest& request, const PushCo
     writes[i].pBufferInfo = &infos[i];
   }
   vk.vkUpdateDescriptorSets(ctx->device(), 4, writes, 0, nullptr);
-
   check(vk.vkResetCommandPool(ctx->device(), command_pool_.get(), 0), "vkResetCommandPool");
   VkCommandBufferBeginInfo bi{};
   bi.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
   bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   check(vk.vkBeginCommandBuffer(cmd_, &bi), "vkBeginCommandBuffer");
+}
 
-  const auto stamp = [&](Stamp s) {
-    if (queries_) vk.vkCmdWriteTimestamp(cmd_, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries_.get(), s);
-  };
-  const auto barrier = [&](VkPipelineStageFlags src_stage, VkAccessFlags src, VkPipelineStageFlags dst_stage, VkAccessFlags dst) {
-    VkMemoryBarrier mb{};
-    mb.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
-    mb.srcAccessMask = src;
-    mb.dstAccessMask = dst;
-    vk.vkCmdPipelineBarrier(cmd_, src_stage, dst_stage, 0, 1, &mb, 0, nullptr, 0, nullptr);
-  };
-  constexpr VkPipelineStageFlags kCompute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
-  constexpr VkPipelineStageFlags kTransfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
-  constexpr VkAccessFlags kShaderRW = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-  const auto compute_to_compute = [&] { barrier(kCompute, VK_ACCESS_SHADER_WRITE_BIT, kCompute, kShaderRW); };
-  const auto dispatch = [&](Kernel k, std::uint64_t items) {
-    vk.vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[k]);
-    const auto [gx, gy] = groups(items);
-    vk.vkCmdDispatch(cmd_, gx, gy, 1);
-  };
-
+// Upload (staging copies on a discrete GPU) and the clears of V and the sizing, then every triangle's first
+// chunk, and the sizing copied to where the host reads it.
+void VulkanVoxelStage::Impl::record_first(const PushConstants& pc, const Sizes& z) {
+  const DeviceFunctions& vk = ctx->vk();
+  begin_recording(z);
   if (queries_) vk.vkCmdResetQueryPool(cmd_, queries_.get(), 0, kStampCount);
   stamp(kBegin);
-  // Upload (staging copies on a discrete GPU) and clears: V and the atomically summed |V_y| start at 0.
   if (!unified_) {
-    const VkBufferCopy vcopy{0, 0, vertex_bytes};
-    const VkBufferCopy icopy{vertex_bytes, 0, index_bytes};
+    const VkBufferCopy vcopy{0, 0, z.vertices};
+    const VkBufferCopy icopy{z.vertices, 0, z.indices};
     vk.vkCmdCopyBuffer(cmd_, upload_.get(), vertices_.get(), 1, &vcopy);
     vk.vkCmdCopyBuffer(cmd_, upload_.get(), indices_.get(), 1, &icopy);
   }
-  vk.vkCmdFillBuffer(cmd_, bits_.get(), 0, bits_bytes, 0);
-  vk.vkCmdFillBuffer(cmd_, out_.get(), out.levels * 4, (out.columns - out.levels) * 4, 0);
+  vk.vkCmdFillBuffer(cmd_, bits_.get(), 0, z.grid_bits + 3 * 4, 0);  // V, the test count, the big boxes
   barrier(kTransfer, VK_ACCESS_TRANSFER_WRITE_BIT, kCompute, kShaderRW);
   stamp(kUploaded);
+  vk.vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.layout.get(), 0, 1, &set_, 0, nullptr);
+  vk.vkCmdPushConstants(cmd_, pipelines_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pc), &pc);
+  dispatch(Kernel::Triangles, pc.triangle_count);
+  stamp(kFirstChunks);
+  barrier(kCompute, VK_ACCESS_SHADER_WRITE_BIT, kTransfer, VK_ACCESS_TRANSFER_READ_BIT);
+  const VkBufferCopy copy{z.grid_bits, 0, z.info};
+  vk.vkCmdCopyBuffer(cmd_, bits_.get(), info_readback_.get(), 1, &copy);
+  barrier(kTransfer, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+  check(vk.vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
+}
+
+void VulkanVoxelStage::Impl::record_main(const VoxelizeRequest& request, const PushConstants& pc, const Sizes& z,
+                                         bool after_first) {
+  const DeviceFunctions& vk = ctx->vk();
+  const OutLayout out(request.spec);
+  begin_recording(z);
+  if (!after_first) {  // one submission: its stamps for the first one's passes are empty spans
+    if (queries_) vk.vkCmdResetQueryPool(cmd_, queries_.get(), 0, kStampCount);
+    stamp(kBegin);
+    stamp(kUploaded);
+    stamp(kFirstChunks);
+  }
+  stamp(kResumed);
+  if (!after_first) {  // upload and clear V, as the first submission does
+    if (!unified_) {
+      const VkBufferCopy vcopy{0, 0, z.vertices};
+      const VkBufferCopy icopy{z.vertices, 0, z.indices};
+      vk.vkCmdCopyBuffer(cmd_, upload_.get(), vertices_.get(), 1, &vcopy);
+      vk.vkCmdCopyBuffer(cmd_, upload_.get(), indices_.get(), 1, &icopy);
+    }
+    vk.vkCmdFillBuffer(cmd_, bits_.get(), 0, z.grid_bits, 0);
+  }
+  if (!unified_ && z.extras > 0) {
+    const VkBufferCopy ecopy{0, z.out, z.extras};
+    vk.vkCmdCopyBuffer(cmd_, upload_.get(), out_.get(), 1, &ecopy);
+  }
+  vk.vkCmdFillBuffer(cmd_, out_.get(), out.levels * 4, (out.columns - out.levels) * 4, 0);  // |V_y| is summed
+  barrier(kTransfer, VK_ACCESS_TRANSFER_WRITE_BIT, kCompute, kShaderRW);
+  stamp(kUploadedExtras);
 
   vk.vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.layout.get(), 0, 1, &set_, 0, nullptr);
   vk.vkCmdPushConstants(cmd_, pipelines_.layout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(pc), &pc);
+  const auto compute_to_compute = [&] { barrier(kCompute, VK_ACCESS_SHADER_WRITE_BIT, kCompute, kShaderRW); };
   if (request.mode == VoxelMode::Vertices) {  // Eq. 3.6/3.7; triangle mode marks triangles only
     dispatch(Kernel::Vertices, pc.vertex_count);
     compute_to_compute();
   }
   stamp(kVertices);
-  if (pc.work_count > 0) {
-    dispatch(Kernel::Triangles, pc.work_count);
+  if (pc.work_count > pc.item_base) {  // the big boxes' further chunks
+    dispatch(Kernel::Triangles, pc.work_count - pc.item_base);
     compute_to_compute();
   }
   stamp(kTriangles);
@@ -318,7 +388,7 @@ void VulkanVoxelStage::Impl::record(const VoxelizeRequest& request, const PushCo
   stamp(kColumns);
   if (!unified_) {
     barrier(kCompute, VK_ACCESS_SHADER_WRITE_BIT, kTransfer, VK_ACCESS_TRANSFER_READ_BIT);
-    const VkBufferCopy copy{0, 0, out_bytes};
+    const VkBufferCopy copy{0, 0, z.out};
     vk.vkCmdCopyBuffer(cmd_, out_.get(), readback_.get(), 1, &copy);
     barrier(kTransfer, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
   } else {
@@ -326,6 +396,32 @@ void VulkanVoxelStage::Impl::record(const VoxelizeRequest& request, const PushCo
   }
   stamp(kReadback);
   check(vk.vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
+}
+
+bool VulkanVoxelStage::Impl::submit_and_wait(const VoxelizeRequest& request) {
+  const DeviceFunctions& vk = ctx->vk();
+  check(vk.vkResetFences(ctx->device(), 1, fence_.address()), "vkResetFences");
+  VkSubmitInfo si{};
+  si.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+  si.commandBufferCount = 1;
+  si.pCommandBuffers = &cmd_;
+  check(vk.vkQueueSubmit(ctx->queue(), 1, &si, fence_.get()), "vkQueueSubmit");
+  submitted_ = true;
+  // Waited for in short slices: a stop request returns at once, and the submission, which cannot be
+  // recalled, is waited for by the next run or the destructor (the budget bounds how long it runs).
+  const auto deadline = Clock::now() + timeout_;
+  VkResult waited = VK_TIMEOUT;
+  while (waited == VK_TIMEOUT && Clock::now() < deadline) {
+    stop_point(request.stop);
+    waited = vk.vkWaitForFences(ctx->device(), 1, fence_.address(), VK_TRUE, kStopSliceNs);
+  }
+  if (waited == VK_TIMEOUT) {
+    unusable_ = true;
+    return false;
+  }
+  check(waited, "vkWaitForFences");
+  submitted_ = false;
+  return true;
 }
 
 void VulkanVoxelStage::Impl::read_timestamps() {
@@ -339,9 +435,9 @@ void VulkanVoxelStage::Impl::read_timestamps() {
   const std::uint64_t mask = bits >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits) - 1;
   const double ns_per_tick = ctx->properties().limits.timestampPeriod;
   const auto span_ms = [&](Stamp a, Stamp b) { return double((t[b] - t[a]) & mask) * ns_per_tick * 1e-6; };
-  timings.gpu_upload_ms = span_ms(kBegin, kUploaded);
-  timings.gpu_vertices_ms = span_ms(kUploaded, kVertices);
-  timings.gpu_triangles_ms = span_ms(kVertices, kTriangles);
+  timings.gpu_upload_ms = span_ms(kBegin, kUploaded) + span_ms(kResumed, kUploadedExtras);
+  timings.gpu_vertices_ms = span_ms(kUploadedExtras, kVertices);
+  timings.gpu_triangles_ms = span_ms(kUploaded, kFirstChunks) + span_ms(kVertices, kTriangles);
   timings.gpu_levels_ms = span_ms(kTriangles, kLevels);
   timings.gpu_select_ms = span_ms(kLevels, kSelect);
   timings.gpu_columns_ms = span_ms(kSelect, kColumns);
@@ -365,35 +461,26 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
   const GridSpec& s = request.spec;
   const OutLayout out(s);
   const std::uint64_t triangles = request.mode == VoxelMode::Triangles ? request.indices.size() / 3 : 0;
-  VulkanRunTimings t;
-  auto t0 = Clock::now();
-  // The boxes are the GPU's work: past the budget the work list alone could take gigabytes. The CPU scans
-  // only near each triangle's plane, so it may still fit the budget there.
-  if (!build_triangle_work(request.grid_vertices, request.indices.first(triangles * 3), s.nx, s.ny, s.nz,
-                           request.test_budget, work_))
-    return fall_back(request, "the triangles' boxes need more than the work budget of " +
-                                  std::to_string(request.test_budget) + " triangle-voxel tests");
-  const std::uint64_t tests = work_.tests;
-  t.host_work_list_ms = ms_since(t0);
   const std::uint64_t index_words = triangles * 3;
-  const std::uint64_t work_words = work_.extra.size();
-  if (index_words + work_words >= std::numeric_limits<std::uint32_t>::max() ||
-      triangles + work_words / 2 >= std::numeric_limits<std::uint32_t>::max() ||
-      (index_words + work_words) * 4 > ctx->properties().limits.maxStorageBufferRange)
-    return fall_back(request, "the triangle work list is too large for one buffer");
+  const std::uint64_t grid_bit_words = (s.voxel_count() + 31) / 32;
+  const std::uint64_t max_range = ctx->properties().limits.maxStorageBufferRange;
+  Sizes z;
   // Empty inputs still get a (small) buffer: a zero-sized VkBuffer is invalid.
-  const VkDeviceSize vertex_bytes = std::max<VkDeviceSize>(16, request.grid_vertices.size() * sizeof(glm::vec3));
-  const VkDeviceSize index_bytes = std::max<VkDeviceSize>(16, (index_words + work_words) * sizeof(std::uint32_t));
-  const VkDeviceSize bits_bytes = ((s.voxel_count() + 31) / 32) * 4;
-  const VkDeviceSize out_bytes = out.total_words * 4;
+  z.vertices = std::max<VkDeviceSize>(16, request.grid_vertices.size() * sizeof(glm::vec3));
+  z.indices = std::max<VkDeviceSize>(16, index_words * sizeof(std::uint32_t));
+  z.grid_bits = grid_bit_words * 4;
+  z.info = triangles > 0 ? (3 + triangles) * 4 : 0;
+  z.bits = z.grid_bits + std::max<VkDeviceSize>(z.info, 16);
+  z.out = out.total_words * 4;
+  if (z.bits > max_range) return fall_back(request, "the grid and the triangle sizing exceed the device's maxStorageBufferRange");
 
   PushConstants pc{};
   pc.nx = s.nx;
   pc.ny = s.ny;
   pc.nz = s.nz;
   pc.vertex_count = std::uint32_t(request.grid_vertices.size());
-  pc.work_count = std::uint32_t(triangles + work_words / 2);  // one item per triangle, then the extra ones
-  pc.work_offset = std::uint32_t(index_words);
+  pc.work_count = std::uint32_t(triangles);
+  pc.work_offset = std::uint32_t(out.total_words);
   pc.voxel_count = std::uint32_t(s.voxel_count());
   pc.column_count = std::uint32_t(s.column_count());
   pc.min_separation = request.min_separation_levels;
@@ -402,46 +489,68 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
   pc.select_offset = std::uint32_t(out.select);
   pc.columns_offset = std::uint32_t(out.columns);
   pc.any_offset = std::uint32_t(out.any);
+  pc.item_base = 0;
+  pc.triangle_count = std::uint32_t(triangles);
+  pc.info_offset = std::uint32_t(grid_bit_words);
 
+  VulkanRunTimings t;
   try {
-    const DeviceFunctions& vk = ctx->vk();
     finish_submission();  // a cancelled run's work still owns the buffers
-    ensure_buffers(vertex_bytes, index_bytes, bits_bytes, out_bytes);
+    extra_.clear();
+    ensure_buffers(z);
 
-    t0 = Clock::now();
+    auto t0 = Clock::now();
     auto* vertex_dst = static_cast<std::byte*>(unified_ ? vertices_.mapped() : upload_.mapped());
-    auto* index_dst = unified_ ? static_cast<std::byte*>(indices_.mapped()) : vertex_dst + vertex_bytes;
+    auto* index_dst = unified_ ? static_cast<std::byte*>(indices_.mapped()) : vertex_dst + z.vertices;
     if (vertex_dst == nullptr || index_dst == nullptr) throw std::runtime_error("upload memory is not mapped");
     if (!request.grid_vertices.empty())
       std::memcpy(vertex_dst, request.grid_vertices.data(), request.grid_vertices.size() * sizeof(glm::vec3));
     if (index_words > 0) std::memcpy(index_dst, request.indices.data(), index_words * sizeof(std::uint32_t));
-    if (work_words > 0) std::memcpy(index_dst + index_words * 4, work_.extra.data(), work_words * sizeof(std::uint32_t));
     t.host_upload_ms = ms_since(t0);
 
+    std::uint64_t tests = 0;
+    if (triangles > 0) {
+      t0 = Clock::now();
+      record_first(pc, z);
+      if (!submit_and_wait(request))
+        return fall_back(request, "the GPU did not finish within " + std::to_string(timeout_.count()) + " ms");
+      t.submit_wait_ms = ms_since(t0);
+
+      // The boxes are the GPU's work: past the budget the extra items alone could take gigabytes. The CPU
+      // scans only near each triangle's plane, so it may still fit the budget there. The first chunks, done
+      // already, cost at most kChunkVoxels tests per triangle.
+      t0 = Clock::now();
+      const auto* info = static_cast<const std::uint32_t*>(info_readback_.mapped());
+      if (info == nullptr) throw std::runtime_error("readback memory is not mapped");
+      tests = std::uint64_t(info[0]) | (std::uint64_t(info[1]) << 32);
+      if (tests > request.test_budget)
+        return fall_back(request, "the triangles' boxes need " + std::to_string(tests) +
+                                      " triangle-voxel tests, more than the work budget of " +
+                                      std::to_string(request.test_budget));
+      big_.clear();
+      for (std::uint64_t i = 0; i < std::min<std::uint64_t>(info[2], triangles); ++i)
+        if (info[3 + i] < triangles) big_.push_back(info[3 + i]);
+      list_extra_chunks(request.grid_vertices, request.indices.first(index_words), s.nx, s.ny, s.nz, big_, extra_);
+      z.extras = extra_.size() * sizeof(std::uint32_t);
+      if (out.total_words + extra_.size() >= std::numeric_limits<std::uint32_t>::max() ||
+          triangles + extra_.size() / 2 >= std::numeric_limits<std::uint32_t>::max() || z.out + z.extras > max_range)
+        return fall_back(request, "the triangle work list is too large for one buffer");
+      if (z.extras > 0) {
+        ensure_buffers(z);  // out_ (and the staging buffer) may grow; the first submission used neither
+        auto* extras_dst = unified_ ? static_cast<std::byte*>(out_.mapped()) + z.out : static_cast<std::byte*>(upload_.mapped());
+        if (extras_dst == nullptr) throw std::runtime_error("upload memory is not mapped");
+        std::memcpy(extras_dst, extra_.data(), z.extras);
+      }
+      t.host_work_list_ms = ms_since(t0);
+    }
+    pc.item_base = std::uint32_t(triangles);
+    pc.work_count = std::uint32_t(triangles + extra_.size() / 2);
+
     t0 = Clock::now();
-    record(request, pc, vertex_bytes, index_bytes, bits_bytes, out_bytes);
-    check(vk.vkResetFences(ctx->device(), 1, fence_.address()), "vkResetFences");
-    VkSubmitInfo si{};
-    si.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-    si.commandBufferCount = 1;
-    si.pCommandBuffers = &cmd_;
-    check(vk.vkQueueSubmit(ctx->queue(), 1, &si, fence_.get()), "vkQueueSubmit");  // the one submission
-    submitted_ = true;
-    // Waited for in short slices: a stop request returns at once, and the submission, which cannot be
-    // recalled, is waited for by the next run or the destructor (the budget bounds how long it runs).
-    const auto deadline = Clock::now() + timeout_;
-    VkResult waited = VK_TIMEOUT;
-    while (waited == VK_TIMEOUT && Clock::now() < deadline) {
-      stop_point(request.stop);
-      waited = vk.vkWaitForFences(ctx->device(), 1, fence_.address(), VK_TRUE, kStopSliceNs);
-    }
-    if (waited == VK_TIMEOUT) {
-      unusable_ = true;
+    record_main(request, pc, z, triangles > 0);
+    if (!submit_and_wait(request))
       return fall_back(request, "the GPU did not finish within " + std::to_string(timeout_.count()) + " ms");
-    }
-    check(waited, "vkWaitForFences");
-    submitted_ = false;
-    t.submit_wait_ms = ms_since(t0);
+    t.submit_wait_ms += ms_since(t0);
 
     t0 = Clock::now();
     const auto* src = static_cast<const std::byte*>(unified_ ? out_.mapped() : readback_.mapped());

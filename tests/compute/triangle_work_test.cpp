@@ -1,5 +1,6 @@
-// The Vulkan triangle pass's work list (compute/src/triangle_work.h): one thread or several list the same
-// items, the budget stops the list early, and the device marks what the CPU marks when the list was split.
+// The Vulkan triangle pass's sizing (shaders/voxelize_triangles.comp) and further chunks
+// (compute/src/triangle_work.h): the host lists every further chunk of the big boxes the device reports, the
+// device counts the boxes' tests, marks what the CPU marks, and leaves work past the budget to the CPU.
 #include "triangle_work.h"
 
 #include "roomsense/voxelize.h"
@@ -36,16 +37,15 @@ Soup soup(std::size_t triangles, unsigned seed, float big = 20.0f) {
   return s;
 }
 
-TEST(TriangleWork, ThreadsListTheSameItemsAsOne) {
-  const Soup s = soup(600'000, 7);
-  compute::TriangleWork one, four;
-  ASSERT_TRUE(compute::build_triangle_work(s.vertices, s.indices, s.spec.nx, s.spec.ny, s.spec.nz, ~std::uint64_t{0}, one, 1));
-  ASSERT_TRUE(compute::build_triangle_work(s.vertices, s.indices, s.spec.nx, s.spec.ny, s.spec.nz, ~std::uint64_t{0}, four, 4));
-  EXPECT_EQ(one.tests, four.tests);
-  EXPECT_EQ(one.extra, four.extra);
-  // Every big box's extra chunks, and only those, in triangle order.
+// Each box's voxel count, its tests (none for a box of one voxel), and the further chunks of the big ones.
+struct Boxes {
   std::uint64_t tests = 0;
-  std::vector<std::uint32_t> expected;
+  std::vector<std::uint32_t> big;    // triangles whose boxes pass kChunkVoxels
+  std::vector<std::uint32_t> extra;  // their (triangle, chunk >= 1) items, in triangle order
+};
+
+Boxes boxes(const Soup& s) {
+  Boxes b;
   for (std::size_t t = 0; t < s.indices.size() / 3; ++t) {
     glm::vec3 lo(1e30f), hi(-1e30f);
     for (int k = 0; k < 3; ++k) {
@@ -55,41 +55,66 @@ TEST(TriangleWork, ThreadsListTheSameItemsAsOne) {
     const std::uint64_t volume = std::uint64_t(box_index(hi.x, s.spec.nx) - box_index(lo.x, s.spec.nx) + 1) *
                                  std::uint64_t(box_index(hi.y, s.spec.ny) - box_index(lo.y, s.spec.ny) + 1) *
                                  std::uint64_t(box_index(hi.z, s.spec.nz) - box_index(lo.z, s.spec.nz) + 1);
-    if (volume > 1) tests += volume;
-    for (std::uint64_t k = 1; k < (volume + compute::kChunkVoxels - 1) / compute::kChunkVoxels; ++k) {
-      expected.push_back(std::uint32_t(t));
-      expected.push_back(std::uint32_t(k));
+    if (volume > 1) b.tests += volume;
+    if (volume > compute::kChunkVoxels) b.big.push_back(std::uint32_t(t));
+    const std::uint64_t chunks = (volume + compute::kChunkVoxels - 1) / compute::kChunkVoxels;
+    for (std::uint64_t k = 1; k < chunks; ++k) {
+      b.extra.push_back(std::uint32_t(t));
+      b.extra.push_back(std::uint32_t(k));
     }
   }
-  EXPECT_EQ(one.tests, tests);
-  EXPECT_EQ(one.extra, expected);
-  EXPECT_GT(expected.size(), 10'000u);  // the soup has big boxes
+  return b;
 }
 
-TEST(TriangleWork, StopsAtTheBudget) {
-  const Soup s = soup(600'000, 8);
-  for (unsigned threads : {1u, 4u}) {
-    compute::TriangleWork w;
-    EXPECT_FALSE(compute::build_triangle_work(s.vertices, s.indices, s.spec.nx, s.spec.ny, s.spec.nz, 100'000, w, threads));
-    // Each thread stops at its first box past the budget: the list stays near budget / chunk items.
-    EXPECT_LT(w.extra.size(), 2 * threads * (100'000 / compute::kChunkVoxels + 200)) << threads;
-  }
-}
-
-// Enough triangles that the list is split over the machine's threads: the device still marks what the CPU
-// marks.
-TEST(TriangleWork, SplitListGivesTheCpuResult) {
-  ROOMSENSE_REQUIRE_VULKAN(stage);
-  const Soup s = soup(300'000, 9, 6.0f);  // about 10M tests: seconds, not minutes, on lavapipe
+VoxelizeRequest triangles_of(const Soup& s) {
   VoxelizeRequest r;
   r.spec = s.spec;
   r.grid_vertices = s.vertices;
   r.indices = s.indices;
   r.mode = VoxelMode::Triangles;
+  return r;
+}
+
+TEST(TriangleWork, ListsEveryFurtherChunkOfTheBigBoxes) {
+  const Soup s = soup(200'000, 7);
+  const Boxes want = boxes(s);
+  ASSERT_GT(want.big.size(), 1000u);
+  std::vector<std::uint32_t> extra;
+  compute::list_extra_chunks(s.vertices, s.indices, s.spec.nx, s.spec.ny, s.spec.nz, want.big, extra);
+  EXPECT_EQ(extra, want.extra);
+  // The device reports the big boxes in any order: each one's items follow it.
+  std::vector<std::uint32_t> reversed(want.big.rbegin(), want.big.rend()), extra_reversed;
+  compute::list_extra_chunks(s.vertices, s.indices, s.spec.nx, s.spec.ny, s.spec.nz, reversed, extra_reversed);
+  ASSERT_EQ(extra_reversed.size(), extra.size());
+  EXPECT_EQ(extra_reversed.front(), want.big.back());
+  EXPECT_EQ(extra_reversed[extra_reversed.size() - 2], want.big.front());
+}
+
+// Boxes of one voxel, of one chunk and of several, in a soup big enough for thousands of big boxes: the
+// device marks what the CPU marks and counts the tests the boxes need.
+TEST(TriangleWork, BigBoxesOnTheDevice) {
+  ROOMSENSE_REQUIRE_VULKAN(stage);
+  const Soup s = soup(300'000, 9, 6.0f);  // about 10M tests: seconds, not minutes, on lavapipe
+  const VoxelizeRequest r = triangles_of(s);
   const VoxelStageResult cpu = CpuVoxelStage().run(r);
   const VoxelStageResult gpu = stage->run(r);
   EXPECT_FALSE(stage->last_timings().fell_back);
   test::expect_identical(cpu, gpu);
+  EXPECT_EQ(gpu.voxel_tests, boxes(s).tests);
+}
+
+// Past the budget the device hands the run to the CPU stage, which scans only near each triangle's plane.
+TEST(TriangleWork, WorkPastTheBudgetGoesToTheCpu) {
+  ROOMSENSE_REQUIRE_VULKAN(stage);
+  const Soup s = soup(20'000, 10);
+  VoxelizeRequest r = triangles_of(s);
+  r.test_budget = boxes(s).tests - 1;
+  const VoxelStageResult gpu = stage->run(r);
+  EXPECT_TRUE(stage->last_timings().fell_back);
+  test::expect_identical(CpuVoxelStage().run(r), gpu);
+  r.test_budget += 1;
+  test::expect_identical(CpuVoxelStage().run(r), stage->run(r));
+  EXPECT_FALSE(stage->last_timings().fell_back);
 }
 
 }  // namespace

@@ -39,9 +39,9 @@ struct VulkanStageOptions {
 // Where the time of the last run went. GPU times come from timestamp queries (0 when the queue has none);
 // host times from a steady clock.
 struct VulkanRunTimings {
-  double host_work_list_ms = 0; // building the triangle pass's work list (bounding boxes, on the host)
-  double host_upload_ms = 0;    // copying vertices, indices and the work list into mapped memory
-  double submit_wait_ms = 0;    // record, submit and wait for the fence
+  double host_work_list_ms = 0; // between the submissions: the big boxes' further chunks listed and copied
+  double host_upload_ms = 0;    // copying vertices and indices into mapped memory
+  double submit_wait_ms = 0;    // record, submit and wait for the fence (both submissions)
   double host_readback_ms = 0;  // copying the results out of mapped memory
   double gpu_upload_ms = 0;     // staging copies and clears on the GPU (0 copies on unified memory)
   double gpu_vertices_ms = 0;   // Eq. 3.6/3.7, vertex voxels
@@ -65,7 +65,7 @@ class VulkanVoxelStage final : public VoxelStage {
   VulkanVoxelStage& operator=(const VulkanVoxelStage&) = delete;
 
   std::string name() const override { return "vulkan"; }
-  // One queue submission. Falls back to CpuVoxelStage (with a log line) on timeout, device loss, or a grid
+  // One queue submission, two in triangle mode (the device sizes the work of big triangles). Falls back to CpuVoxelStage (with a log line) on timeout, device loss, or a grid
   // the device cannot hold.
   VoxelStageResult run(const VoxelizeRequest& request) override;
 

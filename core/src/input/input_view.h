@@ -38,6 +38,6 @@ struct KnownInput {
 
 // prepare_input's checks and errors; the views are valid while `scan` and the result live. `known`, where not
 // null, must describe `scan` (runs that do not cover its vertices exactly are ignored).
-InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* known = nullptr);
+InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* known = nullptr, unsigned threads = 1);
 
 }  // namespace roomsense::detail

@@ -1,6 +1,7 @@
 #include "roomsense/error.h"
 #include "roomsense/input.h"
 #include "input_view.h"
+#include "../parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -73,7 +74,9 @@ bool covers(std::span<const detail::VertexRun> runs, std::size_t vertices) {
 
 // prepare_input but for copying the scan's arrays where nothing was removed: returns whether it renumbered
 // (then `out` holds the kept vertices and triangles). The bounds are those of the kept vertices either way.
-bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, const detail::KnownInput* known) {
+// The three axes' outlier ranges are sampled on up to `threads` threads (the same ranges on any number).
+bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, const detail::KnownInput* known,
+                 unsigned threads) {
   if (scan.vertices.empty()) throw Error(ErrorCode::EmptyInput, "the scan has no vertices");
   if (scan.vertices.size() > std::numeric_limits<std::uint32_t>::max())
     throw Error(ErrorCode::BadIndices, "the scan has more vertices than 32-bit indices can address");
@@ -111,7 +114,7 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
 
   if (reject_outliers && finite_count >= kOutlierMinVertices) {
     std::pair<float, float> range[3];
-    for (int axis = 0; axis < 3; ++axis) range[axis] = robust_range(scan.vertices, keep, axis);
+    detail::parallel_tasks(3, threads, [&](std::size_t axis) { range[axis] = robust_range(scan.vertices, keep, int(axis)); });
     std::size_t first = 0;
     for (const detail::VertexRun& run : runs) {
       // A run whose finite vertices' bounds lie within the ranges has no outlier.
@@ -153,7 +156,7 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
 
 PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
   PreparedInput out;
-  if (!check_input(scan, reject_outliers, out, nullptr)) {
+  if (!check_input(scan, reject_outliers, out, nullptr, 1)) {
     out.vertices = scan.vertices;
     out.indices = scan.indices;
   }
@@ -174,9 +177,9 @@ VertexRun summarize_vertices(std::span<const glm::vec3> vertices) {
   return run;
 }
 
-InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* known) {
+InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* known, unsigned threads) {
   InputView view;
-  const bool renumbered = check_input(scan, reject_outliers, view.checked, known);
+  const bool renumbered = check_input(scan, reject_outliers, view.checked, known, threads);
   view.vertices = renumbered ? std::span<const glm::vec3>(view.checked.vertices) : std::span<const glm::vec3>(scan.vertices);
   view.indices = renumbered ? std::span<const std::uint32_t>(view.checked.indices) : std::span<const std::uint32_t>(scan.indices);
   return view;

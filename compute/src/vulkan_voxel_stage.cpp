@@ -59,7 +59,7 @@ struct OutLayout {
 };
 
 // The timestamps written between passes. The first submission writes kBegin to kFirstChunks (in vertex mode
-// the second writes them, together), the second kResumed on.
+// the only one writes them, the first chunks' span empty), the second kResumed on.
 enum Stamp : std::uint32_t {
   kBegin, kUploaded, kFirstChunks, kResumed, kUploadedExtras, kVertices, kTriangles, kLevels, kSelect, kColumns,
   kReadback, kStampCount
@@ -107,6 +107,7 @@ class VulkanVoxelStage::Impl {
             std::initializer_list<VkMemoryPropertyFlags> preferences);
   void ensure_buffers(const Sizes& z);
   void begin_recording(const Sizes& z);
+  void record_upload(const Sizes& z, VkDeviceSize clear);
   void record_first(const PushConstants& pc, const Sizes& z);
   void record_main(const VoxelizeRequest& request, const PushConstants& pc, const Sizes& z, bool after_first);
   bool submit_and_wait(const VoxelizeRequest& request);  // false: the GPU did not finish in time
@@ -308,11 +309,10 @@ void VulkanVoxelStage::Impl::begin_recording(const Sizes& z) {
   check(vk.vkBeginCommandBuffer(cmd_, &bi), "vkBeginCommandBuffer");
 }
 
-// Upload (staging copies on a discrete GPU) and the clears of V and the sizing, then every triangle's first
-// chunk, and the sizing copied to where the host reads it.
-void VulkanVoxelStage::Impl::record_first(const PushConstants& pc, const Sizes& z) {
+// Resets the timestamps, then uploads (staging copies on a discrete GPU) and clears the first `clear` bytes of
+// the bit buffer. The caller adds the barrier before the shaders.
+void VulkanVoxelStage::Impl::record_upload(const Sizes& z, VkDeviceSize clear) {
   const DeviceFunctions& vk = ctx->vk();
-  begin_recording(z);
   if (queries_) vk.vkCmdResetQueryPool(cmd_, queries_.get(), 0, kStampCount);
   stamp(kBegin);
   if (!unified_) {
@@ -321,7 +321,15 @@ void VulkanVoxelStage::Impl::record_first(const PushConstants& pc, const Sizes& 
     vk.vkCmdCopyBuffer(cmd_, upload_.get(), vertices_.get(), 1, &vcopy);
     vk.vkCmdCopyBuffer(cmd_, upload_.get(), indices_.get(), 1, &icopy);
   }
-  vk.vkCmdFillBuffer(cmd_, bits_.get(), 0, z.grid_bits + 3 * 4, 0);  // V, the test count, the big boxes
+  vk.vkCmdFillBuffer(cmd_, bits_.get(), 0, clear, 0);
+}
+
+// Upload and the clears of V and the sizing, then every triangle's first chunk, and the sizing copied to where
+// the host reads it.
+void VulkanVoxelStage::Impl::record_first(const PushConstants& pc, const Sizes& z) {
+  const DeviceFunctions& vk = ctx->vk();
+  begin_recording(z);
+  record_upload(z, z.grid_bits + 3 * 4);  // V, the test count, the big boxes' count
   barrier(kTransfer, VK_ACCESS_TRANSFER_WRITE_BIT, kCompute, kShaderRW);
   stamp(kUploaded);
   vk.vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.layout.get(), 0, 1, &set_, 0, nullptr);
@@ -340,22 +348,12 @@ void VulkanVoxelStage::Impl::record_main(const VoxelizeRequest& request, const P
   const DeviceFunctions& vk = ctx->vk();
   const OutLayout out(request.spec);
   begin_recording(z);
-  if (!after_first) {  // one submission: its stamps for the first one's passes are empty spans
-    if (queries_) vk.vkCmdResetQueryPool(cmd_, queries_.get(), 0, kStampCount);
-    stamp(kBegin);
+  if (!after_first) {  // one submission: it uploads and clears V itself, and the first chunks' span is empty
+    record_upload(z, z.grid_bits);
     stamp(kUploaded);
     stamp(kFirstChunks);
   }
   stamp(kResumed);
-  if (!after_first) {  // upload and clear V, as the first submission does
-    if (!unified_) {
-      const VkBufferCopy vcopy{0, 0, z.vertices};
-      const VkBufferCopy icopy{z.vertices, 0, z.indices};
-      vk.vkCmdCopyBuffer(cmd_, upload_.get(), vertices_.get(), 1, &vcopy);
-      vk.vkCmdCopyBuffer(cmd_, upload_.get(), indices_.get(), 1, &icopy);
-    }
-    vk.vkCmdFillBuffer(cmd_, bits_.get(), 0, z.grid_bits, 0);
-  }
   if (!unified_ && z.extras > 0) {
     const VkBufferCopy ecopy{0, z.out, z.extras};
     vk.vkCmdCopyBuffer(cmd_, upload_.get(), out_.get(), 1, &ecopy);

@@ -52,8 +52,8 @@ std::vector<SourceChunk> query_best_source(const InstanceState& instance, const 
 namespace {
 
 // The voxel stage `backend` asks for on this scan, with its line in the log; null for the CPU stage. A Vulkan
-// stage is kept in `kept` for later analyses where the choice stands: one costs 360 ms to start on an H100
-// (compute/README.md), more than a room's whole analysis.
+// stage is kept in `kept` for later analyses where the choice stands: one costs 310-370 ms to start on an
+// H100 (compute/README.md), more than a room's whole analysis.
 VoxelStage* chosen_stage(const Scan& scan, float voxel_size, Backend backend, std::unique_ptr<VoxelStage>& kept) {
 #if ROOMSENSE_HAVE_COMPUTE
   const VoxelWorkload workload = estimate_voxel_workload(scan, voxel_size);

@@ -198,7 +198,7 @@ TEST(LayerResults, VulkanBackendMatchesTheCpuBackend) {
   EXPECT_EQ(run(XR_ROOM_COMPUTE_BACKEND_CPU_EXTX)["grid"]["backend"], "cpu");
 }
 
-// An analyzer keeps the Vulkan stage it started (360 ms on an H100, compute/README.md) for its later computes:
+// An analyzer keeps the Vulkan stage it started (310-370 ms on an H100, compute/README.md) for its later computes:
 // two computes of a changed scan log one stage start, and both run on Vulkan.
 TEST(LayerResults, AnalyzerKeepsItsVulkanStage) {
   ScopedEnv data_dirs("XDG_DATA_DIRS", std::string("/usr/local/share:/usr/share"));

@@ -27,12 +27,12 @@ struct VoxelWorkload {
 };
 
 // Auto picks Vulkan only on a discrete or integrated GPU, and only where it wins end to end with its start
-// included, because the CLI and the layer start a stage for each analysis. Measured on an H100 (NVIDIA
-// driver 580; compute/README.md): a stage starts in 360 ms, then voxelizes 2M triangles in 16.5 ms, host
-// work list and transfers included, where the CPU path takes 44.5 ms on two threads (about 22 ns per
-// triangle). So Vulkan wins past about 16M triangles. Vertex mode never gets there within the grid budget
-// (about 5 ms per million voxels on the CPU), and past the budget (kDefaultVoxelBudget), which the analysis
-// refuses, Auto probes no device.
+// included: the CLI starts a stage for each run, the layer one for each analyzer. Measured on an H100 (NVIDIA
+// driver 580; compute/README.md): a stage starts in 310-370 ms, then voxelizes 2M triangles in 4.9 ms,
+// transfers included, where the CPU path takes 44 ms on two threads: about 20 ns saved per triangle. So
+// Vulkan wins past about 16-18M triangles. Vertex mode never gets there within the grid budget (about 5 ms
+// per million voxels on the CPU), and past the budget (kDefaultVoxelBudget), which the analysis refuses,
+// Auto probes no device.
 inline constexpr std::size_t kVulkanCrossoverTriangles = std::size_t{1} << 24;
 
 // The workload side of Auto's rule; the device side is a discrete or integrated GPU.

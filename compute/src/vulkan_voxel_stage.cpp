@@ -109,7 +109,7 @@ class VulkanVoxelStage::Impl {
   void begin_recording(const Sizes& z);
   void record_upload(const Sizes& z, VkDeviceSize clear);
   void record_first(const PushConstants& pc, const Sizes& z);
-  void record_main(const VoxelizeRequest& request, const PushConstants& pc, const Sizes& z, bool after_first);
+  void record_main(const VoxelizeRequest& request, const PushConstants& pc, const Sizes& z);
   bool submit_and_wait(const VoxelizeRequest& request);  // false: the GPU did not finish in time
   void stamp(Stamp s);
   void barrier(VkPipelineStageFlags src_stage, VkAccessFlags src, VkPipelineStageFlags dst_stage, VkAccessFlags dst);
@@ -343,12 +343,11 @@ void VulkanVoxelStage::Impl::record_first(const PushConstants& pc, const Sizes& 
   check(vk.vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
 }
 
-void VulkanVoxelStage::Impl::record_main(const VoxelizeRequest& request, const PushConstants& pc, const Sizes& z,
-                                         bool after_first) {
+void VulkanVoxelStage::Impl::record_main(const VoxelizeRequest& request, const PushConstants& pc, const Sizes& z) {
   const DeviceFunctions& vk = ctx->vk();
   const OutLayout out(request.spec);
   begin_recording(z);
-  if (!after_first) {  // one submission: it uploads and clears V itself, and the first chunks' span is empty
+  if (pc.triangle_count == 0) {  // the only submission: it uploads and clears V, the first chunks' span empty
     record_upload(z, z.grid_bits);
     stamp(kUploaded);
     stamp(kFirstChunks);
@@ -492,6 +491,9 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
   pc.info_offset = std::uint32_t(grid_bit_words);
 
   VulkanRunTimings t;
+  const auto timed_out = [&] {
+    return fall_back(request, "the GPU did not finish within " + std::to_string(timeout_.count()) + " ms");
+  };
   try {
     finish_submission();  // a cancelled run's work still owns the buffers
     extra_.clear();
@@ -510,8 +512,7 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
     if (triangles > 0) {
       t0 = Clock::now();
       record_first(pc, z);
-      if (!submit_and_wait(request))
-        return fall_back(request, "the GPU did not finish within " + std::to_string(timeout_.count()) + " ms");
+      if (!submit_and_wait(request)) return timed_out();
       t.submit_wait_ms = ms_since(t0);
 
       // The boxes are the GPU's work: past the budget the extra items alone could take gigabytes. The CPU
@@ -545,9 +546,8 @@ VoxelStageResult VulkanVoxelStage::Impl::run(const VoxelizeRequest& request) {
     pc.work_count = std::uint32_t(triangles + extra_.size() / 2);
 
     t0 = Clock::now();
-    record_main(request, pc, z, triangles > 0);
-    if (!submit_and_wait(request))
-      return fall_back(request, "the GPU did not finish within " + std::to_string(timeout_.count()) + " ms");
+    record_main(request, pc, z);
+    if (!submit_and_wait(request)) return timed_out();
     t.submit_wait_ms += ms_since(t0);
 
     t0 = Clock::now();

@@ -50,22 +50,31 @@ bool wall_samples(const Candidate& c, int layer, F f) {
   return true;
 }
 
+// Whether a square's corners run along the grid's axes, and if so the box of their voxels.
+struct AxisBox {
+  int lo_x, hi_x, lo_z, hi_z;
+};
+std::optional<AxisBox> axis_box(const Candidate& c) {
+  const glm::ivec3 e = c.corners[1] - c.corners[0];
+  if (e.x != 0 && e.z != 0) return std::nullopt;
+  AxisBox b{c.corners[0].x, c.corners[0].x, c.corners[0].z, c.corners[0].z};
+  for (const glm::ivec3& k : c.corners) {
+    b.lo_x = std::min(b.lo_x, k.x), b.hi_x = std::max(b.hi_x, k.x);
+    b.lo_z = std::min(b.lo_z, k.z), b.hi_z = std::max(b.hi_z, k.z);
+  }
+  return b;
+}
+
 // Calls f(sz, sx0, sx1) for each run of half-voxel sample cells sx0..sx1 in row sz whose centres lie strictly
 // inside the square, until f returns false. Returns whether every run was visited.
 template <class F>
 bool square_samples(const Candidate& c, F f) {
-  const glm::ivec3 e = c.corners[1] - c.corners[0];
-  if (e.x == 0 || e.z == 0) {
+  if (const std::optional<AxisBox> b = axis_box(c)) {
     // Along the grid's axes the inside samples are exactly those a quarter voxel or more from the edges:
     // half-voxel cells 2 min + 1 to 2 max on each axis (the corners are voxel centres), no tests needed.
-    int lo_x = c.corners[0].x, hi_x = lo_x, lo_z = c.corners[0].z, hi_z = lo_z;
-    for (const glm::ivec3& k : c.corners) {
-      lo_x = std::min(lo_x, k.x), hi_x = std::max(hi_x, k.x);
-      lo_z = std::min(lo_z, k.z), hi_z = std::max(hi_z, k.z);
-    }
-    if (hi_x <= lo_x) return true;
-    for (long sz = 2L * lo_z + 1; sz <= 2L * hi_z; ++sz)
-      if (!f(sz, 2L * lo_x + 1, 2L * hi_x)) return false;
+    if (b->hi_x <= b->lo_x) return true;
+    for (long sz = 2L * b->lo_z + 1; sz <= 2L * b->hi_z; ++sz)
+      if (!f(sz, 2L * b->lo_x + 1, 2L * b->hi_x)) return false;
     return true;
   }
   std::array<glm::dvec2, 4> v;
@@ -111,6 +120,21 @@ bool square_samples(const Candidate& c, F f) {
     if (s0 <= s1 && !f(sz, s0, s1)) return false;
   }
   return true;
+}
+
+// The sample cell holding a square's middle, where it is one of the square's samples. Off the grid's axes it
+// always is: an edge of integer steps along both axes is at least sqrt(2) voxels long, so the middle lies at
+// least 0.7 voxels inside every edge, and its cell's centre at most 0.36 voxels from it.
+std::optional<std::array<long, 2>> middle_sample(const Candidate& c) {
+  // Corners are voxel indices and voxel centres lie at index + 1/2: the middle lies at sum / 4 + 1/2 voxels, in
+  // half-voxel cell floor(sum / 2) + 1.
+  const glm::ivec3 sum = corner_sum(c);
+  const std::array<long, 2> s{floor_int(double(sum.x) * 0.5) + 1L, floor_int(double(sum.z) * 0.5) + 1L};
+  const std::optional<AxisBox> b = axis_box(c);
+  if (b && !(b->hi_x > b->lo_x && s[0] >= 2L * b->lo_x + 1 && s[0] <= 2L * b->hi_x && s[1] >= 2L * b->lo_z + 1 &&
+             s[1] <= 2L * b->hi_z))
+    return std::nullopt;
+  return s;
 }
 
 // The box of half-voxel sample cells that the samples of `rects` (and wall samples a voxel off their plane)
@@ -373,6 +397,11 @@ int SquarePacker::contact(const Candidate& c) const {
   return n;
 }
 
+// A packing rank in 32 bits, as a floor's squares are millions: the step (0 to 9: misalignment is at most 45°)
+// above the contact.
+constexpr int kContactBits = 28;
+constexpr std::uint32_t kContactMask = (std::uint32_t{1} << kContactBits) - 1;
+
 // Squares of a size share a few hundred edge directions: each direction's 5° step is computed once.
 int SquarePacker::misalignment_step(const Candidate& c) {
   const glm::ivec3 e = c.corners[1] - c.corners[0];
@@ -381,16 +410,90 @@ int SquarePacker::misalignment_step(const Candidate& c) {
   return it->second;
 }
 
+// The indices of (contact, index) pairs in search order, by contact descending, then search order: a counting
+// sort, as contacts are few (the samples around a square at any usual voxel size).
+void sort_by_contact(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& items, std::vector<std::uint32_t>& out) {
+  out.resize(items.size());
+  std::uint32_t max_contact = 0;
+  for (const auto& item : items) max_contact = std::max(max_contact, item.first);
+  if (std::size_t(max_contact) >= std::max<std::size_t>(items.size(), 1 << 20)) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> sorted = items;
+    std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (std::size_t k = 0; k < sorted.size(); ++k) out[k] = sorted[k].second;
+    return;
+  }
+  std::vector<std::uint32_t> first(std::size_t(max_contact) + 2, 0);
+  for (const auto& item : items) ++first[max_contact - item.first + 1];
+  for (std::size_t b = 0; b + 1 < first.size(); ++b) first[b + 1] += first[b];
+  for (const auto& item : items) out[first[max_contact - item.first]++] = item.second;
+}
+
+// Free when no level within the tolerance has a sample of c taken: each row's run found once for all levels.
+bool SquarePacker::free(const Candidate& c) const {
+  const int level = c.corners[0].y;
+  return square_samples(c, [&](long z, long x0, long x1) {
+    for (int y = level - level_tolerance_; y <= level + level_tolerance_; ++y)
+      if (taken_->any(y, z, x0, x1)) return false;
+    return true;
+  });
+}
+// Whether the sample at c's middle is taken at a level within the tolerance: then c is not free.
+bool SquarePacker::middle_taken(const Candidate& c) const {
+  const std::optional<std::array<long, 2>> s = middle_sample(c);
+  if (!s) return false;
+  const int level = c.corners[0].y;
+  for (int y = level - level_tolerance_; y <= level + level_tolerance_; ++y)
+    if (taken_->test(y, (*s)[1], (*s)[0])) return true;
+  return false;
+}
+void SquarePacker::take(const Candidate& c) {
+  square_samples(c, [&](long z, long x0, long x1) { return taken_->set(c.corners[0].y, z, x0, x1), true; });
+}
+
+// The whole analysis's packing, in the order pack() describes, computing contact only where it can matter: a
+// square whose middle sample is taken when its step begins is refused at its turn whatever its contact (taken
+// samples stay taken), so only the others get a contact and are ordered by it. Most of a room's squares lie
+// on the larger or better aligned ones kept before their step.
+std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
+  replayable_ = false;
+  constexpr std::size_t kSteps = 10;  // misalignment is at most 45°: steps 0 to 9
+  std::array<std::vector<std::uint32_t>, kSteps> by_step;
+  for (std::size_t i = 0; i < squares.size(); ++i) {
+    if (i % kStopEvery == 0) stop_point(stop_);
+    by_step[std::size_t(std::min(misalignment_step(squares[i].unpack()), int(kSteps - 1)))].push_back(std::uint32_t(i));
+  }
+  std::vector<std::size_t> kept;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> open;  // (contact, index) of a step's squares still free
+  std::vector<std::uint32_t> ordered;
+  for (std::vector<std::uint32_t>& step : by_step) {
+    open.clear();
+    for (std::size_t k = 0; k < step.size(); ++k) {
+      if (k % kStopEvery == 0) stop_point(stop_);
+      const Candidate c = squares[step[k]].unpack();
+      if (!middle_taken(c)) open.emplace_back(std::min(std::uint32_t(contact(c)), kContactMask), step[k]);
+    }
+    step = {};
+    // Contact descending, then search order.
+    sort_by_contact(open, ordered);
+    for (std::size_t k = 0; k < ordered.size(); ++k) {
+      if (k % kStopEvery == 0) stop_point(stop_);
+      const Candidate c = squares[ordered[k]].unpack();
+      if (!free(c)) continue;
+      take(c);
+      kept.push_back(ordered[k]);
+    }
+  }
+  std::sort(kept.begin(), kept.end());  // the output keeps the search's order
+  return kept;
+}
+
 std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const PackReplay* replay,
                                            std::vector<std::uint32_t>* ranks_out) {
+  if (squares.size() > 0xffffffffu) throw std::length_error("more squares than packing can rank");
+  if (!replay && !ranks_out) return pack_fresh(squares);
   // Within a size, aligned with the room first (in steps of 5°), then by contact, then in search order. Each
   // square's rank is computed once, and the ranks are few (ten steps, contacts up to the samples around a
   // square): a counting sort by rank, stable, so that equal ranks keep the search order.
-  if (squares.size() > 0xffffffffu) throw std::length_error("more squares than packing can rank");
-  // A rank in 32 bits, as a floor's squares are millions: the step (0 to 9: misalignment is at most 45°) above
-  // the contact.
-  constexpr int kContactBits = 28;
-  constexpr std::uint32_t kContactMask = (std::uint32_t{1} << kContactBits) - 1;
   std::vector<std::uint32_t> ranks(squares.size());
   std::uint32_t max_step = 0, max_contact = 0;
   for (std::size_t i = 0; i < squares.size(); ++i) {
@@ -431,14 +534,11 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const Pac
     if (k % kStopEvery == 0) stop_point(stop_);
     const std::size_t i = order[k];
     const Candidate c = squares[i].unpack();
-    const int level = c.corners[0].y;
     const std::optional<bool> previous = previous_decision(replay, i, c, changed_);
-    bool free = previous.value_or(true);
-    for (int y = level - level_tolerance_; y <= level + level_tolerance_ && free && !previous; ++y)
-      free = square_samples(c, [&](long z, long x0, long x1) { return !taken_->any(y, z, x0, x1); });
-    if (!previous) note_decision(replay, i, c, free, changed_);
-    if (!free) continue;
-    square_samples(c, [&](long z, long x0, long x1) { return taken_->set(level, z, x0, x1), true; });
+    const bool is_free = previous ? *previous : free(c);
+    if (!previous) note_decision(replay, i, c, is_free, changed_);
+    if (!is_free) continue;
+    take(c);
     kept.push_back(i);
   }
   std::sort(kept.begin(), kept.end());  // the output keeps the search's order

@@ -149,6 +149,10 @@ class SquarePacker {
   class NonTileCounts;
   int contact(const Candidate& c) const;
   int misalignment_step(const Candidate& c);
+  bool free(const Candidate& c) const;
+  bool middle_taken(const Candidate& c) const;
+  void take(const Candidate& c);
+  std::vector<std::size_t> pack_fresh(const Candidates& squares);
 
   int level_tolerance_;
   double dominant_deg_;

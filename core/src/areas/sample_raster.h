@@ -26,9 +26,25 @@ class SampleRaster {
     const std::vector<std::uint64_t>& slab = slabs_[std::size_t(a - a_lo_)];
     if (slab.empty()) return false;
     const std::uint64_t* row = &slab[row_index(b)];
-    bool found = false;
-    for_words(c0 - c_lo_, c1 - c_lo_, [&](std::size_t w, std::uint64_t mask) { found = found || (row[w] & mask); });
-    return found;
+    const std::size_t i0 = std::size_t(c0 - c_lo_), i1 = std::size_t(c1 - c_lo_);
+    const std::uint64_t from = ~std::uint64_t{0} << (i0 % 64), to = ~std::uint64_t{0} >> (63 - i1 % 64);
+    std::size_t w = i0 / 64;
+    const std::size_t last = i1 / 64;
+    if (w == last) return (row[w] & from & to) != 0;  // most runs lie in one word
+    if (row[w] & from) return true;
+    while (++w < last)
+      if (row[w] != 0) return true;
+    return (row[last] & to) != 0;
+  }
+
+  // Whether bit c of row (a, b) is set; outside the box none is.
+  bool test(long a, long b, long c) const {
+    if (a < a_lo_ || b < b_lo_ || c < c_lo_ || a >= a_lo_ + na_ || b >= b_lo_ + nb_ || c >= c_lo_ + 64 * words_per_row_)
+      return false;
+    const std::vector<std::uint64_t>& slab = slabs_[std::size_t(a - a_lo_)];
+    if (slab.empty()) return false;
+    const std::size_t i = std::size_t(c - c_lo_);
+    return (slab[row_index(b) + i / 64] >> (i % 64)) & 1;
   }
 
   // Sets bits c in [c0, c1] of row (a, b). The box covers every sample of the candidates it was made for;

@@ -1,5 +1,6 @@
 // Alg. 3: squares on free floor and ceiling tiles (Eq. 3.28-3.39), and on furniture tops (§3.3.4,
 // Eq. 3.40/3.41), at any rotation.
+#include "../floor_int.h"
 #include "cell_cover.h"
 #include "ring_offsets.h"
 #include "search.h"
@@ -314,8 +315,8 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
             glm::min(glm::ivec2(cx / 2 + corner_reach, cz / 2 + corner_reach), glm::ivec2(spec.nx - 1, spec.nz - 1));
         if (box_first.sum(near_lo, near_hi) == 0) continue;  // no first corner anywhere near: no square
         if (inner_half >= 0.0) {
-          const glm::ivec2 in_lo(int(std::ceil(0.5 * cx - inner_half)), int(std::ceil(0.5 * cz - inner_half)));
-          const glm::ivec2 in_hi(int(std::floor(0.5 * cx + inner_half)), int(std::floor(0.5 * cz + inner_half)));
+          const glm::ivec2 in_lo(-floor_int(inner_half - 0.5 * cx), -floor_int(inner_half - 0.5 * cz));  // ceil
+          const glm::ivec2 in_hi(floor_int(0.5 * cx + inner_half), floor_int(0.5 * cz + inner_half));
           if (in_lo.x >= 0 && in_lo.y >= 0 && in_hi.x < spec.nx && in_hi.y < spec.nz && in_lo.x <= in_hi.x &&
               in_lo.y <= in_hi.y &&
               (box_walls.sum(in_lo, in_hi) > 0 || double(box_unsuitable.sum(in_lo, in_hi)) > most_missing))

@@ -105,6 +105,7 @@ class ChangedRegion {
   std::size_t words_per_row_;
   std::vector<std::uint64_t> bits_;
   bool empty_ = true;
+  Blocks marked_{};  // the box of the blocks marked (while not empty_): most tests lie outside it
 };
 
 // Packing, beyond the thesis (issue 14). Eq. 3.45-3.53 keep a rectangle unless one of its corners or edge

@@ -189,30 +189,33 @@ void place_chunk(Scan& out, const detail::CombinedScan::Placed& at, const Scan& 
   std::copy(s.labels.labels.begin(), s.labels.labels.end(), out.labels.labels.begin() + std::ptrdiff_t(at.label));
 }
 
-// The arrays of `chunks` in order, placed after what `out` holds: where each goes.
-std::vector<detail::CombinedScan::Placed> place_after(const Scan& out,
-                                                      std::span<const std::pair<std::uint64_t, const Scan*>> chunks,
-                                                      std::span<const std::uint64_t> hashes) {
+// Where the arrays of a scan placed at `at` end.
+detail::CombinedScan::Placed end_of(detail::CombinedScan::Placed at, const Scan& s) {
+  at.vertex += s.vertices.size(), at.index += s.indices.size(), at.label_vertex += s.labels.vertices.size();
+  at.label_index += s.labels.indices.size(), at.label += s.labels.labels.size();
+  return at;
+}
+
+// The arrays of `chunks` in order, placed from `start` on: where each goes.
+std::vector<detail::CombinedScan::Placed> place_from(detail::CombinedScan::Placed start,
+                                                     std::span<const std::pair<std::uint64_t, const Scan*>> chunks,
+                                                     std::span<const std::uint64_t> hashes) {
   std::vector<detail::CombinedScan::Placed> placed;
-  detail::CombinedScan::Placed next{0, 0, out.vertices.size(), out.indices.size(), out.labels.vertices.size(),
-                                    out.labels.indices.size(), out.labels.labels.size()};
   for (std::size_t k = 0; k < chunks.size(); ++k) {
-    const Scan& s = *chunks[k].second;
-    next.id = chunks[k].first, next.hash = hashes.empty() ? 0 : hashes[k];
-    placed.push_back(next);
-    next.vertex += s.vertices.size(), next.index += s.indices.size(), next.label_vertex += s.labels.vertices.size();
-    next.label_index += s.labels.indices.size(), next.label += s.labels.labels.size();
+    start.id = chunks[k].first, start.hash = hashes.empty() ? 0 : hashes[k];
+    placed.push_back(start);
+    start = end_of(start, *chunks[k].second);
   }
   return placed;
 }
 
-// `out` grown to hold what `placed` places last.
-void grow_to(Scan& out, const detail::CombinedScan::Placed& last, const Scan& s) {
-  out.vertices.resize(last.vertex + s.vertices.size());
-  out.indices.resize(last.index + s.indices.size());
-  out.labels.vertices.resize(last.label_vertex + s.labels.vertices.size());
-  out.labels.indices.resize(last.label_index + s.labels.indices.size());
-  out.labels.labels.resize(last.label + s.labels.labels.size());
+// `out`'s arrays ending where `end` says: only what they grow by is new (place_chunk writes over the rest).
+void resize_to(Scan& out, const detail::CombinedScan::Placed& end) {
+  out.vertices.resize(end.vertex);
+  out.indices.resize(end.index);
+  out.labels.vertices.resize(end.label_vertex);
+  out.labels.indices.resize(end.label_index);
+  out.labels.labels.resize(end.label);
 }
 
 }  // namespace
@@ -224,9 +227,9 @@ Scan IncrementalAnalysis::combined_scan() const {
     chunks.push_back({id, &chunk.scan});
   }
   Scan out;
-  const std::vector<detail::CombinedScan::Placed> placed = place_after(out, chunks, {});
+  const std::vector<detail::CombinedScan::Placed> placed = place_from({}, chunks, {});
   if (placed.empty()) return out;
-  grow_to(out, placed.back(), *chunks.back().second);
+  resize_to(out, end_of(placed.back(), *chunks.back().second));
   for (std::size_t k = 0; k < chunks.size(); ++k) place_chunk(out, placed[k], *chunks[k].second);
   return out;
 }
@@ -242,13 +245,11 @@ void IncrementalAnalysis::update_combined() {
   // were checked when they were placed).
   std::vector<std::pair<detail::CombinedScan::Placed, detail::VertexRun>> later;
   for (std::size_t k = same; k < c.placed.size(); ++k) later.push_back({c.placed[k], c.known.runs[k]});
+  // Where the chunks placed again begin: after the kept ones.
+  detail::CombinedScan::Placed start{0, 0, c.scan.vertices.size(), c.scan.indices.size(), c.scan.labels.vertices.size(),
+                                     c.scan.labels.indices.size(), c.scan.labels.labels.size()};
   if (same < c.placed.size()) {
-    const detail::CombinedScan::Placed& from = c.placed[same];
-    c.scan.vertices.resize(from.vertex);
-    c.scan.indices.resize(from.index);
-    c.scan.labels.vertices.resize(from.label_vertex);
-    c.scan.labels.indices.resize(from.label_index);
-    c.scan.labels.labels.resize(from.label);
+    start = c.placed[same];
     c.placed.resize(same);
     c.known.runs.resize(same);
   }
@@ -265,8 +266,8 @@ void IncrementalAnalysis::update_combined() {
     runs.push_back(unchanged ? std::optional(was->second) : std::nullopt);
   }
   try {
-    const std::vector<detail::CombinedScan::Placed> placed = place_after(c.scan, rest, hashes);
-    if (!placed.empty()) grow_to(c.scan, placed.back(), *rest.back().second);
+    const std::vector<detail::CombinedScan::Placed> placed = place_from(start, rest, hashes);
+    resize_to(c.scan, placed.empty() ? start : end_of(placed.back(), *rest.back().second));
     // Each chunk's own part of the arrays: the workers copy chunks side by side.
     detail::parallel_for(rest.size(), options_.threads, 1, [&](std::size_t begin, std::size_t end, std::size_t) {
       for (std::size_t k = begin; k < end; ++k) {

@@ -66,11 +66,16 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
     if (!inside[c]) f.furniture[c] = kNoFurniture;
   apply_furniture_labels(grid.spec, f.levels, labels, f.free_floor, f.furniture);
   stop_point(stop);
-  f.normals = detect_wall_normals(grid, f.levels, f.ceiling, voxels_for(params.wall_normal_reach, s), f.walls,
-                                  inside, f.furniture);
-  f.rooms = split_rooms(grid.spec, inside, f.walls, params.min_passage, params.min_room_area);
-  f.wall_blocked = detect_wall_openings(grid, f.levels, f.walls, inside, voxels_for(params.wall_recess, s),
-                                        max_opening, labels);
+  // F, the rooms and the openings read what is above and not each other: side by side.
+  detail::parallel_tasks(3, threads, [&](std::size_t task) {
+    if (task == 0)
+      f.normals = detect_wall_normals(grid, f.levels, f.ceiling, voxels_for(params.wall_normal_reach, s), f.walls,
+                                      inside, f.furniture);
+    if (task == 1) f.rooms = split_rooms(grid.spec, inside, f.walls, params.min_passage, params.min_room_area);
+    if (task == 2)
+      f.wall_blocked = detect_wall_openings(grid, f.levels, f.walls, inside, voxels_for(params.wall_recess, s),
+                                            max_opening, labels);
+  });
   return f;
 }
 

@@ -174,8 +174,7 @@ std::size_t CentreDeduplicator::add(const Candidates& rects, AreaSize size,
   for (std::size_t r = 0; r < rects.size(); ++r) {
     if (r % kStopEvery == 0) stop_point(stop_);
     const PackedCandidate p = rects[r];
-    const Candidate c = p.unpack();
-    const glm::ivec3 sum = corner_sum(c);
+    const glm::ivec3 sum = p.corner_sum();
     // One voxel per axis, or two neighbours where the centre lies between them.
     int xs[2], ys[2], zs[2];
     const int nx = centre_voxels(sum.x, xs), ny = centre_voxels(sum.y, ys), nz = centre_voxels(sum.z, zs);

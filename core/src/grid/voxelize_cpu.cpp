@@ -13,6 +13,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <numeric>
 
 namespace roomsense {
 namespace {
@@ -113,6 +114,18 @@ struct TriangleScan {
   }
 };
 
+// Marks each voxel of a box of a few whose test cube the triangle touches, testing each (TriangleScan::small).
+inline void test_small_box(const TriangleScan& scan, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+                           const GridSpec& s, VoxelGrid& grid, std::uint64_t& tests) {
+  for (int z = scan.first[2]; z <= scan.last[2]; ++z)
+    for (int x = scan.first[0]; x <= scan.last[0]; ++x)
+      for (int y = scan.first[1]; y <= scan.last[1]; ++y) {
+        std::uint8_t& voxel = grid.cells[s.index(x, y, z)];
+        if (!marked(voxel) && triangle_overlaps_voxel(a, b, c, x, y, z)) mark(voxel);
+      }
+  tests += scan.box_volume();
+}
+
 // Marks every voxel of the triangle's box whose test cube the triangle touches (see TriangleScan).
 void scan_triangle(const TriangleScan& scan, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
                    const GridSpec& s, VoxelGrid& grid, std::uint64_t& tests, TestCounter& counter) {
@@ -123,13 +136,7 @@ void scan_triangle(const TriangleScan& scan, const glm::vec3& a, const glm::vec3
     return;
   }
   if (scan.small()) {  // every voxel of a box of a few: the plane's bounds would save no test
-    for (int z = first[2]; z <= last[2]; ++z)
-      for (int x = first[0]; x <= last[0]; ++x)
-        for (int y = first[1]; y <= last[1]; ++y) {
-          std::uint8_t& voxel = grid.cells[s.index(x, y, z)];
-          if (!marked(voxel) && triangle_overlaps_voxel(a, b, c, x, y, z)) mark(voxel);
-        }
-    tests += scan.box_volume();
+    test_small_box(scan, a, b, c, s, grid, tests);
     return;
   }
   const int d = scan.d, u = scan.u, v = scan.v;
@@ -245,43 +252,66 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
     });
   }
   const auto cell_of = [&](std::uint32_t i) { return cells.empty() ? box_cell(p[i], s) : cells[i]; };
-  // Hopeless input is refused before any scan: when the triangles' boxes (at most the tests a scan does) could
-  // exceed the budget, the sum of TriangleScan's lower bounds decides. A room's small triangles stop at the
-  // boxes, which cost a few comparisons each rather than a plane in double.
-  const auto sum_over_triangles = [&](auto per_scan) {
-    std::atomic<std::uint64_t> total{0};
-    detail::parallel_for(triangles, threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
-      std::uint64_t sum = 0;
-      for (std::size_t t = begin; t < end; ++t) {
-        const std::uint32_t* corner = &request.indices[3 * t];
-        const glm::vec3 &a = p[corner[0]], &b = p[corner[1]], &c = p[corner[2]];
-        sum += per_scan(a, b, c, cell_of(corner[0]), cell_of(corner[1]), cell_of(corner[2]));
-        if ((t & 0xffff) == 0) stop_point(request.stop);
-      }
-      total.fetch_add(sum, std::memory_order_relaxed);
-    });
-    return total.load();
-  };
-  const std::uint64_t box_bound = sum_over_triangles(
-      [](const glm::vec3&, const glm::vec3&, const glm::vec3&, const BoxCell& ca, const BoxCell& cb, const BoxCell& cc) {
-        return TriangleScan(ca, cb, cc).box_volume();
-      });
-  if (box_bound > request.test_budget &&
-      sum_over_triangles([](const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const BoxCell& ca,
-                            const BoxCell& cb, const BoxCell& cc) {
-        return TriangleScan(a, b, c, ca, cb, cc).tests_bound();
-      }) > request.test_budget)
-    throw Error(ErrorCode::TooMuchWork, too_much_work_message(request.test_budget));
+  // One pass over the triangles does those in one voxel and those whose box has at most 2 x 2 x 2 voxels (each
+  // tested): most of a room's, at most 8 tests each. The others wait in a list, with their boxes summed. Hopeless
+  // input is then refused before any of them is scanned: where their boxes (at most the tests a scan does) could
+  // exceed the budget, the sum of TriangleScan's lower bounds decides, a room's few large triangles each
+  // costing a plane in double.
   TestCounter counter(request);
-  detail::parallel_for(triangles, threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t) {
-    std::uint64_t tests = 0;
+  const std::size_t workers = detail::parallel_workers(triangles, threads, 1 << 12);
+  std::vector<std::vector<std::uint32_t>> large(workers);
+  std::vector<std::uint64_t> small_boxes(workers, 0), large_boxes(workers, 0);  // box voxels: one-voxel ones count 1
+  const auto corners_of = [&](std::size_t t) {
+    const std::uint32_t* corner = &request.indices[3 * t];
+    return std::array<std::uint32_t, 3>{corner[0], corner[1], corner[2]};
+  };
+  detail::parallel_for(triangles, threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t worker) {
+    std::uint64_t tests = 0, boxes = 0, large_box = 0;
     for (std::size_t t = begin; t < end; ++t) {
-      const std::uint32_t* corner = &request.indices[3 * t];
-      const glm::vec3 &a = p[corner[0]], &b = p[corner[1]], &c = p[corner[2]];
-      const BoxCell ca = cell_of(corner[0]), cb = cell_of(corner[1]), cc = cell_of(corner[2]);
-      if (ca == cb && ca == cc) mark(grid.cells[s.index(ca.at[0], ca.at[1], ca.at[2])]);  // one voxel: no test
-      else scan_triangle(TriangleScan(a, b, c, ca, cb, cc), a, b, c, s, grid, tests, counter);
+      const auto [i, j, k] = corners_of(t);
+      const BoxCell ca = cell_of(i), cb = cell_of(j), cc = cell_of(k);
+      if (ca == cb && ca == cc) {  // one voxel: no test
+        mark(grid.cells[s.index(ca.at[0], ca.at[1], ca.at[2])]);
+        ++boxes;
+      } else if (const TriangleScan box(ca, cb, cc); box.small()) {
+        test_small_box(box, p[i], p[j], p[k], s, grid, tests);
+        boxes += box.box_volume();
+      } else {
+        large[worker].push_back(std::uint32_t(t));
+        large_box += box.box_volume();
+      }
       if (tests >= TestCounter::kFlushEvery || (t & 0xff) == 0) counter.flush(tests);
+    }
+    counter.flush(tests);
+    small_boxes[worker] = boxes, large_boxes[worker] = large_box;
+  });
+  std::vector<std::uint32_t> listed;
+  for (std::vector<std::uint32_t>& part : large) listed.insert(listed.end(), part.begin(), part.end()), part = {};
+  const auto sum = [](const std::vector<std::uint64_t>& v) { return std::accumulate(v.begin(), v.end(), std::uint64_t{0}); };
+  const auto scan_of = [&](std::uint32_t t) {
+    const auto [i, j, k] = corners_of(t);
+    return TriangleScan(p[i], p[j], p[k], cell_of(i), cell_of(j), cell_of(k));
+  };
+  if (sum(small_boxes) + sum(large_boxes) > request.test_budget) {
+    // A one-voxel triangle's lower bound is 0, a small box's its volume: the tests done above, less the ones.
+    std::atomic<std::uint64_t> bound{counter.total()};
+    detail::parallel_for(listed.size(), threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t) {
+      std::uint64_t part = 0;
+      for (std::size_t n = begin; n < end; ++n) {
+        part += scan_of(listed[n]).tests_bound();
+        if ((n & 0xffff) == 0) stop_point(request.stop);
+      }
+      bound.fetch_add(part, std::memory_order_relaxed);
+    });
+    if (bound.load() > request.test_budget) throw Error(ErrorCode::TooMuchWork, too_much_work_message(request.test_budget));
+  }
+  // The large triangles, a few per worker at a time: each may take many tests.
+  detail::parallel_for(listed.size(), threads, 64, [&](std::size_t begin, std::size_t end, std::size_t) {
+    std::uint64_t tests = 0;
+    for (std::size_t n = begin; n < end; ++n) {
+      const auto [i, j, k] = corners_of(listed[n]);
+      scan_triangle(scan_of(listed[n]), p[i], p[j], p[k], s, grid, tests, counter);
+      if (tests >= TestCounter::kFlushEvery || (n & 0xff) == 0) counter.flush(tests);
     }
     counter.flush(tests);
   });

@@ -5,6 +5,7 @@
 #include "classify.h"
 #include "grow.h"
 #include "reduce.h"
+#include "ring_offsets.h"
 #include "search.h"
 #include "search_cache.h"
 
@@ -140,6 +141,10 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     return starts[type] * ring * (type == 0 ? 1.0 : 2.0);
   };
   const auto search_cost = [&](std::size_t type) { return pairs(type, 0) + pairs(type, 1) + pairs(type, 2); };
+  // The three square types of a size search one ring of corner offsets (an IncrementalAnalysis's searches keep
+  // their own): made by the first of them.
+  std::array<std::vector<RingOffset>, 3> square_rings;
+  std::array<std::once_flag, 3> square_ring_made;
   const auto search = [&](std::size_t t) {
     const std::size_t type = t / 3, size = t % 3;
     if (reused[type]) return;
@@ -158,7 +163,9 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       return;
     }
     const Surface surface = type == 1 ? Surface::Floor : type == 2 ? Surface::Ceiling : Surface::Furniture;
-    found[type][size] = search_squares(spec, features, surface, range, params.horizontal_fill, dominant_deg, stop);
+    std::call_once(square_ring_made[size], [&] { square_rings[size] = ring_offsets(range, Shape::Square); });
+    found[type][size] = search_squares(spec, features, surface, range, params.horizontal_fill, dominant_deg, stop,
+                                       {nullptr, nullptr, &square_rings[size]});
   };
   // §3.4, independent per type: V_Wall, V_Floor, ... (Eq. 3.44), for reach; packing (reduce.h) picks from all
   // the rectangles found: Eq. 3.44 would drop a medium square whose centre a large one has, though packing

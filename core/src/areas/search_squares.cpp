@@ -117,7 +117,8 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
                           BandedSearch banded) {
   // The orientations, split by the parity of dx - dz (= that of dx + dz), most nearly aligned with the room
   // first (with the grid's axes in a room without walls).
-  std::vector<RingOffset> ring = banded.ring ? *banded.ring : ring_offsets(size, Shape::Square);
+  const std::vector<RingOffset> own_ring = banded.ring ? std::vector<RingOffset>() : ring_offsets(size, Shape::Square);
+  const std::vector<RingOffset>& ring = banded.ring ? *banded.ring : own_ring;
   const auto misalignment = [&](const RingOffset& o) {
     const double a = std::fmod(std::atan2(double(o.dz), double(o.dx)) * 180.0 / std::numbers::pi + 360.0, 90.0);
     const double d = std::fabs(a - dominant_deg);
@@ -127,9 +128,8 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   std::vector<std::pair<double, std::size_t>> order(ring.size());
   for (std::size_t i = 0; i < ring.size(); ++i) order[i] = {misalignment(ring[i]), i};
   std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::array<std::vector<RingOffset>, 2> by_parity;
-  for (const auto& [key, i] : order)
-    by_parity[std::size_t((ring[i].dx - ring[i].dz) & 1)].push_back(std::move(ring[i]));
+  std::array<std::vector<const RingOffset*>, 2> by_parity;  // into `ring`
+  for (const auto& [key, i] : order) by_parity[std::size_t((ring[i].dx - ring[i].dz) & 1)].push_back(&ring[i]);
   const FloorCeiling& levels = features.levels;
   // The layers (square_layers): levels from y_from, or facets.
   const bool by_facet = surface == Surface::Ceiling && !features.facets.empty();
@@ -141,7 +141,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   // offsets are both parities' in turn.
   std::vector<Candidates::Shape> shapes;
   for (const auto& parity : by_parity)
-    for (const RingOffset& o : parity) shapes.push_back({o.dx, o.dz, PackedCandidate::kSquare});
+    for (const RingOffset* o : parity) shapes.push_back({o->dx, o->dz, PackedCandidate::kSquare});
   const std::array<std::uint32_t, 2> first_shape = {0, std::uint32_t(by_parity[0].size())};
   int top = y_to;
   if (by_facet)
@@ -155,8 +155,8 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   const double inner_half = size.min_d / (2.0 * std::numbers::sqrt2) - 0.5;
   double most_missing = -1.0;
   for (const auto& parity : by_parity)
-    for (const RingOffset& o : parity)
-      most_missing = std::max(most_missing, double(o.cells) - double(fill) * (o.d + 1.0) * (o.d + 1.0));
+    for (const RingOffset* o : parity)
+      most_missing = std::max(most_missing, double(o->cells) - double(fill) * (o->d + 1.0) * (o->d + 1.0));
   const int corner_reach = roomsense::detail::corner_reach(size);
   // Centres found so far, per level of the squares' corners (y_actual for furniture, Eq. 3.41) or facet.
   std::vector<CentreSet> centres(std::size_t(layers + 1), CentreSet(spec));
@@ -173,10 +173,10 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   };
   std::array<std::vector<CornerCells>, 2> corner_cells;
   for (int p = 0; p < 2; ++p)
-    for (const RingOffset& o : by_parity[std::size_t(p)]) {
-      const int x1 = (p - o.dx + o.dz) / 2, z1 = (p - o.dx - o.dz) / 2;
-      corner_cells[std::size_t(p)].push_back({{x1 + pad, x1 + o.dx + pad, x1 + o.dx - o.dz + pad, x1 - o.dz + pad},
-                                              {z1 + pad, z1 + o.dz + pad, z1 + o.dz + o.dx + pad, z1 + o.dx + pad}});
+    for (const RingOffset* o : by_parity[std::size_t(p)]) {
+      const int x1 = (p - o->dx + o->dz) / 2, z1 = (p - o->dx - o->dz) / 2;
+      corner_cells[std::size_t(p)].push_back({{x1 + pad, x1 + o->dx + pad, x1 + o->dx - o->dz + pad, x1 - o->dz + pad},
+                                              {z1 + pad, z1 + o->dz + pad, z1 + o->dz + o->dx + pad, z1 + o->dx + pad}});
     }
   // One row of centres: those still open for a square at this level (here) or one level up (above), and the
   // orientation each found.
@@ -327,7 +327,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
         if (!here.contains(sum)) open_here[std::size_t(i / 64)] |= bit;
         if (may_rise && !above.contains(sum)) open_above[std::size_t(i / 64)] |= bit;
       }
-      const std::vector<RingOffset>& orientations = by_parity[std::size_t(p)];
+      const std::vector<const RingOffset*>& orientations = by_parity[std::size_t(p)];
       const std::vector<CornerCells>& cells = corner_cells[std::size_t(p)];
       found_here.assign(std::size_t(centres_in_row), kNone);
       found_above.assign(std::size_t(centres_in_row), kNone);
@@ -345,7 +345,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
           for (; open != 0; open &= open - 1) {
             const int b = std::countr_zero(open);
             const std::uint64_t bit = std::uint64_t{1} << b;
-            const RingOffset& o = orientations[i];
+            const RingOffset& o = *orientations[i];
             const int cx = 2 * (x + b) + p;
             const int x1 = (cx - (o.dx - o.dz)) / 2, z1 = (cz - (o.dx + o.dz)) / 2;
             bool rises = false;
@@ -364,7 +364,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
         const int cx = 2 * (hx_first + i) + p;
         const glm::ivec3 sum(2 * cx, 0, 2 * cz);
         const auto add = [&](std::uint32_t orientation, bool rises) {
-          const RingOffset& o = orientations[orientation];
+          const RingOffset& o = *orientations[orientation];
           const int x1 = (cx - (o.dx - o.dz)) / 2, z1 = (cz - (o.dx + o.dz)) / 2;
           (rises ? above : here).insert(sum);
           const int y = rises ? y1 + 1 : y1;  // y_Actual, Eq. 3.41

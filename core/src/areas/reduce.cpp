@@ -34,14 +34,9 @@ bool wall_samples(const Candidate& c, int layer, F f) {
   const double length = glm::distance(p1, p2);
   if (length <= 0.0) return true;
   const glm::dvec2 dir = (p2 - p1) / length, normal(-dir.y, dir.x);
-  // The samples up the wall, (y_lo + 1/4, y_lo + 3/4, ...) below y_hi, are the same run at every step along it.
-  const double y_lo = c.corners[2].y + 0.5, y_hi = c.corners[0].y + 0.5;
-  long sy0 = 0, sy1 = -1;
-  for (double y = y_lo + 0.5 * kSample; y < y_hi; y += kSample) {
-    const long sy = long(floor_int(y / kSample));
-    if (sy1 < sy0) sy0 = sy;
-    sy1 = sy;
-  }
+  // The samples up the wall, y_lo + 1/4, y_lo + 3/4, ... below y_hi (y = level + 1/2 at corners 3 and 1), are
+  // the same run at every step along it: half-voxel cells 2 y3 + 1 to 2 y1.
+  const long sy0 = 2L * c.corners[2].y + 1, sy1 = 2L * c.corners[0].y;
   if (sy1 < sy0) return true;
   for (double t = 0.5 * kSample; t < length; t += kSample) {
     const glm::dvec2 p = p1 + t * dir + double(layer) * normal;

@@ -33,12 +33,13 @@ int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
 bool NormalCounts::blocked(std::size_t column, int y_from, int y_to) const {
   if (blocked_bits.empty()) return false;
   const std::uint64_t* words = blocked_bits.data() + column * blocked_words;
-  const int first = y_from - y0, last = y_to - y0;
+  // Bits y - y0 (never negative: the searches read levels from y0 on), unsigned so that / and % are shifts.
+  const unsigned first = unsigned(y_from - y0), last = unsigned(y_to - y0);
   // Bits [first % 64, 63] of the first word, [0, last % 64] of the last, whole words between.
   const std::uint64_t head = ~std::uint64_t{0} << (first % 64), tail = ~std::uint64_t{0} >> (63 - last % 64);
   if (first / 64 == last / 64) return (words[first / 64] & head & tail) != 0;
   if (words[first / 64] & head || words[last / 64] & tail) return true;
-  for (int w = first / 64 + 1; w < last / 64; ++w)
+  for (unsigned w = first / 64 + 1; w < last / 64; ++w)
     if (words[w] != 0) return true;
   return false;
 }

@@ -209,13 +209,24 @@ std::vector<detail::CombinedScan::Placed> place_from(detail::CombinedScan::Place
   return placed;
 }
 
-// `out`'s arrays ending where `end` says: only what they grow by is new (place_chunk writes over the rest).
-void resize_to(Scan& out, const detail::CombinedScan::Placed& end) {
-  out.vertices.resize(end.vertex);
-  out.indices.resize(end.index);
-  out.labels.vertices.resize(end.label_vertex);
-  out.labels.indices.resize(end.label_index);
-  out.labels.labels.resize(end.label);
+// `v` resized to n, of which the first `keep` elements matter (place_chunk writes over the rest). Past its
+// capacity it takes exactly n, copying only those: vector's own growth would double a whole scan's arrays.
+template <class T>
+void resize_keeping(std::vector<T>& v, std::size_t keep, std::size_t n) {
+  if (n > v.capacity()) {
+    v.resize(std::min(keep, v.size()));
+    v.reserve(n);
+  }
+  v.resize(n);
+}
+
+// `out`'s arrays ending where `end` says, the parts before `start` kept.
+void resize_to(Scan& out, const detail::CombinedScan::Placed& start, const detail::CombinedScan::Placed& end) {
+  resize_keeping(out.vertices, start.vertex, end.vertex);
+  resize_keeping(out.indices, start.index, end.index);
+  resize_keeping(out.labels.vertices, start.label_vertex, end.label_vertex);
+  resize_keeping(out.labels.indices, start.label_index, end.label_index);
+  resize_keeping(out.labels.labels, start.label, end.label);
 }
 
 }  // namespace
@@ -229,7 +240,7 @@ Scan IncrementalAnalysis::combined_scan() const {
   Scan out;
   const std::vector<detail::CombinedScan::Placed> placed = place_from({}, chunks, {});
   if (placed.empty()) return out;
-  resize_to(out, end_of(placed.back(), *chunks.back().second));
+  resize_to(out, {}, end_of(placed.back(), *chunks.back().second));
   for (std::size_t k = 0; k < chunks.size(); ++k) place_chunk(out, placed[k], *chunks[k].second);
   return out;
 }
@@ -267,7 +278,7 @@ void IncrementalAnalysis::update_combined() {
   }
   try {
     const std::vector<detail::CombinedScan::Placed> placed = place_from(start, rest, hashes);
-    resize_to(c.scan, placed.empty() ? start : end_of(placed.back(), *rest.back().second));
+    resize_to(c.scan, start, placed.empty() ? start : end_of(placed.back(), *rest.back().second));
     // Each chunk's own part of the arrays: the workers copy chunks side by side.
     detail::parallel_for(rest.size(), options_.threads, 1, [&](std::size_t begin, std::size_t end, std::size_t) {
       for (std::size_t k = begin; k < end; ++k) {

@@ -259,7 +259,7 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
   // costing a plane in double.
   TestCounter counter(request);
   const std::size_t workers = detail::parallel_workers(triangles, threads, 1 << 12);
-  std::vector<std::vector<std::uint32_t>> large(workers);
+  std::vector<std::vector<std::size_t>> large(workers);
   std::vector<std::uint64_t> small_boxes(workers, 0), large_boxes(workers, 0);  // box voxels: one-voxel ones count 1
   const auto corners_of = [&](std::size_t t) {
     const std::uint32_t* corner = &request.indices[3 * t];
@@ -277,7 +277,7 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
         test_small_box(box, p[i], p[j], p[k], s, grid, tests);
         boxes += box.box_volume();
       } else {
-        large[worker].push_back(std::uint32_t(t));
+        large[worker].push_back(t);
         large_box += box.box_volume();
       }
       if (tests >= TestCounter::kFlushEvery || (t & 0xff) == 0) counter.flush(tests);
@@ -285,15 +285,15 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
     counter.flush(tests);
     small_boxes[worker] = boxes, large_boxes[worker] = large_box;
   });
-  std::vector<std::uint32_t> listed;
-  for (std::vector<std::uint32_t>& part : large) listed.insert(listed.end(), part.begin(), part.end()), part = {};
+  std::vector<std::size_t> listed;
+  for (std::vector<std::size_t>& part : large) listed.insert(listed.end(), part.begin(), part.end()), part = {};
   const auto sum = [](const std::vector<std::uint64_t>& v) { return std::accumulate(v.begin(), v.end(), std::uint64_t{0}); };
-  const auto scan_of = [&](std::uint32_t t) {
+  const auto scan_of = [&](std::size_t t) {
     const auto [i, j, k] = corners_of(t);
     return TriangleScan(p[i], p[j], p[k], cell_of(i), cell_of(j), cell_of(k));
   };
   if (sum(small_boxes) + sum(large_boxes) > request.test_budget) {
-    // A one-voxel triangle's lower bound is 0, a small box's its volume: the tests done above, less the ones.
+    // A one-voxel triangle's lower bound is 0 and a small box's its volume: together the tests counted above.
     std::atomic<std::uint64_t> bound{counter.total()};
     detail::parallel_for(listed.size(), threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t) {
       std::uint64_t part = 0;
@@ -305,7 +305,7 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
     });
     if (bound.load() > request.test_budget) throw Error(ErrorCode::TooMuchWork, too_much_work_message(request.test_budget));
   }
-  // The large triangles, a few per worker at a time: each may take many tests.
+  // The large triangles, shared by the workers from 128 of them on (each may take many tests).
   detail::parallel_for(listed.size(), threads, 64, [&](std::size_t begin, std::size_t end, std::size_t) {
     std::uint64_t tests = 0;
     for (std::size_t n = begin; n < end; ++n) {

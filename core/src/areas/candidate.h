@@ -34,16 +34,14 @@ class PackedCandidate {
 
   Candidate unpack() const {
     const glm::ivec3 p1(x_, y_, z_), p2 = p1 + glm::ivec3(dx_, 0, dz_);
-    const glm::ivec3 side = side_ == kSquare ? glm::ivec3(-dz_, 0, dx_) : glm::ivec3(0, -side_, 0);
-    return {{p1, p2, p2 + side, p1 + side}};
+    return {{p1, p2, p2 + side(), p1 + side()}};
   }
   // corner_sum(unpack()), without the corners: 4 p1 + 2 (p2 - p1) + 2 side.
-  glm::ivec3 corner_sum() const {
-    const glm::ivec3 side = side_ == kSquare ? glm::ivec3(-dz_, 0, dx_) : glm::ivec3(0, -side_, 0);
-    return 4 * glm::ivec3(x_, y_, z_) + 2 * glm::ivec3(dx_, 0, dz_) + 2 * side;
-  }
+  glm::ivec3 corner_sum() const { return 4 * glm::ivec3(x_, y_, z_) + 2 * glm::ivec3(dx_, 0, dz_) + 2 * side(); }
 
  private:
+  glm::ivec3 side() const { return side_ == kSquare ? glm::ivec3(-dz_, 0, dx_) : glm::ivec3(0, -side_, 0); }
+
   std::int32_t x_, y_, z_, dx_, dz_, side_;
 };
 

@@ -406,22 +406,21 @@ int SquarePacker::misalignment_step(const Candidate& c) {
   return it->second;
 }
 
-// The indices of (contact, index) pairs in search order, by contact descending, then search order: a counting
-// sort, as contacts are few (the samples around a square at any usual voxel size).
-void sort_by_contact(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& items, std::vector<std::uint32_t>& out) {
-  out.resize(items.size());
-  std::uint32_t max_contact = 0;
-  for (const auto& item : items) max_contact = std::max(max_contact, item.first);
-  if (std::size_t(max_contact) >= std::max<std::size_t>(items.size(), 1 << 20)) {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> sorted = items;
-    std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    for (std::size_t k = 0; k < sorted.size(); ++k) out[k] = sorted[k].second;
-    return;
+// [0, n) ordered by bucket_of(i) ascending, stable: a counting sort, as packing's buckets are few (ten steps,
+// contacts up to the samples around a square at any usual voxel size); a comparison sort past that.
+template <class BucketOf>
+std::vector<std::uint32_t> order_by_bucket(std::size_t n, std::size_t buckets, BucketOf bucket_of) {
+  std::vector<std::uint32_t> order(n);
+  if (buckets <= std::max<std::size_t>(n, 1 << 20)) {
+    std::vector<std::uint32_t> first(buckets + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) ++first[bucket_of(i) + 1];
+    for (std::size_t b = 0; b < buckets; ++b) first[b + 1] += first[b];
+    for (std::size_t i = 0; i < n; ++i) order[first[bucket_of(i)]++] = std::uint32_t(i);
+  } else {
+    std::iota(order.begin(), order.end(), std::uint32_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return bucket_of(a) < bucket_of(b); });
   }
-  std::vector<std::uint32_t> first(std::size_t(max_contact) + 2, 0);
-  for (const auto& item : items) ++first[max_contact - item.first + 1];
-  for (std::size_t b = 0; b + 1 < first.size(); ++b) first[b + 1] += first[b];
-  for (const auto& item : items) out[first[max_contact - item.first]++] = item.second;
+  return order;
 }
 
 // Free when no level within the tolerance has a sample of c taken: each row's run found once for all levels.
@@ -460,7 +459,6 @@ std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
   }
   std::vector<std::size_t> kept;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> open;  // (contact, index) of a step's squares still free
-  std::vector<std::uint32_t> ordered;
   for (std::vector<std::uint32_t>& step : by_step) {
     open.clear();
     for (std::size_t k = 0; k < step.size(); ++k) {
@@ -470,13 +468,17 @@ std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
     }
     step = {};
     // Contact descending, then search order.
-    sort_by_contact(open, ordered);
-    for (std::size_t k = 0; k < ordered.size(); ++k) {
+    std::uint32_t max_contact = 0;
+    for (const auto& item : open) max_contact = std::max(max_contact, item.first);
+    const std::vector<std::uint32_t> order = order_by_bucket(
+        open.size(), std::size_t(max_contact) + 1, [&](std::size_t k) { return std::size_t(max_contact - open[k].first); });
+    for (std::size_t k = 0; k < order.size(); ++k) {
       if (k % kStopEvery == 0) stop_point(stop_);
-      const Candidate c = squares[ordered[k]].unpack();
+      const std::uint32_t i = open[order[k]].second;
+      const Candidate c = squares[i].unpack();
       if (!free(c)) continue;
       take(c);
-      kept.push_back(ordered[k]);
+      kept.push_back(i);
     }
   }
   std::sort(kept.begin(), kept.end());  // the output keeps the search's order
@@ -488,8 +490,8 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const Pac
   if (squares.size() > 0xffffffffu) throw std::length_error("more squares than packing can rank");
   if (!replay && !ranks_out) return pack_fresh(squares);
   // Within a size, aligned with the room first (in steps of 5°), then by contact, then in search order. Each
-  // square's rank is computed once, and the ranks are few (ten steps, contacts up to the samples around a
-  // square): a counting sort by rank, stable, so that equal ranks keep the search order.
+  // square's rank is computed once, then ordered stably (order_by_bucket), so that equal ranks keep the search
+  // order.
   std::vector<std::uint32_t> ranks(squares.size());
   std::uint32_t max_step = 0, max_contact = 0;
   for (std::size_t i = 0; i < squares.size(); ++i) {
@@ -508,17 +510,8 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const Pac
   const auto bucket_of = [&](std::uint32_t rank) {
     return std::size_t(rank >> kContactBits) * contacts + std::size_t(max_contact - (rank & kContactMask));
   };
-  std::vector<std::uint32_t> order(squares.size());
-  if (buckets <= std::max<std::size_t>(squares.size(), 1 << 20)) {
-    std::vector<std::uint32_t> first(buckets + 1, 0);
-    for (const std::uint32_t rank : ranks) ++first[bucket_of(rank) + 1];
-    for (std::size_t b = 0; b < buckets; ++b) first[b + 1] += first[b];
-    for (std::size_t i = 0; i < squares.size(); ++i) order[first[bucket_of(ranks[i])]++] = std::uint32_t(i);
-  } else {  // contacts past the samples around a square at any usual voxel size: a comparison sort
-    std::iota(order.begin(), order.end(), std::uint32_t{0});
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::uint32_t a, std::uint32_t b) { return bucket_of(ranks[a]) < bucket_of(ranks[b]); });
-  }
+  const std::vector<std::uint32_t> order =
+      order_by_bucket(squares.size(), buckets, [&](std::size_t i) { return bucket_of(ranks[i]); });
   ranks = {};
   // A size packed without a replay changes what is unknown: the sizes after it cannot replay either.
   if (!replay) replayable_ = false;

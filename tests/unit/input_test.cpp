@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -98,6 +100,93 @@ TEST(PrepareInput, RejectsAStrayVertexOneKilometreAway) {
   EXPECT_TRUE(r.ok());
   EXPECT_LT(r.voxels.grid.spec.nx, 60);  // the room is 5 m wide
   ASSERT_FALSE(r.warnings.empty());
+}
+
+// The outlier ranges are exact order statistics (input.h), found without sorting: against a full sort of
+// every vertex (at most 16384 vertices are all sampled), on axes with many equal values at the quantiles (a
+// scan's floor and walls), continuous ones, and vertices exactly at a range's end (kept) and just past it.
+TEST(PrepareInput, OutlierRangesAreTheExactQuantiles) {
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> uniform(0.0f, 10.0f);
+    std::uniform_int_distribution<int> step(0, 20);
+    const std::size_t n = 16000;
+    Scan scan;
+    for (std::size_t i = 0; i < n; ++i) {
+      // x: continuous; y: ties, a third of all exactly at the floor; z: ties at the top.
+      const float y = i % 3 == 0 ? 0.0f : 0.5f * float(step(random));
+      const float z = i % 4 == 0 ? 10.0f : seed % 2 ? uniform(random) : 0.5f * float(step(random));
+      scan.vertices.push_back({uniform(random), y, z});
+    }
+    const auto range_of = [&](int axis) {
+      std::vector<float> v;
+      for (const glm::vec3& p : scan.vertices) v.push_back(p[axis]);
+      std::sort(v.begin(), v.end());
+      const std::size_t k = std::size_t(double(v.size() - 1) * kOutlierQuantile);
+      const float lo = v[k], hi = v[v.size() - 1 - k], margin = std::max(kOutlierMinMargin, hi - lo);
+      return std::pair(lo - margin, hi + margin);
+    };
+    // Far below the data, a few vertices at the end of x's range and a few just past it: below every other
+    // vertex wherever they are there, they leave the quantiles where they were.
+    for (int i = 0; i < 5; ++i) scan.vertices.push_back({-100.0f, 1.0f, 1.0f});
+    const std::pair<float, float> x = range_of(0);
+    for (std::size_t i = 0; i < 5; ++i)
+      scan.vertices[n + i].x = i < 3 ? x.first : std::nextafter(x.first, -INFINITY);
+    std::array<std::pair<float, float>, 3> ranges = {range_of(0), range_of(1), range_of(2)};
+    ASSERT_EQ(ranges[0], x);
+    std::size_t outliers = 0;
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : scan.vertices) {
+      bool out = false;
+      for (int axis = 0; axis < 3; ++axis)
+        out = out || p[axis] < ranges[std::size_t(axis)].first || p[axis] > ranges[std::size_t(axis)].second;
+      outliers += out;
+      if (!out) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+    const PreparedInput in = prepare_input(scan);
+    EXPECT_EQ(outliers, 2u) << seed;
+    EXPECT_EQ(in.outlier_vertices, outliers) << seed;
+    EXPECT_EQ(in.lo, lo) << seed;
+    EXPECT_EQ(in.hi, hi) << seed;
+    EXPECT_EQ(in.lo.x, x.first) << seed;  // the vertices at the range's end are kept
+  }
+}
+
+// A large scan's input checks run on slices side by side (analyze's threads): the first bad index still names
+// the error, and the non-finite vertices and bounds are counted over every slice.
+TEST(PrepareInput, ChecksOnSeveralThreadsNameTheFirstBadIndex) {
+  Scan scan = synth::generate(synth::default_room());
+  while (scan.vertices.size() < 300000) {  // copies of the room side by side, every slice holding some
+    const std::size_t n = scan.vertices.size(), m = scan.indices.size();
+    for (std::size_t i = 0; i < n; ++i) scan.vertices.push_back(scan.vertices[i]);
+    for (std::size_t i = 0; i < m; ++i) scan.indices.push_back(scan.indices[i] + std::uint32_t(n));
+  }
+  const auto vertex_count = std::uint32_t(scan.vertices.size());
+  Scan bad = scan;
+  bad.indices[bad.indices.size() - 5] = vertex_count + 7;  // in the last slice
+  bad.indices[bad.indices.size() / 2 + 1] = vertex_count;  // the first
+  AnalysisOptions options;
+  options.threads = 4;
+  try {
+    analyze(bad, options);
+    ADD_FAILURE() << "no Error thrown";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::BadIndices);
+    const std::string expected = "index " + std::to_string(vertex_count) + " of triangle " +
+                                 std::to_string((bad.indices.size() / 2 + 1) / 3) + " is out of range";
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  Scan holes = scan;
+  holes.vertices[10] = {nan, 0.0f, 0.0f};
+  holes.vertices[holes.vertices.size() - 10] = {0.0f, INFINITY, 0.0f};
+  AnalysisOptions one_thread;
+  one_thread.threads = 1;
+  const AnalysisResult one = analyze(holes, one_thread), four = analyze(holes, options);
+  EXPECT_EQ(four.input.skipped_vertices, 2u);
+  EXPECT_EQ(four.input.skipped_vertices, one.input.skipped_vertices);
+  EXPECT_EQ(four.voxels.grid.spec, one.voxels.grid.spec);
+  EXPECT_EQ(four.voxels.grid.cells, one.voxels.grid.cells);
 }
 
 TEST(PrepareInput, AnAnalysisOfWhatIsLeftEqualsOneOfTheCleanScan) {

@@ -4,34 +4,81 @@
 #include "../parallel.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 
 namespace roomsense {
 namespace {
 
-bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+// Not NaN or Inf: not every exponent bit set. Bit tests without branches, which summarize_vertices vectorizes.
+bool finite(float f) { return (std::bit_cast<std::uint32_t>(f) & 0x7f800000u) != 0x7f800000u; }
+bool finite(const glm::vec3& v) { return finite(v.x) & finite(v.y) & finite(v.z); }
 
-// The [q, 1-q] quantiles of one axis over the kept vertices (`keep` empty: all), widened by the outlier margin.
+// The k-th value (from 0) of `v` in the order `before` (std::less: the k-th smallest; std::greater: the k-th
+// largest), as std::nth_element finds it. For a k near that end, a bound from every 8th value first: where more
+// than k values come before the bound, the k-th is among those few; where the bound's own ties reach past k,
+// it is the bound (a scan's floor or walls: many equal values).
+template <class Before>
+float order_statistic(std::vector<float>& v, std::size_t k, Before before) {
+  constexpr std::size_t kStride = 8;
+  const std::size_t sample_rank = 2 * (k / kStride) + 8;  // about twice k's share of the sample
+  if (v.size() >= 64 * kStride && 4 * sample_rank < v.size() / kStride) {
+    std::vector<float> sample;
+    sample.reserve(v.size() / kStride + 1);
+    for (std::size_t i = 0; i < v.size(); i += kStride) sample.push_back(v[i]);
+    std::nth_element(sample.begin(), sample.begin() + std::ptrdiff_t(sample_rank), sample.end(), before);
+    const float bound = sample[sample_rank];
+    std::size_t earlier = 0, equal = 0;
+    for (const float x : v) earlier += before(x, bound), equal += x == bound;
+    if (earlier > k) {
+      std::vector<float> first;
+      first.reserve(earlier);
+      for (const float x : v)
+        if (before(x, bound)) first.push_back(x);
+      std::nth_element(first.begin(), first.begin() + std::ptrdiff_t(k), first.end(), before);
+      return first[k];
+    }
+    if (earlier + equal > k) return bound;
+  }
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end(), before);
+  return v[k];
+}
+
+// The [q, 1-q] quantiles of each axis over the kept vertices (`keep` empty: all), widened by the outlier margin.
 // Quantiles of an evenly strided sample of at most kQuantileSample vertices are as good for this and keep large
-// scans cheap.
+// scans cheap. The sample is gathered in one pass (a strided read touches every cache line of the vertices);
+// the axes' selections run side by side.
 constexpr std::size_t kQuantileSample = 16384;
-std::pair<float, float> robust_range(const std::vector<glm::vec3>& vertices, const std::vector<std::uint8_t>& keep, int axis) {
-  std::vector<float> values;
+std::array<std::pair<float, float>, 3> robust_ranges(const std::vector<glm::vec3>& vertices,
+                                                     const std::vector<std::uint8_t>& keep, unsigned threads) {
+  std::array<std::vector<float>, 3> values;
   const std::size_t stride = std::max<std::size_t>(1, vertices.size() / kQuantileSample);
-  values.reserve(vertices.size() / stride + 1);
+  for (std::vector<float>& axis : values) axis.resize((vertices.size() + stride - 1) / stride);
+  std::size_t taken = 0;
   for (std::size_t i = 0; i < vertices.size(); i += stride)
-    if (keep.empty() || keep[i]) values.push_back(vertices[i][axis]);
-  if (values.empty()) return {-INFINITY, INFINITY};
-  const std::size_t lo_k = std::size_t(double(values.size() - 1) * kOutlierQuantile);
-  const std::size_t hi_k = values.size() - 1 - lo_k;
-  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(lo_k), values.end());
-  const float lo = values[lo_k];
-  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(hi_k), values.end());
-  const float hi = values[hi_k];
-  const float margin = std::max(kOutlierMinMargin, hi - lo);
-  return {lo - margin, hi + margin};
+    if (keep.empty() || keep[i]) {
+      for (int axis = 0; axis < 3; ++axis) values[std::size_t(axis)][taken] = vertices[i][axis];
+      ++taken;
+    }
+  for (std::vector<float>& axis : values) axis.resize(taken);
+  std::array<std::pair<float, float>, 3> ranges;
+  detail::parallel_tasks(3, threads, [&](std::size_t axis) {
+    std::vector<float>& v = values[axis];
+    if (v.empty()) {
+      ranges[axis] = {-INFINITY, INFINITY};
+      return;
+    }
+    // The k-th smallest and the k-th largest.
+    const std::size_t k = std::size_t(double(v.size() - 1) * kOutlierQuantile);
+    const float lo = order_statistic(v, k, std::less<float>()), hi = order_statistic(v, k, std::greater<float>());
+    const float margin = std::max(kOutlierMinMargin, hi - lo);
+    ranges[axis] = {lo - margin, hi + margin};
+  });
+  return ranges;
 }
 
 // The kept vertices in order, and the triangles all of whose corners were kept, renumbered.
@@ -84,19 +131,48 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
     throw Error(ErrorCode::BadIndices,
                 "the index count " + std::to_string(scan.indices.size()) + " is not a multiple of 3");
   const std::uint32_t vertex_count = std::uint32_t(scan.vertices.size());
-  if (known == nullptr || !known->indices_in_range)
-    for (std::size_t i = 0; i < scan.indices.size(); ++i)
-      if (scan.indices[i] >= vertex_count) [[unlikely]]
-        throw Error(ErrorCode::BadIndices, "index " + std::to_string(scan.indices[i]) + " of triangle " +
-                                               std::to_string(i / 3) + " is out of range (" +
-                                               std::to_string(scan.vertices.size()) + " vertices)");
   out.input_vertices = scan.vertices.size();
   out.input_triangles = scan.indices.size() / 3;
 
-  // The vertices by runs: the caller's, or one over them all.
+  // The vertices by runs: the caller's, or one over them all. That run and the index check come from one pass
+  // over slices of both arrays, side by side.
+  const bool check_indices = known == nullptr || !known->indices_in_range;
   std::vector<detail::VertexRun> own;
-  if (known == nullptr || !covers(known->runs, scan.vertices.size()))
-    own.push_back(detail::summarize_vertices(scan.vertices));
+  if (known == nullptr || !covers(known->runs, scan.vertices.size())) own.emplace_back();
+  if (check_indices || !own.empty()) {
+    constexpr std::size_t kGrain = 1 << 15;
+    const std::size_t workers =
+        detail::parallel_workers(std::max(scan.vertices.size(), scan.indices.size()), threads, kGrain);
+    std::vector<detail::VertexRun> slices(workers);
+    std::vector<std::uint8_t> out_of_range(workers, 0);
+    detail::run_workers(workers, [&](std::size_t w) {
+      const auto slice = [&](std::size_t n) { return std::pair(n * w / workers, n * (w + 1) / workers); };
+      if (!own.empty()) {
+        const auto [begin, end] = slice(scan.vertices.size());
+        slices[w] = detail::summarize_vertices(std::span(scan.vertices).subspan(begin, end - begin));
+      }
+      if (check_indices) {
+        const auto [begin, end] = slice(scan.indices.size());
+        std::uint32_t bad = 0;  // an or of comparisons, which vectorizes (a max of unsigned does not on SSE2)
+        for (std::size_t i = begin; i < end; ++i) bad |= std::uint32_t(scan.indices[i] >= vertex_count);
+        out_of_range[w] = std::uint8_t(bad);
+      }
+    });
+    // Where an index is out of range, the first one names the error.
+    if (std::find(out_of_range.begin(), out_of_range.end(), 1) != out_of_range.end())
+      for (std::size_t i = 0; i < scan.indices.size(); ++i)
+        if (scan.indices[i] >= vertex_count)
+          throw Error(ErrorCode::BadIndices, "index " + std::to_string(scan.indices[i]) + " of triangle " +
+                                                 std::to_string(i / 3) + " is out of range (" +
+                                                 std::to_string(scan.vertices.size()) + " vertices)");
+    // In slice order, as one pass would (min and max keep the first of equal values, ±0 included).
+    for (const detail::VertexRun& slice : slices)
+      if (!own.empty()) {
+        detail::VertexRun& all = own.front();
+        all.count += slice.count, all.finite += slice.finite;
+        all.lo = glm::min(all.lo, slice.lo), all.hi = glm::max(all.hi, slice.hi);
+      }
+  }
   const std::span<const detail::VertexRun> runs =
       own.empty() ? std::span<const detail::VertexRun>(known->runs) : std::span<const detail::VertexRun>(own);
   std::size_t finite_count = 0;
@@ -113,8 +189,7 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
   if (out.skipped_vertices != 0) make_keep();
 
   if (reject_outliers && finite_count >= kOutlierMinVertices) {
-    std::pair<float, float> range[3];
-    detail::parallel_tasks(3, threads, [&](std::size_t axis) { range[axis] = robust_range(scan.vertices, keep, int(axis)); });
+    const std::array<std::pair<float, float>, 3> range = robust_ranges(scan.vertices, keep, threads);
     std::size_t first = 0;
     for (const detail::VertexRun& run : runs) {
       // A run whose finite vertices' bounds lie within the ranges has no outlier.
@@ -168,12 +243,23 @@ namespace detail {
 VertexRun summarize_vertices(std::span<const glm::vec3> vertices) {
   VertexRun run;
   run.count = vertices.size();
+  // glm::min and glm::max per axis (the first of equal values kept), skipping vertices that are not finite,
+  // without a branch.
+  std::array<float, 3> lo = {INFINITY, INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY, -INFINITY};
+  std::size_t finite_count = 0;
   for (const glm::vec3& v : vertices) {
-    if (!finite(v)) continue;
-    ++run.finite;
-    run.lo = glm::min(run.lo, v);
-    run.hi = glm::max(run.hi, v);
+    const bool f = finite(v);
+    finite_count += f;
+    for (int axis = 0; axis < 3; ++axis) {
+      const float x = v[axis];
+      float& l = lo[std::size_t(axis)];
+      float& h = hi[std::size_t(axis)];
+      l = f && x < l ? x : l;
+      h = f && h < x ? x : h;
+    }
   }
+  run.finite = finite_count;
+  run.lo = {lo[0], lo[1], lo[2]}, run.hi = {hi[0], hi[1], hi[2]};
   return run;
 }
 

@@ -33,14 +33,25 @@ class PackedCandidate {
   PackedCandidate(glm::ivec3 p1, int dx, int dz, int side) : x_(p1.x), y_(p1.y), z_(p1.z), dx_(dx), dz_(dz), side_(side) {}
 
   Candidate unpack() const {
-    const glm::ivec3 p1(x_, y_, z_), p2 = p1 + glm::ivec3(dx_, 0, dz_);
-    return {{p1, p2, p2 + side(), p1 + side()}};
+    // Component by component: built from whole vectors, the corners went through the stack as 32-bit stores
+    // read back 64 bits at a time, a store-forwarding stall on every rectangle packing reads.
+    const glm::ivec3 s = side();
+    Candidate c;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const bool second = k == 1 || k == 2, sided = k >= 2;
+      c.corners[k].x = x_ + (second ? dx_ : 0) + (sided ? s.x : 0);
+      c.corners[k].y = y_ + (sided ? s.y : 0);
+      c.corners[k].z = z_ + (second ? dz_ : 0) + (sided ? s.z : 0);
+    }
+    return c;
   }
   // corner_sum(unpack()), without the corners: 4 p1 + 2 (p2 - p1) + 2 side.
   glm::ivec3 corner_sum() const { return 4 * glm::ivec3(x_, y_, z_) + 2 * glm::ivec3(dx_, 0, dz_) + 2 * side(); }
+  glm::ivec3 first() const { return {x_, y_, z_}; }  // corner 1
+  // Corner 4 - corner 1: a wall's straight down, a square's at a right angle to its first edge in the plane.
+  glm::ivec3 side() const { return side_ == kSquare ? glm::ivec3(-dz_, 0, dx_) : glm::ivec3(0, -side_, 0); }
 
  private:
-  glm::ivec3 side() const { return side_ == kSquare ? glm::ivec3(-dz_, 0, dx_) : glm::ivec3(0, -side_, 0); }
 
   std::int32_t x_, y_, z_, dx_, dz_, side_;
 };
@@ -98,6 +109,7 @@ class Candidates {
     }
   }
   const Item& item(std::size_t i) const { return blocks_[i / kBlock][i % kBlock]; }
+  std::span<const Shape> shapes() const { return shapes_; }
   std::size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
   static constexpr std::size_t kBytesEach = 12;  // what one candidate takes

@@ -25,20 +25,33 @@ namespace {
 // edge share none, two that overlap by a strip of half a voxel or more share some.
 constexpr double kSample = 0.5;  // voxels
 
+// A wall rectangle's top edge from corner 1 (Eq. 3.26) as its samples walk it: its length and direction,
+// which depend on its shape alone (corners 1 and 2 are voxel centres, so p2 - p1 is exactly (dx, dz)).
+struct WallLine {
+  double length = 0.0;
+  glm::dvec2 dir{0.0};
+};
+WallLine wall_line(int dx, int dz) {
+  const glm::dvec2 d(dx, dz);
+  const double length = glm::length(d);
+  return {length, length > 0.0 ? d / length : glm::dvec2(0.0)};
+}
+
 // Calls f(sx, sz, sy0, sy1) for each run of sample cells (half-voxel indices) sy0..sy1 of a wall rectangle at
 // one (sx, sz), at `layer` voxels off its plane along its horizontal normal, until f returns false. The
-// rectangle runs between voxel centres (Eq. 3.54). Returns whether every run was visited.
+// rectangle runs between voxel centres (Eq. 3.54); `line` is its top edge's. Returns whether every run was
+// visited.
 template <class F>
-bool wall_samples(const Candidate& c, int layer, F f) {
-  const glm::dvec2 p1(c.corners[0].x + 0.5, c.corners[0].z + 0.5), p2(c.corners[1].x + 0.5, c.corners[1].z + 0.5);
-  const double length = glm::distance(p1, p2);
-  if (length <= 0.0) return true;
-  const glm::dvec2 dir = (p2 - p1) / length, normal(-dir.y, dir.x);
+bool wall_samples(const PackedCandidate& wall, const WallLine& line, int layer, F f) {
+  const glm::ivec3 first = wall.first();
+  const glm::dvec2 p1(first.x + 0.5, first.z + 0.5);
+  if (line.length <= 0.0) return true;
+  const glm::dvec2 dir = line.dir, normal(-dir.y, dir.x);
   // The samples up the wall, y_lo + 1/4, y_lo + 3/4, ... below y_hi (y = level + 1/2 at corners 3 and 1), are
   // the same run at every step along it: half-voxel cells 2 y3 + 1 to 2 y1.
-  const long sy0 = 2L * c.corners[2].y + 1, sy1 = 2L * c.corners[0].y;
+  const long sy0 = 2L * (first.y + wall.side().y) + 1, sy1 = 2L * first.y;
   if (sy1 < sy0) return true;
-  for (double t = 0.5 * kSample; t < length; t += kSample) {
+  for (double t = 0.5 * kSample; t < line.length; t += kSample) {
     const glm::dvec2 p = p1 + t * dir + double(layer) * normal;
     if (!f(long(floor_int(p.x / kSample)), long(floor_int(p.y / kSample)), sy0, sy1)) return false;
   }
@@ -284,18 +297,27 @@ std::vector<std::size_t> pack_walls(const SizedList& walls, const PackReplay* re
   ChangedRegion changed({{int(box.x_lo / 2), int(box.z_lo / 2)}, {int(box.x_hi / 2), int(box.z_hi / 2)}});
   if (replay)
     for (const Candidate& c : replay->gone) changed.add(ChangedRegion::around(c));
-  for (std::size_t i = 0; i < walls.size(); ++i) {
-    const Candidate c = walls[i].c();
-    const std::optional<bool> previous = previous_decision(replay, i, c, changed);
-    const bool free = previous ? *previous
-                               : wall_samples(c, 0, [&](long x, long z, long y0, long y1) { return !taken.any(x, z, y0, y1); });
-    if (!previous) note_decision(replay, i, c, free, changed);
-    if (!free) continue;
-    // Marked a voxel thick either side: a rectangle one voxel in front of another on a wall off the axes
-    // (the staircase of its voxels) covers the same wall.
-    for (int layer = -1; layer <= 1; ++layer)
-      wall_samples(c, layer, [&](long x, long z, long y0, long y1) { return taken.set(x, z, y0, y1), true; });
-    kept.push_back(i);
+  std::size_t i = 0;  // in `walls`: the sizes in turn
+  for (const Candidates& of_size : walls.by_size()) {
+    // Each shape's top edge once: a rectangle's would be a square root and a division ahead of its samples.
+    std::vector<WallLine> lines;
+    for (const Candidates::Shape& shape : of_size.shapes()) lines.push_back(wall_line(shape.dx, shape.dz));
+    for (std::size_t j = 0; j < of_size.size(); ++j, ++i) {
+      const Candidates::Item& item = of_size.item(j);
+      const PackedCandidate wall = of_size.decode(item);  // its corners only for a replay
+      const WallLine& line = lines[item.shape];
+      const std::optional<bool> previous = replay ? previous_decision(replay, i, wall.unpack(), changed) : std::nullopt;
+      const bool free = previous ? *previous : wall_samples(wall, line, 0, [&](long x, long z, long y0, long y1) {
+        return !taken.any(x, z, y0, y1);
+      });
+      if (replay && !previous) note_decision(replay, i, wall.unpack(), free, changed);
+      if (!free) continue;
+      // Marked a voxel thick either side: a rectangle one voxel in front of another on a wall off the axes
+      // (the staircase of its voxels) covers the same wall.
+      for (int layer = -1; layer <= 1; ++layer)
+        wall_samples(wall, line, layer, [&](long x, long z, long y0, long y1) { return taken.set(x, z, y0, y1), true; });
+      kept.push_back(i);
+    }
   }
   return kept;
 }

@@ -33,6 +33,7 @@ class SizedList {
     }
     return {(*by_size_)[2].at(i), kAreaSizes[2]};
   }
+  const std::array<Candidates, 3>& by_size() const { return *by_size_; }
 
  private:
   const std::array<Candidates, 3>* by_size_;

@@ -325,23 +325,34 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   std::array<std::size_t, 3> square_types = {1, 2, 3};
   std::stable_sort(square_types.begin(), square_types.end(),
                    [&](std::size_t a, std::size_t b) { return search_cost(a) > search_cost(b); });
+  // Per type and size three tasks: search, packing, deduplication (packing's chain is the longest path of the
+  // graph: growth ends it). The graph runs the ready task of lowest index first, so they come size by size:
+  // every type's large search, then their packings and deduplications, then the medium sizes'. Each type's
+  // packing chain then starts once its own large search is done, rather than after another type's every
+  // search (on thesis-room1, two threads: 0.5 ms of one thread working alone at the end, saved).
+  std::array<std::array<std::size_t, 3>, 4> search_task{}, pack_task{}, deduplication_task{};
   std::vector<std::size_t> square_searches;
-  for (const std::size_t type : square_types)
-    for (std::size_t size = 0; size < kAreaSizes.size(); ++size) {
-      // Tasks come in threes: search, packing, deduplication (packing's chain is the longer: growth ends it).
-      const std::size_t search_task = tasks.size();
-      const std::size_t previous_pack = search_task - 2, previous_deduplication = search_task - 1;
-      square_searches.push_back(search_task);
-      after.push_back(size > 0 && chained(type) ? std::vector<std::size_t>{previous_pack, previous_deduplication}
-                                                : std::vector<std::size_t>{kDeduplicateWalls});
+  for (std::size_t size = 0; size < kAreaSizes.size(); ++size) {
+    for (const std::size_t type : square_types) {
+      search_task[type][size] = tasks.size();
+      square_searches.push_back(tasks.size());
+      after.push_back(size > 0 && chained(type)
+                          ? std::vector<std::size_t>{pack_task[type][size - 1], deduplication_task[type][size - 1]}
+                          : std::vector<std::size_t>{kDeduplicateWalls});
       tasks.push_back([&search, type, size] { search(3 * type + size); });
-      after.push_back(size == 0 ? std::vector<std::size_t>{search_task}
-                                : std::vector<std::size_t>{search_task, previous_pack});
+    }
+    for (const std::size_t type : square_types) {
+      const std::size_t found_by = search_task[type][size];
+      pack_task[type][size] = tasks.size();
+      after.push_back(size == 0 ? std::vector<std::size_t>{found_by}
+                                : std::vector<std::size_t>{found_by, pack_task[type][size - 1]});
       tasks.push_back([&pack_squares, type, size] { pack_squares(type, size); });
-      after.push_back(size == 0 ? std::vector<std::size_t>{search_task}
-                                : std::vector<std::size_t>{search_task, previous_deduplication});
+      deduplication_task[type][size] = tasks.size();
+      after.push_back(size == 0 ? std::vector<std::size_t>{found_by}
+                                : std::vector<std::size_t>{found_by, deduplication_task[type][size - 1]});
       tasks.push_back([&deduplicate_squares, type, size] { deduplicate_squares(type, size); });
     }
+  }
   // The search time ends with the last search, the reduction's with the graph.
   std::mutex searches_mutex;
   std::size_t searches_left = square_searches.size();

@@ -1,5 +1,6 @@
 // §3.3-3.5 in the thesis's order: the 12 searches in parallel (§3.7), reduction per type and size beside them,
 // classification.
+#include "../floor_int.h"
 #include "../parallel.h"
 #include "roomsense/cancel.h"
 #include "classify.h"
@@ -39,7 +40,7 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
   // A strip may hold a speck the scan missed (one sample in five) as long as the whole area keeps its fill.
   rule.strip_fill = std::min(rule.fill, 0.8f);
   const auto voxel_of = [&spec, voxel](const glm::vec3& p) {
-    return glm::ivec3(glm::floor((p - spec.origin) / voxel));
+    return detail::floor_ivec3((p - spec.origin) / voxel);
   };
   if (type == 0) {
     // Walls lie on the wall-side face of the voxels F marks (to_area): the voxel is half a voxel in front.

@@ -1,6 +1,7 @@
 // Growth of packed areas into the free surface around them (grow.h).
 #include "grow.h"
 
+#include "../floor_int.h"
 #include "candidate.h"
 #include "sample_owners.h"
 #include "roomsense/cancel.h"
@@ -16,7 +17,7 @@ namespace {
 glm::ivec3 sample_cell(const glm::vec3& p, float step) {
   // The bias keeps points that lie exactly on a cell border (walls' voxel centres, furniture levels) in one
   // cell whatever the rounding of the sum that gave them.
-  return glm::ivec3(glm::floor(p / step + 1e-4f));
+  return floor_ivec3(p / step + 1e-4f);
 }
 
 // An area as a rectangle [u0, u1] x [v0, v1] on the axes of its first corner; samples lie at half a step

@@ -23,18 +23,19 @@ class SampleOwners {
 
   // The owner of cell, or kAbsent.
   std::uint32_t find(glm::ivec3 cell) const {
-    const std::uint32_t tile = tiles_.find(tile_key(cell));
+    const std::uint32_t tile = tile_of(tile_key(cell));
     return tile == KeyTable::kAbsent ? kAbsent : owners_[std::size_t(tile) * cells_ + offset(cell)];
   }
 
   // Makes value the owner of cell unless it has one (as KeyTable::insert).
   void insert(glm::ivec3 cell, std::uint32_t value) {
     const std::uint64_t key = tile_key(cell);
-    std::uint32_t tile = tiles_.find(key);
+    std::uint32_t tile = tile_of(key);
     if (tile == KeyTable::kAbsent) {
       tile = std::uint32_t(owners_.size() / cells_);
       tiles_.insert(key, tile);
       owners_.resize(owners_.size() + cells_, kAbsent);
+      last_tile_ = tile;
     }
     std::uint32_t& owner = owners_[std::size_t(tile) * cells_ + offset(cell)];
     if (owner == kAbsent) owner = value;
@@ -52,8 +53,17 @@ class SampleOwners {
     return (std::size_t(c.x) << (shift_.y + shift_.z)) | (std::size_t(c.y) << shift_.z) | std::size_t(c.z);
   }
 
+  // The tile of a key, the last one asked for remembered (so one thread at a time reads a SampleOwners): a
+  // strip's samples mostly share their tile.
+  std::uint32_t tile_of(std::uint64_t key) const {
+    if (key != last_key_) last_key_ = key, last_tile_ = tiles_.find(key);
+    return last_tile_;
+  }
+
   glm::ivec3 shift_, mask_;
   std::size_t cells_;
+  mutable std::uint64_t last_key_ = ~std::uint64_t{0};  // no tile's: pack_key uses 63 bits
+  mutable std::uint32_t last_tile_ = KeyTable::kAbsent;
   KeyTable tiles_;
   std::vector<std::uint32_t> owners_;
 };

@@ -41,7 +41,8 @@ class BoxCounts {
         at(x + 1, z + 1) = at(x, z + 1) + at(x + 1, z) - at(x, z) + (pred(spec.column(x, z)) ? 1 : 0);
     }
   }
-  int sum(glm::ivec2 lo, glm::ivec2 hi) const {  // inclusive; lo and hi inside the region filled
+  // Inlined everywhere: the search calls it from a loop GCC otherwise leaves it outside of (a call per box).
+  [[gnu::always_inline]] int sum(glm::ivec2 lo, glm::ivec2 hi) const {  // inclusive; lo and hi inside the region filled
     return at(hi.x + 1, hi.y + 1) - at(lo.x, hi.y + 1) - at(hi.x + 1, lo.y) + at(lo.x, lo.y);
   }
 

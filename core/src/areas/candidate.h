@@ -32,17 +32,17 @@ class PackedCandidate {
   static constexpr std::int32_t kSquare = -1;  // as side: a wall's height is never negative
   PackedCandidate(glm::ivec3 p1, int dx, int dz, int side) : x_(p1.x), y_(p1.y), z_(p1.z), dx_(dx), dz_(dz), side_(side) {}
 
-  Candidate unpack() const {
-    // Component by component: built from whole vectors, the corners went through the stack as 32-bit stores
-    // read back 64 bits at a time, a store-forwarding stall on every rectangle packing reads.
+  // Corner k (0 to 3) of unpack(), without the others. Component by component: built from whole vectors, the
+  // corners went through the stack as 32-bit stores read back 64 bits at a time, a store-forwarding stall on
+  // every rectangle packing reads.
+  glm::ivec3 corner(std::size_t k) const {
     const glm::ivec3 s = side();
+    const bool second = k == 1 || k == 2, sided = k >= 2;
+    return {x_ + (second ? dx_ : 0) + (sided ? s.x : 0), y_ + (sided ? s.y : 0), z_ + (second ? dz_ : 0) + (sided ? s.z : 0)};
+  }
+  Candidate unpack() const {
     Candidate c;
-    for (std::size_t k = 0; k < 4; ++k) {
-      const bool second = k == 1 || k == 2, sided = k >= 2;
-      c.corners[k].x = x_ + (second ? dx_ : 0) + (sided ? s.x : 0);
-      c.corners[k].y = y_ + (sided ? s.y : 0);
-      c.corners[k].z = z_ + (second ? dz_ : 0) + (sided ? s.z : 0);
-    }
+    for (std::size_t k = 0; k < 4; ++k) c.corners[k] = corner(k);
     return c;
   }
   // corner_sum(unpack()), without the corners: 4 p1 + 2 (p2 - p1) + 2 side.

@@ -17,6 +17,7 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 
 namespace roomsense::detail {
 namespace {
@@ -62,11 +63,18 @@ bool wall_samples(const PackedCandidate& wall, const WallLine& line, int layer, 
 struct AxisBox {
   int lo_x, hi_x, lo_z, hi_z;
 };
-std::optional<AxisBox> axis_box(const Candidate& c) {
-  const glm::ivec3 e = c.corners[1] - c.corners[0];
+// For a Candidate or a PackedCandidate (its corners computed as needed, not unpacked into memory).
+template <class Square>
+std::optional<AxisBox> axis_box(const Square& square) {
+  const auto corner = [&](std::size_t k) {
+    if constexpr (std::is_same_v<Square, Candidate>) return square.corners[k];
+    else return square.corner(k);
+  };
+  const glm::ivec3 first = corner(0), e = corner(1) - first;
   if (e.x != 0 && e.z != 0) return std::nullopt;
-  AxisBox b{c.corners[0].x, c.corners[0].x, c.corners[0].z, c.corners[0].z};
-  for (const glm::ivec3& k : c.corners) {
+  AxisBox b{first.x, first.x, first.z, first.z};
+  for (std::size_t i = 1; i < 4; ++i) {
+    const glm::ivec3 k = corner(i);
     b.lo_x = std::min(b.lo_x, k.x), b.hi_x = std::max(b.hi_x, k.x);
     b.lo_z = std::min(b.lo_z, k.z), b.hi_z = std::max(b.hi_z, k.z);
   }
@@ -133,11 +141,11 @@ bool square_samples(const Candidate& c, F f) {
 // The sample cell holding a square's middle, where it is one of the square's samples. Off the grid's axes it
 // always is: an edge of integer steps along both axes is at least sqrt(2) voxels long, so the middle lies at
 // least 0.7 voxels inside every edge, and its cell's centre at most 0.36 voxels from it.
-std::optional<std::array<long, 2>> middle_sample(const Candidate& c) {
+std::optional<std::array<long, 2>> middle_sample(const PackedCandidate& c) {
   // Corners are voxel indices and voxel centres lie at index + 1/2: the middle lies at sum / 4 + 1/2 voxels, in
-  // half-voxel cell floor(sum / 2) + 1.
-  const glm::ivec3 sum = corner_sum(c);
-  const std::array<long, 2> s{floor_int(double(sum.x) * 0.5) + 1L, floor_int(double(sum.z) * 0.5) + 1L};
+  // half-voxel cell floor(sum / 2) + 1 (an arithmetic shift floors).
+  const glm::ivec3 sum = c.corner_sum();
+  const std::array<long, 2> s{long(sum.x >> 1) + 1L, long(sum.z >> 1) + 1L};
   const std::optional<AxisBox> b = axis_box(c);
   if (b && !(b->hi_x > b->lo_x && s[0] >= 2L * b->lo_x + 1 && s[0] <= 2L * b->hi_x && s[1] >= 2L * b->lo_z + 1 &&
              s[1] <= 2L * b->hi_z))
@@ -455,10 +463,10 @@ bool SquarePacker::free(const Candidate& c) const {
   });
 }
 // Whether the sample at c's middle is taken at a level within the tolerance: then c is not free.
-bool SquarePacker::middle_taken(const Candidate& c) const {
+bool SquarePacker::middle_taken(const PackedCandidate& c) const {
   const std::optional<std::array<long, 2>> s = middle_sample(c);
   if (!s) return false;
-  const int level = c.corners[0].y;
+  const int level = c.first().y;
   for (int y = level - level_tolerance_; y <= level + level_tolerance_; ++y)
     if (taken_->test(y, (*s)[1], (*s)[0])) return true;
   return false;
@@ -485,8 +493,9 @@ std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
     open.clear();
     for (std::size_t k = 0; k < step.size(); ++k) {
       if (k % kStopEvery == 0) stop_point(stop_);
-      const Candidate c = squares[step[k]].unpack();
-      if (!middle_taken(c)) open.emplace_back(std::min(std::uint32_t(contact(c)), kContactMask), step[k]);
+      const PackedCandidate square = squares[step[k]];
+      if (!middle_taken(square))
+        open.emplace_back(std::min(std::uint32_t(contact(square.unpack())), kContactMask), step[k]);
     }
     step = {};
     // Contact descending, then search order.

@@ -152,7 +152,7 @@ class SquarePacker {
   int contact(const Candidate& c) const;
   int misalignment_step(const Candidate& c);
   bool free(const Candidate& c) const;
-  bool middle_taken(const Candidate& c) const;
+  bool middle_taken(const PackedCandidate& c) const;
   void take(const Candidate& c);
   std::vector<std::size_t> pack_fresh(const Candidates& squares);
 

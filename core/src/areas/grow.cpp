@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace roomsense::detail {
@@ -98,16 +99,36 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
     if (!grows[k]) continue;
     Extent& e = extents[k];
     // The whole area keeps the search's fill; a strip may hold less, so that a speck the scan missed does not
-    // stop an edge.
-    int area_usable = 0, area_total = 0;
-    for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
-      for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j, ++area_total)
-        area_usable += rule.cell_at(e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h), areas[k]) ==
-                       SurfaceCell::Usable;
+    // stop an edge. The area's own samples are counted once a strip passes its own tests (many an area's edges
+    // all stop at once).
+    int area_usable = 0, area_total = -1;
+    const auto count_area = [&] {
+      area_total = 0;
+      for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
+        for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j, ++area_total)
+          area_usable += rule.cell_at(e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h), areas[k]) ==
+                         SurfaceCell::Usable;
+    };
+    // An edge refused for a Forbidden or another area's sample stays refused while its strip starts where it
+    // did: the strip's first samples are then computed from the same numbers, cells do not change, and other
+    // areas' samples do not while this one grows. Growth stops at a room's corners and tops: most tests
+    // after the first of such an edge were of this kind.
+    struct Refusal {
+      bool known = false;
+      float line = 0.0f, start = 0.0f;  // the edge's own coordinate and its strip's first
+      int sample = 0;                   // the sample that refused it
+    };
+    std::array<Refusal, 4> refusals{};
     for (bool moved = true; moved; stop_point(stop)) {
       moved = false;
       for (int edge = 0; edge < 4; ++edge) {
         if ((edge % 2 == 0 ? e.v1 - e.v0 : e.u1 - e.u0) + h > rule.max_length) continue;
+        const float line = edge == 0 ? e.v0 : edge == 1 ? e.u1 : edge == 2 ? e.v1 : e.u0;
+        const float start = edge % 2 == 0 ? e.u0 : e.v0;
+        const Refusal& before = refusals[std::size_t(edge)];
+        if (before.known && before.line == line && before.start == start &&
+            before.sample < sample_count(edge % 2 == 0 ? e.u1 - e.u0 : e.v1 - e.v0, h))
+          continue;
         int usable = 0, total = 0;
         bool refused = false;
         const glm::vec3 outward = edge == 0 ? -e.y : edge == 1 ? e.x : edge == 2 ? e.y : -e.x;
@@ -119,9 +140,10 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
           usable += cell == SurfaceCell::Usable ? 1 : 0;
           ++total;
         });
-        if (refused || total == 0 || double(usable) < double(rule.strip_fill) * double(total) ||
-            double(area_usable + usable) < double(rule.fill) * double(area_total + total))
-          continue;
+        if (refused) refusals[std::size_t(edge)] = {true, line, start, total - 1};
+        if (refused || total == 0 || double(usable) < double(rule.strip_fill) * double(total)) continue;
+        if (area_total < 0) count_area();
+        if (double(area_usable + usable) < double(rule.fill) * double(area_total + total)) continue;
         area_usable += usable;
         area_total += total;
         strip_samples(e, edge, h, [&](float u, float v) { mark(k, e.at(u, v)); });

@@ -52,7 +52,6 @@ class PackedCandidate {
   glm::ivec3 side() const { return side_ == kSquare ? glm::ivec3(-dz_, 0, dx_) : glm::ivec3(0, -side_, 0); }
 
  private:
-
   std::int32_t x_, y_, z_, dx_, dz_, side_;
 };
 

@@ -166,12 +166,12 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
                                                  std::to_string(i / 3) + " is out of range (" +
                                                  std::to_string(scan.vertices.size()) + " vertices)");
     // In slice order, as one pass would (min and max keep the first of equal values, ±0 included).
-    for (const detail::VertexRun& slice : slices)
-      if (!own.empty()) {
-        detail::VertexRun& all = own.front();
-        all.count += slice.count, all.finite += slice.finite;
-        all.lo = glm::min(all.lo, slice.lo), all.hi = glm::max(all.hi, slice.hi);
-      }
+    for (const detail::VertexRun& slice : slices) {
+      if (own.empty()) break;
+      detail::VertexRun& all = own.front();
+      all.count += slice.count, all.finite += slice.finite;
+      all.lo = glm::min(all.lo, slice.lo), all.hi = glm::max(all.hi, slice.hi);
+    }
   }
   const std::span<const detail::VertexRun> runs =
       own.empty() ? std::span<const detail::VertexRun>(known->runs) : std::span<const detail::VertexRun>(own);

@@ -16,7 +16,7 @@ namespace {
 
 // Not NaN or Inf: not every exponent bit set. Bit tests without branches, which summarize_vertices vectorizes.
 bool finite(float f) { return (std::bit_cast<std::uint32_t>(f) & 0x7f800000u) != 0x7f800000u; }
-bool finite(const glm::vec3& v) { return finite(v.x) & finite(v.y) & finite(v.z); }
+bool finite(const glm::vec3& v) { return int(finite(v.x)) + int(finite(v.y)) + int(finite(v.z)) == 3; }
 
 // The k-th value (from 0) of `v` in the order `before` (std::less: the k-th smallest; std::greater: the k-th
 // largest), as std::nth_element finds it. For a k near that end, a bound from every 8th value first: where more

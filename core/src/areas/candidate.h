@@ -47,7 +47,6 @@ class PackedCandidate {
   }
   // corner_sum(unpack()), without the corners: 4 p1 + 2 (p2 - p1) + 2 side.
   glm::ivec3 corner_sum() const { return 4 * glm::ivec3(x_, y_, z_) + 2 * glm::ivec3(dx_, 0, dz_) + 2 * side(); }
-  glm::ivec3 first() const { return {x_, y_, z_}; }  // corner 1
   // Corner 4 - corner 1: a wall's straight down, a square's at a right angle to its first edge in the plane.
   glm::ivec3 side() const { return side_ == kSquare ? glm::ivec3(-dz_, 0, dx_) : glm::ivec3(0, -side_, 0); }
 

@@ -44,13 +44,13 @@ WallLine wall_line(int dx, int dz) {
 // visited.
 template <class F>
 bool wall_samples(const PackedCandidate& wall, const WallLine& line, int layer, F f) {
-  const glm::ivec3 first = wall.first();
+  const glm::ivec3 first = wall.corner(0);
   const glm::dvec2 p1(first.x + 0.5, first.z + 0.5);
   if (line.length <= 0.0) return true;
   const glm::dvec2 dir = line.dir, normal(-dir.y, dir.x);
   // The samples up the wall, y_lo + 1/4, y_lo + 3/4, ... below y_hi (y = level + 1/2 at corners 3 and 1), are
   // the same run at every step along it: half-voxel cells 2 y3 + 1 to 2 y1.
-  const long sy0 = 2L * (first.y + wall.side().y) + 1, sy1 = 2L * first.y;
+  const long sy0 = 2L * wall.corner(2).y + 1, sy1 = 2L * first.y;
   if (sy1 < sy0) return true;
   for (double t = 0.5 * kSample; t < line.length; t += kSample) {
     const glm::dvec2 p = p1 + t * dir + double(layer) * normal;
@@ -312,13 +312,14 @@ std::vector<std::size_t> pack_walls(const SizedList& walls, const PackReplay* re
     for (const Candidates::Shape& shape : of_size.shapes()) lines.push_back(wall_line(shape.dx, shape.dz));
     for (std::size_t j = 0; j < of_size.size(); ++j, ++i) {
       const Candidates::Item& item = of_size.item(j);
-      const PackedCandidate wall = of_size.decode(item);  // its corners only for a replay
+      const PackedCandidate wall = of_size.decode(item);
       const WallLine& line = lines[item.shape];
-      const std::optional<bool> previous = replay ? previous_decision(replay, i, wall.unpack(), changed) : std::nullopt;
+      const std::optional<Candidate> corners = replay ? std::optional(wall.unpack()) : std::nullopt;  // a replay's
+      const std::optional<bool> previous = corners ? previous_decision(replay, i, *corners, changed) : std::nullopt;
       const bool free = previous ? *previous : wall_samples(wall, line, 0, [&](long x, long z, long y0, long y1) {
         return !taken.any(x, z, y0, y1);
       });
-      if (replay && !previous) note_decision(replay, i, wall.unpack(), free, changed);
+      if (corners && !previous) note_decision(replay, i, *corners, free, changed);
       if (!free) continue;
       // Marked a voxel thick either side: a rectangle one voxel in front of another on a wall off the axes
       // (the staircase of its voxels) covers the same wall.
@@ -466,7 +467,7 @@ bool SquarePacker::free(const Candidate& c) const {
 bool SquarePacker::middle_taken(const PackedCandidate& c) const {
   const std::optional<std::array<long, 2>> s = middle_sample(c);
   if (!s) return false;
-  const int level = c.first().y;
+  const int level = c.corner(0).y;
   for (int y = level - level_tolerance_; y <= level + level_tolerance_; ++y)
     if (taken_->test(y, (*s)[1], (*s)[0])) return true;
   return false;

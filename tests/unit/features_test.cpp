@@ -7,7 +7,9 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <tuple>
 
 namespace roomsense {
 namespace {
@@ -207,6 +209,70 @@ TEST(WallNormals, PointIntoTheRoom) {
         }
     EXPECT_GT(marked, 100u) << spec.name;
   }
+}
+
+// Alg. 1 as the thesis writes it, level by level and step by step: the reference the detector's bit-parallel
+// runs must equal.
+std::vector<std::uint8_t> wall_normals_by_levels(const VoxelGrid& grid, const FloorCeiling& levels,
+                                                 const std::vector<int>& ceiling, int reach,
+                                                 const std::vector<std::uint8_t>& walls,
+                                                 const std::vector<std::uint8_t>& room, const std::vector<int>& furniture) {
+  const GridSpec& s = grid.spec;
+  std::vector<std::uint8_t> normals(s.voxel_count(), 0);
+  const auto free_at = [&](int x, int y, int z) {
+    if (!s.contains(x, 0, z)) return false;
+    const std::size_t col = s.column(x, z);
+    return !walls[col] && !grid.at(x, y, z) && room[col] && furniture[col] < y &&
+           (ceiling[col] >= levels.ceiling || y < ceiling[col]);
+  };
+  const auto ends_room = [&](int x, int z) { return !s.contains(x, 0, z) || walls[s.column(x, z)] || !room[s.column(x, z)]; };
+  const auto clear_run = [&](int x, int y, int z, int dx, int dz) {
+    for (int i = 1; i <= reach; ++i)
+      if (!free_at(x + i * dx, y, z + i * dz)) return 2 * (i - 1) >= reach && ends_room(x + i * dx, z + i * dz);
+    return true;
+  };
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) {
+      if (!walls[s.column(x, z)]) continue;
+      for (auto [dx, dz, bit] : {std::tuple{-1, 0, kNormalLeft}, std::tuple{1, 0, kNormalRight},
+                                 std::tuple{0, -1, kNormalBackward}, std::tuple{0, 1, kNormalForward}})
+        for (int y = levels.floor; y <= levels.ceiling; ++y)
+          if (s.contains(x + dx, 0, z + dz) && clear_run(x, y, z, dx, dz)) normals[s.index(x + dx, y, z + dz)] |= bit;
+    }
+  return normals;
+}
+
+TEST(WallNormals, EqualAlgorithmOneLevelByLevel) {
+  // Random walls, room, voxels, furniture tops and column ceilings, with level spans under, at and over 64 (the
+  // detector's word) and reaches from none to past the grid.
+  std::mt19937 random(19);
+  std::size_t marked = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    GridSpec s;
+    s.nx = 6 + int(random() % 30), s.ny = 8 + int(random() % 150), s.nz = 6 + int(random() % 30);
+    s.voxel_size = 0.05f;
+    VoxelGrid grid(s);
+    for (std::uint8_t& c : grid.cells) c = random() % 9 == 0;
+    FloorCeiling levels;
+    levels.floor = int(random() % 4);
+    levels.ceiling = trial % 3 == 0 ? levels.floor + 63 + int(random() % 3) : levels.floor + int(random() % std::uint32_t(s.ny - levels.floor));
+    levels.ceiling = std::min(levels.ceiling, s.ny - 1);
+    std::vector<std::uint8_t> walls(s.column_count()), room(s.column_count());
+    std::vector<int> ceiling(s.column_count()), furniture(s.column_count());
+    for (std::size_t c = 0; c < walls.size(); ++c) {
+      walls[c] = random() % 4 == 0;
+      room[c] = random() % 8 != 0;
+      ceiling[c] = random() % 3 == 0 ? levels.floor + int(random() % std::uint32_t(s.ny)) : levels.ceiling;
+      furniture[c] = random() % 3 == 0 ? levels.floor + int(random() % std::uint32_t(levels.ceiling - levels.floor + 1)) : kNoFurniture;
+    }
+    const int reach = trial % 10 == 0 ? 0 : 1 + int(random() % 40);
+    const std::vector<std::uint8_t> expected = wall_normals_by_levels(grid, levels, ceiling, reach, walls, room, furniture);
+    ASSERT_EQ(detect_wall_normals(grid, levels, ceiling, reach, walls, room, furniture), expected)
+        << "trial " << trial << ", " << s.nx << " x " << s.ny << " x " << s.nz << ", levels " << levels.floor << ".."
+        << levels.ceiling << ", reach " << reach;
+    marked += std::size_t(std::count_if(expected.begin(), expected.end(), [](std::uint8_t n) { return n != 0; }));
+  }
+  EXPECT_GT(marked, 1000u);  // the runs do end clear, both ways
 }
 
 TEST(WallOpenings, DoorsAreGapsOfAtMostTheOpeningBetweenWallColumnsOpenDownToTheFloor) {

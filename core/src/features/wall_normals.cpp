@@ -1,7 +1,61 @@
 // Wall normals F (Alg. 1).
 #include "roomsense/features.h"
 
+#include <algorithm>
+#include <bit>
+#include <memory>
+
 namespace roomsense {
+namespace {
+
+// The levels I_Floor..I_Ceiling of the columns a wall's runs step through, as bits (`words` 64-bit words per
+// column): Alg. 1 tests each level of a run on its own, step by step; one pass over a column's levels serves every
+// run through it, and the runs of a wall column's levels step together.
+class FreeLevels {
+ public:
+  FreeLevels(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<int>& ceiling,
+             const std::vector<std::uint8_t>& walls, const std::vector<std::uint8_t>& room,
+             const std::vector<int>& furniture)
+      : grid_(grid), levels_(levels), ceiling_(ceiling), walls_(walls), room_(room), furniture_(furniture),
+        count_(levels.ceiling - levels.floor + 1),
+        words_(std::size_t(count_ + 63) / 64),
+        masks_(std::make_unique_for_overwrite<std::uint64_t[]>(grid.spec.column_count() * words_)),
+        known_(grid.spec.column_count(), 0) {}
+
+  std::size_t words() const { return words_; }
+  // Bit j of column `col` is set where level I_Floor + j is free: no wall, no voxel, in the room, and above the
+  // furniture top; beyond the thesis, below the column's own ceiling (a wall ends at a roof's slope or a soffit's
+  // underside).
+  const std::uint64_t* at(std::size_t col) {
+    std::uint64_t* mask = masks_.get() + col * words_;
+    if (known_[col]) return mask;
+    known_[col] = 1;
+    std::fill(mask, mask + words_, std::uint64_t{0});
+    if (walls_[col] || !room_[col]) return mask;
+    const int from = std::max(levels_.floor, furniture_[col] + 1);
+    const int to = ceiling_[col] >= levels_.ceiling ? levels_.ceiling : std::min(levels_.ceiling, ceiling_[col] - 1);
+    const std::uint8_t* cells = grid_.cells.data() + col * std::size_t(grid_.spec.ny);
+    for (int y = from; y <= to; ++y) {
+      const auto j = std::size_t(y - levels_.floor);
+      mask[j / 64] |= std::uint64_t{cells[y] == 0} << (j % 64);
+    }
+    return mask;
+  }
+
+ private:
+  const VoxelGrid& grid_;
+  const FloorCeiling& levels_;
+  const std::vector<int>& ceiling_;
+  const std::vector<std::uint8_t>& walls_;
+  const std::vector<std::uint8_t>& room_;
+  const std::vector<int>& furniture_;
+  int count_;
+  std::size_t words_;
+  std::unique_ptr<std::uint64_t[]> masks_;  // a column's words are written when it is first asked for
+  std::vector<std::uint8_t> known_;
+};
+
+}  // namespace
 
 std::vector<std::uint8_t> detect_wall_normals(const VoxelGrid& grid, const FloorCeiling& levels,
                                               const std::vector<int>& ceiling, int reach,
@@ -10,41 +64,58 @@ std::vector<std::uint8_t> detect_wall_normals(const VoxelGrid& grid, const Floor
                                               const std::vector<int>& furniture) {
   const GridSpec& s = grid.spec;
   std::vector<std::uint8_t> normals(s.voxel_count(), 0);
-  // A step (x, z) is free at level y when it is inside the grid, no wall, no voxel, in the room, and not at
-  // or below a furniture top; beyond the thesis, below the column's own ceiling (a wall ends at a roof's slope
-  // or a soffit's underside). Alg. 1 lets the Left/Backward scans silently skip indices below 0; we treat
-  // leaving the grid as blocked on every side, since outside the grid is outside the room (b = 0) anyway.
-  const auto free_at = [&](int x, int y, int z) {
-    if (x < 0 || z < 0 || x >= s.nx || z >= s.nz) return false;
-    const std::size_t col = s.column(x, z);
-    return !walls[col] && !grid.at(x, y, z) && room[col] && furniture[col] < y &&
-           (ceiling[col] >= levels.ceiling || y < ceiling[col]);
-  };
+  if (levels.ceiling < levels.floor) return normals;
+  // A step (x, z) is free at level y when it is inside the grid and its FreeLevels bit is set. Alg. 1 lets the
+  // Left/Backward scans silently skip indices below 0; we treat leaving the grid as blocked on every side, since
+  // outside the grid is outside the room (b = 0) anyway.
+  FreeLevels free(grid, levels, ceiling, walls, room, furniture);
+  const std::size_t words = free.words();
   // Beyond the thesis: a run of half the reach that ends at a wall, or where the room ends, is clear too: an
   // alcove or a corridor narrower than the reach still has walls to hang things on. A run that ends at a voxel
   // (furniture, clutter) is not.
-  const auto ends_room = [&](int x, int z) {
-    if (x < 0 || z < 0 || x >= s.nx || z >= s.nz) return true;
-    const std::size_t col = s.column(x, z);
-    return walls[col] || !room[col];
-  };
-  const auto clear_run = [&](int x, int y, int z, int dx, int dz) {
-    for (int i = 1; i <= reach; ++i)
-      if (!free_at(x + i * dx, y, z + i * dz)) return 2 * (i - 1) >= reach && ends_room(x + i * dx, z + i * dz);
-    return true;
-  };
+  const auto ends_room = [&](std::size_t col) { return walls[col] || !room[col]; };
   struct Direction {
     int dx, dz;
     std::uint8_t bit;
   };
   constexpr Direction kDirections[] = {
       {-1, 0, kNormalLeft}, {1, 0, kNormalRight}, {0, -1, kNormalBackward}, {0, 1, kNormalForward}};
+  const int count = levels.ceiling - levels.floor + 1;
+  std::vector<std::uint64_t> running(words), clear(words);
   for (int z = 0; z < s.nz; ++z)
     for (int x = 0; x < s.nx; ++x) {
       if (!walls[s.column(x, z)]) continue;
-      for (int y = levels.floor; y <= levels.ceiling; ++y)
-        for (const Direction& d : kDirections)
-          if (clear_run(x, y, z, d.dx, d.dz)) normals[s.index(x + d.dx, y, z + d.dz)] |= d.bit;
+      for (const Direction& d : kDirections) {
+        if (!s.contains(x + d.dx, 0, z + d.dz)) continue;  // the run's first step leaves the grid: never clear
+        // Per level: whether its run is still free (`running`), and whether it ended clear (`clear`).
+        for (std::size_t w = 0; w < words; ++w)
+          running[w] = w + 1 < words || count % 64 == 0 ? ~std::uint64_t{0} : (std::uint64_t{1} << (count % 64)) - 1;
+        std::fill(clear.begin(), clear.end(), std::uint64_t{0});
+        bool any = true;
+        for (int i = 1; i <= reach && any; ++i) {
+          const int xi = x + i * d.dx, zi = z + i * d.dz;
+          const bool half_run = 2 * (i - 1) >= reach;
+          if (!s.contains(xi, 0, zi)) {
+            if (half_run)
+              for (std::size_t w = 0; w < words; ++w) clear[w] |= running[w];
+            std::fill(running.begin(), running.end(), std::uint64_t{0});
+            break;
+          }
+          const std::size_t col = s.column(xi, zi);
+          const std::uint64_t* step = free.at(col);
+          const bool ends = half_run && ends_room(col);
+          any = false;
+          for (std::size_t w = 0; w < words; ++w) {
+            if (ends) clear[w] |= running[w] & ~step[w];
+            running[w] &= step[w];
+            any = any || running[w] != 0;
+          }
+        }
+        std::uint8_t* column = normals.data() + s.index(x + d.dx, levels.floor, z + d.dz);
+        for (std::size_t w = 0; w < words; ++w)
+          for (std::uint64_t bits = clear[w] | running[w]; bits != 0; bits &= bits - 1)
+            column[w * 64 + std::size_t(std::countr_zero(bits))] |= d.bit;
+      }
     }
   return normals;
 }

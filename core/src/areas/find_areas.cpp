@@ -196,9 +196,13 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       areas = *same;
       return;
     }
-    std::vector<Area> before = cache ? areas : std::vector<Area>();
-    grow_areas(areas, growth_rule(spec, features, params, type), params, stop);
-    if (cache) cache->keep_grown(type, std::move(before), areas, params);
+    if (!cache) {
+      grow_areas(areas, growth_rule(spec, features, params, type), params, stop);
+      return;
+    }
+    GrowthRecord record;
+    grow_areas(areas, growth_rule(spec, features, params, type), params, stop, cache->growth_replay(type, params), &record);
+    cache->keep_grown(type, std::move(record), params);
   };
   // Walls: V_Wall and the room's main direction, which the square searches try first (reduce.h), and beside
   // them packing; the candidates (along the room's surface, not over its floor: few) go once both are done.

@@ -3,6 +3,8 @@
 
 #include "../floor_int.h"
 #include "candidate.h"
+#include "key_table.h"
+#include "reduce.h"
 #include "sample_owners.h"
 #include "roomsense/cancel.h"
 
@@ -10,7 +12,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <optional>
 
 namespace roomsense::detail {
 namespace {
@@ -62,10 +66,81 @@ void set_size(Area& a, const AreaParams& params) {
   }
 }
 
+// Bit for bit, so that a -0 is not taken for a 0.
+bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
+bool same_bits(const glm::vec3& a, const glm::vec3& b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
+
+// A key of an area's corners' bits, for finding it among another growth's (same_bits decides).
+std::uint64_t corner_hash(const Area& a) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (const glm::vec3& c : a.corners)
+    for (int axis = 0; axis < 3; ++axis) h = (h ^ std::bit_cast<std::uint32_t>(c[axis])) * 0x100000001b3ull;
+  return h >> 1;  // KeyTable's keys have 63 bits
+}
+
+constexpr std::uint32_t kNew = ~std::uint32_t{0};
+
+// Each of `areas`' index among `previous`, where an area of the same bits is there after the one the area before
+// it has (kNew otherwise): the matched areas keep their order, so that any sample cell two of them share has the
+// same first owner (SampleOwners) in both growths. Of equal areas, the first is matched.
+std::vector<std::uint32_t> match_previous(std::span<const Area> areas, const std::vector<Area>& previous) {
+  KeyTable where;
+  where.reserve(previous.size());
+  const auto probe = [](std::uint64_t key) { return (key + 1) & (~std::uint64_t{0} >> 1); };
+  for (std::uint32_t j = 0; j < previous.size(); ++j)
+    for (std::uint64_t key = corner_hash(previous[j]);; key = probe(key)) {
+      const std::uint32_t other = where.find(key);
+      if (other == KeyTable::kAbsent) {
+        where.insert(key, j);
+        break;
+      }
+      if (detail::same_bits(previous[other], previous[j])) break;
+    }
+  std::vector<std::uint32_t> matched(areas.size(), kNew);
+  std::int64_t last = -1;
+  for (std::size_t k = 0; k < areas.size(); ++k)
+    for (std::uint64_t key = corner_hash(areas[k]);; key = probe(key)) {
+      const std::uint32_t j = where.find(key);
+      if (j == KeyTable::kAbsent) break;
+      if (!detail::same_bits(previous[j], areas[k])) continue;
+      if (std::int64_t(j) > last) matched[k] = j, last = j;
+      break;
+    }
+  return matched;
+}
+
+// The grid columns under an area's corners, `margin` more each way (the whole grid for corners not finite).
+ChangedRegion::Box columns_under(const Area& a, const GridSpec& spec, int margin) {
+  glm::vec2 lo(INFINITY), hi(-INFINITY);
+  for (const glm::vec3& c : a.corners) {
+    const glm::vec2 v = glm::vec2(c.x - spec.origin.x, c.z - spec.origin.z) / spec.voxel_size;
+    lo = glm::min(lo, v), hi = glm::max(hi, v);
+  }
+  if (!(std::isfinite(lo.x) && std::isfinite(lo.y) && std::isfinite(hi.x) && std::isfinite(hi.y)))
+    return {glm::ivec2(0), glm::ivec2(spec.nx - 1, spec.nz - 1)};
+  const auto column = [&](glm::vec2 v) {  // clamped near the grid: ChangedRegion clamps to it
+    return glm::ivec2(glm::floor(glm::clamp(v, glm::vec2(-4.0f), glm::vec2(float(spec.nx) + 4.0f, float(spec.nz) + 4.0f))));
+  };
+  return {column(lo) - margin, column(hi) + margin};
+}
+
 }  // namespace
 
-void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams& params, const std::stop_token& stop) {
+bool same_bits(const Area& a, const Area& b) {
+  // Every field: a field added to Area changes its size and must be compared here.
+  static_assert(sizeof(Area) == 4 + 4 * 12 + 2 * 12 + 4 * 4 + 3 * 4);
+  for (std::size_t i = 0; i < 4; ++i)
+    if (!same_bits(a.corners[i], b.corners[i])) return false;
+  return a.type == b.type && a.size == b.size && a.reach == b.reach && same_bits(a.center, b.center) &&
+         same_bits(a.normal, b.normal) && same_bits(a.half_width, b.half_width) &&
+         same_bits(a.half_height, b.half_height) && same_bits(a.rotation_deg, b.rotation_deg) &&
+         same_bits(a.volume_height, b.volume_height) && a.flags == b.flags && a.storey == b.storey && a.room == b.room;
+}
+
+void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams& params, const std::stop_token& stop,
+                const GrowthReplay& replay, GrowthRecord* record) {
   const float h = rule.step;
+  if (record) *record = {std::vector<Area>(areas.begin(), areas.end()), {}, {}, {}};
   std::vector<Extent> extents;
   extents.reserve(areas.size());
   std::vector<bool> grows;  // rectangles of no width (a small wall at very coarse voxels) stay as they are
@@ -95,9 +170,9 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
     return false;
   };
 
-  for (std::uint32_t k = 0; k < extents.size(); ++k) {
-    if (!grows[k]) continue;
-    Extent& e = extents[k];
+  // An area's growth: moves its edges by `move` (an edge one step out) while they may.
+  const auto grow_one = [&](std::uint32_t k, const auto& move) {
+    const Extent& e = extents[k];
     // The whole area keeps the search's fill; a strip may hold less, so that a speck the scan missed does not
     // stop an edge. The area's own samples are counted once a strip passes its own tests (many an area's edges
     // all stop at once).
@@ -146,19 +221,77 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
         if (double(area_usable + usable) < double(rule.fill) * double(area_total + total)) continue;
         area_usable += usable;
         area_total += total;
-        strip_samples(e, edge, h, [&](float u, float v) { mark(k, e.at(u, v)); });
-        (edge == 0 ? e.v0 : edge == 1 ? e.u1 : edge == 2 ? e.v1 : e.u0) += (edge == 0 || edge == 3 ? -h : h);
+        move(edge);
         moved = true;
       }
     }
-    Area& a = areas[k];
-    a.corners = {e.at(e.u0, e.v0), e.at(e.u1, e.v0), e.at(e.u1, e.v1), e.at(e.u0, e.v1)};
-    a.center = e.at(0.5f * (e.u0 + e.u1), 0.5f * (e.v0 + e.v1));
-    a.half_width = 0.5f * (e.u1 - e.u0);
-    a.half_height = 0.5f * (e.v1 - e.v0);
-    set_size(a, params);
-    a.flags = category_flags(a.type, a.size, a.reach);
+  };
+
+  // Replay (issue 19): what an area reads while it grows lies within a few columns of where it ends (its last
+  // strips tested, the lookahead, the conflict depths, half a voxel to a wall's voxel, a sample cell across a
+  // column border). An area the previous growth grew, nothing within that of whose end there changed, moves
+  // as it did there: the same cells answer, and the same areas own the same samples. `changed` gathers the
+  // feature columns that changed, the areas new or gone, and the areas that moved otherwise than there.
+  constexpr int kReadMargin = 4;
+  const GrowthRecord* previous = replay.previous;
+  std::vector<std::uint32_t> previous_of;
+  std::optional<ChangedRegion> changed;
+  if (previous) {
+    const GridSpec& spec = *replay.spec;
+    previous_of = match_previous(areas, previous->before);
+    changed.emplace(ChangedRegion::Box{glm::ivec2(0), glm::ivec2(spec.nx - 1, spec.nz - 1)});
+    for (std::size_t z = 0; z < replay.changed_rows.size(); ++z)
+      if (const glm::ivec2 span = replay.changed_rows[z]; span.x <= span.y)
+        changed->add({glm::ivec2(span.x, int(z)), glm::ivec2(span.y, int(z))});
+    std::vector<std::uint8_t> kept(previous->before.size(), 0);
+    for (std::size_t k = 0; k < areas.size(); ++k) {
+      if (previous_of[k] != kNew) kept[previous_of[k]] = 1;
+      else changed->add(columns_under(areas[k], spec, 0));
+    }
+    for (std::size_t j = 0; j < kept.size(); ++j)
+      if (!kept[j]) changed->add(columns_under(previous->after[j], spec, 0));
   }
+  const auto previous_moves = [&](std::uint32_t j) {
+    const std::uint32_t begin = j == 0 ? 0 : previous->moves_end[j - 1];
+    return std::span<const std::uint8_t>(previous->moves.data() + begin, previous->moves_end[j] - begin);
+  };
+
+  std::vector<std::uint8_t> moves;  // the current area's, in order
+  for (std::uint32_t k = 0; k < extents.size(); ++k) {
+    Extent& e = extents[k];
+    moves.clear();
+    const auto move = [&](int edge) {  // the strip beyond `edge` becomes the area's
+      strip_samples(e, edge, h, [&](float u, float v) { mark(k, e.at(u, v)); });
+      (edge == 0 ? e.v0 : edge == 1 ? e.u1 : edge == 2 ? e.v1 : e.u0) += (edge == 0 || edge == 3 ? -h : h);
+      moves.push_back(std::uint8_t(edge));
+    };
+    const std::uint32_t was = previous ? previous_of[k] : kNew;
+    const bool replayed =
+        was != kNew && !changed->touches(columns_under(previous->after[was], *replay.spec, kReadMargin));
+    if (replayed) {
+      for (const std::uint8_t edge : previous_moves(was)) move(edge);
+    } else if (grows[k]) {
+      grow_one(k, move);
+    }
+    if (grows[k]) {  // its corners from its extent, moved or not
+      Area& a = areas[k];
+      a.corners = {e.at(e.u0, e.v0), e.at(e.u1, e.v0), e.at(e.u1, e.v1), e.at(e.u0, e.v1)};
+      a.center = e.at(0.5f * (e.u0 + e.u1), 0.5f * (e.v0 + e.v1));
+      a.half_width = 0.5f * (e.u1 - e.u0);
+      a.half_height = 0.5f * (e.v1 - e.v0);
+      set_size(a, params);
+      a.flags = category_flags(a.type, a.size, a.reach);
+    }
+    if (changed && !replayed && (was == kNew || !std::ranges::equal(moves, previous_moves(was)))) {
+      if (was != kNew) changed->add(columns_under(previous->after[was], *replay.spec, 0));
+      changed->add(columns_under(areas[k], *replay.spec, 0));
+    }
+    if (record) {
+      record->moves.insert(record->moves.end(), moves.begin(), moves.end());
+      record->moves_end.push_back(std::uint32_t(record->moves.size()));
+    }
+  }
+  if (record) record->after.assign(areas.begin(), areas.end());
 }
 
 }  // namespace roomsense::detail

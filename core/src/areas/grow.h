@@ -3,9 +3,11 @@
 #include "roomsense/areas.h"
 #include "roomsense/features.h"
 
+#include <cstdint>
 #include <functional>
 #include <span>
 #include <stop_token>
+#include <vector>
 
 namespace roomsense::detail {
 
@@ -32,12 +34,34 @@ struct GrowthRule {
   std::function<SurfaceCell(const glm::vec3& world, const Area& area)> cell_at;  // a point of the area's plane
 };
 
+// One growth, for the next analysis's (issue 19): its areas before and after, and the edges each one moved, in
+// order.
+struct GrowthRecord {
+  std::vector<Area> before, after;
+  std::vector<std::uint8_t> moves;       // edges (0 bottom, 1 right, 2 top, 3 left), area by area
+  std::vector<std::uint32_t> moves_end;  // per area: where its moves end
+};
+
+// What a growth may take from the previous analysis's (same rule and parameters): its record, and per grid row z
+// the span of columns (x to y; none where x > y) whose features the rule reads changed since.
+struct GrowthReplay {
+  const GrowthRecord* previous = nullptr;  // none: every area grows
+  const GridSpec* spec = nullptr;
+  std::span<const glm::ivec2> changed_rows;
+};
+
 // Packing places whole squares of three fixed sizes, so strips narrower than the smallest size, and the
 // margins between sizes, stay empty. Each area, in order (largest first), moves its four edges outward one
 // step at a time, in turn, while the new strip is surface the search would accept (`strip_fill` of it Usable,
 // `fill` of the whole area, nothing Forbidden) and no other area's. The area stays a rectangle on its own axes; its size class becomes the
 // largest whose width (and height, for walls) it now holds, so an app asking for a class gets at least that.
+// An area that `replay`'s previous growth grew too (the same bits, in the same order among those) moves its
+// edges as it did there where nothing it read there changed: no feature column, and no other area's samples
+// (another area new, gone or grown otherwise). `record`, where given, receives this growth's record.
 void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams& params,
-                const std::stop_token& stop = {});
+                const std::stop_token& stop = {}, const GrowthReplay& replay = {}, GrowthRecord* record = nullptr);
+
+// Bit for bit, every field (so that a -0 is not taken for a 0).
+bool same_bits(const Area& a, const Area& b);
 
 }  // namespace roomsense::detail

@@ -95,36 +95,24 @@ void SearchCache::keep_type(std::size_t type, TypeReduction reduction, const Are
   types_[type] = {generation_, std::move(reduction), params};
 }
 
-namespace {
-
-// Bit for bit, so that a -0 is not taken for a 0.
-bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
-bool same_bits(const glm::vec3& a, const glm::vec3& b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
-bool same_bits(const Area& a, const Area& b) {
-  // Every field: a field added to Area changes its size and must be compared here.
-  static_assert(sizeof(Area) == 4 + 4 * 12 + 2 * 12 + 4 * 4 + 3 * 4);
-  for (std::size_t i = 0; i < 4; ++i)
-    if (!same_bits(a.corners[i], b.corners[i])) return false;
-  return a.type == b.type && a.size == b.size && a.reach == b.reach && same_bits(a.center, b.center) &&
-         same_bits(a.normal, b.normal) && same_bits(a.half_width, b.half_width) &&
-         same_bits(a.half_height, b.half_height) && same_bits(a.rotation_deg, b.rotation_deg) &&
-         same_bits(a.volume_height, b.volume_height) && a.flags == b.flags && a.storey == b.storey && a.room == b.room;
-}
-
-}  // namespace
-
 const std::vector<Area>* SearchCache::grown(std::size_t type, const std::vector<Area>& before, const AreaParams& params) {
   Grown& g = grown_[type];
-  if (all_changed_ || g.generation + 1 != generation_ || !(params == g.params) || before.size() != g.before.size() ||
-      any_changed(changed_rows_[type]) ||
-      !std::equal(before.begin(), before.end(), g.before.begin(), [](const Area& a, const Area& b) { return same_bits(a, b); }))
+  if (all_changed_ || g.generation + 1 != generation_ || !(params == g.params) ||
+      before.size() != g.record.before.size() || any_changed(changed_rows_[type]) ||
+      !std::equal(before.begin(), before.end(), g.record.before.begin(), [](const Area& a, const Area& b) { return same_bits(a, b); }))
     return nullptr;
   g.generation = generation_;
-  return &g.after;
+  return &g.record.after;
 }
 
-void SearchCache::keep_grown(std::size_t type, std::vector<Area> before, std::vector<Area> after, const AreaParams& params) {
-  grown_[type] = {generation_, std::move(before), std::move(after), params};
+GrowthReplay SearchCache::growth_replay(std::size_t type, const AreaParams& params) const {
+  const Grown& g = grown_[type];
+  if (all_changed_ || g.generation + 1 != generation_ || !(params == g.params)) return {};
+  return {&g.record, &spec_, changed_rows_[type]};
+}
+
+void SearchCache::keep_grown(std::size_t type, GrowthRecord record, const AreaParams& params) {
+  grown_[type] = {generation_, std::move(record), params};
 }
 
 RowBands SearchCache::plan(Kept& kept, std::size_t type, int layers, const SizeRange& range, float fill,

@@ -6,6 +6,7 @@
 // area type's reduction and growth, for a type nothing of which changed. Every result equals the whole
 // analysis's exactly (tests/unit/incremental_test.cpp replays rooms chunk by chunk against full analyses).
 #pragma once
+#include "grow.h"
 #include "reduce.h"
 #include "ring_offsets.h"
 #include "search.h"
@@ -48,7 +49,10 @@ class SearchCache {
   // Growth (grow.h) of a type's packed areas, `before` growing, where the previous analysis grew the same areas
   // (bit for bit) over the same features with the same parameters: the areas it grew them into; else nullptr.
   const std::vector<Area>* grown(std::size_t type, const std::vector<Area>& before, const AreaParams& params);
-  void keep_grown(std::size_t type, std::vector<Area> before, std::vector<Area> after, const AreaParams& params);
+  // Otherwise what the type's growth may replay of the previous analysis's (grow.h): none where the grid, the
+  // levels or the parameters changed.
+  GrowthReplay growth_replay(std::size_t type, const AreaParams& params) const;
+  void keep_grown(std::size_t type, GrowthRecord record, const AreaParams& params);
   // Packing (reduce.h) of the list walls() or squares() returned for (type, size) in this analysis: its replay
   // against the previous analysis's packing, or nullptr where that is not known; and what it packed (indices
   // into the list) and, for squares, each one's rank, recorded for the next analysis.
@@ -102,7 +106,7 @@ class SearchCache {
   std::array<Kept, 12> kept_;  // search t: type t / 3, size t % 3
   struct Grown {
     std::uint64_t generation = 0;
-    std::vector<Area> before, after;
+    GrowthRecord record;
     AreaParams params;
   };
   std::array<Grown, 4> grown_;

@@ -49,6 +49,13 @@ class PackedCandidate {
   glm::ivec3 corner_sum() const { return 4 * glm::ivec3(x_, y_, z_) + 2 * glm::ivec3(dx_, 0, dz_) + 2 * side(); }
   // Corner 4 - corner 1: a wall's straight down, a square's at a right angle to its first edge in the plane.
   glm::ivec3 side() const { return side_ == kSquare ? glm::ivec3(-dz_, 0, dx_) : glm::ivec3(0, -side_, 0); }
+  bool operator==(const PackedCandidate&) const = default;
+  // A key of its numbers (equal rectangles, equal keys), for hash tables.
+  std::uint64_t hash() const {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (const std::int32_t v : {x_, y_, z_, dx_, dz_, side_}) h = (h ^ std::uint32_t(v)) * 0x100000001b3ull;
+    return h;
+  }
 
  private:
   std::int32_t x_, y_, z_, dx_, dz_, side_;

@@ -180,11 +180,18 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   // The areas in metres of what the reduction keeps; each type's grown (grow.h).
   // Without a cache the lists in voxels go once in metres (a large floor's are many).
   const auto finish_walls_for_reach = [&] {
-    for (const Sized& s : red[0].for_reach) wall_areas.emplace_back(to_area(s, AreaType::Wall, context));
-    if (!cache) red[0].for_reach = {};
+    const auto place = [&](const Sized& s) { return ReachWall(to_area(s, AreaType::Wall, context)); };
+    if (cache) {
+      wall_areas = cache->reach_walls(red[0].for_reach, place);
+      return;
+    }
+    for (const Sized& s : red[0].for_reach) wall_areas.push_back(place(s));
+    red[0].for_reach = {};
   };
   const auto finish_floors_for_reach = [&] {
-    for (const Sized& s : red[1].for_reach) floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
+    const auto place = [&](const Sized& s) { return ReachFloor(to_area(s, AreaType::Floor, context)); };
+    if (cache) floor_areas = cache->reach_floors(red[1].for_reach, place);
+    else for (const Sized& s : red[1].for_reach) floor_areas.push_back(place(s));
   };
   const auto finish = [&](std::size_t type) {
     std::vector<Area>& areas = kept_areas[type];

@@ -39,7 +39,9 @@ class KeyTable {
   std::size_t size() const { return size_; }
   // Room for n keys without growing.
   void reserve(std::size_t n) {
-    while (4 * n > 3 * keys_.size()) grow();
+    std::size_t slots = keys_.empty() ? 1024 : keys_.size();
+    while (4 * n > 3 * slots) slots *= 2;
+    if (slots != keys_.size()) rehash(slots);
   }
 
  private:
@@ -56,11 +58,12 @@ class KeyTable {
     return std::size_t(key) & mask_;
   }
 
-  void grow() {
+  void grow() { rehash(keys_.empty() ? 1024 : 2 * keys_.size()); }
+  void rehash(std::size_t slots) {  // a power of two
     const std::vector<std::uint64_t> old_keys = std::move(keys_);
     const std::vector<std::uint32_t> old_values = std::move(values_);
-    keys_.assign(old_keys.empty() ? 1024 : 2 * old_keys.size(), kEmpty);
-    values_.assign(keys_.size(), 0);
+    keys_.assign(slots, kEmpty);
+    values_.assign(slots, 0);
     mask_ = keys_.size() - 1;
     size_ = 0;
     for (std::size_t i = 0; i < old_keys.size(); ++i)

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <optional>
 #include <tuple>
 #include <utility>
 
@@ -300,6 +301,69 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
   // The kept rectangles stay within twice the grid's bytes and 16 MB; past that a search keeps nothing.
   if (kept_bytes_ > 2 * spec_.voxel_count() + (std::size_t{16} << 20)) drop(kept);
   return out;
+}
+
+template <class Reach>
+std::vector<Reach> SearchCache::place_for_reach(Placed<Reach>& kept, const std::vector<Sized>& for_reach, bool walls,
+                                                const std::function<Reach(const Sized&)>& place) {
+  const bool known = !all_changed_ && kept.generation + 1 == generation_;
+  const auto same = [](const Sized& a, const Sized& b) { return a.packed == b.packed && a.size == b.size; };
+  // A wall's place reads the features within two columns of its corners (ChangedRegion::around).
+  std::optional<ChangedRegion> changed;
+  if (known && walls && any_changed(changed_rows_[0])) {
+    changed.emplace(ChangedRegion::Box{glm::ivec2(0), glm::ivec2(spec_.nx - 1, spec_.nz - 1)});
+    for (std::size_t z = 0; z < changed_rows_[0].size(); ++z)
+      if (const glm::ivec2 span = changed_rows_[0][z]; span.x <= span.y)
+        changed->add({glm::ivec2(span.x, int(z)), glm::ivec2(span.y, int(z))});
+  }
+  // The previous rectangles by their numbers, made at the first that is not where it was (the lists mostly
+  // keep their order); a key two share moves the later one on.
+  KeyTable where;
+  const auto key_of = [](const Sized& s) { return (s.packed.hash() ^ std::uint64_t(s.size)) >> 1; };  // 63 bits
+  const auto next = [](std::uint64_t key) { return (key + 1) & (~std::uint64_t{0} >> 1); };
+  const auto index = [&] {
+    where.reserve(kept.rectangles.size());
+    for (std::uint32_t j = 0; j < kept.rectangles.size(); ++j)
+      for (std::uint64_t key = key_of(kept.rectangles[j]);; key = next(key)) {
+        const std::uint32_t other = where.find(key);
+        if (other == KeyTable::kAbsent) {
+          where.insert(key, j);
+          break;
+        }
+        if (same(kept.rectangles[other], kept.rectangles[j])) break;
+      }
+  };
+  const auto find = [&](const Sized& s) {
+    if (where.size() == 0) index();
+    for (std::uint64_t key = key_of(s);; key = next(key)) {
+      const std::uint32_t j = where.find(key);
+      if (j == KeyTable::kAbsent || same(kept.rectangles[j], s)) return j;
+    }
+  };
+  std::vector<Reach> out;
+  out.reserve(for_reach.size());
+  std::size_t at = 0;  // where the previous list goes on
+  for (const Sized& s : for_reach) {
+    std::uint32_t j = KeyTable::kAbsent;
+    if (known && !kept.rectangles.empty()) {
+      j = at < kept.rectangles.size() && same(kept.rectangles[at], s) ? std::uint32_t(at) : find(s);
+      if (j != KeyTable::kAbsent) at = std::size_t(j) + 1;
+    }
+    const bool reuse = j != KeyTable::kAbsent && (!changed || !changed->touches(ChangedRegion::around(s.c())));
+    out.push_back(reuse ? kept.areas[j] : place(s));
+  }
+  kept = {generation_, for_reach, out};
+  return out;
+}
+
+std::vector<ReachFloor> SearchCache::reach_floors(const std::vector<Sized>& for_reach,
+                                                  const std::function<ReachFloor(const Sized&)>& place) {
+  return place_for_reach(floors_for_reach_, for_reach, false, place);
+}
+
+std::vector<ReachWall> SearchCache::reach_walls(const std::vector<Sized>& for_reach,
+                                                const std::function<ReachWall(const Sized&)>& place) {
+  return place_for_reach(walls_for_reach_, for_reach, true, place);
 }
 
 const PackReplay* SearchCache::replay(std::size_t type, std::size_t size) const {

@@ -6,6 +6,7 @@
 // area type's reduction and growth, for a type nothing of which changed. Every result equals the whole
 // analysis's exactly (tests/unit/incremental_test.cpp replays rooms chunk by chunk against full analyses).
 #pragma once
+#include "classify.h"
 #include "grow.h"
 #include "reduce.h"
 #include "ring_offsets.h"
@@ -14,6 +15,7 @@
 #include <array>
 #include <atomic>
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -53,6 +55,14 @@ class SearchCache {
   // levels or the parameters changed.
   GrowthReplay growth_replay(std::size_t type, const AreaParams& params) const;
   void keep_grown(std::size_t type, GrowthRecord record, const AreaParams& params);
+  // V_Wall's (type 0) and V_Floor's (type 1) areas for reach: `for_reach` in metres by `place` (to_area), a
+  // rectangle the previous analysis placed taken from it where its place reads nothing changed. A floor's reads
+  // its rectangle and the grid alone (not the floor's height: reach reads X-Z); a wall's also the wall normals
+  // and wall columns around it (to_area's wall_normal). Calls for the two may run side by side.
+  std::vector<ReachFloor> reach_floors(const std::vector<Sized>& for_reach,
+                                       const std::function<ReachFloor(const Sized&)>& place);
+  std::vector<ReachWall> reach_walls(const std::vector<Sized>& for_reach,
+                                     const std::function<ReachWall(const Sized&)>& place);
   // Packing (reduce.h) of the list walls() or squares() returned for (type, size) in this analysis: its replay
   // against the previous analysis's packing, or nullptr where that is not known; and what it packed (indices
   // into the list) and, for squares, each one's rank, recorded for the next analysis.
@@ -116,6 +126,18 @@ class SearchCache {
     AreaParams params;
   };
   std::array<KeptType, 4> types_;
+  // The reach lists' rectangles of the latest analysis, and their areas in metres.
+  template <class Reach>
+  struct Placed {
+    std::uint64_t generation = 0;
+    std::vector<Sized> rectangles;
+    std::vector<Reach> areas;
+  };
+  template <class Reach>
+  std::vector<Reach> place_for_reach(Placed<Reach>& kept, const std::vector<Sized>& for_reach, bool walls,
+                                     const std::function<Reach(const Sized&)>& place);
+  Placed<ReachFloor> floors_for_reach_;
+  Placed<ReachWall> walls_for_reach_;
   // Counts begin()s. A search's pieces are reused only when kept in the previous one: one skipped (too many
   // corner pairs) or cut short (a stop, an error) since searches everything again.
   std::uint64_t generation_ = 0;

@@ -1,0 +1,202 @@
+// What an IncrementalAnalysis's SearchCache (core/src/areas/search_cache.h, internal) takes from the previous
+// analysis besides the searches: the reach lists' areas in metres, and growth replayed area by area (grow.h).
+// Each must be taken only where nothing it read changed; the chunk-by-chunk replay tests check whole rooms, these
+// the edges of each rule on purpose-made features.
+#include "../../core/src/areas/grow.h"
+#include "../../core/src/areas/search_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+namespace {
+
+using namespace roomsense;
+using namespace roomsense::detail;
+
+GridSpec grid() {
+  GridSpec s;
+  s.nx = 48, s.ny = 8, s.nz = 48;
+  s.voxel_size = 0.1f;
+  return s;
+}
+
+RoomFeatures empty_features(const GridSpec& s) {
+  RoomFeatures f;
+  f.levels.floor = 1, f.levels.ceiling = 6;
+  f.walls.assign(s.column_count(), 0);
+  f.normals.assign(s.voxel_count(), 0);
+  f.free_floor.assign(s.column_count(), 1);
+  return f;
+}
+
+Sized wall_at(int x, int z) { return {PackedCandidate(glm::ivec3(x, 4, z), 4, 0, 2), AreaSize::Large}; }
+Sized floor_at(int x, int z) { return {PackedCandidate(glm::ivec3(x, 1, z), 4, 0, PackedCandidate::kSquare), AreaSize::Large}; }
+
+// A place that tells which call made it: its centre's x is `mark`, its half width the rectangle's corner x.
+template <class Reach>
+struct Marked {
+  float mark = 0.0f;
+  std::size_t calls = 0;
+  Reach operator()(const Sized& s) {
+    ++calls;
+    Area a;
+    a.center = glm::vec3(mark, 0.0f, 0.0f);
+    a.half_width = float(s.c().corners[0].x);
+    return Reach(a);
+  }
+};
+
+TEST(SearchCache, AWallsReachPlaceIsKeptOnlyFarFromChangedWallFeatures) {
+  const GridSpec s = grid();
+  SearchCache cache;
+  RoomFeatures features = empty_features(s);
+  const std::vector<Sized> walls = {wall_at(4, 4), wall_at(30, 30), wall_at(40, 10)};
+  cache.begin(s, features);
+  Marked<ReachWall> first{1.0f};
+  EXPECT_EQ(cache.reach_walls(walls, std::ref(first)).size(), 3u);
+  EXPECT_EQ(first.calls, 3u);  // nothing known before
+
+  // A wall normal changes next to the second wall: its place is made again, the others kept.
+  features.normals[s.index(31, 4, 31)] = kNormalForward;
+  cache.begin(s, features);
+  Marked<ReachWall> second{2.0f};
+  const std::vector<ReachWall> placed = cache.reach_walls(walls, std::ref(second));
+  ASSERT_EQ(placed.size(), 3u);
+  EXPECT_EQ(second.calls, 1u);
+  EXPECT_EQ(placed[0].center.x, 1.0f);
+  EXPECT_EQ(placed[1].center.x, 2.0f);
+  EXPECT_EQ(placed[2].center.x, 1.0f);
+
+  // Nothing changed: every place kept, in the list's order, the first analysis's where the second kept them.
+  cache.begin(s, features);
+  Marked<ReachWall> third{3.0f};
+  const std::vector<ReachWall> again = cache.reach_walls({walls[2], walls[0], walls[1]}, std::ref(third));
+  EXPECT_EQ(third.calls, 0u);
+  EXPECT_EQ(again[0].center.x, 1.0f);
+  EXPECT_EQ(again[0].half_width, 40.0f);
+  EXPECT_EQ(again[2].center.x, 2.0f);
+}
+
+TEST(SearchCache, AFloorsReachPlaceIsKeptWhileTheGridIs) {
+  const GridSpec s = grid();
+  SearchCache cache;
+  RoomFeatures features = empty_features(s);
+  cache.begin(s, features);
+  Marked<ReachFloor> first{1.0f};
+  cache.reach_floors({floor_at(2, 2), floor_at(10, 2), floor_at(20, 2), floor_at(30, 2)}, std::ref(first));
+  EXPECT_EQ(first.calls, 4u);
+
+  // The free floor changes under every rectangle, one is gone and one new: only the new one is placed (a floor's
+  // place reads its rectangle alone).
+  std::fill(features.free_floor.begin(), features.free_floor.end(), std::uint8_t{0});
+  cache.begin(s, features);
+  Marked<ReachFloor> second{2.0f};
+  const std::vector<ReachFloor> placed =
+      cache.reach_floors({floor_at(2, 2), floor_at(12, 6), floor_at(20, 2), floor_at(30, 2)}, std::ref(second));
+  EXPECT_EQ(second.calls, 1u);
+  EXPECT_EQ(placed[0].center.x, 1.0f);
+  EXPECT_EQ(placed[1].center.x, 2.0f);
+  EXPECT_EQ(placed[1].half_width, 12.0f);
+  EXPECT_EQ(placed[3].center.x, 1.0f);
+
+  // Another grid: every place made again.
+  GridSpec moved = s;
+  moved.origin.x += 0.05f;
+  cache.begin(moved, empty_features(moved));
+  Marked<ReachFloor> third{3.0f};
+  cache.reach_floors({floor_at(2, 2), floor_at(20, 2)}, std::ref(third));
+  EXPECT_EQ(third.calls, 2u);
+}
+
+// Floor squares on a free-floor mask (a column's cell Usable where its mask is set, Forbidden off the grid).
+GrowthRule rule_over(const GridSpec& s, const std::vector<std::uint8_t>& free, std::size_t* reads) {
+  GrowthRule rule;
+  rule.step = 0.5f * s.voxel_size;
+  rule.max_length = 10.0f;
+  rule.fill = 0.95f;
+  rule.strip_fill = 0.8f;
+  rule.cell_at = [&s, &free, reads](const glm::vec3& p, const Area&) {
+    ++*reads;
+    const int x = int(std::floor((p.x - s.origin.x) / s.voxel_size)), z = int(std::floor((p.z - s.origin.z) / s.voxel_size));
+    if (x < 0 || z < 0 || x >= s.nx || z >= s.nz) return SurfaceCell::Forbidden;
+    return free[s.column(x, z)] ? SurfaceCell::Usable : SurfaceCell::Unusable;
+  };
+  return rule;
+}
+
+Area floor_square(const GridSpec& s, float x, float z, float side) {
+  Area a;
+  a.type = AreaType::Floor;
+  a.size = AreaSize::Small;
+  a.normal = glm::vec3(0, 1, 0);
+  const float y = s.origin.y;
+  // Corner 0 to 1 along -x, so that the second axis (normal x first edge) runs along +z.
+  a.corners = {glm::vec3(x + side, y, z), glm::vec3(x, y, z), glm::vec3(x, y, z + side), glm::vec3(x + side, y, z + side)};
+  a.center = glm::vec3(x + 0.5f * side, y, z + 0.5f * side);
+  a.half_width = a.half_height = 0.5f * side;
+  return a;
+}
+
+bool same_areas(const std::vector<Area>& a, const std::vector<Area>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!same_bits(a[i], b[i])) return false;
+  return true;
+}
+
+TEST(GrowthReplay, EqualsGrowingAgainAfterChangesAnywhere) {
+  // Squares on a free floor with blocked strips between them, so that they grow until they meet each other or
+  // a strip. Then, each time: a patch of 3 x 3 columns blocks or opens, a square comes or goes. Growing with the
+  // previous growth's record must equal growing from nothing, and read the floor less often (the squares away
+  // from the change move as they did; in a room this small a change reaches many).
+  const GridSpec s = grid();
+  std::vector<std::uint8_t> free(s.column_count(), 1);
+  for (int z = 0; z < s.nz; ++z) free[s.column(24, z)] = 0;
+  for (int x = 0; x < s.nx; ++x) free[s.column(x, 16)] = 0;
+  std::vector<Area> squares;
+  for (float x : {0.4f, 1.4f, 2.9f, 3.9f})
+    for (float z : {0.3f, 2.2f, 3.6f}) squares.push_back(floor_square(s, x, z, 0.4f));
+  const AreaParams params;
+
+  GrowthRecord record;
+  std::vector<Area> grown = squares;
+  std::size_t reads = 0;
+  grow_areas(grown, rule_over(s, free, &reads), params, {}, {}, &record);
+
+  struct Change {
+    glm::ivec2 patch{-1};  // its first column: toggled
+    int removed = -1;      // a square gone
+    bool add = false;      // a square new
+  };
+  const std::vector<Change> changes = {{{8, 8}},  {{8, 8}},          {{22, 30}},      {{5, 40}},
+                                       {{-1, -1}, 3}, {{-1, -1}, -1, true}, {{40, 5}}, {{30, 20}, 7}};
+  std::size_t all_fresh_reads = 0, all_replay_reads = 0;
+  for (const Change& change : changes) {
+    std::vector<glm::ivec2> rows(std::size_t(s.nz), glm::ivec2(s.nx, -1));
+    if (change.patch.x >= 0)
+      for (int z = change.patch.y; z < change.patch.y + 3; ++z) {
+        for (int x = change.patch.x; x < change.patch.x + 3; ++x) free[s.column(x, z)] ^= 1;
+        rows[std::size_t(z)] = glm::ivec2(change.patch.x, change.patch.x + 2);
+      }
+    if (change.removed >= 0) squares.erase(squares.begin() + change.removed);
+    if (change.add) squares.insert(squares.begin() + 2, floor_square(s, 1.9f, 1.0f, 0.4f));
+
+    std::vector<Area> expected = squares;
+    std::size_t fresh_reads = 0, replay_reads = 0;
+    grow_areas(expected, rule_over(s, free, &fresh_reads), params);
+    GrowthRecord next;
+    std::vector<Area> replayed = squares;
+    grow_areas(replayed, rule_over(s, free, &replay_reads), params, {}, {&record, &s, rows}, &next);
+    ASSERT_TRUE(same_areas(replayed, expected)) << "patch " << change.patch.x << ", " << change.patch.y;
+    EXPECT_TRUE(same_areas(next.after, expected));
+    EXPECT_LT(replay_reads, fresh_reads) << "patch " << change.patch.x << ", " << change.patch.y;
+    all_fresh_reads += fresh_reads, all_replay_reads += replay_reads;
+    record = std::move(next);
+  }
+  EXPECT_LT(double(all_replay_reads), 0.6 * double(all_fresh_reads));
+}
+
+}  // namespace

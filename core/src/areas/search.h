@@ -43,7 +43,7 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features);
 struct RowBands {
   int rows = 0;
   std::vector<std::uint8_t> searched;  // per band of the grid: 1 to search it
-  std::vector<glm::ivec2> columns;     // per band: the centres' columns searched, inclusive
+  std::vector<glm::ivec2> columns;     // per band: the columns searched (squares' centres, walls' corners 1), inclusive
   int band(int z) const { return z / rows; }
   bool searches(int z) const { return searched[std::size_t(z / rows)] != 0; }
 };

@@ -117,7 +117,7 @@ void SearchCache::keep_grown(std::size_t type, GrowthRecord record, const AreaPa
 }
 
 RowBands SearchCache::plan(Kept& kept, std::size_t type, int layers, const SizeRange& range, float fill,
-                           double dominant_deg, int reach) {
+                           double dominant_deg, int reach, int columns_before, int columns_after) {
   const int bands = std::max(1, (spec_.nz + kBandRows - 1) / kBandRows);
   RowBands out{kBandRows, std::vector<std::uint8_t>(std::size_t(bands), 1),
                std::vector<glm::ivec2>(std::size_t(bands), glm::ivec2(0, spec_.nx - 1))};
@@ -140,7 +140,8 @@ RowBands SearchCache::plan(Kept& kept, std::size_t type, int layers, const SizeR
       for (int z = lo; z < hi; ++z)
         columns = glm::ivec2(std::min(columns.x, changed[std::size_t(z)].x), std::max(columns.y, changed[std::size_t(z)].y));
       out.searched[std::size_t(b)] = columns.x <= columns.y;
-      out.columns[std::size_t(b)] = glm::ivec2(std::max(0, columns.x - reach), std::min(spec_.nx - 1, columns.y + reach));
+      out.columns[std::size_t(b)] =
+          glm::ivec2(std::max(0, columns.x - columns_before), std::min(spec_.nx - 1, columns.y + columns_after));
     }
   }
   total_ += std::size_t(bands);
@@ -172,11 +173,16 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, const RowBan
     fresh[std::size_t(p.layer) * band_count + std::size_t(p.band)] = {begin, p.end};
     begin = p.end;
   }
-  // A square's centre on the half-voxel lattice (x, z): its cell's column is x / 2.
-  const auto centre_of = [&](const Candidates::Item& item) {
-    const glm::ivec3 sum = corner_sum(found.decode(item).unpack());
+  // A rectangle's place in search order (x, z), and the column that decides whether its band's search found it
+  // anew: a square's centre on the half-voxel lattice (its cell's column x / 2), a wall's corner 1 (the wall
+  // search goes corner by corner).
+  const auto place_of = [&](const Candidates::Item& item) {
+    const PackedCandidate p = found.decode(item);
+    if (walls) return glm::ivec2(p.corner(0).x, p.corner(0).z);
+    const glm::ivec3 sum = p.corner_sum();
     return glm::ivec2(sum.x / 2, sum.z / 2);
   };
+  const auto column_of = [&](const glm::ivec2& place) { return walls ? place.x : place.x / 2; };
   const auto before = [](const glm::ivec2& a, const glm::ivec2& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; };
   std::vector<Replaced> old;
   for (std::size_t b = 0; b < band_count; ++b) {
@@ -194,26 +200,21 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, const RowBan
       const auto add_fresh = [&](std::size_t i) {
         items.push_back(found.item(i)), states.push_back(kAbsent), ranks.push_back(PackReplay::kUnknownRank);
       };
-      if (walls) {  // the band whole
-        for (std::size_t i = first; i < end; ++i) add_fresh(i);
-      } else {
-        // Squares: the slot's squares whose centre lies outside the columns searched are as they were, with
-        // their packing and rank (which read no changed column either); the search found the others anew. Both
-        // in search order: by centre, z then x.
-        Replaced gone{slot, {}, {}};
-        std::size_t i = first;
-        for (std::size_t k = 0; k < r.items.size(); ++k) {
-          const glm::ivec2 centre = centre_of(r.items[k]);
-          if (centre.x / 2 >= columns.x && centre.x / 2 <= columns.y) {
-            gone.items.push_back(r.items[k]), gone.states.push_back(r.states[k]);
-            continue;
-          }
-          for (; i < end && before(centre_of(found.item(i)), centre); ++i) add_fresh(i);
-          items.push_back(r.items[k]), states.push_back(r.states[k]), ranks.push_back(old_ranks[k]);
+      // The slot's rectangles outside the columns searched are as they were, with their packing and rank
+      // (which read no changed column either); the search found the others anew. Both in search order.
+      Replaced gone{slot, {}, {}};
+      std::size_t i = first;
+      for (std::size_t k = 0; k < r.items.size(); ++k) {
+        const glm::ivec2 place = place_of(r.items[k]);
+        if (column_of(place) >= columns.x && column_of(place) <= columns.y) {
+          gone.items.push_back(r.items[k]), gone.states.push_back(r.states[k]);
+          continue;
         }
-        for (; i < end; ++i) add_fresh(i);
-        r = std::move(gone);
+        for (; i < end && before(place_of(found.item(i)), place); ++i) add_fresh(i);
+        items.push_back(r.items[k]), states.push_back(r.states[k]), ranks.push_back(old_ranks[k]);
       }
+      for (; i < end; ++i) add_fresh(i);
+      r = std::move(gone);
       kept_bytes_ += items.size() * kBytesEach;
       old.push_back(std::move(r));
     }
@@ -253,8 +254,8 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
     }
   } else {
     // Walls: a replaced slot's rectangles found again keep their packing (a wall's order is the search's, which
-    // keeps it among the others); the bands in order, each rectangle unless an earlier band found its centre
-    // (as the whole search skips it).
+    // keeps it among the others); the bands in order, each rectangle unless an earlier one has its centre (as
+    // the whole search skips it: an earlier band's, or in a band searched in part, one kept outside its columns).
     using Keyed = std::pair<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, std::uint8_t>;
     std::vector<std::vector<Keyed>> before(kept.pieces.size());
     std::vector<std::vector<std::uint8_t>> matched(kept.pieces.size());
@@ -266,7 +267,8 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
     }
     const auto previous_state = [&](std::size_t slot, std::size_t k) -> std::uint8_t {
       if (!known) return kAbsent;
-      if (matched[slot].empty()) return kept.states[slot][k];
+      // A rectangle kept outside the columns searched has its own; one found anew, that of its match.
+      if (matched[slot].empty() || kept.states[slot][k] != kAbsent) return kept.states[slot][k];
       const auto key = key_of(kept.pieces[slot][k]);
       const auto it = std::lower_bound(before[slot].begin(), before[slot].end(), Keyed{key, 0});
       if (it == before[slot].end() || it->first != key) return kAbsent;
@@ -391,10 +393,16 @@ Candidates SearchCache::walls(std::size_t size, const GridSpec& spec, const Room
                               const NormalCounts& normals, const SizeRange& range, float fill,
                               const std::stop_token& stop) {
   Kept& kept = kept_[size];
-  const RowBands bands = plan(kept, 0, 1, range, fill, 0.0, wall_search_reach(range));
+  // A wall's rectangle reads the columns from its corner 1 to `reach` after it, and the rectangles of one centre
+  // have their corners 1 within `reach` / 2 of each other: with the band's columns searched from 2 `reach`
+  // before to `reach` after those that changed, a centre whose rectangles lie on both sides of those columns'
+  // ends has none that read a changed column, and keeps the one it had.
+  const int reach = wall_search_reach(range);
+  const RowBands bands = plan(kept, 0, 1, range, fill, 0.0, reach, 2 * reach, reach);
   std::vector<Piece> pieces;
   if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::WallTop);
-  const Candidates found = search_walls(spec, features, normals, range, fill, stop, {&bands, &pieces, &kept.ring});
+  const Candidates found =
+      search_walls(spec, features, normals, range, fill, stop, {&bands, &pieces, &kept.ring});
   return assemble(kept, found, replace(kept, bands, found, pieces, true), true);
 }
 
@@ -403,7 +411,8 @@ Candidates SearchCache::squares(std::size_t type, std::size_t size, const GridSp
   Kept& kept = kept_[3 * type + size];
   const Surface surface = type == 1 ? Surface::Floor : type == 2 ? Surface::Ceiling : Surface::Furniture;
   const int layers = square_layers(features, surface);
-  const RowBands bands = plan(kept, type, layers, range, fill, dominant_deg, square_search_reach(range));
+  const int reach = square_search_reach(range);
+  const RowBands bands = plan(kept, type, layers, range, fill, dominant_deg, reach, reach, reach);
   std::vector<Piece> pieces;
   if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::Square);
   const Candidates found =

@@ -1,10 +1,12 @@
 // Beyond the thesis (issue 19): what find_areas found for one storey, kept between the analyses of an
 // IncrementalAnalysis: the 12 searches' rectangles by bands of grid rows (search.h's RowBands), so that an
 // analysis searches again only the bands whose rectangles may read a row whose features changed, and in a
-// square search's band only the centres within reach of a changed column; each rectangle's packing decision
+// band only the rectangles within reach of a changed column; each rectangle's packing decision
 // and rank (a square's kept where its centre was not searched again), for packing's replay (reduce.h); each
-// area type's reduction and growth, for a type nothing of which changed. Every result equals the whole
-// analysis's exactly (tests/unit/incremental_test.cpp replays rooms chunk by chunk against full analyses).
+// area type's reduction, for a type nothing of which changed; each type's growth, replayed area by area (grow.h);
+// the reach lists' areas in metres. Every result equals the whole analysis's exactly
+// (tests/unit/incremental_test.cpp replays rooms chunk by chunk against full analyses; search_cache_test.cpp
+// tests each rule's edges).
 #pragma once
 #include "classify.h"
 #include "grow.h"
@@ -94,19 +96,20 @@ class SearchCache {
   static constexpr std::uint8_t kAbsent = 0, kRefused = 1, kPacked = 2;
   // What a kept rectangle takes: itself, its packing state and its rank.
   static constexpr std::size_t kBytesEach = sizeof(Candidates::Item) + sizeof(std::uint8_t) + sizeof(std::uint32_t);
-  // What a search replaced in a slot, as it was: the whole slot (walls), or its squares within the columns searched.
+  // What a search replaced in a slot, as it was: its rectangles within the columns searched.
   struct Replaced {
     std::size_t slot;
     std::vector<Candidates::Item> items;
     std::vector<std::uint8_t> states;
   };
   // Which bands to search: all where `kept` does not match, else those within `reach` rows of a changed row,
-  // each over the columns within `reach` of the changed columns of those rows.
+  // each over the columns from `columns_before` before to `columns_after` after the changed columns of those
+  // rows.
   RowBands plan(Kept& kept, std::size_t type, int layers, const SizeRange& range, float fill, double dominant_deg,
-                int reach);
+                int reach, int columns_before, int columns_after);
   void drop(Kept& kept);
-  // Puts the searched bands' pieces of `found` in place of the kept ones (walls: the whole band; squares: the
-  // band's columns searched), and returns what they replaced.
+  // Puts the searched bands' pieces of `found` in place of the kept ones (the band's columns searched), and
+  // returns what they replaced.
   std::vector<Replaced> replace(Kept& kept, const RowBands& bands, const Candidates& found,
                                 const std::vector<Piece>& pieces, bool walls);
   // The search's list from the kept pieces, with its packing's replay; drops everything when the cache would

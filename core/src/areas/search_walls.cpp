@@ -205,12 +205,15 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     band_bits.clear();
   };
   for (int z1 = 0; z1 < spec.nz; ++z1, stop_point(stop)) {
+    int x_first = 0, x_last = spec.nx - 1;
     if constexpr (kBanded) {
       const RowBands& b = *banded.bands;
       if (z1 > 0 && b.band(z1 - 1) != b.band(z1) && b.searches(z1 - 1)) end_band(b.band(z1 - 1));
       if (!b.searches(z1)) continue;
+      const glm::ivec2 columns = b.columns[std::size_t(b.band(z1))];
+      x_first = std::max(columns.x, 0), x_last = std::min(columns.y, spec.nx - 1);
     }
-    for (int x1 = 0; x1 < spec.nx; ++x1) {
+    for (int x1 = x_first; x1 <= x_last; ++x1) {
       if (normals.slot[spec.column(x1, z1)] == NormalCounts::kNoNormal) continue;  // most of an open floor
       for (int y1 = std::max(y_first, floor); y1 <= ceiling; ++y1) {
         const std::uint8_t f1 = f[spec.index(x1, y1, z1)];

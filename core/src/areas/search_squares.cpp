@@ -10,6 +10,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <optional>
 
@@ -26,7 +27,10 @@ struct CellBox {
 // inside it only.
 class BoxCounts {
  public:
-  BoxCounts(const GridSpec& spec) : nx_(spec.nx), nz_(spec.nz), sums_(std::size_t(nx_ + 1) * std::size_t(nz_ + 1), 0) {}
+  // The table is written by fill() alone (a search by bands fills a few rows of a large grid).
+  BoxCounts(const GridSpec& spec)
+      : nx_(spec.nx), nz_(spec.nz),
+        sums_(std::make_unique_for_overwrite<int[]>(std::size_t(nx_ + 1) * std::size_t(nz_ + 1))) {}
   template <class Pred>
   void fill(const GridSpec& spec, Pred pred) {
     fill(spec, CellBox{{0, 0}, {nx_ - 1, nz_ - 1}}, pred);
@@ -50,7 +54,7 @@ class BoxCounts {
   int& at(int x, int z) { return sums_[std::size_t(z) * std::size_t(nx_ + 1) + std::size_t(x)]; }
   int at(int x, int z) const { return sums_[std::size_t(z) * std::size_t(nx_ + 1) + std::size_t(x)]; }
   int nx_, nz_;
-  std::vector<int> sums_;
+  std::unique_ptr<int[]> sums_;
 };
 
 // A bit per cell of the padded tile grid, rows along x, with a spare word after each row: word(x, z) is the
@@ -62,7 +66,12 @@ class PaddedBits {
   };
   explicit PaddedBits(Size size)
       : row_words_(std::size_t(size.nx + 63) / 64 + 1), words_(row_words_ * std::size_t(size.nz), 0) {}
-  void clear() { std::fill(words_.begin(), words_.end(), std::uint64_t{0}); }
+  // Rows [z_lo, z_hi] cleared: those set() wrote since (a layer's region, not the grid).
+  void clear(int z_lo, int z_hi) {
+    if (z_lo <= z_hi)
+      std::fill(words_.begin() + std::ptrdiff_t(std::size_t(z_lo) * row_words_),
+                words_.begin() + std::ptrdiff_t(std::size_t(z_hi + 1) * row_words_), std::uint64_t{0});
+  }
   void set(int x, int z) { words_[std::size_t(z) * row_words_ + std::size_t(x / 64)] |= std::uint64_t{1} << (x % 64); }
   std::uint64_t word(int x, int z) const {
     const std::uint64_t* w = words_.data() + std::size_t(z) * row_words_ + std::size_t(x / 64);
@@ -149,7 +158,8 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     for (const auto& facet : features.facets) top = std::max(top, facet.level);
   Candidates out(spec, std::max(top, 0) + 2, std::move(shapes));
   BoxCounts box_unsuitable(spec), box_raised(spec), box_first(spec), box_walls(spec);
-  box_walls.fill(spec, [&](std::size_t col) { return features.walls[col] != 0; });
+  const auto is_wall = [&](std::size_t col) { return features.walls[col] != 0; };
+  if constexpr (!kBanded) box_walls.fill(spec, is_wall);  // by bands: each layer's region
   // Every orientation's square holds the disk of radius d_min / 2 around its centre, and so the cells inside
   // the box inscribed in that disk: if those alone hold a wall or too many unsuitable cells, no orientation
   // can be valid.
@@ -196,13 +206,29 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   };
   std::vector<CellBox> first_box(std::size_t(std::max(layers, 0)),
                                  CellBox{{spec.nx, spec.nz}, {-1, -1}});
-  for (int z = 0; z < spec.nz; ++z)
-    for (int x = 0; x < spec.nx; ++x) {
+  // The first corners looked for: the grid's, or by bands those within corner_reach of a centre searched (a
+  // box around the others' first corners would prune no centre searched).
+  CellBox scan{{0, 0}, {spec.nx - 1, spec.nz - 1}};
+  if constexpr (kBanded) {
+    const RowBands& b = *banded.bands;
+    CellBox searched;
+    for (std::size_t band = 0; band < b.searched.size(); ++band)
+      if (b.searched[band]) {
+        const glm::ivec2 lo(b.columns[band].x, int(band) * b.rows), hi(b.columns[band].y, (int(band) + 1) * b.rows - 1);
+        searched = searched.empty() ? CellBox{lo, hi} : CellBox{glm::min(searched.lo, lo), glm::max(searched.hi, hi)};
+      }
+    scan = searched.empty() ? CellBox{}
+                            : CellBox{glm::max(searched.lo - corner_reach, glm::ivec2(0)),
+                                      glm::min(searched.hi + corner_reach, glm::ivec2(spec.nx - 1, spec.nz - 1))};
+  }
+  for (int z = scan.lo.y; z <= scan.hi.y; ++z)
+    for (int x = scan.lo.x; x <= scan.hi.x; ++x) {
       const int layer = layer_of(spec.column(x, z));
       if (layer < 0 || layer >= layers) continue;
       CellBox& b = first_box[std::size_t(layer)];
       b.lo = glm::min(b.lo, glm::ivec2(x, z)), b.hi = glm::max(b.hi, glm::ivec2(x, z));
     }
+  CellBox cleared;  // the rows of the bits set since they were last cleared
   for (int layer = 0; layer < layers; centres[std::size_t(layer++)].release()) {  // later layers never read it
     const int y1 = by_facet ? features.facets[std::size_t(layer)].level : y_from + layer;
     const CellBox& firsts = first_box[std::size_t(layer)];
@@ -229,14 +255,16 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     const auto is_first = [&](std::size_t col) { return layer_of(col) == layer; };
     const auto raised = [&](std::size_t col) { return surface == Surface::Furniture && features.furniture[col] == y1 + 1; };
     const auto is_tile = [&](std::size_t col) { return is_first(col) || raised(col); };
-    first_bits.clear();
-    tile_bits.clear();
+    first_bits.clear(cleared.lo.y + pad, cleared.hi.y + pad);
+    tile_bits.clear(cleared.lo.y + pad, cleared.hi.y + pad);
+    cleared = region;  // what the bits hold next
     for (int z = region.lo.y; z <= region.hi.y; ++z)
       for (int x = region.lo.x; x <= region.hi.x; ++x) {
         const std::size_t col = spec.column(x, z);
         if (is_tile(col)) tile_bits.set(x + pad, z + pad);
         if (is_first(col)) first_bits.set(x + pad, z + pad);
       }
+    if constexpr (kBanded) box_walls.fill(spec, region, is_wall);
     box_unsuitable.fill(spec, region, [&](std::size_t col) { return !is_tile(col); });  // walls are never tiles
     box_first.fill(spec, region, is_first);
     if (surface == Surface::Furniture) box_raised.fill(spec, region, raised);

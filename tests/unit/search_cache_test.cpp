@@ -3,6 +3,7 @@
 // Each must be taken only where nothing it read changed; the chunk-by-chunk replay tests check whole rooms, these
 // the edges of each rule on purpose-made features.
 #include "../../core/src/areas/grow.h"
+#include "../../core/src/areas/key_table.h"
 #include "../../core/src/areas/search_cache.h"
 
 #include <gtest/gtest.h>
@@ -34,6 +35,21 @@ RoomFeatures empty_features(const GridSpec& s) {
 
 Sized wall_at(int x, int z) { return {PackedCandidate(glm::ivec3(x, 4, z), 4, 0, 2), AreaSize::Large}; }
 Sized floor_at(int x, int z) { return {PackedCandidate(glm::ivec3(x, 1, z), 4, 0, PackedCandidate::kSquare), AreaSize::Large}; }
+
+TEST(FirstIndex, KeepsEachValuesFirstIndexWhereHashesCollide) {
+  // Values 0..9 with 3 hashes among them: unequal values of one hash each keep their own index, equal ones the
+  // first's.
+  const std::vector<int> values = {5, 7, 5, 9, 7, 11, 5, 13, 9, 15};
+  const auto hash = [](int v) { return std::uint64_t(v % 3) << 40; };
+  FirstIndex first;
+  std::vector<std::uint32_t> got;
+  for (std::uint32_t i = 0; i < values.size(); ++i)
+    got.push_back(first.insert(hash(values[i]), i, [&](std::uint32_t j) { return values[j] == values[i]; }));
+  EXPECT_EQ(got, (std::vector<std::uint32_t>{0, 1, 0, 3, 1, 5, 0, 7, 3, 9}));
+  for (const int v : {5, 7, 9, 11, 13, 15})
+    EXPECT_EQ(values[first.find(hash(v), [&](std::uint32_t j) { return values[j] == v; })], v);
+  EXPECT_EQ(first.find(hash(8), [&](std::uint32_t j) { return values[j] == 8; }), FirstIndex::kAbsent);
+}
 
 // A place that tells which call made it: its centre's x is `mark`, its half width the rectangle's corner x.
 template <class Reach>

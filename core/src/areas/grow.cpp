@@ -70,12 +70,12 @@ void set_size(Area& a, const AreaParams& params) {
 bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
 bool same_bits(const glm::vec3& a, const glm::vec3& b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
 
-// A key of an area's corners' bits, for finding it among another growth's (same_bits decides).
+// A hash of an area's corners' bits, for finding it among another growth's (same_bits decides).
 std::uint64_t corner_hash(const Area& a) {
   std::uint64_t h = 0xcbf29ce484222325ull;
   for (const glm::vec3& c : a.corners)
     for (int axis = 0; axis < 3; ++axis) h = (h ^ std::bit_cast<std::uint32_t>(c[axis])) * 0x100000001b3ull;
-  return h >> 1;  // KeyTable's keys have 63 bits
+  return h;
 }
 
 constexpr std::uint32_t kNew = ~std::uint32_t{0};
@@ -84,28 +84,17 @@ constexpr std::uint32_t kNew = ~std::uint32_t{0};
 // it has (kNew otherwise): the matched areas keep their order, so that any sample cell two of them share has the
 // same first owner (SampleOwners) in both growths. Of equal areas, the first is matched.
 std::vector<std::uint32_t> match_previous(std::span<const Area> areas, const std::vector<Area>& previous) {
-  KeyTable where;
+  FirstIndex where;
   where.reserve(previous.size());
-  const auto probe = [](std::uint64_t key) { return (key + 1) & (~std::uint64_t{0} >> 1); };
   for (std::uint32_t j = 0; j < previous.size(); ++j)
-    for (std::uint64_t key = corner_hash(previous[j]);; key = probe(key)) {
-      const std::uint32_t other = where.find(key);
-      if (other == KeyTable::kAbsent) {
-        where.insert(key, j);
-        break;
-      }
-      if (detail::same_bits(previous[other], previous[j])) break;
-    }
+    where.insert(corner_hash(previous[j]), j, [&](std::uint32_t i) { return detail::same_bits(previous[i], previous[j]); });
   std::vector<std::uint32_t> matched(areas.size(), kNew);
   std::int64_t last = -1;
-  for (std::size_t k = 0; k < areas.size(); ++k)
-    for (std::uint64_t key = corner_hash(areas[k]);; key = probe(key)) {
-      const std::uint32_t j = where.find(key);
-      if (j == KeyTable::kAbsent) break;
-      if (!detail::same_bits(previous[j], areas[k])) continue;
-      if (std::int64_t(j) > last) matched[k] = j, last = j;
-      break;
-    }
+  for (std::size_t k = 0; k < areas.size(); ++k) {
+    const std::uint32_t j =
+        where.find(corner_hash(areas[k]), [&](std::uint32_t i) { return detail::same_bits(previous[i], areas[k]); });
+    if (j != FirstIndex::kAbsent && std::int64_t(j) > last) matched[k] = j, last = j;
+  }
   return matched;
 }
 

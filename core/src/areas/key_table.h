@@ -76,4 +76,39 @@ class KeyTable {
   std::size_t mask_ = 0, size_ = 0;
 };
 
+// The first index of each value of a list, found by a hash of the value and its equality (told by `is`, a
+// predicate on an index): a KeyTable whose key two unequal values share moves the later one on to the next key.
+class FirstIndex {
+ public:
+  static constexpr std::uint32_t kAbsent = KeyTable::kAbsent;
+
+  void reserve(std::size_t n) { table_.reserve(n); }
+  bool empty() const { return table_.size() == 0; }
+  // The first index of the value `is` tells equal, whose hash is `hash`; kAbsent where there is none.
+  template <class Is>
+  std::uint32_t find(std::uint64_t hash, Is is) const {
+    for (std::uint64_t key = hash >> 1;; key = next(key)) {
+      const std::uint32_t j = table_.find(key);
+      if (j == kAbsent || is(j)) return j;
+    }
+  }
+  // Index i of a value whose hash is `hash`, unless the index of an equal value (`is`) is there: returns the
+  // first index of the value.
+  template <class Is>
+  std::uint32_t insert(std::uint64_t hash, std::uint32_t i, Is is) {
+    for (std::uint64_t key = hash >> 1;; key = next(key)) {
+      const std::uint32_t j = table_.find(key);
+      if (j == kAbsent) {
+        table_.insert(key, i);
+        return i;
+      }
+      if (is(j)) return j;
+    }
+  }
+
+ private:
+  static std::uint64_t next(std::uint64_t key) { return (key + 1) & (~std::uint64_t{0} >> 1); }  // 63 bits
+  KeyTable table_;
+};
+
 }  // namespace roomsense::detail

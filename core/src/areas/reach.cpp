@@ -58,33 +58,21 @@ class WallSegments {
       return std::array<float, 7>{w.top_left.x, w.top_left.y, w.top_right.x, w.top_right.y, w.center.x, w.center.y,
                                   w.half_width};
     };
-    // A footprint's first wall, by a hash of its values (-0 as 0, as == compares them): a hash two footprints
-    // share moves the later one's on to the next free key.
+    // A footprint's first wall, by a hash of its values (-0 as 0, as == compares them).
     const auto hash = [](const std::array<float, 7>& f) {
-      std::uint64_t h = 0;
+      std::uint64_t h = 0xcbf29ce484222325ull;
       for (const float v : f) h = (h ^ std::bit_cast<std::uint32_t>(v + 0.0f)) * 0x100000001b3ull;
-      return h >> 1;  // KeyTable's keys have 63 bits
+      return h;
     };
-    KeyTable first;
+    FirstIndex first;
     first.reserve(walls.size());
     for (std::size_t i = 0; i < walls.size(); ++i) {
       const ReachWall& w = walls[i];
       const Segment s{P2(w.top_left), P2(w.top_right)};
       segments_.push_back(s);
       const std::array<float, 7> mine = footprint(i);
-      bool repeated = false;
-      for (std::uint64_t key = hash(mine);; key = (key + 1) & (~std::uint64_t{0} >> 1)) {
-        const std::uint32_t j = first.find(key);
-        if (j == KeyTable::kAbsent) {
-          first.insert(key, std::uint32_t(i));
-          break;
-        }
-        if (footprint(j) == mine) {
-          repeated = true;
-          break;
-        }
-      }
-      if (repeated) continue;
+      if (first.insert(hash(mine), std::uint32_t(i), [&](std::uint32_t j) { return footprint(j) == mine; }) != i)
+        continue;  // repeated
       for (int bz = cell(std::min(s.a.y, s.b.y)); bz <= cell(std::max(s.a.y, s.b.y)); ++bz)
         for (int bx = cell(std::min(s.a.x, s.b.x)); bx <= cell(std::max(s.a.x, s.b.x)); ++bx)
           buckets_[key(bx, bz)].push_back(i);

@@ -319,39 +319,27 @@ std::vector<Reach> SearchCache::place_for_reach(Placed<Reach>& kept, const std::
         changed->add({glm::ivec2(span.x, int(z)), glm::ivec2(span.y, int(z))});
   }
   // The previous rectangles by their numbers, made at the first that is not where it was (the lists mostly
-  // keep their order); a key two share moves the later one on.
-  KeyTable where;
-  const auto key_of = [](const Sized& s) { return (s.packed.hash() ^ std::uint64_t(s.size)) >> 1; };  // 63 bits
-  const auto next = [](std::uint64_t key) { return (key + 1) & (~std::uint64_t{0} >> 1); };
-  const auto index = [&] {
-    where.reserve(kept.rectangles.size());
-    for (std::uint32_t j = 0; j < kept.rectangles.size(); ++j)
-      for (std::uint64_t key = key_of(kept.rectangles[j]);; key = next(key)) {
-        const std::uint32_t other = where.find(key);
-        if (other == KeyTable::kAbsent) {
-          where.insert(key, j);
-          break;
-        }
-        if (same(kept.rectangles[other], kept.rectangles[j])) break;
-      }
-  };
+  // keep their order).
+  FirstIndex where;
+  const auto hash_of = [](const Sized& s) { return s.packed.hash() ^ std::uint64_t(s.size); };
   const auto find = [&](const Sized& s) {
-    if (where.size() == 0) index();
-    for (std::uint64_t key = key_of(s);; key = next(key)) {
-      const std::uint32_t j = where.find(key);
-      if (j == KeyTable::kAbsent || same(kept.rectangles[j], s)) return j;
+    if (where.empty()) {
+      where.reserve(kept.rectangles.size());
+      for (std::uint32_t j = 0; j < kept.rectangles.size(); ++j)
+        where.insert(hash_of(kept.rectangles[j]), j, [&](std::uint32_t i) { return same(kept.rectangles[i], kept.rectangles[j]); });
     }
+    return where.find(hash_of(s), [&](std::uint32_t i) { return same(kept.rectangles[i], s); });
   };
   std::vector<Reach> out;
   out.reserve(for_reach.size());
   std::size_t at = 0;  // where the previous list goes on
   for (const Sized& s : for_reach) {
-    std::uint32_t j = KeyTable::kAbsent;
+    std::uint32_t j = FirstIndex::kAbsent;
     if (known && !kept.rectangles.empty()) {
       j = at < kept.rectangles.size() && same(kept.rectangles[at], s) ? std::uint32_t(at) : find(s);
-      if (j != KeyTable::kAbsent) at = std::size_t(j) + 1;
+      if (j != FirstIndex::kAbsent) at = std::size_t(j) + 1;
     }
-    const bool reuse = j != KeyTable::kAbsent && (!changed || !changed->touches(ChangedRegion::around(s.c())));
+    const bool reuse = j != FirstIndex::kAbsent && (!changed || !changed->touches(ChangedRegion::around(s.c())));
     out.push_back(reuse ? kept.areas[j] : place(s));
   }
   kept = {generation_, for_reach, out};

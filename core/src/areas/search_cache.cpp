@@ -163,9 +163,28 @@ std::tuple<std::uint32_t, std::uint32_t, std::uint32_t> key_of(const Candidates:
 
 }  // namespace
 
-std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, const RowBands& bands, const Candidates& found,
-                                                        const std::vector<Piece>& pieces, bool walls) {
+std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t type, const RowBands& bands,
+                                                        const Candidates& found, const std::vector<Piece>& pieces,
+                                                        int reach) {
+  const bool walls = type == 0;
   const std::size_t band_count = bands.searched.size();
+  // Squares: per row, the columns within `reach` of one whose features changed: a square whose centre lies
+  // further reads no change (its corners lie within the search's reach of its centre).
+  std::optional<ChangedRegion> changed_region;  // made when first asked for
+  const auto features_changed = [&]() -> const ChangedRegion& {
+    if (!changed_region) changed_region = changed_columns(type);
+    return *changed_region;
+  };
+  std::vector<glm::ivec2> near_change;
+  if (!walls) {
+    near_change.assign(std::size_t(spec_.nz), glm::ivec2(spec_.nx, -1));
+    for (int z = 0; z < spec_.nz; ++z)
+      if (const glm::ivec2 span = changed_rows_[type][std::size_t(z)]; span.x <= span.y)
+        for (int near = std::max(0, z - reach); near <= std::min(spec_.nz - 1, z + reach); ++near) {
+          glm::ivec2& at = near_change[std::size_t(near)];
+          at = glm::ivec2(std::min(at.x, span.x - reach), std::max(at.y, span.y + reach));
+        }
+  }
   // Each searched slot's new rectangles, [begin, end) of `found`.
   std::vector<std::pair<std::size_t, std::size_t>> fresh(kept.pieces.size(), {0, 0});
   std::size_t begin = 0;
@@ -197,24 +216,59 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, const RowBan
       std::vector<std::uint8_t>& states = kept.states[slot];
       std::vector<std::uint32_t>& ranks = kept.ranks[slot];
       const auto [first, end] = fresh[slot];
-      const auto add_fresh = [&](std::size_t i) {
-        items.push_back(found.item(i)), states.push_back(kAbsent), ranks.push_back(PackReplay::kUnknownRank);
-      };
       // The slot's rectangles outside the columns searched are as they were, with their packing and rank
       // (which read no changed column either); the search found the others anew. Both in search order.
+      const auto searched = [&](const glm::ivec2& place) {
+        return column_of(place) >= columns.x && column_of(place) <= columns.y;
+      };
+      std::vector<glm::ivec2> places(r.items.size());
+      for (std::size_t k = 0; k < r.items.size(); ++k) places[k] = place_of(r.items[k]);
       Replaced gone{slot, {}, {}};
+      std::vector<std::uint32_t> gone_ranks;
+      std::vector<glm::ivec2> gone_places;
+      for (std::size_t k = 0; k < r.items.size(); ++k)
+        if (searched(places[k])) {
+          gone.items.push_back(r.items[k]), gone.states.push_back(r.states[k]), gone_ranks.push_back(old_ranks[k]);
+          gone_places.push_back(places[k]);
+        }
+      // Squares: one found again keeps its packing and rank where no feature changed near it (its contact reads
+      // a column around it; its packing reads other squares alone, which the replay watches). Both lists are in
+      // search order, a centre's squares (one a level) together. Walls are matched so when the list is assembled
+      // (their packing reads other walls alone).
+      std::vector<std::uint8_t> found_again(gone.items.size(), 0);
+      std::size_t g = 0;  // the first gone square not before the fresh one
+      const auto add_fresh = [&](std::size_t i, const glm::ivec2& place) {
+        const Candidates::Item& item = found.item(i);
+        if (!walls) {
+          while (g < gone.items.size() && before(gone_places[g], place)) ++g;
+          // Far from every change by its centre, or by its corners' box and two columns around (the test that
+          // ChangedRegion makes, of blocks of columns).
+          const glm::ivec2 cell = place / 2, near = near_change[std::size_t(cell.y)];
+          const auto changed = [&] {
+            return cell.x >= near.x && cell.x <= near.y &&
+                   features_changed().touches(ChangedRegion::around(found.decode(item).unpack()));
+          };
+          for (std::size_t k = g; k < gone.items.size() && gone_places[k] == place; ++k)
+            if (gone.items[k] == item && !found_again[k] && !changed()) {
+              found_again[k] = 1;
+              items.push_back(item), states.push_back(gone.states[k]), ranks.push_back(gone_ranks[k]);
+              return;
+            }
+        }
+        items.push_back(item), states.push_back(kAbsent), ranks.push_back(PackReplay::kUnknownRank);
+      };
       std::size_t i = first;
       for (std::size_t k = 0; k < r.items.size(); ++k) {
-        const glm::ivec2 place = place_of(r.items[k]);
-        if (column_of(place) >= columns.x && column_of(place) <= columns.y) {
-          gone.items.push_back(r.items[k]), gone.states.push_back(r.states[k]);
-          continue;
-        }
-        for (; i < end && before(place_of(found.item(i)), place); ++i) add_fresh(i);
+        const glm::ivec2 place = places[k];
+        if (searched(place)) continue;
+        for (glm::ivec2 at; i < end && before(at = place_of(found.item(i)), place); ++i) add_fresh(i, at);
         items.push_back(r.items[k]), states.push_back(r.states[k]), ranks.push_back(old_ranks[k]);
       }
-      for (; i < end; ++i) add_fresh(i);
-      r = std::move(gone);
+      for (; i < end; ++i) add_fresh(i, place_of(found.item(i)));
+      // Gone: those not found again.
+      r = {slot, {}, {}};
+      for (std::size_t k = 0; k < gone.items.size(); ++k)
+        if (!found_again[k]) r.items.push_back(gone.items[k]), r.states.push_back(gone.states[k]);
       kept_bytes_ += items.size() * kBytesEach;
       old.push_back(std::move(r));
     }
@@ -237,8 +291,8 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
     return state == kPacked ? 1 : state == kRefused ? 0 : -1;
   };
   if (!walls) {
-    // Squares: layer by layer, band by band. A square the search found anew (found again or not) counts as
-    // gone and new: its contact, and with it its place in packing order, may have changed.
+    // Squares: layer by layer, band by band. A square replaced and not found again as it was (replace()) counts
+    // as gone, one found anew as new.
     for (const Replaced& r : replaced)
       for (std::size_t k = 0; known && k < r.items.size(); ++k)
         if (r.states[k] == kPacked) kept.replay.gone.push_back(found.decode(r.items[k]).unpack());
@@ -305,6 +359,14 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
   return out;
 }
 
+ChangedRegion SearchCache::changed_columns(std::size_t type) const {
+  ChangedRegion changed({glm::ivec2(0), glm::ivec2(spec_.nx - 1, spec_.nz - 1)});
+  for (std::size_t z = 0; z < changed_rows_[type].size(); ++z)
+    if (const glm::ivec2 span = changed_rows_[type][z]; span.x <= span.y)
+      changed.add({glm::ivec2(span.x, int(z)), glm::ivec2(span.y, int(z))});
+  return changed;
+}
+
 template <class Reach>
 std::vector<Reach> SearchCache::place_for_reach(Placed<Reach>& kept, const std::vector<Sized>& for_reach, bool walls,
                                                 const std::function<Reach(const Sized&)>& place) {
@@ -312,12 +374,7 @@ std::vector<Reach> SearchCache::place_for_reach(Placed<Reach>& kept, const std::
   const auto same = [](const Sized& a, const Sized& b) { return a.packed == b.packed && a.size == b.size; };
   // A wall's place reads the features within two columns of its corners (ChangedRegion::around).
   std::optional<ChangedRegion> changed;
-  if (known && walls && any_changed(changed_rows_[0])) {
-    changed.emplace(ChangedRegion::Box{glm::ivec2(0), glm::ivec2(spec_.nx - 1, spec_.nz - 1)});
-    for (std::size_t z = 0; z < changed_rows_[0].size(); ++z)
-      if (const glm::ivec2 span = changed_rows_[0][z]; span.x <= span.y)
-        changed->add({glm::ivec2(span.x, int(z)), glm::ivec2(span.y, int(z))});
-  }
+  if (known && walls && any_changed(changed_rows_[0])) changed = changed_columns(0);
   // The previous rectangles by their numbers, made at the first that is not where it was (the lists mostly
   // keep their order).
   FirstIndex where;
@@ -391,7 +448,7 @@ Candidates SearchCache::walls(std::size_t size, const GridSpec& spec, const Room
   if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::WallTop);
   const Candidates found =
       search_walls(spec, features, normals, range, fill, stop, {&bands, &pieces, &kept.ring});
-  return assemble(kept, found, replace(kept, bands, found, pieces, true), true);
+  return assemble(kept, found, replace(kept, 0, bands, found, pieces, 0), true);
 }
 
 Candidates SearchCache::squares(std::size_t type, std::size_t size, const GridSpec& spec, const RoomFeatures& features,
@@ -405,7 +462,7 @@ Candidates SearchCache::squares(std::size_t type, std::size_t size, const GridSp
   if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::Square);
   const Candidates found =
       search_squares(spec, features, surface, range, fill, dominant_deg, stop, {&bands, &pieces, &kept.ring});
-  return assemble(kept, found, replace(kept, bands, found, pieces, false), false);
+  return assemble(kept, found, replace(kept, type, bands, found, pieces, reach + 1), false);
 }
 
 }  // namespace roomsense::detail

@@ -96,7 +96,8 @@ class SearchCache {
   static constexpr std::uint8_t kAbsent = 0, kRefused = 1, kPacked = 2;
   // What a kept rectangle takes: itself, its packing state and its rank.
   static constexpr std::size_t kBytesEach = sizeof(Candidates::Item) + sizeof(std::uint8_t) + sizeof(std::uint32_t);
-  // What a search replaced in a slot, as it was: its rectangles within the columns searched.
+  // What a search replaced in a slot, as it was: its rectangles within the columns searched (of squares, those
+  // not found again with their packing and rank).
   struct Replaced {
     std::size_t slot;
     std::vector<Candidates::Item> items;
@@ -108,10 +109,13 @@ class SearchCache {
   RowBands plan(Kept& kept, std::size_t type, int layers, const SizeRange& range, float fill, double dominant_deg,
                 int reach, int columns_before, int columns_after);
   void drop(Kept& kept);
-  // Puts the searched bands' pieces of `found` in place of the kept ones (the band's columns searched), and
-  // returns what they replaced.
-  std::vector<Replaced> replace(Kept& kept, const RowBands& bands, const Candidates& found,
-                                const std::vector<Piece>& pieces, bool walls);
+  // Puts the searched bands' pieces of `found` (of search `type`) in place of the kept ones (the band's columns
+  // searched), and returns what they replaced and did not find again. `reach`: squares' cells from their centre's
+  // cell, and a column more (what a square's contact reads).
+  std::vector<Replaced> replace(Kept& kept, std::size_t type, const RowBands& bands, const Candidates& found,
+                                const std::vector<Piece>& pieces, int reach);
+  // The columns changed_rows_[type] holds.
+  ChangedRegion changed_columns(std::size_t type) const;
   // The search's list from the kept pieces, with its packing's replay; drops everything when the cache would
   // outgrow its bound.
   Candidates assemble(Kept& kept, const Candidates& found, std::vector<Replaced> replaced, bool walls);

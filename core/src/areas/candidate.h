@@ -1,6 +1,7 @@
 // A found rectangle in voxel coordinates, as the thesis stores it (Eq. 3.26, 3.39, 3.41), and the voxels
 // that mark its centre (Eq. 3.42/3.43).
 #pragma once
+#include "key_table.h"
 #include "roomsense/areas.h"
 #include "roomsense/grid.h"
 
@@ -52,9 +53,9 @@ class PackedCandidate {
   bool operator==(const PackedCandidate&) const = default;
   // A key of its numbers (equal rectangles, equal keys), for hash tables.
   std::uint64_t hash() const {
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    for (const std::int32_t v : {x_, y_, z_, dx_, dz_, side_}) h = (h ^ std::uint32_t(v)) * 0x100000001b3ull;
-    return h;
+    WordHash h;
+    for (const std::int32_t v : {x_, y_, z_, dx_, dz_, side_}) h.add(std::uint32_t(v));
+    return h.value();
   }
 
  private:

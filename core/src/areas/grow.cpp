@@ -72,10 +72,9 @@ bool same_bits(const glm::vec3& a, const glm::vec3& b) { return same_bits(a.x, b
 
 // A hash of an area's corners' bits, for finding it among another growth's (same_bits decides).
 std::uint64_t corner_hash(const Area& a) {
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  for (const glm::vec3& c : a.corners)
-    for (int axis = 0; axis < 3; ++axis) h = (h ^ std::bit_cast<std::uint32_t>(c[axis])) * 0x100000001b3ull;
-  return h;
+  WordHash h;
+  for (const glm::vec3& c : a.corners) h.add(c.x).add(c.y).add(c.z);
+  return h.value();
 }
 
 constexpr std::uint32_t kNew = ~std::uint32_t{0};

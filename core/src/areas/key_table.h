@@ -3,6 +3,7 @@
 // addressing with linear probing, so a lookup is a multiply and a probe or two, and an insert allocates only
 // when the table doubles (std::unordered_map allocated a node per cell).
 #pragma once
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -74,6 +75,20 @@ class KeyTable {
   std::vector<std::uint64_t> keys_;
   std::vector<std::uint32_t> values_;
   std::size_t mask_ = 0, size_ = 0;
+};
+
+// FNV-1a over 32-bit words (a float's bits): the hash of what FirstIndex finds.
+class WordHash {
+ public:
+  WordHash& add(std::uint32_t word) {
+    value_ = (value_ ^ word) * 0x100000001b3ull;
+    return *this;
+  }
+  WordHash& add(float v) { return add(std::bit_cast<std::uint32_t>(v)); }
+  std::uint64_t value() const { return value_; }
+
+ private:
+  std::uint64_t value_ = 0xcbf29ce484222325ull;
 };
 
 // The first index of each value of a list, found by a hash of the value and its equality (told by `is`, a

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -60,9 +59,9 @@ class WallSegments {
     };
     // A footprint's first wall, by a hash of its values (-0 as 0, as == compares them).
     const auto hash = [](const std::array<float, 7>& f) {
-      std::uint64_t h = 0xcbf29ce484222325ull;
-      for (const float v : f) h = (h ^ std::bit_cast<std::uint32_t>(v + 0.0f)) * 0x100000001b3ull;
-      return h;
+      WordHash h;
+      for (const float v : f) h.add(v + 0.0f);
+      return h.value();
     };
     FirstIndex first;
     first.reserve(walls.size());

@@ -164,27 +164,15 @@ std::tuple<std::uint32_t, std::uint32_t, std::uint32_t> key_of(const Candidates:
 }  // namespace
 
 std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t type, const RowBands& bands,
-                                                        const Candidates& found, const std::vector<Piece>& pieces,
-                                                        int reach) {
+                                                        const Candidates& found, const std::vector<Piece>& pieces) {
   const bool walls = type == 0;
   const std::size_t band_count = bands.searched.size();
-  // Squares: per row, the columns within `reach` of one whose features changed: a square whose centre lies
-  // further reads no change (its corners lie within the search's reach of its centre).
-  std::optional<ChangedRegion> changed_region;  // made when first asked for
+  // The columns whose features the type's searches read that changed, made when first asked for.
+  std::optional<ChangedRegion> changed_region;
   const auto features_changed = [&]() -> const ChangedRegion& {
     if (!changed_region) changed_region = changed_columns(type);
     return *changed_region;
   };
-  std::vector<glm::ivec2> near_change;
-  if (!walls) {
-    near_change.assign(std::size_t(spec_.nz), glm::ivec2(spec_.nx, -1));
-    for (int z = 0; z < spec_.nz; ++z)
-      if (const glm::ivec2 span = changed_rows_[type][std::size_t(z)]; span.x <= span.y)
-        for (int near = std::max(0, z - reach); near <= std::min(spec_.nz - 1, z + reach); ++near) {
-          glm::ivec2& at = near_change[std::size_t(near)];
-          at = glm::ivec2(std::min(at.x, span.x - reach), std::max(at.y, span.y + reach));
-        }
-  }
   // Each searched slot's new rectangles, [begin, end) of `found`.
   std::vector<std::pair<std::size_t, std::size_t>> fresh(kept.pieces.size(), {0, 0});
   std::size_t begin = 0;
@@ -241,12 +229,8 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
         const Candidates::Item& item = found.item(i);
         if (!walls) {
           while (g < gone.items.size() && before(gone_places[g], place)) ++g;
-          // Far from every change by its centre, or by its corners' box and two columns around (the test that
-          // ChangedRegion makes, of blocks of columns).
-          const glm::ivec2 cell = place / 2, near = near_change[std::size_t(cell.y)];
           const auto changed = [&] {
-            return cell.x >= near.x && cell.x <= near.y &&
-                   features_changed().touches(ChangedRegion::around(found.decode(item).unpack()));
+            return features_changed().touches(ChangedRegion::around(found.decode(item).unpack()));
           };
           for (std::size_t k = g; k < gone.items.size() && gone_places[k] == place; ++k)
             if (gone.items[k] == item && !found_again[k] && !changed()) {
@@ -448,7 +432,7 @@ Candidates SearchCache::walls(std::size_t size, const GridSpec& spec, const Room
   if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::WallTop);
   const Candidates found =
       search_walls(spec, features, normals, range, fill, stop, {&bands, &pieces, &kept.ring});
-  return assemble(kept, found, replace(kept, 0, bands, found, pieces, 0), true);
+  return assemble(kept, found, replace(kept, 0, bands, found, pieces), true);
 }
 
 Candidates SearchCache::squares(std::size_t type, std::size_t size, const GridSpec& spec, const RoomFeatures& features,
@@ -462,7 +446,7 @@ Candidates SearchCache::squares(std::size_t type, std::size_t size, const GridSp
   if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::Square);
   const Candidates found =
       search_squares(spec, features, surface, range, fill, dominant_deg, stop, {&bands, &pieces, &kept.ring});
-  return assemble(kept, found, replace(kept, type, bands, found, pieces, reach + 1), false);
+  return assemble(kept, found, replace(kept, type, bands, found, pieces), false);
 }
 
 }  // namespace roomsense::detail

@@ -110,10 +110,9 @@ class SearchCache {
                 int reach, int columns_before, int columns_after);
   void drop(Kept& kept);
   // Puts the searched bands' pieces of `found` (of search `type`) in place of the kept ones (the band's columns
-  // searched), and returns what they replaced and did not find again. `reach`: squares' cells from their centre's
-  // cell, and a column more (what a square's contact reads).
+  // searched), and returns what they replaced and did not find again.
   std::vector<Replaced> replace(Kept& kept, std::size_t type, const RowBands& bands, const Candidates& found,
-                                const std::vector<Piece>& pieces, int reach);
+                                const std::vector<Piece>& pieces);
   // The columns changed_rows_[type] holds.
   ChangedRegion changed_columns(std::size_t type) const;
   // The search's list from the kept pieces, with its packing's replay; drops everything when the cache would

@@ -22,6 +22,7 @@ class FreeLevels {
         masks_(std::make_unique_for_overwrite<std::uint64_t[]>(grid.spec.column_count() * words_)),
         known_(grid.spec.column_count(), 0) {}
 
+  int count() const { return count_; }  // levels
   std::size_t words() const { return words_; }
   // Bit j of column `col` is set where level I_Floor + j is free: no wall, no voxel, in the room, and above the
   // furniture top; beyond the thesis, below the column's own ceiling (a wall ends at a roof's slope or a soffit's
@@ -80,7 +81,7 @@ std::vector<std::uint8_t> detect_wall_normals(const VoxelGrid& grid, const Floor
   };
   constexpr Direction kDirections[] = {
       {-1, 0, kNormalLeft}, {1, 0, kNormalRight}, {0, -1, kNormalBackward}, {0, 1, kNormalForward}};
-  const int count = levels.ceiling - levels.floor + 1;
+  const int count = free.count();
   std::vector<std::uint64_t> running(words), clear(words);
   for (int z = 0; z < s.nz; ++z)
     for (int x = 0; x < s.nx; ++x) {

@@ -3,6 +3,7 @@
 #include "roomsense/synthetic.h"
 #include "mesh_checks.h"
 #include "synthetic_fixture.h"
+#include "../../core/src/bounds/mesh_memo.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -57,6 +58,35 @@ TEST(MeshVolume, RandomVolumesGiveClosedOutwardSurfacesOfTheRightVolume) {
     std::vector<glm::vec3> sorted = m.vertices;
     std::sort(sorted.begin(), sorted.end(), [](auto a, auto b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
     EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end());
+  }
+}
+
+// An IncrementalAnalysis's bounds (mesh_memo.h): a volume meshed with the memo of the volume before it, which
+// replays the slices and keeps the surface corners where nothing changed, gives the mesh meshing it afresh gives,
+// point for point. Boxes are added and cleared, small (the corners beside them found again) and large (all found
+// again), next to each other, at the solid box's faces and over a previous edit.
+TEST(MeshVolume, AMemoMeshesEachEditedVolumeAsMeshingItAfresh) {
+  std::mt19937 rng(7);
+  const GridSpec s = make_grid_spec({0, 0, 0}, {4.0f, 1.6f, 3.6f}, 0.1f);
+  std::vector<std::uint8_t> volume(s.voxel_count(), 0);
+  // A floor and a ceiling over the whole grid keep the solid box, so the memo is taken.
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) volume[s.index(x, 0, z)] = volume[s.index(x, s.ny - 1, z)] = 1;
+  detail::MeshMemo memo;
+  std::uniform_int_distribution<int> pick(0, 1 << 20);
+  for (int edit = 0; edit < 60; ++edit) {
+    const int w = edit % 10 == 9 ? 14 : 1 + pick(rng) % 4, d = 1 + pick(rng) % 4, h = 1 + pick(rng) % 6;
+    const int x0 = pick(rng) % (s.nx - w + 1), z0 = pick(rng) % (s.nz - d + 1), y0 = pick(rng) % (s.ny - h + 1);
+    const std::uint8_t value = edit % 3 == 2 ? 0 : 1;
+    for (int z = z0; z < z0 + d; ++z)
+      for (int x = x0; x < x0 + w; ++x)
+        for (int y = y0; y < y0 + h; ++y) volume[s.index(x, y, z)] = value;
+    std::vector<std::uint8_t> filled = volume;
+    fill_edge_contacts(s, filled);
+    const BoundsMesh afresh = mesh_volume(s, filled);
+    const BoundsMesh memoized = detail::mesh_volume(s, filled, 2, {}, &memo);
+    ASSERT_EQ(memoized.vertices, afresh.vertices) << "edit " << edit;
+    ASSERT_EQ(memoized.indices, afresh.indices) << "edit " << edit;
   }
 }
 

@@ -3,7 +3,7 @@
 // Each must be taken only where nothing it read changed; the chunk-by-chunk replay tests check whole rooms, these
 // the edges of each rule on purpose-made features.
 #include "../../core/src/areas/grow.h"
-#include "../../core/src/areas/key_table.h"
+#include "../../core/src/key_table.h"
 #include "../../core/src/areas/search_cache.h"
 
 #include <gtest/gtest.h>

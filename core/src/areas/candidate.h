@@ -1,7 +1,7 @@
 // A found rectangle in voxel coordinates, as the thesis stores it (Eq. 3.26, 3.39, 3.41), and the voxels
 // that mark its centre (Eq. 3.42/3.43).
 #pragma once
-#include "key_table.h"
+#include "../key_table.h"
 #include "roomsense/areas.h"
 #include "roomsense/grid.h"
 

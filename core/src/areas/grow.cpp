@@ -3,7 +3,7 @@
 
 #include "../floor_int.h"
 #include "candidate.h"
-#include "key_table.h"
+#include "../key_table.h"
 #include "reduce.h"
 #include "sample_owners.h"
 #include "roomsense/cancel.h"

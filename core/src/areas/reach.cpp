@@ -2,7 +2,7 @@
 // the area can see past the walls, in the X-Z plane, with line of sight by segment intersection (Eq. 3.59).
 #include "../parallel.h"
 #include "classify.h"
-#include "key_table.h"
+#include "../key_table.h"
 
 #include <glm/geometric.hpp>
 

@@ -3,7 +3,7 @@
 // four bytes instead of a hash slot's twelve at three quarters full (a 50 x 50 m floor has millions).
 #pragma once
 #include "candidate.h"
-#include "key_table.h"
+#include "../key_table.h"
 
 #include <glm/vec3.hpp>
 

@@ -4,7 +4,7 @@
 // column is within reach of finds what it found before.
 #include "search_cache.h"
 
-#include "key_table.h"
+#include "../key_table.h"
 
 #include <algorithm>
 #include <bit>

@@ -6,6 +6,7 @@
 #include "roomsense/bounds.h"
 #include "roomsense/cancel.h"
 
+#include "key_table.h"
 #include "mesh_memo.h"
 #include "parallel.h"
 #include "polygon_triangulation.h"
@@ -14,6 +15,7 @@
 #include <array>
 #include <cstring>
 #include <optional>
+#include <span>
 #include <unordered_map>
 
 namespace roomsense {
@@ -48,17 +50,19 @@ struct Box {
 };
 Box solid_box(const GridSpec& s, const std::vector<std::uint8_t>& volume) {
   Box box{{s.nx, s.ny, s.nz}, {-1, -1, -1}};
+  const auto solid = [](std::uint8_t v) { return v != 0; };
   for (int z = 0; z < s.nz; ++z)
     for (int x = 0; x < s.nx; ++x) {
+      // A column's lowest and highest solid voxels: found from either end, most columns' first.
       const std::uint8_t* v = volume.data() + s.column(x, z) * std::size_t(s.ny);
-      for (int y = 0; y < s.ny; ++y)
-        if (v[y]) {
-          const int p[3] = {x, y, z};
-          for (int k = 0; k < 3; ++k) {
-            box.lo[k] = std::min(box.lo[k], p[k]);
-            box.hi[k] = std::max(box.hi[k], p[k]);
-          }
-        }
+      const std::uint8_t* first = std::find_if(v, v + s.ny, solid);
+      if (first == v + s.ny) continue;
+      const auto last = std::find_if(std::make_reverse_iterator(v + s.ny), std::make_reverse_iterator(first), solid);
+      const int lo[3] = {x, int(first - v), z}, hi[3] = {x, int(last.base() - v) - 1, z};
+      for (int k = 0; k < 3; ++k) {
+        box.lo[k] = std::min(box.lo[k], lo[k]);
+        box.hi[k] = std::max(box.hi[k], hi[k]);
+      }
     }
   return box;
 }
@@ -106,6 +110,7 @@ class SurfaceCorners {
   }();
 
  public:
+  // Every lattice column of the box.
   SurfaceCorners(const GridSpec& s, const std::vector<std::uint8_t>& volume, const Box& box, unsigned threads,
                  const std::stop_token& stop) {
     for (int k = 0; k < 3; ++k) {
@@ -116,39 +121,34 @@ class SurfaceCorners {
     layer_words_ = (std::size_t(n_[0]) * std::size_t(n_[1]) + 63) / 64;
     bits_.assign(layer_words_ * std::size_t(n_[2]), 0);
     const std::vector<std::uint8_t> empty(std::size_t(s.ny), 0);
-    const auto column = [&](int x, int z) {
-      return x >= 0 && z >= 0 && x < s.nx && z < s.nz ? volume.data() + s.column(x, z) * std::size_t(s.ny) : empty.data();
-    };
-    const int y_first = lo_[1], y_last = lo_[1] + n_[1] - 1;  // lattice levels; voxel levels y-1 and y
-    const std::ptrdiff_t read_from = std::max(y_first - 1, 0), read_to = std::min(y_last, s.ny - 1) + 1;
     detail::parallel_for(std::size_t(n_[2]), threads, 16, [&](std::size_t z_begin, std::size_t z_end, std::size_t) {
       for (int z = lo_[2] + int(z_begin); z < lo_[2] + int(z_end); ++z, stop_point(stop))
-        for (int x = lo_[0]; x < lo_[0] + n_[0]; ++x) {
-          const std::uint8_t* cols[4] = {column(x - 1, z - 1), column(x, z - 1), column(x - 1, z), column(x, z)};
-          // Four equal columns turn nowhere: each level's four voxels are alike, so every plane through a
-          // point sees four equal faces or none.
-          const auto same = [&](const std::uint8_t* a, const std::uint8_t* b) {
-            return a == b || std::equal(a + read_from, a + read_to, b + read_from);
-          };
-          if (same(cols[0], cols[1]) && same(cols[0], cols[2]) && same(cols[0], cols[3])) continue;
-          // The four voxels of level y - 1 (bits dy = 0), carried up from the previous level.
-          const auto level = [&](int y) {
-            int bits = 0;
-            if (y >= 0 && y < s.ny)
-              for (int k = 0; k < 4; ++k) bits |= int(cols[k][y] != 0) << k;
-            return bits;
-          };
-          int below = level(y_first - 1);
-          for (int y = y_first; y <= y_last; ++y) {
-            const int above = level(y);
-            if (kCornerTable[std::size_t(kSpread[std::size_t(below)] | kSpread[std::size_t(above)] << 2)]) {
-              const std::size_t i = bit(x, y, z);
-              bits_[i / 64] |= std::uint64_t{1} << (i % 64);
-            }
-            below = above;
-          }
-        }
+        for (int x = lo_[0]; x < lo_[0] + n_[0]; ++x) find_column(s, volume, empty, x, z);
     });
+  }
+  // The corners of the same box over a volume that differs from `previous`'s only in the voxel columns
+  // `changed` (GridSpec::column): a point's corner bit reads the 8 voxels around it, so only the lattice
+  // columns beside a changed voxel column are found again.
+  SurfaceCorners(const GridSpec& s, const std::vector<std::uint8_t>& volume, SurfaceCorners previous,
+                 std::span<const std::size_t> changed)
+      : SurfaceCorners(std::move(previous)) {
+    const std::vector<std::uint8_t> empty(std::size_t(s.ny), 0);
+    const std::size_t lattice_columns = std::size_t(n_[0]) * std::size_t(n_[2]);
+    std::vector<std::uint8_t> again(lattice_columns, 0);
+    for (const std::size_t column : changed) {
+      const int cx = int(column % std::size_t(s.nx)), cz = int(column / std::size_t(s.nx));
+      for (int z = cz; z <= cz + 1; ++z)
+        for (int x = cx; x <= cx + 1; ++x)
+          if (x >= lo_[0] && z >= lo_[2] && x < lo_[0] + n_[0] && z < lo_[2] + n_[2])
+            again[std::size_t(z - lo_[2]) * std::size_t(n_[0]) + std::size_t(x - lo_[0])] = 1;
+    }
+    for (int z = lo_[2]; z < lo_[2] + n_[2]; ++z)
+      for (int x = lo_[0]; x < lo_[0] + n_[0]; ++x)
+        if (again[std::size_t(z - lo_[2]) * std::size_t(n_[0]) + std::size_t(x - lo_[0])]) {
+          const std::size_t first = bit(x, lo_[1], z);
+          for (std::size_t i = first; i < first + std::size_t(n_[1]); ++i) bits_[i / 64] &= ~(std::uint64_t{1} << (i % 64));
+          find_column(s, volume, empty, x, z);
+        }
   }
   bool contains(const Point& p) const {
     for (int k = 0; k < 3; ++k)
@@ -156,8 +156,42 @@ class SurfaceCorners {
     const std::size_t i = bit(p.v[0], p.v[1], p.v[2]);
     return (bits_[i / 64] >> (i % 64)) & 1;
   }
+  bool operator==(const SurfaceCorners&) const = default;
 
  private:
+  // Sets the corner bits of lattice column (x, z), all clear before.
+  void find_column(const GridSpec& s, const std::vector<std::uint8_t>& volume, const std::vector<std::uint8_t>& empty,
+                   int x, int z) {
+    const auto column = [&](int cx, int cz) {
+      return cx >= 0 && cz >= 0 && cx < s.nx && cz < s.nz ? volume.data() + s.column(cx, cz) * std::size_t(s.ny)
+                                                          : empty.data();
+    };
+    const int y_first = lo_[1], y_last = lo_[1] + n_[1] - 1;  // lattice levels; voxel levels y-1 and y
+    const std::ptrdiff_t read_from = std::max(y_first - 1, 0), read_to = std::min(y_last, s.ny - 1) + 1;
+    const std::uint8_t* cols[4] = {column(x - 1, z - 1), column(x, z - 1), column(x - 1, z), column(x, z)};
+    // Four equal columns turn nowhere: each level's four voxels are alike, so every plane through a
+    // point sees four equal faces or none.
+    const auto same = [&](const std::uint8_t* a, const std::uint8_t* b) {
+      return a == b || std::equal(a + read_from, a + read_to, b + read_from);
+    };
+    if (same(cols[0], cols[1]) && same(cols[0], cols[2]) && same(cols[0], cols[3])) return;
+    // The four voxels of level y - 1 (bits dy = 0), carried up from the previous level.
+    const auto level = [&](int y) {
+      int bits = 0;
+      if (y >= 0 && y < s.ny)
+        for (int k = 0; k < 4; ++k) bits |= int(cols[k][y] != 0) << k;
+      return bits;
+    };
+    int below = level(y_first - 1);
+    for (int y = y_first; y <= y_last; ++y) {
+      const int above = level(y);
+      if (kCornerTable[std::size_t(kSpread[std::size_t(below)] | kSpread[std::size_t(above)] << 2)]) {
+        const std::size_t i = bit(x, y, z);
+        bits_[i / 64] |= std::uint64_t{1} << (i % 64);
+      }
+      below = above;
+    }
+  }
   std::size_t bit(int x, int y, int z) const {
     return std::size_t(z - lo_[2]) * layer_words_ * 64 + std::size_t(x - lo_[0]) * std::size_t(n_[1]) +
            std::size_t(y - lo_[1]);
@@ -201,14 +235,26 @@ class MeshBuilder {
   }
   void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) { indices_.insert(indices_.end(), {a, b, c}); }
 
-  // Appends this part to `mesh`, each position once across all parts (`index` maps points to mesh vertices).
-  void append_to(BoundsMesh& mesh, std::unordered_map<Point, std::uint32_t, PointHash>& index, const GridSpec& s) const {
+  // The mesh's vertices by point, each once across all parts.
+  struct MeshPoints {
+    detail::FirstIndex first;
+    std::vector<Point> points;  // of each mesh vertex
+  };
+  // Appends this part to `mesh`, each position once across all parts.
+  void append_to(BoundsMesh& mesh, MeshPoints& index, const GridSpec& s) const {
     std::vector<std::uint32_t> global(points_.size());
+    index.first.reserve(index.points.size() + points_.size());
     for (std::size_t i = 0; i < points_.size(); ++i) {
       const Point& p = points_[i];
-      const auto [it, inserted] = index.try_emplace(p, std::uint32_t(mesh.vertices.size()));
-      if (inserted) mesh.vertices.push_back(s.lattice_to_world(float(p.v[0]), float(p.v[1]), float(p.v[2])));
-      global[i] = it->second;
+      const auto next = std::uint32_t(index.points.size());
+      const std::uint32_t at = index.first.insert(
+          detail::WordHash().add(std::uint32_t(p.v[0])).add(std::uint32_t(p.v[1])).add(std::uint32_t(p.v[2])).value(), next,
+          [&](std::uint32_t j) { return index.points[j] == p; });
+      if (at == next) {
+        index.points.push_back(p);
+        mesh.vertices.push_back(s.lattice_to_world(float(p.v[0]), float(p.v[1]), float(p.v[2])));
+      }
+      global[i] = at;
     }
     for (const std::uint32_t i : indices_) mesh.indices.push_back(global[i]);
   }
@@ -375,22 +421,27 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
   const auto replayed = [&](int c) {
     return reuse.kept && !(c >= c0 && (*reuse.changed)[std::size_t(c)]) && !(c + 1 <= c_end && (*reuse.changed)[std::size_t(c + 1)]);
   };
-  bool meshes = false;
-  for (int c = c0 - 1; c <= c_end && !meshes; ++c) meshes = !replayed(c);
+  // The slices meshed lie in [first, last].
+  int first = c_end + 1, last = c0 - 2;
+  for (int c = c0 - 1; c <= c_end; ++c)
+    if (!replayed(c)) first = std::min(first, c), last = c;
+  const bool meshes = first <= last;
   SliceMesher slice(meshes ? na : 0, meshes ? nb : 0);
   // Slice c lies between voxel layers c and c + 1; outside the box both are empty. Along y (stride 1) the
-  // faces are found once, column by column, and kept per slice, each slice's in row order.
+  // faces are found once, column by column, and kept per slice, each slice's in row order: those of the slices
+  // from first to last (a change's few levels read, not every column's every level).
   std::vector<std::vector<std::array<int, 2>>> y_faces;
   if (sc == 1 && meshes) {
     y_faces.resize(std::size_t(c_end - c0 + 2));
+    const int inner_first = std::max(first, c0), inner_end = std::min(last + 1, c_end);  // slices c0..c_end-1
     for (int b = 0; b < nb; ++b)
       for (int a = 0; a < na; ++a) {
         const std::uint8_t* v = base + a * sa + b * sb;
         const auto face_at = [&](int c) { y_faces[std::size_t(c - c0 + 1)].push_back({a, b}); };
-        if (v[c0] != 0) face_at(c0 - 1);
-        for (int c = c0; c < c_end;) {
+        if (first == c0 - 1 && v[c0] != 0) face_at(c0 - 1);
+        for (int c = inner_first; c < inner_end;) {
           // Eight levels at a time where they hold no change (most of a column).
-          if (c + 8 <= c_end) {
+          if (c + 8 <= inner_end) {
             std::uint64_t here, next;
             std::memcpy(&here, v + c, 8);
             std::memcpy(&next, v + c + 1, 8);
@@ -402,7 +453,7 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
           if (v[c] != v[c + 1]) face_at(c);
           ++c;
         }
-        if (v[c_end] != 0) face_at(c_end);
+        if (last == c_end && v[c_end] != 0) face_at(c_end);
       }
   }
   std::vector<int> differing;
@@ -456,19 +507,24 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
   }
 }
 
-// Which voxel layers along each axis differ between two volumes of one grid.
-std::array<std::vector<std::uint8_t>, 3> changed_layers(const GridSpec& s, const std::vector<std::uint8_t>& before,
-                                                         const std::vector<std::uint8_t>& after) {
-  std::array<std::vector<std::uint8_t>, 3> changed{std::vector<std::uint8_t>(std::size_t(s.nx), 0),
-                                                   std::vector<std::uint8_t>(std::size_t(s.ny), 0),
-                                                   std::vector<std::uint8_t>(std::size_t(s.nz), 0)};
+// Where two volumes of one grid differ: the voxel layers along each axis, and the voxel columns.
+struct VolumeChanges {
+  std::array<std::vector<std::uint8_t>, 3> layers;
+  std::vector<std::size_t> columns;  // GridSpec::column, ascending
+};
+VolumeChanges volume_changes(const GridSpec& s, const std::vector<std::uint8_t>& before,
+                             const std::vector<std::uint8_t>& after) {
+  VolumeChanges changed{{std::vector<std::uint8_t>(std::size_t(s.nx), 0), std::vector<std::uint8_t>(std::size_t(s.ny), 0),
+                         std::vector<std::uint8_t>(std::size_t(s.nz), 0)},
+                        {}};
   const std::size_t ny = std::size_t(s.ny);
   for (std::size_t col = 0; col < s.column_count(); ++col) {
     const std::uint8_t *a = before.data() + col * ny, *b = after.data() + col * ny;
     if (std::memcmp(a, b, ny) == 0) continue;
-    changed[0][col % std::size_t(s.nx)] = changed[2][col / std::size_t(s.nx)] = 1;
+    changed.columns.push_back(col);
+    changed.layers[0][col % std::size_t(s.nx)] = changed.layers[2][col / std::size_t(s.nx)] = 1;
     for (std::size_t y = 0; y < ny; ++y)
-      if (a[y] != b[y]) changed[1][y] = 1;
+      if (a[y] != b[y]) changed.layers[1][y] = 1;
   }
   return changed;
 }
@@ -480,6 +536,7 @@ struct detail::MeshMemo::State {
   std::vector<std::uint8_t> volume;
   Box box{};
   std::array<std::vector<SliceRecord>, 3> slices;  // per axis (kAxes), per slice
+  std::optional<SurfaceCorners> corners;           // of `volume`, where found
 };
 
 detail::MeshMemo::MeshMemo() = default;
@@ -504,30 +561,38 @@ BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint
                                         memo->state_->volume.size() == volume.size()
                                     ? memo->state_.get()
                                     : nullptr;
-  std::array<std::vector<std::uint8_t>, 3> changed;
-  if (kept) changed = changed_layers(spec, kept->volume, volume);
+  VolumeChanges changed;
+  if (kept) changed = volume_changes(spec, kept->volume, volume);
   auto next = memo ? std::make_unique<MeshMemo::State>() : nullptr;
   // Every slice replayed: no corner is read.
-  bool all_kept = kept != nullptr;
-  for (const std::vector<std::uint8_t>& layers : changed)
-    all_kept = all_kept && std::find(layers.begin(), layers.end(), std::uint8_t{1}) == layers.end();
+  const bool all_kept = kept != nullptr && changed.columns.empty();
   std::optional<SurfaceCorners> corners;
-  if (!all_kept) corners.emplace(spec, volume, box, threads, stop);
+  // The previous corners with the columns beside a change found again, where those are few (one thread finds
+  // them); else all, on the threads.
+  const std::size_t columns = std::size_t(box.hi[0] - box.lo[0] + 2) * std::size_t(box.hi[2] - box.lo[2] + 2);
+  if (all_kept) {
+    if (next) next->corners = kept->corners;
+  } else if (kept && kept->corners && 4 * changed.columns.size() < columns / 8) {
+    corners.emplace(spec, volume, *kept->corners, changed.columns);
+  } else {
+    corners.emplace(spec, volume, box, threads, stop);
+  }
   MeshBuilder parts[3];
   detail::parallel_tasks(3, threads, [&](std::size_t axis) {
     const int c = kAxes[axis].c;
     mesh_axis(spec, volume, box, kAxes[axis], corners ? &*corners : nullptr, parts[axis], stop,
-              {kept ? &kept->slices[axis] : nullptr, kept ? &changed[std::size_t(c)] : nullptr,
+              {kept ? &kept->slices[axis] : nullptr, kept ? &changed.layers[std::size_t(c)] : nullptr,
                next ? &next->slices[axis] : nullptr});
   });
   BoundsMesh mesh;
-  std::unordered_map<Point, std::uint32_t, PointHash> index;
+  MeshBuilder::MeshPoints index;
   for (const MeshBuilder& part : parts) {
     stop_point(stop);
     part.append_to(mesh, index, spec);
   }
   if (memo) {
     next->spec = spec, next->volume = volume, next->box = box;
+    if (corners) next->corners = std::move(corners);
     memo->state_ = std::move(next);
   }
   return mesh;

@@ -1,7 +1,8 @@
-// A hash table from packed cell keys (candidate.h's pack_key) to a 32-bit value, for the tiles of growth's
-// sample owners (sample_owners.h; world positions, unbounded: packing's bounded boxes use sample_raster.h): open
-// addressing with linear probing, so a lookup is a multiply and a probe or two, and an insert allocates only
-// when the table doubles (std::unordered_map allocated a node per cell).
+// A hash table from 63-bit keys to a 32-bit value: growth's sample owners by packed cell key (candidate.h's
+// pack_key; world positions, unbounded: packing's bounded boxes use sample_raster.h), and under FirstIndex the
+// first index of each value of a list (reach's wall footprints, growth's matching, the bounds' mesh vertices).
+// Open addressing with linear probing, so a lookup is a multiply and a probe or two, and an insert allocates only
+// when the table doubles (std::unordered_map allocated a node per entry).
 #pragma once
 #include <bit>
 #include <cstdint>

@@ -27,7 +27,8 @@ struct CombinedScan {
   Scan scan;
   std::vector<Placed> placed;  // each chunk in `scan`, in order
   KnownInput known;            // a run per placed chunk; every index in range
-  // Where chunk k's indices end in `scan`'s.
+  // Where chunk k's vertices and indices end in `scan`'s.
+  std::size_t vertex_end(std::size_t k) const { return k + 1 < placed.size() ? placed[k + 1].vertex : scan.vertices.size(); }
   std::size_t index_end(std::size_t k) const { return k + 1 < placed.size() ? placed[k + 1].index : scan.indices.size(); }
 };
 
@@ -61,6 +62,9 @@ struct AnalysisCaches {
   CombinedScan combined;
   ChunkBandSums band_sums;  // of `combined`
   std::vector<MeshMemo> bounds;  // the home's bounds mesh, then each room's (AnalysisResult::room_bounds)
+  // The IncrementalAnalysis's voxel stage: given `combined` as it is in triangle mode, it maps to grid units the
+  // chunks it voxelizes again itself (VoxelizeRequest::grid_vertices left empty), and reads no other's vertices.
+  const VoxelStage* chunk_stage = nullptr;
   std::unique_ptr<WorkerPool> workers;  // the analyses' threads, kept between them
 };
 

@@ -167,13 +167,17 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     r.warnings.push_back("triangle mode asked for a scan without triangles: vertex mode used");
   }
   const GridSpec spec = make_grid_spec(checked.lo, checked.hi, options.voxel_size, options.voxel_budget);
-  const std::vector<glm::vec3> grid_vertices = to_grid_units(in.vertices, spec);
+  CpuVoxelStage cpu(options.threads);
+  VoxelStage& stage = options.voxel_stage != nullptr ? *options.voxel_stage : cpu;
+  // An IncrementalAnalysis's stage maps the few chunks it voxelizes again itself, where the input checks removed
+  // nothing: the whole scan's vertices are not mapped for each change.
+  const bool stage_maps_chunks = chunks != nullptr && &stage == caches->chunk_stage && r.mode == VoxelMode::Triangles &&
+                                 in.vertices.data() == scan.vertices.data() && in.indices.data() == scan.indices.data();
+  const std::vector<glm::vec3> grid_vertices = stage_maps_chunks ? std::vector<glm::vec3>() : to_grid_units(in.vertices, spec);
   const int min_separation = voxels_for(options.features.min_floor_ceiling, spec.voxel_size);
   r.timings.prepare = clock.lap();
 
   stop_point(options.stop);
-  CpuVoxelStage cpu(options.threads);
-  VoxelStage& stage = options.voxel_stage != nullptr ? *options.voxel_stage : cpu;
   r.backend = stage.name();
   r.voxels = stage.run({spec, grid_vertices, in.indices, r.mode, min_separation, options.voxel_test_budget,
                         options.stop});

@@ -5,7 +5,8 @@
 // vertices mapped one by one (to_grid_units), so with the same GridSpec a chunk's triangles mark the same
 // voxels whether alone or among the others, and the grid of the combined scan is the union of the chunks'.
 // A chunk's marks are reused only under the GridSpec they were made with, and only while prepare_input kept
-// every vertex and triangle (otherwise the combined indices are renumbered and the stage runs in full).
+// every vertex and triangle (otherwise the combined indices are renumbered and the stage runs in full). Then
+// analyze() leaves the mapping to the stage, which maps the vertices of the chunks it voxelizes again, alone.
 #include "roomsense/incremental.h"
 
 #include "analysis_caches.h"
@@ -50,11 +51,18 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     revoxelized_ = 0;
     // prepare_input dropped or renumbered something, or there are no triangles: the stage in full.
     const detail::CombinedScan& c = *combined_;
-    if (request.mode != VoxelMode::Triangles || request.grid_vertices.size() != c.scan.vertices.size() ||
+    // analyze() leaves the mapping to grid units to this stage (grid_vertices empty) for the combined scan as it is.
+    const bool maps_chunks = request.grid_vertices.empty() && !c.scan.vertices.empty();
+    if (request.mode != VoxelMode::Triangles ||
+        (!maps_chunks && request.grid_vertices.size() != c.scan.vertices.size()) ||
         request.indices.size() != c.scan.indices.size()) {
       kept_.clear();
       revoxelized_ = c.placed.size();
-      return CpuVoxelStage(threads_).run(request);
+      if (!maps_chunks) return CpuVoxelStage(threads_).run(request);
+      const std::vector<glm::vec3> all = to_grid_units(c.scan.vertices, request.spec);
+      VoxelizeRequest mapped = request;
+      mapped.grid_vertices = all;
+      return CpuVoxelStage(threads_).run(mapped);
     }
     if (request.spec != spec_) kept_.clear(), spec_ = request.spec;
     std::map<std::uint64_t, Kept> now;
@@ -66,7 +74,7 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
           now.emplace(chunk.id, std::move(it->second));
           continue;
         }
-        now.emplace(chunk.id, voxelize_chunk(request, chunk.hash, request.indices.subspan(chunk.index, c.index_end(k) - chunk.index)));
+        now.emplace(chunk.id, voxelize_chunk(request, chunk.hash, k));
         ++revoxelized_;
       }
     } catch (...) {
@@ -99,36 +107,47 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     std::uint64_t tests = 0;
   };
 
-  // The chunk's triangles (`indices`, part of the request's) alone on the grid; its marks lie within its vertices'
-  // box (box_index per axis).
-  Kept voxelize_chunk(const VoxelizeRequest& request, std::uint64_t hash, std::span<const std::uint32_t> indices) {
-    Kept k;
-    k.hash = hash;
-    if (indices.empty()) return k;
+  // Chunk k's triangles alone on the grid; its marks lie within its vertices' box (box_index per axis). Where
+  // the request leaves the mapping to this stage, the chunk's vertices are mapped here, its indices made its own.
+  Kept voxelize_chunk(const VoxelizeRequest& request, std::uint64_t hash, std::size_t k) {
+    const detail::CombinedScan& c = *combined_;
+    Kept kept;
+    kept.hash = hash;
+    const std::size_t first_index = c.placed[k].index, first_vertex = c.placed[k].vertex;
     VoxelizeRequest part = request;
-    part.indices = indices;
+    part.indices = request.indices.subspan(first_index, c.index_end(k) - first_index);
+    if (part.indices.empty()) return kept;
+    std::vector<glm::vec3> vertices;
+    std::vector<std::uint32_t> indices;
+    if (request.grid_vertices.empty()) {
+      vertices = to_grid_units(std::span(c.scan.vertices).subspan(first_vertex, c.vertex_end(k) - first_vertex), request.spec);
+      indices.reserve(part.indices.size());
+      for (const std::uint32_t i : part.indices) indices.push_back(i - std::uint32_t(first_vertex));
+      part.grid_vertices = vertices;
+      part.indices = indices;
+    }
     // One scratch grid for every chunk, cleared over each chunk's box after use: a chunk costs its box, not the
     // grid (the first result of a room in a hundred chunks cleared the whole grid a hundred times).
     // A failure here reaches run(), which drops the scratch grid with whatever marks it holds.
     if (scratch_.spec != request.spec) scratch_ = VoxelGrid(request.spec);
     VoxelGrid& grid = scratch_;
-    voxelize_cpu_into(part, grid, threads_, &k.tests);
+    voxelize_cpu_into(part, grid, threads_, &kept.tests);
     const GridSpec& s = request.spec;
     glm::vec3 lo(INFINITY), hi(-INFINITY);
-    for (const std::uint32_t i : part.indices) lo = glm::min(lo, request.grid_vertices[i]), hi = glm::max(hi, request.grid_vertices[i]);
+    for (const std::uint32_t i : part.indices) lo = glm::min(lo, part.grid_vertices[i]), hi = glm::max(hi, part.grid_vertices[i]);
     const int x0 = box_index(lo.x, s.nx), x1 = box_index(hi.x, s.nx), y0 = box_index(lo.y, s.ny),
               y1 = box_index(hi.y, s.ny), z0 = box_index(lo.z, s.nz), z1 = box_index(hi.z, s.nz);
     for (int z = z0; z <= z1; ++z)
       for (int x = x0; x <= x1; ++x)
         for (int y = y0; y <= y1; ++y) {
           const std::size_t v = s.index(x, y, z);
-          if (grid.cells[v] != 0) k.voxels.push_back(std::uint32_t(v));
+          if (grid.cells[v] != 0) kept.voxels.push_back(std::uint32_t(v));
           grid.cells[v] = 0;
         }
     // prepare_input drops what is not finite, but a mark outside the box would stay for the next chunk.
     const auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
     if (!finite(lo) || !finite(hi)) std::fill(grid.cells.begin(), grid.cells.end(), std::uint8_t{0});
-    return k;
+    return kept;
   }
 
   unsigned threads_;
@@ -144,6 +163,7 @@ IncrementalAnalysis::IncrementalAnalysis(AnalysisOptions options)
       stage_(std::make_unique<ChunkVoxelStage>(options_.threads)),
       caches_(std::make_unique<detail::AnalysisCaches>()) {
   options_.voxel_stage = stage_.get();
+  caches_->chunk_stage = stage_.get();
 }
 IncrementalAnalysis::~IncrementalAnalysis() = default;
 IncrementalAnalysis::IncrementalAnalysis(IncrementalAnalysis&&) noexcept = default;

@@ -156,7 +156,6 @@ class SurfaceCorners {
     const std::size_t i = bit(p.v[0], p.v[1], p.v[2]);
     return (bits_[i / 64] >> (i % 64)) & 1;
   }
-  bool operator==(const SurfaceCorners&) const = default;
 
  private:
   // Sets the corner bits of lattice column (x, z), all clear before.

@@ -8,9 +8,34 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 
 namespace roomsense {
 namespace {
+
+// A column's levels eight at a time, a byte each, the lowest level in the lowest byte.
+static_assert(std::endian::native == std::endian::little);
+std::uint64_t eight_levels(const std::uint8_t* v, int y) {
+  std::uint64_t w;
+  std::memcpy(&w, v + y, 8);
+  return w;
+}
+// The lowest level in [from, to) holding a voxel of column `v`; `to` where none does.
+int lowest_solid(const std::uint8_t* v, int from, int to) {
+  for (; from + 8 <= to; from += 8)
+    if (const std::uint64_t w = eight_levels(v, from)) return from + std::countr_zero(w) / 8;
+  for (; from < to; ++from)
+    if (v[from]) return from;
+  return to;
+}
+// The highest level in (below, to] holding a voxel of column `v`; `below` where none does.
+int highest_solid(const std::uint8_t* v, int below, int to) {
+  for (; to - 8 >= below; to -= 8)
+    if (const std::uint64_t w = eight_levels(v, to - 7)) return to - 7 + (63 - std::countl_zero(w)) / 8;
+  for (; to > below; --to)
+    if (v[to]) return to;
+  return below;
+}
 
 // §3.6's last step: an inactive voxel becomes active when, in any of the X-Z, X-Y and Y-Z planes, at least
 // three of its four neighbours are active. Neighbours are read from the volume before this pass: the
@@ -34,13 +59,31 @@ void fill_plane_holes(const GridSpec& s, const FloorCeiling& levels, std::vector
         // and at most two (below, above) in the others: nothing to fill.
         const auto same = [&](const std::uint8_t* n) { return n == c || std::equal(c + y_lo, c + y_hi + 1, n + y_lo); };
         if (same(l) && same(r) && same(b) && same(f)) continue;
-        for (int y = y_lo; y <= y_hi; ++y) {
-          if (c[y]) continue;
+        const auto check = [&](int y) {
+          if (c[y]) return;
           const int left = l[y], right = r[y], back = b[y], front = f[y];
           const int down = y > 0 ? c[y - 1] : 0, up = y + 1 < s.ny ? c[y + 1] : 0;
           const int xz = left + right + back + front, xy = left + right + down + up, yz = down + up + back + front;
           if (xz >= 3 || xy >= 3 || yz >= 3) fill.push_back(s.index(x, y, z));
+        };
+        // Eight levels at a time (voxels are 0 or 1, so no sum of four carries into the next byte), where the
+        // levels below and above lie in the column.
+        int y = y_lo;
+        for (; y < 1 && y <= y_hi; ++y) check(y);
+        for (; y + 8 <= std::min(y_hi + 1, s.ny - 1); y += 8) {
+          constexpr std::uint64_t kOnes = 0x0101010101010101ull;
+          const std::uint64_t here = eight_levels(c, y), down = eight_levels(c, y - 1), up = eight_levels(c, y + 1);
+          const std::uint64_t left_right = eight_levels(l, y) + eight_levels(r, y),
+                              back_front = eight_levels(b, y) + eight_levels(f, y);
+          const std::uint64_t down_up = down + up;
+          // A byte of a sum is at least 3 where adding 5 sets its bit 3 (sums are at most 4).
+          const std::uint64_t three = ((left_right + back_front + 5 * kOnes) | (left_right + down_up + 5 * kOnes) |
+                                       (down_up + back_front + 5 * kOnes)) & (8 * kOnes);
+          std::uint64_t to_fill = three & ~(here << 3);
+          for (; to_fill != 0; to_fill &= to_fill - 1)
+            fill.push_back(s.index(x, y + std::countr_zero(to_fill) / 8, z));
         }
+        for (; y <= y_hi; ++y) check(y);
       }
   });
   for (const auto& fill : fills)
@@ -164,21 +207,13 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
     for (std::size_t col = begin; col < end; ++col) {
       const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
       // G (Eq. 3.60): the highest active level in (I_Floor, I_yEnd]; else I_Floor inside the room; else -1.
-      g[col] = room[col] ? levels.floor : -1;
       const int ceiling = ceiling_of(col);
-      for (int y = std::min(y_end, ceiling - 1); y > levels.floor; --y)
-        if (v[y]) {
-          g[col] = y;
-          break;
-        }
+      const int top = highest_solid(v, levels.floor, std::min(y_end, ceiling - 1));
+      g[col] = top > levels.floor ? top : room[col] ? levels.floor : -1;
       // H (Eq. 3.61): the lowest active level in [I_yEnd, I_Ceiling); else I_Ceiling inside the room; else
       // I_Ceiling + 1.
-      h[col] = room[col] ? levels.ceiling : levels.ceiling + 1;
-      for (int y = y_end; y < levels.ceiling; ++y)
-        if (v[y]) {
-          h[col] = y;
-          break;
-        }
+      const int bottom = lowest_solid(v, y_end, levels.ceiling);
+      h[col] = bottom < levels.ceiling ? bottom : room[col] ? levels.ceiling : levels.ceiling + 1;
       if (room[col] && ceiling < levels.ceiling) h[col] = std::min(h[col], std::max(ceiling, levels.floor + 1));
     }
   });
@@ -301,12 +336,16 @@ BoundsMesh build_bounds(const VoxelGrid& grid, const FloorCeiling& levels, int y
 
 std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,
                                         const BoundsParams& params, unsigned threads, const std::stop_token& stop) {
-  std::vector<std::uint8_t> volume(grid.spec.voxel_count(), 0);
+  // The first storey's volume, the others' or-ed into it.
+  std::vector<std::uint8_t> volume;
   for (const BoundsStorey& storey : storeys) {
-    const std::vector<std::uint8_t> part = storey_volume(grid, storey, *storey.room, params, threads, stop);
-    for (std::size_t i = 0; i < volume.size(); ++i) volume[i] |= part[i];
+    std::vector<std::uint8_t> part = storey_volume(grid, storey, *storey.room, params, threads, stop);
+    if (volume.empty()) volume = std::move(part);
+    else
+      for (std::size_t i = 0; i < volume.size(); ++i) volume[i] |= part[i];
     stop_point(stop);
   }
+  if (volume.empty()) volume.assign(grid.spec.voxel_count(), 0);
   return volume;
 }
 

@@ -47,7 +47,7 @@ class KeyTable {
   }
 
  private:
-  // pack_key uses 63 bits, so no cell has this key.
+  // Keys use 63 bits (pack_key's, FirstIndex's), so none is this.
   static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
 
   std::size_t home(std::uint64_t key) const {

@@ -62,8 +62,8 @@ struct AnalysisCaches {
   CombinedScan combined;
   ChunkBandSums band_sums;  // of `combined`
   std::vector<MeshMemo> bounds;  // the home's bounds mesh, then each room's (AnalysisResult::room_bounds)
-  // The IncrementalAnalysis's voxel stage: given `combined` as it is in triangle mode, it maps to grid units the
-  // chunks it voxelizes again itself (VoxelizeRequest::grid_vertices left empty), and reads no other's vertices.
+  // The IncrementalAnalysis's voxel stage. analyze() gives it `combined` as it is in triangle mode with
+  // VoxelizeRequest::grid_vertices left empty, and nothing else so: it maps the chunks it voxelizes again itself.
   const VoxelStage* chunk_stage = nullptr;
   std::unique_ptr<WorkerPool> workers;  // the analyses' threads, kept between them
 };

@@ -5,8 +5,8 @@
 // vertices mapped one by one (to_grid_units), so with the same GridSpec a chunk's triangles mark the same
 // voxels whether alone or among the others, and the grid of the combined scan is the union of the chunks'.
 // A chunk's marks are reused only under the GridSpec they were made with, and only while prepare_input kept
-// every vertex and triangle (otherwise the combined indices are renumbered and the stage runs in full). Then
-// analyze() leaves the mapping to the stage, which maps the vertices of the chunks it voxelizes again, alone.
+// every vertex and triangle (otherwise the combined indices are renumbered and the stage runs in full); then
+// analyze() leaves the mapping to the stage, which maps the vertices of each chunk it voxelizes again, alone.
 #include "roomsense/incremental.h"
 
 #include "analysis_caches.h"
@@ -49,20 +49,14 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
 
   VoxelStageResult run(const VoxelizeRequest& request) override {
     revoxelized_ = 0;
-    // prepare_input dropped or renumbered something, or there are no triangles: the stage in full.
     const detail::CombinedScan& c = *combined_;
-    // analyze() leaves the mapping to grid units to this stage (grid_vertices empty) for the combined scan as it is.
-    const bool maps_chunks = request.grid_vertices.empty() && !c.scan.vertices.empty();
-    if (request.mode != VoxelMode::Triangles ||
-        (!maps_chunks && request.grid_vertices.size() != c.scan.vertices.size()) ||
-        request.indices.size() != c.scan.indices.size()) {
+    // analyze() maps the vertices itself only where the input checks dropped or renumbered something, or there
+    // are no triangles: the stage in full. Otherwise (grid_vertices empty: the combined scan as it is, in triangle
+    // mode) each chunk voxelized again is mapped alone below.
+    if (!request.grid_vertices.empty()) {
       kept_.clear();
       revoxelized_ = c.placed.size();
-      if (!maps_chunks) return CpuVoxelStage(threads_).run(request);
-      const std::vector<glm::vec3> all = to_grid_units(c.scan.vertices, request.spec);
-      VoxelizeRequest mapped = request;
-      mapped.grid_vertices = all;
-      return CpuVoxelStage(threads_).run(mapped);
+      return CpuVoxelStage(threads_).run(request);
     }
     if (request.spec != spec_) kept_.clear(), spec_ = request.spec;
     std::map<std::uint64_t, Kept> now;
@@ -107,8 +101,8 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     std::uint64_t tests = 0;
   };
 
-  // Chunk k's triangles alone on the grid; its marks lie within its vertices' box (box_index per axis). Where
-  // the request leaves the mapping to this stage, the chunk's vertices are mapped here, its indices made its own.
+  // Chunk k's triangles alone on the grid, its vertices mapped to grid units here and its indices made its own;
+  // its marks lie within its vertices' box (box_index per axis).
   Kept voxelize_chunk(const VoxelizeRequest& request, std::uint64_t hash, std::size_t k) {
     const detail::CombinedScan& c = *combined_;
     Kept kept;
@@ -117,15 +111,13 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     VoxelizeRequest part = request;
     part.indices = request.indices.subspan(first_index, c.index_end(k) - first_index);
     if (part.indices.empty()) return kept;
-    std::vector<glm::vec3> vertices;
+    const std::vector<glm::vec3> vertices =
+        to_grid_units(std::span(c.scan.vertices).subspan(first_vertex, c.vertex_end(k) - first_vertex), request.spec);
     std::vector<std::uint32_t> indices;
-    if (request.grid_vertices.empty()) {
-      vertices = to_grid_units(std::span(c.scan.vertices).subspan(first_vertex, c.vertex_end(k) - first_vertex), request.spec);
-      indices.reserve(part.indices.size());
-      for (const std::uint32_t i : part.indices) indices.push_back(i - std::uint32_t(first_vertex));
-      part.grid_vertices = vertices;
-      part.indices = indices;
-    }
+    indices.reserve(part.indices.size());
+    for (const std::uint32_t i : part.indices) indices.push_back(i - std::uint32_t(first_vertex));
+    part.grid_vertices = vertices;
+    part.indices = indices;
     // One scratch grid for every chunk, cleared over each chunk's box after use: a chunk costs its box, not the
     // grid (the first result of a room in a hundred chunks cleared the whole grid a hundred times).
     // A failure here reaches run(), which drops the scratch grid with whatever marks it holds.

@@ -211,72 +211,59 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     grow_areas(areas, growth_rule(spec, features, params, type), params, stop, cache->growth_replay(type, params), &record);
     cache->keep_grown(type, std::move(record), params);
   };
-  // Walls: V_Wall and the room's main direction, which the square searches try first (reduce.h), and beside
-  // them packing; the candidates (along the room's surface, not over its floor: few) go once both are done.
-  std::atomic<int> wall_candidate_users = 2;
-  const auto release_walls = [&] {
-    if (--wall_candidate_users != 0) return;
-    for (Candidates& size : found[0]) red[0].found += size.size(), size = Candidates();
+  // Each search's candidates go once both their deduplication and their packing are done.
+  std::array<std::array<std::atomic<int>, 3>, 4> candidate_users;
+  for (auto& type_users : candidate_users)
+    for (std::atomic<int>& users : type_users) users = 2;
+  const auto release = [&](std::size_t type, std::size_t size) {
+    if (--candidate_users[type][size] == 0) found[type][size] = Candidates();
   };
   // The square types whose reduction is the previous analysis's, decided once the walls give the main direction.
   const auto reuse_squares = [&] {
     for (std::size_t type = 1; type < 4 && cache; ++type) reused[type] = cache->unchanged_type(type, params, dominant_deg);
   };
-  const auto deduplicate_walls = [&] {
-    normals = NormalCounts();
-    if (reused[0]) {
-      red[0].for_reach = reused[0]->for_reach, red[0].deduplicated = reused[0]->deduplicated;
-    } else {
-      red[0].deduplicated =
-          deduplicate_centres(spec, found[0], [&](const Sized& s) { red[0].for_reach.push_back(s); }, stop);
-    }
+  // Walls size by size, each as soon as its search ends (beside the next sizes' searches): V_Wall and, after the
+  // last size, the room's main direction, which the square searches try first (reduce.h); beside them packing.
+  CentreDeduplicator wall_deduplicator(spec, stop);
+  const auto deduplicate_walls = [&](std::size_t size) {
+    if (!reused[0])
+      red[0].deduplicated += wall_deduplicator.add(found[0][size], kAreaSizes[size],
+                                                   [&](const Sized& s) { red[0].for_reach.push_back(s); });
+    release(0, size);
+    if (size + 1 < kAreaSizes.size()) return;
+    normals = NormalCounts();  // the last wall search has ended
+    if (reused[0]) red[0].for_reach = reused[0]->for_reach, red[0].deduplicated = reused[0]->deduplicated;
     dominant_deg = red[0].dominant_deg = dominant_direction_deg(red[0].for_reach);
     reuse_squares();
-    release_walls();
   };
-  const auto reduce_walls = [&] {
+  // A wall's corners lie at levels from the normals' first less its height (Eq. 3.20, one more for rounding)
+  // to their last.
+  int wall_height_max = 0;
+  for (std::size_t size = 0; size < kAreaSizes.size(); ++size) {
+    const SizeRange range = range_of(0, size);
+    wall_height_max = std::max(wall_height_max, int(std::floor(range.max_d * range.height_ratio + 1e-9)) + 1);
+  }
+  WallPacker wall_packer(spec, normals.y0 - wall_height_max, normals.y0 + normals.levels - 1, stop);
+  const auto pack_walls = [&](std::size_t size) {
     if (reused[0]) {
+      if (size + 1 < kAreaSizes.size()) return;
       red[0].kept = reused[0]->kept, red[0].found = reused[0]->found, red[0].skipped = reused[0]->skipped;
       finish(0);
       return;
     }
-    const SizedList all(found[0]);
-    // IncrementalAnalysis: the three sizes' replays as one, where all three are known.
-    std::optional<PackReplay> replay;
-    if (cache && cache->replay(0, 0) && cache->replay(0, 1) && cache->replay(0, 2)) {
-      replay.emplace();
-      for (std::size_t size = 0; size < 3; ++size) {
-        const PackReplay& r = *cache->replay(0, size);
-        replay->previous.insert(replay->previous.end(), r.previous.begin(), r.previous.end());
-        replay->gone.insert(replay->gone.end(), r.gone.begin(), r.gone.end());
-      }
-    }
-    const std::vector<std::size_t> packed = pack_walls(all, replay ? &*replay : nullptr);
-    for (std::size_t i : packed) red[0].kept.push_back(all[i]);
-    if (cache) {
-      std::size_t first = 0;
-      for (std::size_t size = 0; size < 3; ++size) {
-        std::vector<std::size_t> of_size;
-        for (const std::size_t i : packed)
-          if (i >= first && i - first < found[0][size].size()) of_size.push_back(i - first);
-        cache->record_packing(0, size, of_size);
-        first += found[0][size].size();
-      }
-    }
-    release_walls();
-    finish(0);
+    const Candidates& walls = found[0][size];
+    const std::vector<std::size_t> packed = wall_packer.pack(walls, cache ? cache->replay(0, size) : nullptr);
+    for (const std::size_t i : packed) red[0].kept.push_back(Sized{walls[i], kAreaSizes[size]});
+    if (cache) cache->record_packing(0, size, packed);
+    red[0].found += walls.size();
+    release(0, size);
+    if (size + 1 == kAreaSizes.size()) finish(0);
   };
   // Squares one size at a time, large first: deduplicated (V_Floor for reach) and packed, each in its own chain
   // of tasks (neither reads the other), and dropped once both are done, before the next size is searched where
   // a type's candidates are many (on a 50 x 50 m floor, millions).
   std::array<std::unique_ptr<CentreDeduplicator>, 4> deduplicators;
   std::array<std::unique_ptr<SquarePacker>, 4> packers;
-  std::array<std::array<std::atomic<int>, 3>, 4> square_users;  // of found[type][size]: its dedup and packing
-  for (auto& type_users : square_users)
-    for (std::atomic<int>& users : type_users) users = 2;
-  const auto release_squares = [&](std::size_t type, std::size_t size) {
-    if (--square_users[type][size] == 0) found[type][size] = Candidates();
-  };
   const auto deduplicate_squares = [&](std::size_t type, std::size_t size) {
     if (reused[type]) return;  // packing's last task takes the whole reduction
     if (size == 0) deduplicators[type] = std::make_unique<CentreDeduplicator>(spec, stop);
@@ -287,7 +274,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       if (cache) red[type].for_reach.push_back(s);
       else floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
     });
-    release_squares(type, size);
+    release(type, size);
     if (size + 1 < kAreaSizes.size()) return;
     deduplicators[type].reset();
     if (type == 1) finish_floors_for_reach();
@@ -316,24 +303,27 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     for (std::size_t i : packed) red[type].kept.push_back(Sized{squares[i], kAreaSizes[size]});
     if (cache) cache->record_packing(type, size, packed, ranks);
     red[type].found += squares.size();
-    release_squares(type, size);
+    release(type, size);
     if (size + 1 < kAreaSizes.size()) return;
     packers[type].reset();
     finish(type);
   };
-  // The work as a graph (parallel_graph): the three wall searches; then the walls' deduplication and, beside
-  // it, their packing (which frees their candidates early); after the deduplication V_Wall's areas, and each
-  // type's square searches, side by side, the types most costly to search first, and each size's packing and
+  // The work as a graph (parallel_graph): the three wall searches; each size's deduplication and, beside it,
+  // its packing once its search and the previous size's are done; after the last deduplication V_Wall's areas,
+  // and each type's square searches, side by side, the types most costly to search first, and each size's packing and
   // deduplication after its search and the previous size's. Where one size's candidates would be large (about
   // two per tile, 12 bytes each, past kChainBytes: a floor of some 400 m² and more), a size's search also waits
   // for the previous size's reduction, so that the type holds one size's candidates at a time (on a 50 x 50 m
   // floor, 6 MB each) rather than searching them side by side.
   constexpr double kChainBytes = 1 << 20;
   const auto chained = [&](std::size_t type) { return 2.0 * starts[type] * double(Candidates::kBytesEach) > kChainBytes; };
-  constexpr std::size_t kDeduplicateWalls = 3;
-  std::vector<std::vector<std::size_t>> after = {{}, {}, {}, {0, 1, 2}, {0, 1, 2}, {kDeduplicateWalls}};
-  std::vector<std::function<void()>> tasks = {[&] { search(0); }, [&] { search(1); }, [&] { search(2); },
-                                              deduplicate_walls, reduce_walls, finish_walls_for_reach};
+  constexpr std::size_t kDeduplicateWalls = 5;  // the last size's, which gives the main direction
+  std::vector<std::vector<std::size_t>> after = {{}, {}, {}, {0}, {1, 3}, {2, 4}, {0}, {1, 6}, {2, 7}, {kDeduplicateWalls}};
+  std::vector<std::function<void()>> tasks = {
+      [&] { search(0); },            [&] { search(1); },            [&] { search(2); },
+      [&] { deduplicate_walls(0); }, [&] { deduplicate_walls(1); }, [&] { deduplicate_walls(2); },
+      [&] { pack_walls(0); },        [&] { pack_walls(1); },        [&] { pack_walls(2); },
+      finish_walls_for_reach};
   std::array<std::size_t, 3> square_types = {1, 2, 3};
   std::stable_sort(square_types.begin(), square_types.end(),
                    [&](std::size_t a, std::size_t b) { return search_cost(a) > search_cost(b); });

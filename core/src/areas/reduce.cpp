@@ -153,23 +153,6 @@ std::optional<std::array<long, 2>> middle_sample(const PackedCandidate& c) {
   return s;
 }
 
-// The box of half-voxel sample cells that the samples of `rects` (and wall samples a voxel off their plane)
-// fall in: corners are voxel indices, samples lie within a voxel and a half of them.
-struct SampleBox {
-  long x_lo = 0, x_hi = -1, y_lo = 0, y_hi = -1, z_lo = 0, z_hi = -1;
-};
-SampleBox sample_box(const SizedList& rects) {
-  if (rects.size() == 0) return {};
-  SampleBox b{LONG_MAX, LONG_MIN, LONG_MAX, LONG_MIN, LONG_MAX, LONG_MIN};
-  for (std::size_t i = 0; i < rects.size(); ++i)
-    for (const glm::ivec3& k : rects[i].c().corners) {
-      b.x_lo = std::min(b.x_lo, 2L * k.x - 4), b.x_hi = std::max(b.x_hi, 2L * k.x + 4);
-      b.y_lo = std::min(b.y_lo, 2L * k.y - 4), b.y_hi = std::max(b.y_hi, 2L * k.y + 4);
-      b.z_lo = std::min(b.z_lo, 2L * k.z - 4), b.z_hi = std::max(b.z_hi, 2L * k.z + 4);
-    }
-  return b;
-}
-
 double angle_mod_90(int dx, int dz) {
   const double a = std::atan2(double(dz), double(dx)) * 180.0 / std::numbers::pi;
   return std::fmod(std::fmod(a, 90.0) + 90.0, 90.0);
@@ -298,35 +281,47 @@ void note_decision(const PackReplay* replay, std::size_t i, const Candidate& c, 
 
 }  // namespace
 
-std::vector<std::size_t> pack_walls(const SizedList& walls, const PackReplay* replay) {
-  const SampleBox box = sample_box(walls);
-  SampleRaster taken(box.x_lo, box.x_hi, box.z_lo, box.z_hi, box.y_lo, box.y_hi);
-  std::vector<std::size_t> kept;
-  ChangedRegion changed({{int(box.x_lo / 2), int(box.z_lo / 2)}, {int(box.x_hi / 2), int(box.z_hi / 2)}});
+WallPacker::WallPacker(const GridSpec& spec, int y_lo, int y_hi, std::stop_token stop)
+    // A wall's samples, and those a voxel off its plane, lie within a voxel and a half of its corners:
+    // half-voxel cells 2 k - 4 to 2 k + 4 around a corner's index k on each axis.
+    : taken_(std::make_unique<SampleRaster>(-4, 2L * spec.nx + 4, -4, 2L * spec.nz + 4, 2L * y_lo - 4, 2L * y_hi + 4)),
+      changed_({{-2, -2}, {spec.nx + 1, spec.nz + 1}}),
+      stop_(std::move(stop)) {}
+WallPacker::~WallPacker() = default;
+
+std::vector<std::size_t> WallPacker::pack(const Candidates& walls, const PackReplay* replay) {
+  if (!replay) replayable_ = false;
+  if (!replayable_) replay = nullptr;
   if (replay)
-    for (const Candidate& c : replay->gone) changed.add(ChangedRegion::around(c));
-  std::size_t i = 0;  // in `walls`: the sizes in turn
-  for (const Candidates& of_size : walls.by_size()) {
-    // Each shape's top edge once: a rectangle's would be a square root and a division ahead of its samples.
-    std::vector<WallLine> lines;
-    for (const Candidates::Shape& shape : of_size.shapes()) lines.push_back(wall_line(shape.dx, shape.dz));
-    for (std::size_t j = 0; j < of_size.size(); ++j, ++i) {
-      const Candidates::Item& item = of_size.item(j);
-      const PackedCandidate wall = of_size.decode(item);
-      const WallLine& line = lines[item.shape];
-      const std::optional<Candidate> corners = replay ? std::optional(wall.unpack()) : std::nullopt;  // a replay's
-      const std::optional<bool> previous = corners ? previous_decision(replay, i, *corners, changed) : std::nullopt;
-      const bool free = previous ? *previous : wall_samples(wall, line, 0, [&](long x, long z, long y0, long y1) {
-        return !taken.any(x, z, y0, y1);
-      });
-      if (corners && !previous) note_decision(replay, i, *corners, free, changed);
-      if (!free) continue;
-      // Marked a voxel thick either side: a rectangle one voxel in front of another on a wall off the axes
-      // (the staircase of its voxels) covers the same wall.
-      for (int layer = -1; layer <= 1; ++layer)
-        wall_samples(wall, line, layer, [&](long x, long z, long y0, long y1) { return taken.set(x, z, y0, y1), true; });
-      kept.push_back(i);
-    }
+    for (const Candidate& c : replay->gone) changed_.add(ChangedRegion::around(c));
+  // Each shape's top edge once: a rectangle's would be a square root and a division ahead of its samples.
+  std::vector<WallLine> lines;
+  for (const Candidates::Shape& shape : walls.shapes()) lines.push_back(wall_line(shape.dx, shape.dz));
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    if (i % kStopEvery == 0) stop_point(stop_);
+    const Candidates::Item& item = walls.item(i);
+    const PackedCandidate wall = walls.decode(item);
+    const WallLine& line = lines[item.shape];
+    const std::optional<Candidate> corners = replay ? std::optional(wall.unpack()) : std::nullopt;  // a replay's
+    const std::optional<bool> previous = corners ? previous_decision(replay, i, *corners, changed_) : std::nullopt;
+    // Most walls are refused at their first sample, a quarter voxel along the top edge from corner 1: with dx >= 0
+    // (ring_offsets) it lies in half-voxel cell 2 x1 + 1, and in 2 z1 + 1 or 2 z1 as dz >= 0 or not (a step of
+    // |dz| / length keeps it off the cell's border). Tested first, without the edge's arithmetic.
+    const Candidates::Shape& shape = walls.shapes()[item.shape];
+    const glm::ivec3 first = wall.corner(0);
+    const bool first_taken = !previous && taken_->any(2L * first.x + 1, 2L * first.z + (shape.dz >= 0 ? 1 : 0),
+                                                      2L * (first.y - shape.side) + 1, 2L * first.y);
+    const bool free = previous ? *previous : !first_taken && wall_samples(wall, line, 0, [&](long x, long z, long y0, long y1) {
+      return !taken_->any(x, z, y0, y1);
+    });
+    if (corners && !previous) note_decision(replay, i, *corners, free, changed_);
+    if (!free) continue;
+    // Marked a voxel thick either side: a rectangle one voxel in front of another on a wall off the axes
+    // (the staircase of its voxels) covers the same wall.
+    for (int layer = -1; layer <= 1; ++layer)
+      wall_samples(wall, line, layer, [&](long x, long z, long y0, long y1) { return taken_->set(x, z, y0, y1), true; });
+    kept.push_back(i);
   }
   return kept;
 }

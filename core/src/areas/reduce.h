@@ -20,25 +20,6 @@ struct Sized {
   Candidate c() const { return packed.unpack(); }
 };
 
-// The rectangles of one type, large, then medium, then small, indexed as one list: wall packing reads the
-// searches' own candidates instead of a copy of them.
-class SizedList {
- public:
-  explicit SizedList(const std::array<Candidates, 3>& by_size) : by_size_(&by_size) {}
-  std::size_t size() const { return (*by_size_)[0].size() + (*by_size_)[1].size() + (*by_size_)[2].size(); }
-  Sized operator[](std::size_t i) const {
-    for (std::size_t s = 0; s < 2; ++s) {
-      if (i < (*by_size_)[s].size()) return {(*by_size_)[s][i], kAreaSizes[s]};
-      i -= (*by_size_)[s].size();
-    }
-    return {(*by_size_)[2].at(i), kAreaSizes[2]};
-  }
-  const std::array<Candidates, 3>& by_size() const { return *by_size_; }
-
- private:
-  const std::array<Candidates, 3>* by_size_;
-};
-
 class SampleRaster;
 
 // Eq. 3.44: large, then medium, then small; a rectangle is kept when none of its centre voxels (Eq. 3.43) is
@@ -114,8 +95,25 @@ class ChangedRegion {
 // test point reaches) and lets rotated squares overlap. Here a rectangle is kept unless it shares any of its
 // surface (sampled on a half-voxel raster) with a kept one, in order: large, medium, small, and within a size
 // squares aligned with the room's main direction first, so that large areas tile the free surface and
-// smaller ones fill what they leave. Returns the indices kept.
-std::vector<std::size_t> pack_walls(const SizedList& walls, const PackReplay* replay = nullptr);
+// smaller ones fill what they leave.
+// Walls in search order, one size at a time (large, then medium, then small), so that a size is packed as soon
+// as it is found, beside the next size's search.
+class WallPacker {
+ public:
+  // The walls' corners lie in the grid's columns, at levels in [y_lo, y_hi].
+  WallPacker(const GridSpec& spec, int y_lo, int y_hi, std::stop_token stop = {});
+  ~WallPacker();
+  // The walls of the next size, in search order; returns the indices kept, ascending. With a replay
+  // (PackReplay), the decisions of walls far from what changed are the previous analysis's; a size packed
+  // without one leaves the sizes after it none either.
+  std::vector<std::size_t> pack(const Candidates& walls, const PackReplay* replay = nullptr);
+
+ private:
+  std::unique_ptr<SampleRaster> taken_;
+  ChangedRegion changed_;  // over all sizes: a large wall's change reaches the smaller ones after it
+  bool replayable_ = true;
+  std::stop_token stop_;
+};
 // The columns a square may rest on: free floor D or free ceiling E (`mask`), or a furniture top C at a square's
 // level (`top`: the column's level, equal or one below, Eq. 3.41). Inline: packing asks it for every sample of
 // every candidate's outline.

@@ -3,6 +3,7 @@
 #include "candidate.h"
 #include "roomsense/features.h"
 
+#include <bit>
 #include <stop_token>
 
 namespace roomsense::detail {
@@ -19,18 +20,46 @@ struct NormalCounts {
   std::vector<std::uint16_t> prefix16;  // the same, otherwise
   std::size_t blocked_words = 0;        // per column
   std::vector<std::uint64_t> blocked_bits;  // RoomFeatures::wall_blocked, bit y - y0; empty when none is
-  // Per level, x and normal bit k (kNormalLeft ... kNormalBackward), a bit per z: where a second corner may
-  // lie, 64 at a time (the searches' most frequent read). Empty (z_words 0) for grids under 32 voxels in z,
-  // where the rows would outweigh the normals themselves, and rooms without normals.
+  // Per level, x and normal bit k (kNormalLeft ... kNormalBackward), a bit per z: the voxels with a normal
+  // other than k. Alg. 2 pairs a first corner with every normal but the one opposite a lone normal of its own,
+  // so where a second corner may lie is one row, or two for a first corner of two normals, read 64 z at a
+  // time (the searches' most frequent read). Empty (z_words 0) for grids under 32 voxels in z, where the rows
+  // would outweigh the normals themselves, and rooms without normals.
   std::size_t z_words = 0;
   std::vector<std::uint64_t> z_bits;  // ((y - y0) * nx + x) * 4 + k, then z / 64
   int count(std::size_t column, int y_from, int y_to) const;  // voxels with a normal in [y_from, y_to]
   bool blocked(std::size_t column, int y_from, int y_to) const;  // any blocked voxel in [y_from, y_to]
-  // Bits z in [z_from, z_from + 64) of the voxels at (x, y) whose normal has any bit of `normal_mask`; 0
-  // outside the grid.
-  std::uint64_t z_window(int nx, int x, int y, std::uint8_t normal_mask, int z_from) const;
+  // Bits z in [z_from, z_from + 64) of the voxels at (x, y) whose normal Alg. 2 pairs with a first corner of
+  // normals `first` (compatible_normals); 0 outside the grid.
+  std::uint64_t z_window(int nx, int x, int y, std::uint8_t first, int z_from) const;
 };
 NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features);
+// Normals the second corner of a wall rectangle may carry (Alg. 2) when the first carries `first`: the first
+// corner's, or one at a right angle to them, so that only corners facing opposite ways are refused.
+inline std::uint8_t compatible_normals(std::uint8_t first) {
+  std::uint8_t out = first & (kNormalLeft | kNormalRight | kNormalForward | kNormalBackward);
+  if (first & (kNormalLeft | kNormalRight)) out |= kNormalForward | kNormalBackward;
+  if (first & (kNormalForward | kNormalBackward)) out |= kNormalLeft | kNormalRight;
+  return std::uint8_t(out);
+}
+
+inline std::uint64_t NormalCounts::z_window(int nx, int x, int y, std::uint8_t first, int z_from) const {
+  constexpr std::uint8_t kAll = kNormalLeft | kNormalRight | kNormalForward | kNormalBackward;
+  const std::uint8_t compatible = compatible_normals(first);
+  const int total = int(64 * z_words);
+  if (compatible == 0 || z_from >= total || z_from <= -64) return 0;
+  const std::uint64_t* rows = z_bits.data() + (std::size_t(y - y0) * std::size_t(nx) + std::size_t(x)) * 4 * z_words;
+  // All four normals but k: row k; all four: rows 0 and 1 (a normal other than left, or other than right).
+  const auto window = [&](int k) {
+    const std::uint64_t* row = rows + std::size_t(k) * z_words;
+    if (z_from < 0) return row[0] << -z_from;
+    const std::size_t w = std::size_t(z_from / 64);
+    const int shift = z_from % 64;
+    return shift != 0 && w + 1 < z_words ? (row[w] >> shift) | (row[w + 1] << (64 - shift)) : row[w] >> shift;
+  };
+  if (compatible == kAll) return window(0) | window(1);
+  return window(std::countr_zero(unsigned(kAll & ~compatible)));
+}
 
 // A search over bands of grid rows (z), for SearchCache (search_cache.h): band b holds rows [b * rows,
 // (b + 1) * rows) of a wall search's first corners or a square search's centres (their cell's z), and only

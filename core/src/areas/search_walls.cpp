@@ -10,18 +10,6 @@
 #include <limits>
 
 namespace roomsense::detail {
-namespace {
-
-// Normals the second corner may carry (Alg. 2): the first corner's, or one at a right angle to them, so that
-// only corners facing opposite ways are refused.
-std::uint8_t compatible_normals(std::uint8_t first) {
-  std::uint8_t out = first & (kNormalLeft | kNormalRight | kNormalForward | kNormalBackward);
-  if (first & (kNormalLeft | kNormalRight)) out |= kNormalForward | kNormalBackward;
-  if (first & (kNormalForward | kNormalBackward)) out |= kNormalLeft | kNormalRight;
-  return out;
-}
-
-}  // namespace
 
 int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
   if (slot[column] == kNoNormal) return 0;
@@ -42,26 +30,6 @@ bool NormalCounts::blocked(std::size_t column, int y_from, int y_to) const {
   for (unsigned w = first / 64 + 1; w < last / 64; ++w)
     if (words[w] != 0) return true;
   return false;
-}
-
-std::uint64_t NormalCounts::z_window(int nx, int x, int y, std::uint8_t normal_mask, int z_from) const {
-  const int total = int(64 * z_words);
-  if (z_from >= total || z_from <= -64) return 0;
-  const std::uint64_t* rows = z_bits.data() + (std::size_t(y - y0) * std::size_t(nx) + std::size_t(x)) * 4 * z_words;
-  std::uint64_t out = 0;
-  for (int k = 0; k < 4; ++k) {
-    if (!(normal_mask & (1 << k))) continue;
-    const std::uint64_t* row = rows + std::size_t(k) * z_words;
-    if (z_from < 0) {
-      out |= row[0] << -z_from;
-      continue;
-    }
-    const std::size_t w = std::size_t(z_from / 64);
-    const int shift = z_from % 64;
-    out |= row[w] >> shift;
-    if (shift != 0 && w + 1 < z_words) out |= row[w + 1] << (64 - shift);
-  }
-  return out;
 }
 
 NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
@@ -99,7 +67,7 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
     const std::uint8_t* f = normals_of(col);
     for (int i = 0; i < n.levels; ++i)
       for (int k = 0; k < 4; ++k)
-        if (f[i] & (1 << k))
+        if (f[i] & ~(1 << k) & 0xf)
           n.z_bits[((std::size_t(i) * std::size_t(spec.nx) + std::size_t(x)) * 4 + std::size_t(k)) * n.z_words +
                    std::size_t(z / 64)] |= std::uint64_t{1} << (z % 64);
   }
@@ -218,8 +186,8 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       for (int y1 = std::max(y_first, floor); y1 <= ceiling; ++y1) {
         const std::uint8_t f1 = f[spec.index(x1, y1, z1)];
         if (f1 == 0) continue;
-        const std::uint8_t compatible = compatible_normals(f1);
         if (normals.z_bits.empty()) {  // a grid too shallow in z for bit rows: the second corners one by one
+          const std::uint8_t compatible = compatible_normals(f1);
           for (std::size_t r = 0; r < ring.size(); ++r) {
             const int x2 = x1 + ring[r].dx, z2 = z1 + ring[r].dz;
             if (x2 < spec.nx && z2 >= 0 && z2 < spec.nz && (f[spec.index(x2, y1, z2)] & compatible) != 0)
@@ -229,7 +197,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
         }
         for (const RingWord& word : ring_words) {
           if (x1 + word.dx >= spec.nx) break;  // dx only grows
-          std::uint64_t seconds = word.offsets & normals.z_window(spec.nx, x1 + word.dx, y1, compatible, z1 + word.dz_from);
+          std::uint64_t seconds = word.offsets & normals.z_window(spec.nx, x1 + word.dx, y1, f1, z1 + word.dz_from);
           for (; seconds != 0; seconds &= seconds - 1) {
             const std::uint64_t below = word.offsets & ((seconds & -seconds) - 1);
             try_rectangle(x1, y1, z1, word.first + std::size_t(std::popcount(below)));

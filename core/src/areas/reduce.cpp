@@ -169,34 +169,40 @@ CentreDeduplicator::~CentreDeduplicator() = default;
 
 std::size_t CentreDeduplicator::add(const Candidates& rects, AreaSize size,
                                     const std::function<void(const Sized&)>& keep) {
+  // A rectangle's centre voxels are corner 1's plus its shape's: corner_sum is 4 x corner 1 plus the shape's own
+  // sum, and floor((4 c + s) / 4) = c + floor(s / 4). One voxel per axis, or two neighbours where the centre
+  // lies between them; found once per shape.
+  struct CentreOffsets {
+    int x[2], y[2], z[2];
+    int nx, ny, nz;
+  };
+  std::vector<CentreOffsets> offsets;
+  for (const Candidates::Shape& shape : rects.shapes()) {
+    const glm::ivec3 sum = PackedCandidate(glm::ivec3(0), shape.dx, shape.dz, shape.side).corner_sum();
+    CentreOffsets o{};
+    o.nx = centre_voxels(sum.x, o.x), o.ny = centre_voxels(sum.y, o.y), o.nz = centre_voxels(sum.z, o.z);
+    offsets.push_back(o);
+  }
   std::size_t kept = 0;
   for (std::size_t r = 0; r < rects.size(); ++r) {
     if (r % kStopEvery == 0) stop_point(stop_);
-    const PackedCandidate p = rects[r];
-    const glm::ivec3 sum = p.corner_sum();
-    // One voxel per axis, or two neighbours where the centre lies between them.
-    int xs[2], ys[2], zs[2];
-    const int nx = centre_voxels(sum.x, xs), ny = centre_voxels(sum.y, ys), nz = centre_voxels(sum.z, zs);
+    const Candidates::Item& item = rects.item(r);
+    const PackedCandidate p = rects.decode(item);
+    const glm::ivec3 c = p.corner(0);
+    const CentreOffsets& o = offsets[item.shape];
+    const int x0 = c.x + o.x[0], x1 = c.x + o.x[o.nx - 1];
     const auto any_marked = [&] {
-      for (int j = 0; j < ny; ++j)
-        for (int k = 0; k < nz; ++k)
-          if (marked_->any(ys[j], zs[k], xs[0], xs[nx - 1])) return true;
+      for (int j = 0; j < o.ny; ++j)
+        for (int k = 0; k < o.nz; ++k)
+          if (marked_->any(c.y + o.y[j], c.z + o.z[k], x0, x1)) return true;
       return false;
     };
     if (any_marked()) continue;
-    for (int j = 0; j < ny; ++j)
-      for (int k = 0; k < nz; ++k) marked_->set(ys[j], zs[k], xs[0], xs[nx - 1]);
+    for (int j = 0; j < o.ny; ++j)
+      for (int k = 0; k < o.nz; ++k) marked_->set(c.y + o.y[j], c.z + o.z[k], x0, x1);
     keep({p, size});
     ++kept;
   }
-  return kept;
-}
-
-std::size_t deduplicate_centres(const GridSpec& spec, const std::array<Candidates, 3>& by_size,
-                                const std::function<void(const Sized&)>& keep, std::stop_token stop) {
-  CentreDeduplicator deduplicator(spec, std::move(stop));
-  std::size_t kept = 0;
-  for (std::size_t s = 0; s < by_size.size(); ++s) kept += deduplicator.add(by_size[s], kAreaSizes[s], keep);
   return kept;
 }
 

@@ -39,9 +39,6 @@ class CentreDeduplicator {
   std::unique_ptr<SampleRaster> marked_;
   std::stop_token stop_;
 };
-// All three sizes of one type at once.
-std::size_t deduplicate_centres(const GridSpec& spec, const std::array<Candidates, 3>& by_size,
-                                const std::function<void(const Sized&)>& keep, std::stop_token stop = {});
 
 // The room's main direction, in degrees in [0, 90): the length-weighted mode of the wall rectangles' top edges
 // modulo 90°. 0 without walls.

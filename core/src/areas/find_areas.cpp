@@ -143,9 +143,12 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   };
   const auto search_cost = [&](std::size_t type) { return pairs(type, 0) + pairs(type, 1) + pairs(type, 2); };
   // The three square types of a size search one ring of corner offsets (an IncrementalAnalysis's searches keep
-  // their own): made by the first of them.
+  // their own): made by a task of its own, or by the first search that needs it before that task ran.
   std::array<std::vector<RingOffset>, 3> square_rings;
   std::array<std::once_flag, 3> square_ring_made;
+  const auto make_square_ring = [&](std::size_t size) {
+    std::call_once(square_ring_made[size], [&] { square_rings[size] = ring_offsets(range_of(1, size), Shape::Square); });
+  };
   const auto search = [&](std::size_t t) {
     const std::size_t type = t / 3, size = t % 3;
     if (reused[type]) return;
@@ -164,7 +167,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       return;
     }
     const Surface surface = type == 1 ? Surface::Floor : type == 2 ? Surface::Ceiling : Surface::Furniture;
-    std::call_once(square_ring_made[size], [&] { square_rings[size] = ring_offsets(range, Shape::Square); });
+    make_square_ring(size);
     found[type][size] = search_squares(spec, features, surface, range, params.horizontal_fill, dominant_deg, stop,
                                        {nullptr, nullptr, &square_rings[size]});
   };
@@ -324,6 +327,14 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       [&] { deduplicate_walls(0); }, [&] { deduplicate_walls(1); }, [&] { deduplicate_walls(2); },
       [&] { pack_walls(0); },        [&] { pack_walls(1); },        [&] { pack_walls(2); },
       finish_walls_for_reach};
+  // The square rings, which need nothing, after the walls' tasks: a thread waiting for the last wall search makes
+  // them (a whole analysis's searches only; a size no square search takes has none).
+  for (std::size_t size = 0; size < kAreaSizes.size() && !cache; ++size) {
+    if (pairs(1, size) > kAreaSearchBudget && pairs(2, size) > kAreaSearchBudget && pairs(3, size) > kAreaSearchBudget)
+      continue;
+    after.emplace_back();
+    tasks.push_back([&make_square_ring, size] { make_square_ring(size); });
+  }
   std::array<std::size_t, 3> square_types = {1, 2, 3};
   std::stable_sort(square_types.begin(), square_types.end(),
                    [&](std::size_t a, std::size_t b) { return search_cost(a) > search_cost(b); });

@@ -188,6 +188,11 @@ class BitSet {
   bool test(std::size_t i) const { return (words_[i / 64] >> (i % 64)) & 1u; }
   void set(std::size_t i) { words_[i / 64] |= std::uint64_t{1} << (i % 64); }
   void reset(std::size_t i) { words_[i / 64] &= ~(std::uint64_t{1} << (i % 64)); }
+  void reset(std::size_t from, std::size_t to) {  // bits [from, to)
+    for (; from < to && from % 64 != 0; ++from) reset(from);
+    for (; from + 64 <= to; from += 64) words_[from / 64] = 0;
+    for (; from < to; ++from) reset(from);
+  }
 
  private:
   std::vector<std::uint64_t> words_;

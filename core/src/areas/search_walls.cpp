@@ -130,19 +130,23 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   std::vector<Candidates::Shape> shapes;
   for (const RingOffset& o : ring) shapes.push_back({o.dx, o.dz, int(std::floor(o.d * size.height_ratio + 1e-9))});  // Eq. 3.20
   Candidates out(spec, spec.ny, shapes);
-  // One bit per possible centre of a valid rectangle found so far, indexed by 2 x centre: x1 + x2 in
-  // [0, 2 nx), z1 + z2 in [0, 2 nz), 2 y1 - h in [2 floor - h_max, 2 ceiling].
-  const int h_max = int(std::floor(size.max_d * size.height_ratio + 1e-9));
-  const int y_base = 2 * floor - h_max, y_span = 2 * ceiling - y_base + 1;
-  BitSet centres(std::size_t(2 * spec.nx) * std::size_t(2 * spec.nz) * std::size_t(y_span));
-  const auto centre_bit = [&](int sx, int sy, int sz) {
-    return (std::size_t(sz) * std::size_t(2 * spec.nx) + std::size_t(sx)) * std::size_t(y_span) + std::size_t(sy - y_base);
-  };
   // The ring in words of 64 dz (bit dz + reach) per dx, in the ring's order (dx ascending, then dz): only the
   // words that hold offsets, each with the ring index of its lowest bit. Offset bit b of a word is ring entry
   // first + (the word's bits below b).
   int reach = 0;
   for (const RingOffset& o : ring) reach = std::max({reach, o.dx, std::abs(o.dz)});
+  // One bit per possible centre of a valid rectangle found so far, indexed by 2 x centre: x1 + x2 in
+  // [0, 2 nx), 2 y1 - h in [2 floor - h_max, 2 ceiling], and z1 + z2, which from first corner row z1 lies in
+  // [2 z1 - reach, 2 z1 + reach]: rows of z1 + z2 in a ring of `rows`, the two that come in with each z1
+  // cleared (they held rows no later first corner reaches). A large floor's whole set took megabytes, each
+  // analysis fresh pages.
+  const int h_max = int(std::floor(size.max_d * size.height_ratio + 1e-9));
+  const int y_base = 2 * floor - h_max, y_span = 2 * ceiling - y_base + 1;
+  const std::size_t rows = std::size_t(2 * reach + 3), row_bits = std::size_t(2 * spec.nx) * std::size_t(y_span);
+  BitSet centres(rows * row_bits);
+  const auto centre_bit = [&](int sx, int sy, int sz) {
+    return std::size_t(sz) % rows * row_bits + std::size_t(sx) * std::size_t(y_span) + std::size_t(sy - y_base);
+  };
   struct RingWord {
     int dx, dz_from;        // dz_from: the dz of bit 0
     std::uint64_t offsets;  // bit dz - dz_from
@@ -173,6 +177,8 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     band_bits.clear();
   };
   for (int z1 = 0; z1 < spec.nz; ++z1, stop_point(stop)) {
+    for (const int sz : {2 * z1 + reach - 1, 2 * z1 + reach})
+      if (sz >= 0) centres.reset(std::size_t(sz) % rows * row_bits, (std::size_t(sz) % rows + 1) * row_bits);
     int x_first = 0, x_last = spec.nx - 1;
     if constexpr (kBanded) {
       const RowBands& b = *banded.bands;

@@ -227,13 +227,15 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   };
   // Walls size by size, each as soon as its search ends (beside the next sizes' searches): V_Wall and, after the
   // last size, the room's main direction, which the square searches try first (reduce.h); beside them packing.
-  CentreDeduplicator wall_deduplicator(spec, stop);
+  // Deduplication's and packing's marks go with the last size (a large floor's walls mark megabytes).
+  std::optional<CentreDeduplicator> wall_deduplicator(std::in_place, spec, stop);
   const auto deduplicate_walls = [&](std::size_t size) {
     if (!reused[0])
-      red[0].deduplicated += wall_deduplicator.add(found[0][size], kAreaSizes[size],
-                                                   [&](const Sized& s) { red[0].for_reach.push_back(s); });
+      red[0].deduplicated += wall_deduplicator->add(found[0][size], kAreaSizes[size],
+                                                    [&](const Sized& s) { red[0].for_reach.push_back(s); });
     release(0, size);
     if (size + 1 < kAreaSizes.size()) return;
+    wall_deduplicator.reset();
     normals = NormalCounts();  // the last wall search has ended
     if (reused[0]) red[0].for_reach = reused[0]->for_reach, red[0].deduplicated = reused[0]->deduplicated;
     dominant_deg = red[0].dominant_deg = dominant_direction_deg(red[0].for_reach);
@@ -246,7 +248,8 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     const SizeRange range = range_of(0, size);
     wall_height_max = std::max(wall_height_max, int(std::floor(range.max_d * range.height_ratio + 1e-9)) + 1);
   }
-  WallPacker wall_packer(spec, normals.y0 - wall_height_max, normals.y0 + normals.levels - 1, stop);
+  std::optional<WallPacker> wall_packer(std::in_place, spec, normals.y0 - wall_height_max,
+                                       normals.y0 + normals.levels - 1, stop);
   const auto pack_walls = [&](std::size_t size) {
     if (reused[0]) {
       if (size + 1 < kAreaSizes.size()) return;
@@ -255,12 +258,14 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       return;
     }
     const Candidates& walls = found[0][size];
-    const std::vector<std::size_t> packed = wall_packer.pack(walls, cache ? cache->replay(0, size) : nullptr);
+    const std::vector<std::size_t> packed = wall_packer->pack(walls, cache ? cache->replay(0, size) : nullptr);
     for (const std::size_t i : packed) red[0].kept.push_back(Sized{walls[i], kAreaSizes[size]});
     if (cache) cache->record_packing(0, size, packed);
     red[0].found += walls.size();
     release(0, size);
-    if (size + 1 == kAreaSizes.size()) finish(0);
+    if (size + 1 < kAreaSizes.size()) return;
+    wall_packer.reset();
+    finish(0);
   };
   // Squares one size at a time, large first: deduplicated (V_Floor for reach) and packed, each in its own chain
   // of tasks (neither reads the other), and dropped once both are done, before the next size is searched where

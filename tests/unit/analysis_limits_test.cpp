@@ -10,6 +10,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
 #include <limits>
 #include <random>
 #include <thread>
@@ -213,6 +217,77 @@ TEST(MinimumHeight, ARoomOfOnePointSixMetresIsARoom) {
   const AnalysisResult r = analyze(synth::generate(low));
   ASSERT_TRUE(r.ok()) << r.status_message;
   EXPECT_NEAR(r.ceiling_y - r.floor_y, 1.6f, 0.11f);
+}
+
+// The parameters an engine sets in AnalysisOptions: NaN, Inf, a negative length, a fill above 1 or a size of
+// zero crashed an analysis, corrupted its heap or ran it for ever. Each is refused, naming its field, and each
+// range's ends analyse the room.
+struct ParameterCase {
+  const char* field;
+  std::function<void(AnalysisOptions&, float)> set;
+  float lo, hi;  // the range's ends, each allowed
+  float below;   // outside it (with NaN, Inf and 1e9)
+};
+std::vector<ParameterCase> parameter_cases() {
+  const auto feature = [](float FeatureParams::*f) {
+    return [f](AnalysisOptions& o, float v) { o.features.*f = v; };
+  };
+  const auto area = [](float AreaParams::*f) { return [f](AnalysisOptions& o, float v) { o.areas.*f = v; }; };
+  const auto sizes = [](std::array<float, 3> AreaParams::*f) {
+    return [f](AnalysisOptions& o, float v) { (o.areas.*f) = {v, v, v}; };
+  };
+  return {
+      {"min_floor_ceiling", feature(&FeatureParams::min_floor_ceiling), 1e-6f, 100.0f, 0.0f},
+      {"wall_fill", feature(&FeatureParams::wall_fill), 0.0f, 1.0f, -0.01f},
+      {"furniture_top", feature(&FeatureParams::furniture_top), 0.0f, 100.0f, -1.0f},
+      {"furniture_clear", feature(&FeatureParams::furniture_clear), 0.0f, 100.0f, -1.0f},
+      {"ceiling_clear", feature(&FeatureParams::ceiling_clear), 0.0f, 100.0f, -1.0f},
+      {"wall_normal_reach", feature(&FeatureParams::wall_normal_reach), 0.0f, 100.0f, -1.0f},
+      {"wall_top_gap", feature(&FeatureParams::wall_top_gap), 0.0f, 100.0f, -1.0f},
+      {"max_opening", feature(&FeatureParams::max_opening), 0.0f, 100.0f, -1.0f},
+      {"wall_recess", feature(&FeatureParams::wall_recess), 0.0f, 100.0f, -1.0f},
+      {"floor_roughness", feature(&FeatureParams::floor_roughness), 0.0f, 100.0f, -1.0f},
+      {"min_passage", feature(&FeatureParams::min_passage), 0.0f, 100.0f, -1.0f},
+      {"min_room_area", feature(&FeatureParams::min_room_area), 0.0f, 1e4f, -1.0f},
+      {"min_ceiling_facet", feature(&FeatureParams::min_ceiling_facet), 0.0f, 1e4f, -1.0f},
+      {"wall_width[0]", sizes(&AreaParams::wall_width), 0.11f, 100.0f, 0.0f},
+      {"wall_height[0]", sizes(&AreaParams::wall_height), 1e-6f, 100.0f, 0.0f},
+      {"square_width[0]", sizes(&AreaParams::square_width), 0.11f, 100.0f, 0.1f},  // not wider than the tolerance
+      {"width_tolerance", area(&AreaParams::width_tolerance), 0.0f, 0.49f, -0.01f},
+      {"wall_fill", area(&AreaParams::wall_fill), 0.0f, 1.0f, 1.01f},
+      {"horizontal_fill", area(&AreaParams::horizontal_fill), 0.0f, 1.0f, 1.01f},
+      {"reduction_offset", [](AnalysisOptions& o, float v) { o.areas.reduction_offset = int(v); }, 1.0f, 100.0f, 0.0f},
+      {"close_distance", area(&AreaParams::close_distance), 0.0f, 100.0f, -1.0f},
+      {"close_height", area(&AreaParams::close_height), -100.0f, 100.0f, -101.0f},
+      {"wall_view_cone_deg", area(&AreaParams::wall_view_cone_deg), 0.0f, 180.0f, 181.0f},
+  };
+}
+
+TEST(Parameters, EachOutsideItsRangeIsAClearErrorNamingIt) {
+  const Scan room = synth::generate(synth::default_room());
+  for (const ParameterCase& c : parameter_cases())
+    for (const float v : {c.below, std::nanf(""), std::numeric_limits<float>::infinity(), 1e9f}) {
+      if (std::string(c.field) == "reduction_offset" && !std::isfinite(v)) continue;  // an int
+      AnalysisOptions o;
+      c.set(o, v);
+      try {
+        (void)analyze(room, o);
+        ADD_FAILURE() << c.field << " = " << v << " was accepted";
+      } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ErrorCode::BadParameter) << c.field << " = " << v;
+        EXPECT_NE(std::string(e.what()).find(c.field), std::string::npos) << e.what();
+      }
+    }
+}
+
+TEST(Parameters, EachAtTheEndsOfItsRangeAnalysesTheRoom) {
+  const Scan room = synth::generate(synth::default_room());
+  for (const ParameterCase& c : parameter_cases())
+    for (const float v : {c.lo, c.hi}) {
+      AnalysisOptions o;
+      c.set(o, v);
+      EXPECT_NO_THROW((void)analyze(room, o)) << c.field << " = " << v;
+    }
 }
 
 }  // namespace

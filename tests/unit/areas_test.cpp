@@ -1,6 +1,7 @@
 // Placement areas (§3.3-3.5) against the synthetic rooms' ground truth: every area on a real surface of its
 // type, coverage of the free floor and walls, minor overlaps, classification rules, determinism.
 #include "roomsense/analysis.h"
+#include "roomsense/error.h"
 #include "synthetic_fixture.h"
 
 #include <glm/geometric.hpp>
@@ -399,22 +400,20 @@ TEST(Areas, CloseReachNeedsAFloorAreaNearby) {
   EXPECT_GT(close_walls, 0);
 }
 
-TEST(Areas, ANegativeOrNaNCloseDistanceMakesNothingClose) {
-  // An engine's AreaParams reach the search unchecked: a close distance of -inf, -1e30 or NaN leaves nothing
-  // close and everything else as at the default (reach is the same whether an area can see any floor area).
+TEST(Areas, ANegativeOrNaNCloseDistanceIsAClearError) {
+  // An engine's AreaParams are checked (check_params): a close distance of -inf, -1e30 or NaN is refused by name,
+  // not searched with.
   const Scan scan = synth::generate(synth::default_room());
   AnalysisOptions options;
   options.build_bounds = false;
-  const AnalysisResult usual = analyze(scan, options);
-  ASSERT_TRUE(usual.ok());
   for (const float close : {-INFINITY, -1e30f, NAN}) {
     options.areas.close_distance = close;
-    const AnalysisResult r = analyze(scan, options);
-    ASSERT_TRUE(r.ok());
-    ASSERT_EQ(r.areas.size(), usual.areas.size());
-    for (std::size_t i = 0; i < r.areas.size(); ++i) {
-      const Reach want = usual.areas[i].reach == Reach::Close ? Reach::Distance : usual.areas[i].reach;
-      EXPECT_EQ(r.areas[i].reach, want) << "close distance " << close << ", area " << i;
+    try {
+      (void)analyze(scan, options);
+      ADD_FAILURE() << "close distance " << close << " was accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::BadParameter);
+      EXPECT_NE(std::string(e.what()).find("close_distance"), std::string::npos) << e.what();
     }
   }
 }

@@ -67,6 +67,11 @@ struct AreaParams {
   bool operator==(const AreaParams&) const = default;
 };
 
+// Throws Error(BadParameter) naming the first field outside its range: widths and heights in (0, 100] m, each width
+// above width_tolerance (in [0, 100] m), fills in [0, 1], reduction_offset in [1, 100], close_distance in
+// [0, 100] m, close_height in [-100, 100] m, wall_view_cone_deg in [0, 180]. NaN and Inf are outside every range.
+void check_params(const AreaParams& params);
+
 // One classified area (§3.5), in metres, in the scan's frame (right-handed, +Y up).
 // Corners go counter-clockwise seen from the front (from free space, looking against the normal):
 // corners[0] -> corners[1] is the width (+X of the area's pose), corners[1] -> corners[2] the height (+Y).

@@ -43,6 +43,10 @@ struct FeatureParams {
   float min_ceiling_facet = 1.0f;
 };
 
+// Throws Error(BadParameter) naming the first field outside its range: lengths in [0, 100] m (min_floor_ceiling
+// above 0), areas in [0, 10⁴] m², wall_fill in [0, 1]. NaN and Inf are outside every range.
+void check_params(const FeatureParams& params);
+
 // ⌊metres / S_Voxel⌋, robust to the float error of e.g. 1.5 / 0.1.
 int voxels_for(float metres, float voxel_size);
 

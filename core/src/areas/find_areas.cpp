@@ -96,6 +96,8 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
 AreaResult find_areas(const VoxelGrid& grid, const RoomFeatures& features, const SurfaceLevels& surfaces,
                       const AreaParams& params, const FeatureParams& feature_params, unsigned threads,
                       std::stop_token stop) {
+  check_params(params);
+  check_params(feature_params);
   return detail::find_areas(grid, features, surfaces, params, feature_params, threads, std::move(stop), nullptr);
 }
 
@@ -142,6 +144,13 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     return starts[type] * ring * (type == 0 ? 1.0 : 2.0);
   };
   const auto search_cost = [&](std::size_t type) { return pairs(type, 0) + pairs(type, 1) + pairs(type, 2); };
+  // A size that cannot lie in the grid's columns (a wall's top longer than their diagonal, a square wider than
+  // their narrower side: its extent along each axis is at least its side) has no rectangle and is not searched:
+  // its ring alone (a 100 m square at 0.1 m voxels) would take seconds.
+  const auto fits = [&](std::size_t type, std::size_t size) {
+    const double room = type == 0 ? std::hypot(double(spec.nx), double(spec.nz)) : double(std::min(spec.nx, spec.nz));
+    return range_of(type, size).min_d <= room;
+  };
   // The three square types of a size search one ring of corner offsets (an IncrementalAnalysis's searches keep
   // their own): made by a task of its own, or by the first search that needs it before that task ran.
   std::array<std::vector<RingOffset>, 3> square_rings;
@@ -153,6 +162,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     const std::size_t type = t / 3, size = t % 3;
     if (reused[type]) return;
     const SizeRange range = range_of(type, size);
+    if (!fits(type, size)) return;
     if (pairs(type, size) > kAreaSearchBudget) {
       red[type].skipped[size] = true;
       return;
@@ -335,7 +345,8 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   // The square rings, which need nothing, after the walls' tasks: a thread waiting for the last wall search makes
   // them (a whole analysis's searches only; a size no square search takes has none).
   for (std::size_t size = 0; size < kAreaSizes.size() && !cache; ++size) {
-    if (pairs(1, size) > kAreaSearchBudget && pairs(2, size) > kAreaSearchBudget && pairs(3, size) > kAreaSearchBudget)
+    if (!fits(1, size) ||
+        (pairs(1, size) > kAreaSearchBudget && pairs(2, size) > kAreaSearchBudget && pairs(3, size) > kAreaSearchBudget))
       continue;
     after.emplace_back();
     tasks.push_back([&make_square_ring, size] { make_square_ring(size); });

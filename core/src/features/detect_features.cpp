@@ -20,6 +20,7 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
                              const std::vector<std::uint32_t>& column_counts,
                              const std::vector<std::uint8_t>& column_any, const FeatureParams& params,
                              unsigned threads, const std::stop_token& stop, const LabelGrid& labels) {
+  check_params(params);
   const float s = grid.spec.voxel_size;
   RoomFeatures f;
   f.levels = levels;

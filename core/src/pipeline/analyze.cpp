@@ -147,6 +147,8 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   const detail::PoolScope scope(detail::pool_for(caches ? caches->workers : own_workers, options.threads));
   AnalysisResult r;
   stop_point(options.stop);
+  check_params(options.features);
+  check_params(options.areas);
   // An IncrementalAnalysis's combined scan: what it knows of each chunk.
   const CombinedScan* chunks = caches != nullptr && &scan == &caches->combined.scan ? &caches->combined : nullptr;
   const detail::InputView in =

@@ -21,6 +21,12 @@ class SampleOwners {
       : shift_(shift), mask_((1 << shift.x) - 1, (1 << shift.y) - 1, (1 << shift.z) - 1),
         cells_(std::size_t(1) << (shift.x + shift.y + shift.z)) {}
 
+  // Room for `tiles` tiles without the copies of growing to them.
+  void reserve(std::size_t tiles) {
+    owners_.reserve(tiles * cells_);
+    tiles_.reserve(tiles);
+  }
+
   // The owner of cell, or kAbsent.
   std::uint32_t find(glm::ivec3 cell) const {
     const std::uint32_t tile = tile_of(tile_key(cell));

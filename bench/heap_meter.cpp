@@ -16,7 +16,9 @@ std::atomic<std::size_t> peak{0};
 void* allocate(std::size_t size, std::size_t align) {
   align = std::max(align, alignof(std::max_align_t));
   const std::size_t total = ((size + align + align - 1) / align) * align;  // aligned_alloc wants a multiple
-  void* block = std::aligned_alloc(align, total);
+  // malloc where its own alignment serves: aligned_alloc takes another path through glibc, whose heaps then grow
+  // and shrink otherwise than a program's (and roomsense's in it) do.
+  void* block = align <= alignof(std::max_align_t) ? std::malloc(total) : std::aligned_alloc(align, total);
   if (block == nullptr) return nullptr;
   std::size_t* const words = reinterpret_cast<std::size_t*>(static_cast<char*>(block) + align);
   words[-2] = size;

@@ -189,9 +189,16 @@ class BitSet {
   void set(std::size_t i) { words_[i / 64] |= std::uint64_t{1} << (i % 64); }
   void reset(std::size_t i) { words_[i / 64] &= ~(std::uint64_t{1} << (i % 64)); }
   void reset(std::size_t from, std::size_t to) {  // bits [from, to)
-    for (; from < to && from % 64 != 0; ++from) reset(from);
-    for (; from + 64 <= to; from += 64) words_[from / 64] = 0;
-    for (; from < to; ++from) reset(from);
+    if (from >= to) return;
+    const std::size_t first = from / 64, last = (to - 1) / 64;
+    const std::uint64_t head = ~std::uint64_t{0} << (from % 64), tail = ~std::uint64_t{0} >> (63 - (to - 1) % 64);
+    if (first == last) {
+      words_[first] &= ~(head & tail);
+      return;
+    }
+    words_[first] &= ~head;
+    std::fill(words_.begin() + std::ptrdiff_t(first + 1), words_.begin() + std::ptrdiff_t(last), std::uint64_t{0});
+    words_[last] &= ~tail;
   }
 
  private:

@@ -177,16 +177,16 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     band_bits.clear();
   };
   for (int z1 = 0; z1 < spec.nz; ++z1, stop_point(stop)) {
-    for (const int sz : {2 * z1 + reach - 1, 2 * z1 + reach})
-      if (sz >= 0) centres.reset(std::size_t(sz) % rows * row_bits, (std::size_t(sz) % rows + 1) * row_bits);
     int x_first = 0, x_last = spec.nx - 1;
     if constexpr (kBanded) {
       const RowBands& b = *banded.bands;
       if (z1 > 0 && b.band(z1 - 1) != b.band(z1) && b.searches(z1 - 1)) end_band(b.band(z1 - 1));
-      if (!b.searches(z1)) continue;
+      if (!b.searches(z1)) continue;  // a band searched starts with no centre: the last one's were cleared
       const glm::ivec2 columns = b.columns[std::size_t(b.band(z1))];
       x_first = std::max(columns.x, 0), x_last = std::min(columns.y, spec.nx - 1);
     }
+    for (const int sz : {2 * z1 + reach - 1, 2 * z1 + reach})
+      if (sz >= 0) centres.reset(std::size_t(sz) % rows * row_bits, (std::size_t(sz) % rows + 1) * row_bits);
     for (int x1 = x_first; x1 <= x_last; ++x1) {
       if (normals.slot[spec.column(x1, z1)] == NormalCounts::kNoNormal) continue;  // most of an open floor
       for (int y1 = std::max(y_first, floor); y1 <= ceiling; ++y1) {

@@ -43,6 +43,27 @@ inline std::uint8_t compatible_normals(std::uint8_t first) {
   return std::uint8_t(out);
 }
 
+inline int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
+  if (slot[column] == kNoNormal) return 0;
+  const std::size_t base = std::size_t(slot[column]) * std::size_t(levels + 1), hi = base + std::size_t(y_to - y0 + 1),
+                    lo = base + std::size_t(y_from - y0);
+  return prefix8.empty() ? int(prefix16[hi]) - int(prefix16[lo]) : int(prefix8[hi]) - int(prefix8[lo]);
+}
+
+inline bool NormalCounts::blocked(std::size_t column, int y_from, int y_to) const {
+  if (blocked_bits.empty()) return false;
+  const std::uint64_t* words = blocked_bits.data() + column * blocked_words;
+  // Bits y - y0 (never negative: the searches read levels from y0 on), unsigned so that / and % are shifts.
+  const unsigned first = unsigned(y_from - y0), last = unsigned(y_to - y0);
+  // Bits [first % 64, 63] of the first word, [0, last % 64] of the last, whole words between.
+  const std::uint64_t head = ~std::uint64_t{0} << (first % 64), tail = ~std::uint64_t{0} >> (63 - last % 64);
+  if (first / 64 == last / 64) return (words[first / 64] & head & tail) != 0;
+  if (words[first / 64] & head || words[last / 64] & tail) return true;
+  for (unsigned w = first / 64 + 1; w < last / 64; ++w)
+    if (words[w] != 0) return true;
+  return false;
+}
+
 inline std::uint64_t NormalCounts::z_window(int nx, int x, int y, std::uint8_t first, int z_from) const {
   constexpr std::uint8_t kAll = kNormalLeft | kNormalRight | kNormalForward | kNormalBackward;
   const std::uint8_t compatible = compatible_normals(first);

@@ -11,27 +11,6 @@
 
 namespace roomsense::detail {
 
-int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
-  if (slot[column] == kNoNormal) return 0;
-  const std::size_t base = std::size_t(slot[column]) * std::size_t(levels + 1), hi = base + std::size_t(y_to - y0 + 1),
-                    lo = base + std::size_t(y_from - y0);
-  return prefix8.empty() ? int(prefix16[hi]) - int(prefix16[lo]) : int(prefix8[hi]) - int(prefix8[lo]);
-}
-
-bool NormalCounts::blocked(std::size_t column, int y_from, int y_to) const {
-  if (blocked_bits.empty()) return false;
-  const std::uint64_t* words = blocked_bits.data() + column * blocked_words;
-  // Bits y - y0 (never negative: the searches read levels from y0 on), unsigned so that / and % are shifts.
-  const unsigned first = unsigned(y_from - y0), last = unsigned(y_to - y0);
-  // Bits [first % 64, 63] of the first word, [0, last % 64] of the last, whole words between.
-  const std::uint64_t head = ~std::uint64_t{0} << (first % 64), tail = ~std::uint64_t{0} >> (63 - last % 64);
-  if (first / 64 == last / 64) return (words[first / 64] & head & tail) != 0;
-  if (words[first / 64] & head || words[last / 64] & tail) return true;
-  for (unsigned w = first / 64 + 1; w < last / 64; ++w)
-    if (words[w] != 0) return true;
-  return false;
-}
-
 NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   NormalCounts n;
   n.y0 = features.levels.floor;
@@ -144,8 +123,11 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   const int y_base = 2 * floor - h_max, y_span = 2 * ceiling - y_base + 1;
   const std::size_t rows = std::size_t(2 * reach + 3), row_bits = std::size_t(2 * spec.nx) * std::size_t(y_span);
   BitSet centres(rows * row_bits);
-  const auto centre_bit = [&](int sx, int sy, int sz) {
-    return std::size_t(sz) % rows * row_bits + std::size_t(sx) * std::size_t(y_span) + std::size_t(sy - y_base);
+  std::size_t first_row = 0;  // the ring's row of z1 + z2 = 2 z1 - reach, for the current z1
+  const auto centre_bit = [&](int sx, int sy, int dz) {
+    std::size_t row = first_row + std::size_t(dz + reach);
+    if (row >= rows) row -= rows;
+    return row * row_bits + std::size_t(sx) * std::size_t(y_span) + std::size_t(sy - y_base);
   };
   struct RingWord {
     int dx, dz_from;        // dz_from: the dz of bit 0
@@ -165,7 +147,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   const auto try_rectangle = [&](int x1, int y1, int z1, std::size_t r) {
     const RingOffset& o = ring[r];
     const int h = shapes[r].side;
-    const std::size_t bit = centre_bit(2 * x1 + o.dx, 2 * y1 - h, 2 * z1 + o.dz);
+    const std::size_t bit = centre_bit(2 * x1 + o.dx, 2 * y1 - h, o.dz);
     if (centres.test(bit) || !valid(x1, z1, o, y1, h)) return;
     centres.set(bit);
     if constexpr (kBanded) band_bits.push_back(bit);
@@ -185,6 +167,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       const glm::ivec2 columns = b.columns[std::size_t(b.band(z1))];
       x_first = std::max(columns.x, 0), x_last = std::min(columns.y, spec.nx - 1);
     }
+    first_row = std::size_t(2 * z1 + int(rows) - reach) % rows;  // 2 z1 - reach, kept non-negative
     for (const int sz : {2 * z1 + reach - 1, 2 * z1 + reach})
       if (sz >= 0) centres.reset(std::size_t(sz) % rows * row_bits, (std::size_t(sz) % rows + 1) * row_bits);
     for (int x1 = x_first; x1 <= x_last; ++x1) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 namespace roomsense {
 namespace {
@@ -36,15 +37,14 @@ void share(float value, const char* name) { check(value, 0.0f, 1.0f, false, name
 void check_params(const FeatureParams& p) {
   check(p.min_floor_ceiling, 0.0f, kMaxLength, true, "min_floor_ceiling");
   share(p.wall_fill, "wall_fill");
-  length(p.furniture_top, "furniture_top");
-  length(p.furniture_clear, "furniture_clear");
-  length(p.ceiling_clear, "ceiling_clear");
-  length(p.wall_normal_reach, "wall_normal_reach");
-  length(p.wall_top_gap, "wall_top_gap");
-  length(p.max_opening, "max_opening");
-  length(p.wall_recess, "wall_recess");
-  length(p.floor_roughness, "floor_roughness");
-  length(p.min_passage, "min_passage");
+  using Field = std::pair<float FeatureParams::*, const char*>;
+  for (const auto& [field, name] :
+       {Field{&FeatureParams::furniture_top, "furniture_top"}, Field{&FeatureParams::furniture_clear, "furniture_clear"},
+        Field{&FeatureParams::ceiling_clear, "ceiling_clear"}, Field{&FeatureParams::wall_normal_reach, "wall_normal_reach"},
+        Field{&FeatureParams::wall_top_gap, "wall_top_gap"}, Field{&FeatureParams::max_opening, "max_opening"},
+        Field{&FeatureParams::wall_recess, "wall_recess"}, Field{&FeatureParams::floor_roughness, "floor_roughness"},
+        Field{&FeatureParams::min_passage, "min_passage"}})
+    length(p.*field, name);
   area(p.min_room_area, "min_room_area");
   area(p.min_ceiling_facet, "min_ceiling_facet");
 }

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
@@ -175,6 +176,8 @@ inline int centre_voxels(int sum, int out[2]) {
 struct SizeRange {
   double min_d = 0, max_d = 0;
   double height_ratio = 0.5;  // walls: h = ⌊d · ratio⌋ (Eq. 3.20 has ratio 1/2)
+  // Eq. 3.20: the height in voxels of a wall rectangle whose corners lie d voxels apart.
+  int wall_height(double d) const { return int(std::floor(d * height_ratio + 1e-9)); }
 };
 
 inline SizeRange size_range(float width, float height, float tolerance, float voxel_size) {

@@ -256,7 +256,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   int wall_height_max = 0;
   for (std::size_t size = 0; size < kAreaSizes.size(); ++size) {
     const SizeRange range = range_of(0, size);
-    wall_height_max = std::max(wall_height_max, int(std::floor(range.max_d * range.height_ratio + 1e-9)) + 1);
+    wall_height_max = std::max(wall_height_max, range.wall_height(range.max_d) + 1);
   }
   std::optional<WallPacker> wall_packer(std::in_place, spec, normals.y0 - wall_height_max,
                                        normals.y0 + normals.levels - 1, stop);

@@ -107,7 +107,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
 
   // The rectangles' levels lie in [floor, ceiling]; their offsets are the ring's, each with its height.
   std::vector<Candidates::Shape> shapes;
-  for (const RingOffset& o : ring) shapes.push_back({o.dx, o.dz, int(std::floor(o.d * size.height_ratio + 1e-9))});  // Eq. 3.20
+  for (const RingOffset& o : ring) shapes.push_back({o.dx, o.dz, size.wall_height(o.d)});
   Candidates out(spec, spec.ny, shapes);
   // The ring in words of 64 dz (bit dz + reach) per dx, in the ring's order (dx ascending, then dz): only the
   // words that hold offsets, each with the ring index of its lowest bit. Offset bit b of a word is ring entry
@@ -119,15 +119,17 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   // [2 z1 - reach, 2 z1 + reach]: rows of z1 + z2 in a ring of `rows`, the two that come in with each z1
   // cleared (they held rows no later first corner reaches). A large floor's whole set took megabytes, each
   // analysis fresh pages.
-  const int h_max = int(std::floor(size.max_d * size.height_ratio + 1e-9));
+  const int h_max = size.wall_height(size.max_d);
   const int y_base = 2 * floor - h_max, y_span = 2 * ceiling - y_base + 1;
   const std::size_t rows = std::size_t(2 * reach + 3), row_bits = std::size_t(2 * spec.nx) * std::size_t(y_span);
   BitSet centres(rows * row_bits);
   std::size_t first_row = 0;  // the ring's row of z1 + z2 = 2 z1 - reach, for the current z1
+  const auto ring_row = [&](int dz) {  // of z1 + z2 = 2 z1 + dz, |dz| <= reach
+    const std::size_t row = first_row + std::size_t(dz + reach);
+    return row >= rows ? row - rows : row;
+  };
   const auto centre_bit = [&](int sx, int sy, int dz) {
-    std::size_t row = first_row + std::size_t(dz + reach);
-    if (row >= rows) row -= rows;
-    return row * row_bits + std::size_t(sx) * std::size_t(y_span) + std::size_t(sy - y_base);
+    return ring_row(dz) * row_bits + std::size_t(sx) * std::size_t(y_span) + std::size_t(sy - y_base);
   };
   struct RingWord {
     int dx, dz_from;        // dz_from: the dz of bit 0
@@ -168,8 +170,8 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       x_first = std::max(columns.x, 0), x_last = std::min(columns.y, spec.nx - 1);
     }
     first_row = std::size_t(2 * z1 + int(rows) - reach) % rows;  // 2 z1 - reach, kept non-negative
-    for (const int sz : {2 * z1 + reach - 1, 2 * z1 + reach})
-      if (sz >= 0) centres.reset(std::size_t(sz) % rows * row_bits, (std::size_t(sz) % rows + 1) * row_bits);
+    for (const int dz : {reach - 1, reach})
+      if (dz >= -reach) centres.reset(ring_row(dz) * row_bits, (ring_row(dz) + 1) * row_bits);
     for (int x1 = x_first; x1 <= x_last; ++x1) {
       if (normals.slot[spec.column(x1, z1)] == NormalCounts::kNoNormal) continue;  // most of an open floor
       for (int y1 = std::max(y_first, floor); y1 <= ceiling; ++y1) {

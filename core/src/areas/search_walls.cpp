@@ -3,6 +3,7 @@
 #include "ring_offsets.h"
 #include "search.h"
 #include "roomsense/cancel.h"
+#include "roomsense/error.h"
 
 #include <algorithm>
 #include <bit>
@@ -19,6 +20,9 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
                        int(std::numeric_limits<std::uint16_t>::max())});
   const std::size_t stride = std::size_t(n.levels + 1);
   const auto normals_of = [&](std::size_t col) { return features.normals.data() + col * std::size_t(spec.ny) + n.y0; };
+  // Slots below kNoNormal: a grid of 2^30 columns, far past any voxel budget the pipeline takes, would not fit.
+  if (spec.column_count() >= NormalCounts::kNoNormal)
+    throw Error(ErrorCode::GridTooLarge, "the wall search takes grids of fewer than 2^30 - 1 columns");
   n.slot.assign(spec.column_count(), NormalCounts::kNoNormal);
   std::uint32_t slots = 0;
   for (std::size_t col = 0; col < spec.column_count() && n.levels > 0; ++col) {
@@ -28,7 +32,7 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   const auto prefix_of = [&]<class Count>(std::vector<Count>& prefix) {
     prefix.assign(std::size_t(slots) * stride, 0);
     for (std::size_t col = 0; col < spec.column_count(); ++col) {
-      if (n.slot[col] == NormalCounts::kNoNormal) continue;
+      if (!n.has_normal(col)) continue;
       const std::uint8_t* f = normals_of(col);
       Count* p = prefix.data() + std::size_t(n.slot[col]) * stride;
       for (int i = 0; i < n.levels; ++i) p[i + 1] = Count(p[i] + (f[i] != 0 ? 1 : 0));
@@ -41,7 +45,7 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   n.z_words = slots > 0 && spec.nz >= 32 ? std::size_t(spec.nz + 63) / 64 : 0;
   n.z_bits.assign(std::size_t(std::max(n.levels, 0)) * std::size_t(spec.nx) * 4 * n.z_words, 0);
   for (std::size_t col = 0; col < spec.column_count() && n.z_words > 0; ++col) {
-    if (n.slot[col] == NormalCounts::kNoNormal) continue;
+    if (!n.has_normal(col)) continue;
     const int x = int(col % std::size_t(spec.nx)), z = int(col / std::size_t(spec.nx));
     const std::uint8_t* f = normals_of(col);
     for (int i = 0; i < n.levels; ++i)
@@ -58,8 +62,12 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
       std::uint64_t* words = n.blocked_bits.data() + col * n.blocked_words;
       for (int i = 0; i < n.levels; ++i)
         if (b[i] != 0) words[i / 64] |= std::uint64_t{1} << (i % 64);
+      if (std::any_of(words, words + n.blocked_words, [](std::uint64_t w) { return w != 0; }))
+        n.slot[col] |= NormalCounts::kHasBlocked;
     }
   }
+  for (std::size_t col = 0; col < spec.column_count(); ++col)
+    if (features.walls[col]) n.slot[col] |= NormalCounts::kWallColumn;
   return n;
 }
 
@@ -78,7 +86,6 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   // Alg. 2 starts the top row at I_Floor + ⌊w_min/2⌋, leaving room for the height below it.
   const int y_first = floor + int(std::floor(size.min_d * size.height_ratio));
   const auto& f = features.normals;
-  const auto& walls = features.walls;
 
   // Eq. 3.25's test for one rectangle: no wall column among the cells the top segment touches, and enough
   // voxels with a normal in the rows [y1 - h, y1]. Gives up once too many voxels lack one. Beyond the thesis:
@@ -97,8 +104,11 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
           continue;
         }
         const std::size_t col = spec.column(x, z);
-        if (walls[col] || normals.blocked(col, y_bottom, y_top)) return false;
-        missing += rows - normals.count(col, y_bottom, y_top);
+        const std::uint32_t cell = normals.slot[col];
+        if ((cell & NormalCounts::kWallColumn) ||
+            ((cell & NormalCounts::kHasBlocked) && normals.blocked(col, y_bottom, y_top)))
+          return false;
+        missing += rows - normals.count_in_slot(cell & NormalCounts::kSlotBits, y_bottom, y_top);
       }
       if (double(missing) > may_miss) return false;
     }
@@ -173,7 +183,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     for (const int dz : {reach - 1, reach})
       if (dz >= -reach) centres.reset(ring_row(dz) * row_bits, (ring_row(dz) + 1) * row_bits);
     for (int x1 = x_first; x1 <= x_last; ++x1) {
-      if (normals.slot[spec.column(x1, z1)] == NormalCounts::kNoNormal) continue;  // most of an open floor
+      if (!normals.has_normal(spec.column(x1, z1))) continue;  // most of an open floor
       for (int y1 = std::max(y_first, floor); y1 <= ceiling; ++y1) {
         const std::uint8_t f1 = f[spec.index(x1, y1, z1)];
         if (f1 == 0) continue;

@@ -24,37 +24,44 @@ struct CellBox {
 };
 
 // Counts over axis-aligned boxes of cells in O(1) (a summed-area table), over a region of the grid: boxes
-// inside it only.
+// inside it only. `Count` is int for one count, or std::uint64_t for two packed in one (see BadCells).
+template <class Count>
 class BoxCounts {
  public:
   // The table is written by fill() alone (a search by bands fills a few rows of a large grid).
   BoxCounts(const GridSpec& spec)
       : nx_(spec.nx), nz_(spec.nz),
-        sums_(std::make_unique_for_overwrite<int[]>(std::size_t(nx_ + 1) * std::size_t(nz_ + 1))) {}
-  template <class Pred>
-  void fill(const GridSpec& spec, Pred pred) {
-    fill(spec, CellBox{{0, 0}, {nx_ - 1, nz_ - 1}}, pred);
-  }
-  template <class Pred>
-  void fill(const GridSpec& spec, const CellBox& region, Pred pred) {
+        sums_(std::make_unique_for_overwrite<Count[]>(std::size_t(nx_ + 1) * std::size_t(nz_ + 1))) {}
+  // value(column): the column's own count (a bool for 0 or 1).
+  template <class Value>
+  void fill(const GridSpec& spec, const CellBox& region, Value value) {
     const glm::ivec2 lo = region.lo, hi = region.hi;
     for (int x = lo.x; x <= hi.x + 1; ++x) at(x, lo.y) = 0;
     for (int z = lo.y; z <= hi.y; ++z) {
       at(lo.x, z + 1) = 0;
       for (int x = lo.x; x <= hi.x; ++x)
-        at(x + 1, z + 1) = at(x, z + 1) + at(x + 1, z) - at(x, z) + (pred(spec.column(x, z)) ? 1 : 0);
+        at(x + 1, z + 1) = at(x, z + 1) + at(x + 1, z) - at(x, z) + Count(value(spec.column(x, z)));
     }
   }
   // Inlined everywhere: the search calls it from a loop GCC otherwise leaves it outside of (a call per box).
-  [[gnu::always_inline]] int sum(glm::ivec2 lo, glm::ivec2 hi) const {  // inclusive; lo and hi inside the region filled
+  [[gnu::always_inline]] Count sum(glm::ivec2 lo, glm::ivec2 hi) const {  // inclusive; lo and hi inside the region filled
     return at(hi.x + 1, hi.y + 1) - at(lo.x, hi.y + 1) - at(hi.x + 1, lo.y) + at(lo.x, lo.y);
   }
 
  private:
-  int& at(int x, int z) { return sums_[std::size_t(z) * std::size_t(nx_ + 1) + std::size_t(x)]; }
-  int at(int x, int z) const { return sums_[std::size_t(z) * std::size_t(nx_ + 1) + std::size_t(x)]; }
+  Count& at(int x, int z) { return sums_[std::size_t(z) * std::size_t(nx_ + 1) + std::size_t(x)]; }
+  Count at(int x, int z) const { return sums_[std::size_t(z) * std::size_t(nx_ + 1) + std::size_t(x)]; }
   int nx_, nz_;
-  std::unique_ptr<int[]> sums_;
+  std::unique_ptr<Count[]> sums_;
+};
+
+// Eq. 3.30-3.38 read a box's wall cells and unsuitable cells together: both counts in one table, walls in the
+// high 32 bits and unsuitable cells in the low. The table's sums are exact modulo 2^64 and a box's counts are
+// each below 2^31 (cells of a grid), so a box's sum is exactly walls * 2^32 + unsuitable: one sum for both.
+struct BadCells {
+  static std::uint64_t of(bool wall, bool unsuitable) { return (wall ? std::uint64_t{1} << 32 : 0) | (unsuitable ? 1 : 0); }
+  static int walls(std::uint64_t sum) { return int(sum >> 32); }
+  static int unsuitable(std::uint64_t sum) { return int(sum & 0xffffffffu); }
 };
 
 // A bit per cell of the padded tile grid, rows along x, with a spare word after each row: word(x, z) is the
@@ -157,9 +164,8 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   if (by_facet)
     for (const auto& facet : features.facets) top = std::max(top, facet.level);
   Candidates out(spec, std::max(top, 0) + 2, std::move(shapes));
-  BoxCounts box_unsuitable(spec), box_raised(spec), box_first(spec), box_walls(spec);
-  const auto is_wall = [&](std::size_t col) { return features.walls[col] != 0; };
-  if constexpr (!kBanded) box_walls.fill(spec, is_wall);  // by bands: each layer's region
+  BoxCounts<std::uint64_t> box_bad(spec);  // BadCells
+  BoxCounts<int> box_raised(spec), box_first(spec);
   // Every orientation's square holds the disk of radius d_min / 2 around its centre, and so the cells inside
   // the box inscribed in that disk: if those alone hold a wall or too many unsuitable cells, no orientation
   // can be valid.
@@ -264,8 +270,9 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
         if (is_tile(col)) tile_bits.set(x + pad, z + pad);
         if (is_first(col)) first_bits.set(x + pad, z + pad);
       }
-    if constexpr (kBanded) box_walls.fill(spec, region, is_wall);
-    box_unsuitable.fill(spec, region, [&](std::size_t col) { return !is_tile(col); });  // walls are never tiles
+    box_bad.fill(spec, region, [&](std::size_t col) {  // walls are never tiles
+      return BadCells::of(features.walls[col] != 0, !is_tile(col));
+    });
     box_first.fill(spec, region, is_first);
     if (surface == Surface::Furniture) box_raised.fill(spec, region, raised);
     CentreSet& here = centres[std::size_t(layer)];
@@ -288,22 +295,24 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
             rises = rises || box_raised.sum({x1 + run.dx, z1 + run.dz_lo}, {x1 + run.dx, z1 + run.dz_hi}) > 0;
         return true;
       };
-      const int unsuitable_in_box = box_inside ? box_unsuitable.sum(box_lo, box_hi) : -1;
-      if (unsuitable_in_box == 0) return rises_in_runs();
+      const std::uint64_t bad_in_box = box_inside ? box_bad.sum(box_lo, box_hi) : 0;
+      if (box_inside && bad_in_box == 0) return rises_in_runs();  // walls are unsuitable: none of either
       // The box of whole columns inside the square (RingOffset::core_lo): a wall or too many unsuitable cells
       // there fail the square at once.
       const glm::ivec2 core_lo = glm::ivec2(x1, z1) + o.core_lo, core_hi = glm::ivec2(x1, z1) + o.core_hi;
-      if (core_lo.x <= core_hi.x &&
-          (box_walls.sum(core_lo, core_hi) > 0 || double(box_unsuitable.sum(core_lo, core_hi)) > may_miss))
-        return false;
+      if (core_lo.x <= core_hi.x) {
+        const std::uint64_t bad_in_core = box_bad.sum(core_lo, core_hi);
+        if (BadCells::walls(bad_in_core) > 0 || double(BadCells::unsuitable(bad_in_core)) > may_miss) return false;
+      }
       // Where the bounding box holds no wall and no more unsuitable cells than allowed, neither do the cells.
-      if (box_inside && double(unsuitable_in_box) <= may_miss && box_walls.sum(box_lo, box_hi) == 0)
+      if (box_inside && double(BadCells::unsuitable(bad_in_box)) <= may_miss && BadCells::walls(bad_in_box) == 0)
         return rises_in_runs();
       int missing = 0;
       for (const CellRun& run : o.runs) {
         const int x = x1 + run.dx, lo = z1 + run.dz_lo, hi = z1 + run.dz_hi;  // inside: the corners are
-        missing += box_unsuitable.sum({x, lo}, {x, hi});
-        if (double(missing) > may_miss || box_walls.sum({x, lo}, {x, hi}) > 0) return false;
+        const std::uint64_t bad = box_bad.sum({x, lo}, {x, hi});
+        missing += BadCells::unsuitable(bad);
+        if (double(missing) > may_miss || BadCells::walls(bad) > 0) return false;
         if (may_rise && !rises) rises = box_raised.sum({x, lo}, {x, hi}) > 0;
       }
       return true;
@@ -348,7 +357,8 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
           const glm::ivec2 in_hi(floor_int(0.5 * cx + inner_half), floor_int(0.5 * cz + inner_half));
           if (in_lo.x >= 0 && in_lo.y >= 0 && in_hi.x < spec.nx && in_hi.y < spec.nz && in_lo.x <= in_hi.x &&
               in_lo.y <= in_hi.y &&
-              (box_walls.sum(in_lo, in_hi) > 0 || double(box_unsuitable.sum(in_lo, in_hi)) > most_missing))
+              (BadCells::walls(box_bad.sum(in_lo, in_hi)) > 0 ||
+               double(BadCells::unsuitable(box_bad.sum(in_lo, in_hi))) > most_missing))
             continue;
         }
         const glm::ivec3 sum(2 * cx, 0, 2 * cz);

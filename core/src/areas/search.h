@@ -13,13 +13,14 @@ namespace roomsense::detail {
 // and what stands near them, not the open floor); a byte a count where the room is under 256 levels high
 // (every room at the usual voxel sizes), else two; the blocked voxels a bit each.
 struct NormalCounts {
-  // Per column, one word for Eq. 3.25's test of a cell: where its counts start (kNoNormal: it has no normal),
-  // and flags: a wall column (no rectangle's cell may lie there) and one with a blocked voxel at some level.
-  static constexpr std::uint32_t kWallColumn = 1u << 31, kHasBlocked = 1u << 30, kSlotBits = kHasBlocked - 1;
-  static constexpr std::uint32_t kNoNormal = kSlotBits;
+  // Per column, one word for Eq. 3.25's test of a cell: where its counts start in prefix8/prefix16 (kNoNormal:
+  // it has no normal), and flags: a wall column (no rectangle's cell may lie there) and one with a blocked
+  // voxel at some level.
+  static constexpr std::uint32_t kWallColumn = 1u << 31, kHasBlocked = 1u << 30, kStartBits = kHasBlocked - 1;
+  static constexpr std::uint32_t kNoNormal = kStartBits;
   int y0 = 0, levels = 0;               // covers y in [y0, y0 + levels)
-  std::vector<std::uint32_t> slot;      // per column: its slot (kSlotBits) and flags
-  std::vector<std::uint8_t> prefix8;    // slot * (levels + 1) + (y - y0 + 1), when levels < 256
+  std::vector<std::uint32_t> start;     // per column: where its counts start (kStartBits), and flags
+  std::vector<std::uint8_t> prefix8;    // start + (y - y0 + 1): the column's voxels with a normal in [y0, y], when levels < 256
   std::vector<std::uint16_t> prefix16;  // the same, otherwise
   std::size_t blocked_words = 0;        // per column
   std::vector<std::uint64_t> blocked_bits;  // RoomFeatures::wall_blocked, bit y - y0; empty when none is
@@ -30,9 +31,15 @@ struct NormalCounts {
   // would outweigh the normals themselves, and rooms without normals.
   std::size_t z_words = 0;
   std::vector<std::uint64_t> z_bits;  // ((y - y0) * nx + x) * 4 + k, then z / 64
-  bool has_normal(std::size_t column) const { return (slot[column] & kSlotBits) != kNoNormal; }
+  bool has_normal(std::size_t column) const { return (start[column] & kStartBits) != kNoNormal; }
   int count(std::size_t column, int y_from, int y_to) const;  // voxels with a normal in [y_from, y_to]
-  int count_in_slot(std::uint32_t slot_bits, int y_from, int y_to) const;  // the same, of slot[column] & kSlotBits
+  // The same for many columns over one span of levels: the span's offsets found once, a column's count from
+  // its start[] & kStartBits.
+  struct Levels {
+    std::size_t from, to;  // offsets of the counts below y_from and through y_to
+  };
+  Levels levels_of(int y_from, int y_to) const { return {std::size_t(y_from - y0), std::size_t(y_to - y0 + 1)}; }
+  int count(std::uint32_t start_bits, Levels span) const;
   bool blocked(std::size_t column, int y_from, int y_to) const;  // any blocked voxel in [y_from, y_to]
   // Bits z in [z_from, z_from + 64) of the voxels at (x, y) whose normal Alg. 2 pairs with a first corner of
   // normals `first` (compatible_normals); 0 outside the grid.
@@ -48,15 +55,15 @@ inline std::uint8_t compatible_normals(std::uint8_t first) {
   return std::uint8_t(out);
 }
 
-inline int NormalCounts::count_in_slot(std::uint32_t slot_bits, int y_from, int y_to) const {
-  if (slot_bits == kNoNormal) return 0;
-  const std::size_t base = std::size_t(slot_bits) * std::size_t(levels + 1), hi = base + std::size_t(y_to - y0 + 1),
-                    lo = base + std::size_t(y_from - y0);
-  return prefix8.empty() ? int(prefix16[hi]) - int(prefix16[lo]) : int(prefix8[hi]) - int(prefix8[lo]);
+inline int NormalCounts::count(std::uint32_t start_bits, Levels span) const {
+  if (start_bits == kNoNormal) return 0;
+  const std::size_t at = start_bits;
+  return prefix8.empty() ? int(prefix16[at + span.to]) - int(prefix16[at + span.from])
+                         : int(prefix8[at + span.to]) - int(prefix8[at + span.from]);
 }
 
 inline int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
-  return count_in_slot(slot[column] & kSlotBits, y_from, y_to);
+  return count(start[column] & kStartBits, levels_of(y_from, y_to));
 }
 
 inline bool NormalCounts::blocked(std::size_t column, int y_from, int y_to) const {

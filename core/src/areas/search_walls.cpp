@@ -20,21 +20,22 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
                        int(std::numeric_limits<std::uint16_t>::max())});
   const std::size_t stride = std::size_t(n.levels + 1);
   const auto normals_of = [&](std::size_t col) { return features.normals.data() + col * std::size_t(spec.ny) + n.y0; };
-  // Slots below kNoNormal: a grid of 2^30 columns, far past any voxel budget the pipeline takes, would not fit.
-  if (spec.column_count() >= NormalCounts::kNoNormal)
-    throw Error(ErrorCode::GridTooLarge, "the wall search takes grids of fewer than 2^30 - 1 columns");
-  n.slot.assign(spec.column_count(), NormalCounts::kNoNormal);
-  std::uint32_t slots = 0;
+  n.start.assign(spec.column_count(), NormalCounts::kNoNormal);
+  std::size_t slots = 0;
   for (std::size_t col = 0; col < spec.column_count() && n.levels > 0; ++col) {
     const std::uint8_t* f = normals_of(col);
-    if (std::any_of(f, f + n.levels, [](std::uint8_t v) { return v != 0; })) n.slot[col] = slots++;
+    if (!std::any_of(f, f + n.levels, [](std::uint8_t v) { return v != 0; })) continue;
+    // Starts below kNoNormal: counts of 2^30 voxels, past any voxel budget the pipeline takes, would not fit.
+    if ((slots + 1) * stride >= NormalCounts::kNoNormal)
+      throw Error(ErrorCode::GridTooLarge, "the wall search counts the normals of at most 2^30 - 2 voxels");
+    n.start[col] = std::uint32_t(slots++ * stride);
   }
   const auto prefix_of = [&]<class Count>(std::vector<Count>& prefix) {
     prefix.assign(std::size_t(slots) * stride, 0);
     for (std::size_t col = 0; col < spec.column_count(); ++col) {
       if (!n.has_normal(col)) continue;
       const std::uint8_t* f = normals_of(col);
-      Count* p = prefix.data() + std::size_t(n.slot[col]) * stride;
+      Count* p = prefix.data() + (n.start[col] & NormalCounts::kStartBits);
       for (int i = 0; i < n.levels; ++i) p[i + 1] = Count(p[i] + (f[i] != 0 ? 1 : 0));
     }
   };
@@ -63,11 +64,11 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
       for (int i = 0; i < n.levels; ++i)
         if (b[i] != 0) words[i / 64] |= std::uint64_t{1} << (i % 64);
       if (std::any_of(words, words + n.blocked_words, [](std::uint64_t w) { return w != 0; }))
-        n.slot[col] |= NormalCounts::kHasBlocked;
+        n.start[col] |= NormalCounts::kHasBlocked;
     }
   }
   for (std::size_t col = 0; col < spec.column_count(); ++col)
-    if (features.walls[col]) n.slot[col] |= NormalCounts::kWallColumn;
+    if (features.walls[col]) n.start[col] |= NormalCounts::kWallColumn;
   return n;
 }
 
@@ -95,20 +96,20 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     const long rows = y_top - y_bottom + 1;
     const double need = double(fill) * (std::floor(o.d) + 1.0) * double(h + 1);
     const double may_miss = double(long(o.cells) * rows) - need;
+    const NormalCounts::Levels span = normals.levels_of(y_bottom, y_top);
     long missing = 0;
     for (const CellRun& run : o.runs) {
-      const int x = x1 + run.dx;
-      for (int z = z1 + run.dz_lo; z <= z1 + run.dz_hi; ++z) {
-        if (z < 0 || z >= spec.nz) {
-          missing += rows;
-          continue;
-        }
-        const std::size_t col = spec.column(x, z);
-        const std::uint32_t cell = normals.slot[col];
+      // The run's cells in the grid, column by column along z; those past its edge lack every voxel.
+      const int z_lo = z1 + run.dz_lo, z_hi = z1 + run.dz_hi;
+      const int in_lo = std::max(z_lo, 0), in_hi = std::min(z_hi, spec.nz - 1);
+      missing += rows * long((z_hi - z_lo + 1) - std::max(in_hi - in_lo + 1, 0));
+      std::size_t col = spec.column(x1 + run.dx, in_lo);
+      for (int z = in_lo; z <= in_hi; ++z, col += std::size_t(spec.nx)) {
+        const std::uint32_t cell = normals.start[col];
         if ((cell & NormalCounts::kWallColumn) ||
             ((cell & NormalCounts::kHasBlocked) && normals.blocked(col, y_bottom, y_top)))
           return false;
-        missing += rows - normals.count_in_slot(cell & NormalCounts::kSlotBits, y_bottom, y_top);
+        missing += rows - normals.count(cell & NormalCounts::kStartBits, span);
       }
       if (double(missing) > may_miss) return false;
     }

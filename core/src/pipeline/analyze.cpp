@@ -239,11 +239,46 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   std::vector<std::size_t> band_of(heights.size());
   for (std::size_t k = 0; k < heights.size(); ++k)
     if (!ridge(k)) band_of[k] = bands.size(), bands.push_back(band_limits(spec, levels_of(k).first, levels_of(k).second));
+  // Beyond the thesis: §3.2-3.6 for each storey on its own levels and column counts, side by side, and beside
+  // them the heights' sums: the features read the levels alone, and their first steps are one thread's. What the
+  // heights decide (no room, which storeys are rooms) waits for all; a storey the heights drop is rare. The
+  // labels' warnings come after that decision, as the features do.
+  std::vector<std::string> label_warnings;
+  LabelGrid labels = voxelize_labels(spec, scan.labels, options.voxel_test_budget, label_warnings);
+  // An IncrementalAnalysis whose chunks changed within their voxels: the features of a storey on the levels of one
+  // of the previous analysis's (and below, the bounds, where every storey is) are that analysis's.
+  const AnalysisResult* previous = caches ? caches->previous : nullptr;
+  const bool same_grid = previous != nullptr && previous->features && previous->voxels.grid.spec == spec &&
+                         previous->voxels.grid.cells == r.voxels.grid.cells &&
+                         caches->previous_labels.present == labels.present &&
+                         caches->previous_labels.masks == labels.masks;
+  const auto previous_features = [&](const FloorCeiling& storey) -> const RoomFeatures* {
+    for (std::size_t i = 0; same_grid && i < previous->storeys.size(); ++i)
+      if (previous->storeys[i].levels == storey) return i == 0 ? &*previous->features : &previous->other_features[i - 1];
+    return nullptr;
+  };
+  std::vector<RoomFeatures> storey_features(all.size());  // as `all`
   std::vector<BandSum> sums;  // as `bands`; none for a point cloud
-  if (!in.indices.empty())
-    sums = chunks != nullptr && in.indices.data() == scan.indices.data()
-               ? caches->band_sums.sums(*chunks, bands, options.threads)
-               : band_sums(in.vertices, in.indices, bands, options.threads);
+  // Task 0, the main storey's, most likely on this thread, whose heap then holds what lives longest (worker_pool.h).
+  detail::parallel_tasks(all.size() + 1, options.threads, [&](std::size_t k) {
+    stop_point(options.stop);
+    if (k < all.size()) {
+      if (const RoomFeatures* same = previous_features(*all[k])) storey_features[k] = *same;
+      else if (k == 0) storey_features[k] = detect_features(r.voxels, options.features, options.threads, options.stop, labels);
+      else {
+        std::vector<std::uint32_t> column_counts;
+        std::vector<std::uint8_t> column_any;
+        count_columns(r.voxels.grid, *all[k], column_counts, column_any);
+        storey_features[k] = detect_features(r.voxels.grid, *all[k], column_counts, column_any, options.features,
+                                             options.threads, options.stop, labels);
+      }
+      return;
+    }
+    if (!in.indices.empty())
+      sums = chunks != nullptr && in.indices.data() == scan.indices.data()
+                 ? caches->band_sums.sums(*chunks, bands, options.threads)
+                 : band_sums(in.vertices, in.indices, bands, options.threads);
+  });
   // From the sums at once; a ridge, a point cloud's (or terms past the sums) a pass each, side by side.
   detail::parallel_tasks(heights.size(), sums.empty() ? options.threads : 1, [&](std::size_t k) {
     const auto [lo, hi] = levels_of(k);
@@ -260,41 +295,17 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     return no_room("no floor and ceiling found: the fullest levels, at " + metres(r.floor_y) + " and " +
                    metres(r.ceiling_y) + ", are less than " + metres(min_height) + " apart");
   r.storeys.push_back({r.floor_y, r.ceiling_y, levels, {}});
+  r.features = std::move(storey_features[0]);
   for (std::size_t i = 1; i < all.size(); ++i) {
     const Storey storey{heights[2 * i], heights[2 * i + 1], *all[i], {}};
-    if (storey.ceiling_y - storey.floor_y >= min_height) r.storeys.push_back(storey);
+    if (storey.ceiling_y - storey.floor_y < min_height) continue;
+    r.storeys.push_back(storey);
+    r.other_features.push_back(std::move(storey_features[i]));
   }
-  // Beyond the thesis: §3.2-3.6 for each storey on its own levels and column counts, side by side.
-  LabelGrid labels = voxelize_labels(spec, scan.labels, options.voxel_test_budget, r.warnings);
-  r.other_features.resize(r.storeys.size() - 1);
-  // An IncrementalAnalysis whose chunks changed within their voxels: the features (and below, the bounds) are
-  // the previous analysis's.
-  const AnalysisResult* previous = caches ? caches->previous : nullptr;
-  const auto same_levels = [&] {
-    if (previous->storeys.size() != r.storeys.size()) return false;
-    for (std::size_t i = 0; i < r.storeys.size(); ++i)
-      if (previous->storeys[i].levels != r.storeys[i].levels) return false;
-    return true;
-  };
-  const bool same_input = previous != nullptr && previous->features && previous->voxels.grid.spec == spec &&
-                          same_levels() && previous->voxels.grid.cells == r.voxels.grid.cells &&
-                          caches->previous_labels.present == labels.present &&
-                          caches->previous_labels.masks == labels.masks;
-  if (same_input) {
-    r.features = previous->features;
-    r.other_features = previous->other_features;
-  } else detail::parallel_tasks(r.storeys.size(), options.threads, [&](std::size_t i) {
-    stop_point(options.stop);
-    if (i == 0) {
-      r.features = detect_features(r.voxels, options.features, options.threads, options.stop, labels);
-      return;
-    }
-    std::vector<std::uint32_t> column_counts;
-    std::vector<std::uint8_t> column_any;
-    count_columns(r.voxels.grid, r.storeys[i].levels, column_counts, column_any);
-    r.other_features[i - 1] = detect_features(r.voxels.grid, r.storeys[i].levels, column_counts, column_any,
-                                              options.features, options.threads, options.stop, labels);
-  });
+  r.warnings.insert(r.warnings.end(), label_warnings.begin(), label_warnings.end());
+  const bool same_input = same_grid && previous->storeys.size() == r.storeys.size() &&
+                          std::equal(r.storeys.begin(), r.storeys.end(), previous->storeys.begin(),
+                                     [](const Storey& x, const Storey& y) { return x.levels == y.levels; });
   r.status_message = "ok";
   r.timings.features = clock.lap();
   stop_point(options.stop);

@@ -67,7 +67,7 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
         n.start[col] |= NormalCounts::kHasBlocked;
     }
   }
-  for (std::size_t col = 0; col < spec.column_count(); ++col)
+  for (std::size_t col = 0; col < std::min(spec.column_count(), features.walls.size()); ++col)
     if (features.walls[col]) n.start[col] |= NormalCounts::kWallColumn;
   return n;
 }

@@ -214,8 +214,10 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
       int upper = spec.ny;
       for (const FloorCeiling* other : all)
         if (other->floor_peak > fc->ceiling_peak) upper = std::min(upper, other->floor_peak);
-      count_columns(r.voxels.grid, *fc, counts, any);
-      const auto up = raised_ceiling(r.voxels.grid, *fc, detect_room(spec, any), upper);
+      // The voxel stage counted the columns on its own levels: the main storey's, but where storeys moved them.
+      const bool counted = *fc == *r.voxels.levels;
+      if (!counted) count_columns(r.voxels.grid, *fc, counts, any);
+      const auto up = raised_ceiling(r.voxels.grid, *fc, detect_room(spec, counted ? r.voxels.column_any : any), upper);
       if (up) *fc = *up;
       raised.push_back(up.has_value());
     }

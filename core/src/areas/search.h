@@ -33,14 +33,14 @@ struct NormalCounts {
   std::vector<std::uint64_t> z_bits;  // ((y - y0) * nx + x) * 4 + k, then z / 64
   bool has_normal(std::size_t column) const { return (start[column] & kStartBits) != kNoNormal; }
   int count(std::size_t column, int y_from, int y_to) const;  // voxels with a normal in [y_from, y_to]
-  // The same for many columns over one span of levels: the span's offsets found once, a column's count from
-  // its start[] & kStartBits.
+  // Eq. 3.25's test of one cell over a span of levels (found once per rectangle): false where no rectangle may
+  // hold the cell (a wall column, or a blocked voxel in the span), else the voxels with a normal in it in
+  // `with_normal`.
   struct Levels {
     std::size_t from, to;  // offsets of the counts below y_from and through y_to
   };
   Levels levels_of(int y_from, int y_to) const { return {std::size_t(y_from - y0), std::size_t(y_to - y0 + 1)}; }
-  int count(std::uint32_t start_bits, Levels span) const;
-  bool blocked(std::size_t column, int y_from, int y_to) const;  // any blocked voxel in [y_from, y_to]
+  bool usable(std::size_t column, Levels span, int& with_normal) const;
   // Bits z in [z_from, z_from + 64) of the voxels at (x, y) whose normal Alg. 2 pairs with a first corner of
   // normals `first` (compatible_normals); 0 outside the grid.
   std::uint64_t z_window(int nx, int x, int y, std::uint8_t first, int z_from) const;
@@ -55,29 +55,37 @@ inline std::uint8_t compatible_normals(std::uint8_t first) {
   return std::uint8_t(out);
 }
 
-inline int NormalCounts::count(std::uint32_t start_bits, Levels span) const {
-  if (start_bits == kNoNormal) return 0;
-  const std::size_t at = start_bits;
-  return prefix8.empty() ? int(prefix16[at + span.to]) - int(prefix16[at + span.from])
-                         : int(prefix8[at + span.to]) - int(prefix8[at + span.from]);
+namespace normal_counts {
+// The counts in [span.from, span.to) of a column whose counts start at `start` (kNoNormal: none).
+inline int count(const NormalCounts& n, std::uint32_t start, NormalCounts::Levels span) {
+  if (start == NormalCounts::kNoNormal) return 0;
+  return n.prefix8.empty() ? int(n.prefix16[start + span.to]) - int(n.prefix16[start + span.from])
+                           : int(n.prefix8[start + span.to]) - int(n.prefix8[start + span.from]);
 }
-
-inline int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
-  return count(start[column] & kStartBits, levels_of(y_from, y_to));
-}
-
-inline bool NormalCounts::blocked(std::size_t column, int y_from, int y_to) const {
-  if (blocked_bits.empty()) return false;
-  const std::uint64_t* words = blocked_bits.data() + column * blocked_words;
-  // Bits y - y0 (never negative: the searches read levels from y0 on), unsigned so that / and % are shifts.
-  const unsigned first = unsigned(y_from - y0), last = unsigned(y_to - y0);
+// Any blocked voxel in the span, of a column that has one.
+inline bool blocked(const NormalCounts& n, std::size_t column, NormalCounts::Levels span) {
+  const std::uint64_t* words = n.blocked_bits.data() + column * n.blocked_words;
+  // Bits y - y0, unsigned so that / and % are shifts.
+  const std::size_t first = span.from, last = span.to - 1;
   // Bits [first % 64, 63] of the first word, [0, last % 64] of the last, whole words between.
   const std::uint64_t head = ~std::uint64_t{0} << (first % 64), tail = ~std::uint64_t{0} >> (63 - last % 64);
   if (first / 64 == last / 64) return (words[first / 64] & head & tail) != 0;
   if (words[first / 64] & head || words[last / 64] & tail) return true;
-  for (unsigned w = first / 64 + 1; w < last / 64; ++w)
+  for (std::size_t w = first / 64 + 1; w < last / 64; ++w)
     if (words[w] != 0) return true;
   return false;
+}
+}  // namespace normal_counts
+
+inline int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
+  return normal_counts::count(*this, start[column] & kStartBits, levels_of(y_from, y_to));
+}
+
+inline bool NormalCounts::usable(std::size_t column, Levels span, int& with_normal) const {
+  const std::uint32_t word = start[column];
+  if ((word & kWallColumn) || ((word & kHasBlocked) && normal_counts::blocked(*this, column, span))) return false;
+  with_normal = normal_counts::count(*this, word & kStartBits, span);
+  return true;
 }
 
 inline std::uint64_t NormalCounts::z_window(int nx, int x, int y, std::uint8_t first, int z_from) const {

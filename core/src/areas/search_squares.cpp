@@ -62,6 +62,8 @@ struct BadCells {
   static std::uint64_t of(bool wall, bool unsuitable) { return (wall ? std::uint64_t{1} << 32 : 0) | (unsuitable ? 1 : 0); }
   static int walls(std::uint64_t sum) { return int(sum >> 32); }
   static int unsuitable(std::uint64_t sum) { return int(sum & 0xffffffffu); }
+  // Cells that fail every square holding them: a wall, or more unsuitable ones than it may miss.
+  static bool fail(std::uint64_t sum, double may_miss) { return walls(sum) > 0 || double(unsuitable(sum)) > may_miss; }
 };
 
 // A bit per cell of the padded tile grid, rows along x, with a spare word after each row: word(x, z) is the
@@ -300,13 +302,9 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       // The box of whole columns inside the square (RingOffset::core_lo): a wall or too many unsuitable cells
       // there fail the square at once.
       const glm::ivec2 core_lo = glm::ivec2(x1, z1) + o.core_lo, core_hi = glm::ivec2(x1, z1) + o.core_hi;
-      if (core_lo.x <= core_hi.x) {
-        const std::uint64_t bad_in_core = box_bad.sum(core_lo, core_hi);
-        if (BadCells::walls(bad_in_core) > 0 || double(BadCells::unsuitable(bad_in_core)) > may_miss) return false;
-      }
+      if (core_lo.x <= core_hi.x && BadCells::fail(box_bad.sum(core_lo, core_hi), may_miss)) return false;
       // Where the bounding box holds no wall and no more unsuitable cells than allowed, neither do the cells.
-      if (box_inside && double(BadCells::unsuitable(bad_in_box)) <= may_miss && BadCells::walls(bad_in_box) == 0)
-        return rises_in_runs();
+      if (box_inside && !BadCells::fail(bad_in_box, may_miss)) return rises_in_runs();
       int missing = 0;
       for (const CellRun& run : o.runs) {
         const int x = x1 + run.dx, lo = z1 + run.dz_lo, hi = z1 + run.dz_hi;  // inside: the corners are
@@ -356,9 +354,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
           const glm::ivec2 in_lo(-floor_int(inner_half - 0.5 * cx), -floor_int(inner_half - 0.5 * cz));  // ceil
           const glm::ivec2 in_hi(floor_int(0.5 * cx + inner_half), floor_int(0.5 * cz + inner_half));
           if (in_lo.x >= 0 && in_lo.y >= 0 && in_hi.x < spec.nx && in_hi.y < spec.nz && in_lo.x <= in_hi.x &&
-              in_lo.y <= in_hi.y &&
-              (BadCells::walls(box_bad.sum(in_lo, in_hi)) > 0 ||
-               double(BadCells::unsuitable(box_bad.sum(in_lo, in_hi))) > most_missing))
+              in_lo.y <= in_hi.y && BadCells::fail(box_bad.sum(in_lo, in_hi), most_missing))
             continue;
         }
         const glm::ivec3 sum(2 * cx, 0, 2 * cz);

@@ -105,11 +105,9 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       missing += rows * long((z_hi - z_lo + 1) - std::max(in_hi - in_lo + 1, 0));
       std::size_t col = spec.column(x1 + run.dx, in_lo);
       for (int z = in_lo; z <= in_hi; ++z, col += std::size_t(spec.nx)) {
-        const std::uint32_t cell = normals.start[col];
-        if ((cell & NormalCounts::kWallColumn) ||
-            ((cell & NormalCounts::kHasBlocked) && normals.blocked(col, y_bottom, y_top)))
-          return false;
-        missing += rows - normals.count(cell & NormalCounts::kStartBits, span);
+        int with_normal = 0;
+        if (!normals.usable(col, span, with_normal)) return false;
+        missing += rows - with_normal;
       }
       if (double(missing) > may_miss) return false;
     }

@@ -27,10 +27,10 @@ class SampleOwners {
       : shift_(shift), mask_((1 << shift.x) - 1, (1 << shift.y) - 1, (1 << shift.z) - 1),
         cells_(std::size_t(1) << (shift.x + shift.y + shift.z)) {}
 
-  // Expects about `tiles` tiles: blocks of a sixteenth of them (at least 16 tiles), their table sized for them.
-  // Before the first insert.
+  // Expects about `tiles` tiles: blocks of a sixteenth to an eighth of them (at least 16 tiles), their table sized
+  // for them. The block size is set before the first insert only (the tiles already placed depend on it).
   void reserve(std::size_t tiles) {
-    block_shift_ = std::max(4, int(std::bit_width(tiles / 16)));
+    if (tile_count_ == 0) block_shift_ = std::max(4, int(std::bit_width(tiles / 16)));
     tiles_.reserve(tiles);
   }
 

@@ -1,0 +1,41 @@
+// SampleOwners (core/src/areas/sample_owners.h, internal): growth's owner of each sample cell, in tiles kept in
+// blocks that are added, never moved, as the areas grow past the tiles reserved for them. Checked against a
+// plain map on cells spread over many more tiles than were reserved, on both tile shapes.
+#include "../../core/src/areas/sample_owners.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+#include <tuple>
+
+namespace {
+
+using roomsense::detail::SampleOwners;
+
+void expect_same_as_a_map(glm::ivec3 shift, std::size_t reserved, int span) {
+  SampleOwners owners(shift);
+  owners.reserve(reserved);
+  std::map<std::tuple<int, int, int>, std::uint32_t> first;
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> coordinate(-span, span);
+  for (std::uint32_t value = 0; value < 200000; ++value) {
+    const glm::ivec3 cell(coordinate(random), coordinate(random) / 8, coordinate(random));
+    owners.insert(cell, value);
+    first.try_emplace({cell.x, cell.y, cell.z}, value);  // the first owner stays, as insert keeps it
+    if (value == 1000) owners.reserve(1);                 // too late to change the blocks: ignored for their size
+  }
+  for (const auto& [cell, value] : first) {
+    const glm::ivec3 c(std::get<0>(cell), std::get<1>(cell), std::get<2>(cell));
+    ASSERT_EQ(owners.find(c), value) << c.x << " " << c.y << " " << c.z;
+    EXPECT_EQ(owners.find(c + glm::ivec3(0, 2 * span, 0)), SampleOwners::kAbsent);  // never inserted
+  }
+}
+
+TEST(SampleOwners, KeepsEachCellsFirstOwnerAcrossBlocksAddedAsTheyGrow) {
+  expect_same_as_a_map(glm::ivec3(3, 0, 3), 4, 300);   // flat tiles, 16-tile blocks: thousands of tiles
+  expect_same_as_a_map(glm::ivec3(2, 2, 2), 64, 120);  // cubes
+  expect_same_as_a_map(glm::ivec3(3, 0, 3), 100000, 40);  // more reserved than used: one block
+}
+
+}  // namespace

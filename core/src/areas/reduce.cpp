@@ -465,14 +465,20 @@ bool SquarePacker::free(const Candidate& c) const {
     return true;
   });
 }
-// Whether the sample at c's middle is taken at a level within the tolerance: then c is not free.
-bool SquarePacker::middle_taken(const PackedCandidate& c) const {
-  const std::optional<std::array<long, 2>> s = middle_sample(c);
-  if (!s) return false;
-  const int level = c.corner(0).y;
+// Whether a square's middle sample (x, z), at `level`, is taken at a level within the tolerance: then it is not
+// free.
+bool SquarePacker::middle_taken(int level, long x, long z) const {
   for (int y = level - level_tolerance_; y <= level + level_tolerance_; ++y)
-    if (taken_->test(y, (*s)[1], (*s)[0])) return true;
+    if (taken_->test(y, z, x)) return true;
   return false;
+}
+
+// What pack_fresh reads of a square that its shape alone decides. Corner 1 moves a square whole, and its middle
+// sample by twice that (middle_sample: floor((4 p1 + q) / 2) = 2 p1 + floor(q / 2)), inside it or not alike.
+SquarePacker::ShapeFacts SquarePacker::shape_facts(const Candidates::Shape& shape) {
+  const PackedCandidate at_origin(glm::ivec3(0), shape.dx, shape.dz, shape.side);
+  const std::optional<std::array<long, 2>> middle = middle_sample(at_origin);
+  return {misalignment_step(at_origin.unpack()), middle.has_value(), middle ? (*middle)[0] : 0, middle ? (*middle)[1] : 0};
 }
 void SquarePacker::take(const Candidate& c) {
   square_samples(c, [&](long z, long x0, long x1) { return taken_->set(c.corners[0].y, z, x0, x1), true; });
@@ -488,13 +494,16 @@ void SquarePacker::take(const Candidate& c) {
 std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
   replayable_ = false;
   constexpr std::size_t kSteps = 10;  // misalignment is at most 45°: steps 0 to 9
+  // A size's squares have a few hundred shapes: what each decides, found once.
+  std::vector<ShapeFacts> facts;
+  for (const Candidates::Shape& shape : squares.shapes()) facts.push_back(shape_facts(shape));
   std::array<std::size_t, kSteps + 1> step_begin{};
   std::vector<std::uint32_t> by_step;  // the squares' indices, step by step, each step's in search order
   {
     std::vector<std::uint8_t> step_of(squares.size());
     for (std::size_t i = 0; i < squares.size(); ++i) {
       if (i % kStopEvery == 0) stop_point(stop_);
-      step_of[i] = std::uint8_t(std::min(misalignment_step(squares[i].unpack()), int(kSteps - 1)));
+      step_of[i] = std::uint8_t(std::min(facts[squares.item(i).shape].step, int(kSteps - 1)));
       ++step_begin[step_of[i] + 1];
     }
     for (std::size_t step = 0; step < kSteps; ++step) step_begin[step + 1] += step_begin[step];
@@ -509,8 +518,11 @@ std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
     std::uint32_t max_contact = 0;
     for (std::size_t k = 0; k < items.size(); ++k) {
       if (k % kStopEvery == 0) stop_point(stop_);
-      const PackedCandidate square = squares[items[k]];
-      if (middle_taken(square)) continue;
+      const Candidates::Item& item = squares.item(items[k]);
+      const PackedCandidate square = squares.decode(item);
+      const ShapeFacts& f = facts[item.shape];
+      const glm::ivec3 p1 = square.corner(0);
+      if (f.has_middle && middle_taken(p1.y, 2L * p1.x + f.middle_x, 2L * p1.z + f.middle_z)) continue;
       items[contacts.size()] = items[k];
       contacts.push_back(std::min(std::uint32_t(contact(square.unpack())), kContactMask));
       max_contact = std::max(max_contact, contacts.back());

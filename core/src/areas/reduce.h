@@ -147,7 +147,13 @@ class SquarePacker {
   int contact(const Candidate& c) const;
   int misalignment_step(const Candidate& c);
   bool free(const Candidate& c) const;
-  bool middle_taken(const PackedCandidate& c) const;
+  struct ShapeFacts {
+    int step = 0;             // misalignment_step
+    bool has_middle = false;  // a middle sample inside the square (middle_sample)
+    long middle_x = 0, middle_z = 0;  // the middle sample of the square whose corner 1 is (0, 0, 0)
+  };
+  ShapeFacts shape_facts(const Candidates::Shape& shape);
+  bool middle_taken(int level, long x, long z) const;
   void take(const Candidate& c);
   std::vector<std::size_t> pack_fresh(const Candidates& squares);
 

@@ -480,6 +480,7 @@ SquarePacker::ShapeFacts SquarePacker::shape_facts(const Candidates::Shape& shap
   const std::optional<std::array<long, 2>> middle = middle_sample(at_origin);
   return {misalignment_step(at_origin.unpack()), middle.has_value(), middle ? (*middle)[0] : 0, middle ? (*middle)[1] : 0};
 }
+
 void SquarePacker::take(const Candidate& c) {
   square_samples(c, [&](long z, long x0, long x1) { return taken_->set(c.corners[0].y, z, x0, x1), true; });
 }

@@ -33,13 +33,13 @@ struct NormalCounts {
   std::vector<std::uint64_t> z_bits;  // ((y - y0) * nx + x) * 4 + k, then z / 64
   bool has_normal(std::size_t column) const { return (start[column] & kStartBits) != kNoNormal; }
   int count(std::size_t column, int y_from, int y_to) const;  // voxels with a normal in [y_from, y_to]
-  // Eq. 3.25's test of one cell over a span of levels (found once per rectangle): false where no rectangle may
-  // hold the cell (a wall column, or a blocked voxel in the span), else the voxels with a normal in it in
-  // `with_normal`.
+  // A span of levels [y_from, y_to], found once per rectangle.
   struct Levels {
     std::size_t from, to;  // offsets of the counts below y_from and through y_to
   };
   Levels levels_of(int y_from, int y_to) const { return {std::size_t(y_from - y0), std::size_t(y_to - y0 + 1)}; }
+  // Eq. 3.25's test of one cell over a span of levels: false where no rectangle may hold the cell (a wall column,
+  // or a blocked voxel in the span), else the voxels with a normal in it in `with_normal`.
   bool usable(std::size_t column, Levels span, int& with_normal) const;
   // Bits z in [z_from, z_from + 64) of the voxels at (x, y) whose normal Alg. 2 pairs with a first corner of
   // normals `first` (compatible_normals); 0 outside the grid.

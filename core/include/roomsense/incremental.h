@@ -11,6 +11,10 @@
 //   any grouping), so unchanged chunks cost those passes nothing;
 // - the features and bounds, where the grid, the labels' voxels and the storeys' levels are the previous
 //   result's (a chunk refined within its voxels);
+// - otherwise, each storey's feature steps that read the whole storey (the walls' heights, the walls' closure,
+//   the ceiling's facets, the rooms) where the column arrays they read are as before, and the steps that read a
+//   column alone (furniture tops, free floor and ceiling tiles) at the columns whose voxels or entries did not
+//   change (features/feature_memo.h);
 // - each area search's rectangles by bands of 8 grid rows: a band is searched again only within the search's
 //   reach of a row whose features changed, and a square search's band only within reach of the columns that
 //   changed (areas/search_cache.h);
@@ -19,8 +23,8 @@
 // - packing's decisions away from the rectangles that changed (areas/reduce.h: PackReplay);
 // - each bounds mesh's slices (the home's, each room's): only the slices through voxel layers whose bounds
 //   volume changed are meshed again (bounds/mesh_memo.h).
-// Levels, reach, the rest of the features, areas and bounds volumes are derived again. An unchanged set of
-// chunks returns the previous result at once.
+// Levels, reach, the ceilings, walls, wall normals and openings, areas and bounds volumes are derived again.
+// An unchanged set of chunks returns the previous result at once.
 #pragma once
 #include "roomsense/analysis.h"
 #include "roomsense/scan.h"

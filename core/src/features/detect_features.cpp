@@ -1,12 +1,15 @@
 // The order and parallelism of §3.2: levels, then A and B, then C/D/E in parallel, then F (needs C). Beyond the
 // thesis: A without free-standing furniture before B, the room's inside after it, the runtime's labels on C and D,
 // and the wall openings after F.
+#include "column_steps.h"
+#include "feature_memo.h"
 #include "roomsense/features.h"
 #include "roomsense/cancel.h"
 #include "../parallel.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace roomsense {
 
@@ -20,6 +23,42 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
                              const std::vector<std::uint32_t>& column_counts,
                              const std::vector<std::uint8_t>& column_any, const FeatureParams& params,
                              unsigned threads, const std::stop_token& stop, const LabelGrid& labels) {
+  return detail::detect_features(grid, levels, column_counts, column_any, params, threads, stop, labels, nullptr, {});
+}
+
+namespace detail {
+namespace {
+
+// derive() through `step`'s memo where there is one.
+template <class Step, class Derive, class... Inputs>
+auto through(Step* step, const Derive& derive, const Inputs&... inputs) {
+  return step != nullptr ? step->get(derive, inputs...) : derive();
+}
+
+// `step` of every column into `out` where `redo` is null, else of the columns it lists.
+template <class Value, class Step>
+void derive_columns(std::vector<Value>& out, std::size_t columns, const std::vector<std::uint32_t>* redo,
+                    const Step& step) {
+  if (redo == nullptr) out = every_column<Value>(columns, step);
+  else
+    for (const std::uint32_t col : *redo) out[col] = step(col);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> changed_columns(const VoxelGrid& a, const VoxelGrid& b) {
+  const auto ny = std::size_t(a.spec.ny);
+  std::vector<std::uint8_t> out(a.spec.column_count());
+  for (std::size_t c = 0; c < out.size(); ++c)
+    out[c] = std::memcmp(a.cells.data() + c * ny, b.cells.data() + c * ny, ny) != 0 ? 1 : 0;
+  return out;
+}
+
+RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
+                             const std::vector<std::uint32_t>& column_counts,
+                             const std::vector<std::uint8_t>& column_any, const FeatureParams& params,
+                             unsigned threads, const std::stop_token& stop, const LabelGrid& labels,
+                             FeatureMemo* memo, const GridChange& change) {
   check_params(params);
   const float s = grid.spec.voxel_size;
   RoomFeatures f;
@@ -34,11 +73,16 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
   }
   f.ceiling = column_ceilings(grid, f.levels, f.room, f.levels.ceiling);
   const std::size_t facet_columns = std::size_t(std::max(1.0f, std::ceil(params.min_ceiling_facet / (s * s) - 1e-3f)));
-  const std::vector<int> over_walls = wall_ceilings(grid.spec, f.levels, f.ceiling, f.room, 2, facet_columns);
+  const std::vector<int> over_walls = through(
+      memo ? &memo->over_walls : nullptr,
+      [&] { return wall_ceilings(grid.spec, f.levels, f.ceiling, f.room, 2, facet_columns); }, grid.spec, f.levels,
+      f.ceiling, f.room, facet_columns);
   f.walls = detect_walls(grid.spec, column_counts, f.levels, over_walls, params.wall_fill);
   drop_free_standing(grid, f.levels, over_walls, voxels_for(params.wall_top_gap, s), f.walls);
   const int max_opening = voxels_for(params.max_opening, s);
-  f.enclosed = detect_enclosed(grid.spec, f.walls, f.room, max_opening);
+  f.enclosed = through(
+      memo ? &memo->enclosed : nullptr, [&] { return detect_enclosed(grid.spec, f.walls, f.room, max_opening); },
+      grid.spec, f.walls, f.room, max_opening);
   cut_at_labelled_walls(grid.spec, f.levels, f.y_end, labels, f.room, f.enclosed);
   // Areas stay inside: the later steps see B cut to the inside (bounds keep B itself).
   const std::vector<std::uint8_t> inside = room_inside(grid.spec, f.room, f.enclosed);
@@ -47,22 +91,57 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
   const int furniture_clear = voxels_for(params.furniture_clear, s);
   const int ceiling_clear = voxels_for(params.ceiling_clear, s);
   const int rough = voxels_for(params.floor_roughness, s);
+  // C, D and E decide each column from its own voxels and entries (column_steps.h): through the memo, only the
+  // columns where those changed since the grid it read, at the same levels and parameters.
+  ColumnSteps fresh;
+  ColumnSteps& steps = memo ? memo->columns : fresh;
+  const ColumnSteps::Scalars scalars{grid.spec, f.levels, f.y_end, furniture_clear, ceiling_clear, rough};
+  std::vector<std::uint32_t> changed;
+  const bool known = change.changed != nullptr && steps.grid != 0 && steps.grid == change.before &&
+                     steps.scalars == scalars;
+  if (known)
+    for (std::size_t c = 0; c < inside.size(); ++c)
+      if ((*change.changed)[c] || steps.walls[c] != f.walls[c] || steps.inside[c] != inside[c] ||
+          steps.ceiling[c] != f.ceiling[c])
+        changed.push_back(std::uint32_t(c));
+  const std::vector<std::uint32_t>* redo = known ? &changed : nullptr;
+  steps.grid = 0;  // until every step below is done
+  steps.derived = known ? changed.size() : inside.size();
+  if (memo) steps.scalars = scalars, steps.walls = f.walls, steps.inside = inside, steps.ceiling = f.ceiling;
+  const std::size_t columns = inside.size();
   // Free floor needs the headroom a furniture top needs (Eq. 3.13's clear space).
   const auto floor = [&] {
-    return detect_free_floor(grid, f.levels, f.ceiling, f.y_end, f.walls, inside, rough, furniture_clear);
+    derive_columns(steps.free_floor, columns, redo,
+                   FreeFloorTile(grid, f.levels, f.ceiling, f.y_end, f.walls, inside, rough, furniture_clear));
+    return memo ? steps.free_floor : std::move(steps.free_floor);
   };
   const auto ceiling = [&] {
-    std::vector<std::uint8_t> tiles = detect_free_ceiling(grid, f.ceiling, ceiling_clear, f.walls, inside);
-    find_ceiling_facets(grid.spec, f.levels, f.ceiling, tiles, facet_columns, f.ceiling_facet, f.facets);
+    derive_columns(steps.free_ceiling, columns, redo, FreeCeilingTile(grid, f.ceiling, ceiling_clear, f.walls, inside));
+    std::vector<std::uint8_t> tiles = memo ? steps.free_ceiling : std::move(steps.free_ceiling);
+    CeilingFacets found = through(
+        memo ? &memo->facets : nullptr,
+        [&] {
+          CeilingFacets out;
+          find_ceiling_facets(grid.spec, f.levels, f.ceiling, tiles, facet_columns, out.facet_of, out.facets);
+          return out;
+        },
+        grid.spec, f.levels, f.ceiling, tiles, facet_columns);
+    f.ceiling_facet = std::move(found.facet_of);
+    f.facets = std::move(found.facets);
     for (std::size_t c = 0; c < tiles.size(); ++c)
       if (f.ceiling_facet[c] == kNoFacet) tiles[c] = 0;
     return tiles;
   };
   detail::parallel_tasks(3, threads, [&](std::size_t task) {
-    if (task == 0) f.furniture = detect_furniture(grid, f.levels, f.ceiling, f.y_end, f.walls, furniture_clear, rough);
+    if (task == 0) {
+      derive_columns(steps.furniture, columns, redo,
+                     FurnitureTop(grid, f.levels, f.ceiling, f.y_end, f.walls, furniture_clear, rough));
+      f.furniture = memo ? steps.furniture : std::move(steps.furniture);
+    }
     if (task == 1) f.free_ceiling = ceiling();
     if (task == 2) f.free_floor = floor();
   });
+  steps.grid = change.now;
   for (std::size_t c = 0; c < inside.size(); ++c)
     if (!inside[c]) f.furniture[c] = kNoFurniture;
   apply_furniture_labels(grid.spec, f.levels, labels, f.free_floor, f.furniture);
@@ -72,7 +151,11 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
     if (task == 0)
       f.normals = detect_wall_normals(grid, f.levels, f.ceiling, voxels_for(params.wall_normal_reach, s), f.walls,
                                       inside, f.furniture);
-    if (task == 1) f.rooms = split_rooms(grid.spec, inside, f.walls, params.min_passage, params.min_room_area);
+    if (task == 1)
+      f.rooms = through(
+          memo ? &memo->rooms : nullptr,
+          [&] { return split_rooms(grid.spec, inside, f.walls, params.min_passage, params.min_room_area); },
+          grid.spec, inside, f.walls, params.min_passage, params.min_room_area);
     if (task == 2)
       f.wall_blocked = detect_wall_openings(grid, f.levels, f.walls, inside, voxels_for(params.wall_recess, s),
                                             max_opening, labels);
@@ -80,4 +163,5 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
   return f;
 }
 
+}  // namespace detail
 }  // namespace roomsense

@@ -1,11 +1,12 @@
 // What an IncrementalAnalysis keeps between its analyses besides each chunk's voxels: its combined scan with each
-// chunk's input summary and surface sums, each storey's area searches by bands of rows (areas/search_cache.h), the
-// labels' voxels of the latest result (whose features and bounds it reads, not copies), each bounds mesh's slices
-// (bounds/mesh_memo.h) and the analyses' threads.
+// chunk's input summary and surface sums, each storey's whole-storey feature steps (features/feature_memo.h) and
+// area searches by bands of rows (areas/search_cache.h), the labels' voxels of the latest result (whose features
+// and bounds it reads, not copies), each bounds mesh's slices (bounds/mesh_memo.h) and the analyses' threads.
 #pragma once
 #include "roomsense/analysis.h"
 #include "../areas/search_cache.h"
 #include "../bounds/mesh_memo.h"
+#include "../features/feature_memo.h"
 #include "../input/input_view.h"
 #include "../worker_pool.h"
 #include "surface_heights.h"
@@ -54,10 +55,12 @@ class ChunkBandSums {
 // For one AnalysisOptions: an IncrementalAnalysis's own.
 struct AnalysisCaches {
   std::vector<std::unique_ptr<SearchCache>> storeys;  // storey i of the latest analysis
+  std::vector<FeatureMemo> features;                  // storey i's whole-storey feature steps, the main one first
   // The latest complete analysis's result (IncrementalAnalysis::result() keeps it alive through the next
   // analysis; null where there is none) and the labels' voxels of its scan: an analysis of the same grid,
   // labels and storey levels has its features and bounds (a scan refined within its voxels), copied from it.
   const AnalysisResult* previous = nullptr;
+  std::uint64_t serial = 0;  // the analyses begun: the latest's number
   LabelGrid previous_labels;
   CombinedScan combined;
   ChunkBandSums band_sums;  // of `combined`

@@ -146,6 +146,8 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   std::unique_ptr<detail::WorkerPool> own_workers;
   const detail::PoolScope scope(detail::pool_for(caches ? caches->workers : own_workers, options.threads));
   AnalysisResult r;
+  // This analysis among its IncrementalAnalysis's: caches->previous, where there is one, is the one before.
+  const std::uint64_t serial = caches ? ++caches->serial : 0;
   stop_point(options.stop);
   check_params(options.features);
   check_params(options.areas);
@@ -250,8 +252,13 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   // An IncrementalAnalysis whose chunks changed within their voxels: the features of a storey on the levels of one
   // of the previous analysis's (and below, the bounds, where every storey is) are that analysis's.
   const AnalysisResult* previous = caches ? caches->previous : nullptr;
-  const bool same_grid = previous != nullptr && previous->features && previous->voxels.grid.spec == spec &&
-                         previous->voxels.grid.cells == r.voxels.grid.cells &&
+  // Which columns' voxels changed since the previous analysis: the features' column steps derive those again.
+  const std::vector<std::uint8_t> changed = previous != nullptr && previous->voxels.grid.spec == spec
+                                                ? detail::changed_columns(previous->voxels.grid, r.voxels.grid)
+                                                : std::vector<std::uint8_t>();
+  const detail::GridChange change{serial - 1, serial, changed.empty() ? nullptr : &changed};
+  const bool same_grid = previous != nullptr && previous->features && change.changed != nullptr &&
+                         std::find(changed.begin(), changed.end(), std::uint8_t{1}) == changed.end() &&
                          caches->previous_labels.present == labels.present &&
                          caches->previous_labels.masks == labels.masks;
   const auto previous_features = [&](const FloorCeiling& storey) -> const RoomFeatures* {
@@ -261,18 +268,27 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   };
   std::vector<RoomFeatures> storey_features(all.size());  // as `all`
   std::vector<BandSum> sums;  // as `bands`; none for a point cloud
+  if (caches && caches->features.size() < all.size()) caches->features.resize(all.size());
   // Task 0, the main storey's, most likely on this thread, whose heap then holds what lives longest (worker_pool.h).
   detail::parallel_tasks(all.size() + 1, options.threads, [&](std::size_t k) {
     stop_point(options.stop);
     if (k < all.size()) {
-      if (const RoomFeatures* same = previous_features(*all[k])) storey_features[k] = *same;
-      else if (k == 0) storey_features[k] = detect_features(r.voxels, options.features, options.threads, options.stop, labels);
+      detail::FeatureMemo* memo = caches ? &caches->features[k] : nullptr;
+      if (const RoomFeatures* same = previous_features(*all[k])) {
+        storey_features[k] = *same;
+        // The grid is the previous one: what the memo's column steps derived from that still holds.
+        if (memo && memo->columns.grid == change.before) memo->columns.grid = change.now;
+      } else if (k == 0)
+        storey_features[k] = detail::detect_features(r.voxels.grid, *all[k], r.voxels.column_counts,
+                                                     r.voxels.column_any, options.features, options.threads,
+                                                     options.stop, labels, memo, change);
       else {
         std::vector<std::uint32_t> column_counts;
         std::vector<std::uint8_t> column_any;
         count_columns(r.voxels.grid, *all[k], column_counts, column_any);
-        storey_features[k] = detect_features(r.voxels.grid, *all[k], column_counts, column_any, options.features,
-                                             options.threads, options.stop, labels);
+        storey_features[k] = detail::detect_features(r.voxels.grid, *all[k], column_counts, column_any,
+                                                     options.features, options.threads, options.stop, labels, memo,
+                                                     change);
       }
       return;
     }

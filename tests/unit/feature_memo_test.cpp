@@ -1,0 +1,127 @@
+// FeatureMemo (core/src/features/feature_memo.h, internal): detect_features through an IncrementalAnalysis's
+// memo of its whole-storey steps and column steps equals detect_features on its own, over a run of grids that
+// add and take away furniture and a wall, and with a memo whose grid is not the one before; a change of
+// furniture alone derives no whole-storey step again and few columns.
+#include "../../core/src/features/feature_memo.h"
+#include "roomsense/synthetic.h"
+#include "synthetic_fixture.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace roomsense {
+namespace {
+
+void expect_same(const RoomFeatures& a, const RoomFeatures& b, const std::string& step) {
+  SCOPED_TRACE(step);
+  EXPECT_EQ(a.levels, b.levels);
+  EXPECT_EQ(a.y_end, b.y_end);
+  EXPECT_EQ(a.walls, b.walls);
+  EXPECT_EQ(a.room, b.room);
+  EXPECT_EQ(a.furniture, b.furniture);
+  EXPECT_EQ(a.free_floor, b.free_floor);
+  EXPECT_EQ(a.free_ceiling, b.free_ceiling);
+  EXPECT_EQ(a.normals, b.normals);
+  EXPECT_EQ(a.enclosed, b.enclosed);
+  EXPECT_EQ(a.wall_blocked, b.wall_blocked);
+  EXPECT_EQ(a.rooms.room, b.rooms.room);
+  EXPECT_EQ(a.rooms.count, b.rooms.count);
+  EXPECT_EQ(a.ceiling, b.ceiling);
+  EXPECT_EQ(a.ceiling_facet, b.ceiling_facet);
+  ASSERT_EQ(a.facets.size(), b.facets.size());
+  for (std::size_t i = 0; i < a.facets.size(); ++i) {
+    EXPECT_EQ(a.facets[i].level, b.facets[i].level);
+    EXPECT_EQ(a.facets[i].columns, b.facets[i].columns);
+    EXPECT_EQ(a.facets[i].offset, b.facets[i].offset);
+  }
+}
+
+// Sets the voxels of columns [x0, x1] x [z0, z1] at levels [y0, y1] to `value`.
+void fill(VoxelGrid& grid, glm::ivec3 lo, glm::ivec3 hi, std::uint8_t value) {
+  for (int z = lo.z; z <= hi.z; ++z)
+    for (int x = lo.x; x <= hi.x; ++x)
+      for (int y = lo.y; y <= hi.y; ++y) grid.cells[grid.spec.index(x, y, z)] = value;
+}
+
+class Memoized {
+ public:
+  explicit Memoized(const FloorCeiling& levels) : levels_(levels) {}
+  // The features of `grid` through the memo, `before` the serial the memo is told the previous grid had.
+  RoomFeatures features(const VoxelGrid& grid, std::uint64_t before) {
+    std::vector<std::uint32_t> counts;
+    std::vector<std::uint8_t> any;
+    count_columns(grid, levels_, counts, any);
+    const std::vector<std::uint8_t> changed =
+        previous_ ? detail::changed_columns(*previous_, grid) : std::vector<std::uint8_t>();
+    const detail::GridChange change{before, serial_ + 1, previous_ ? &changed : nullptr};
+    RoomFeatures f = detail::detect_features(grid, levels_, counts, any, {}, 2, {}, {}, &memo_, change);
+    ++serial_;
+    previous_ = grid;
+    expect_same(f, detect_features(grid, levels_, counts, any, {}, 2), "serial " + std::to_string(serial_));
+    return f;
+  }
+  // Compares the next grid against `grid`, not the one the memo read.
+  void compare_against(const VoxelGrid& grid) { previous_ = grid; }
+  std::uint64_t serial() const { return serial_; }
+  const detail::FeatureMemo& memo() const { return memo_; }
+
+ private:
+  FloorCeiling levels_;
+  detail::FeatureMemo memo_;
+  std::uint64_t serial_ = 0;
+  std::optional<VoxelGrid> previous_;
+};
+
+TEST(FeatureMemo, EqualsTheFeaturesDerivedWholeAsFurnitureAndWallsComeAndGo) {
+  const test::AnalysedRoom& room = test::analysed(synth::default_room());
+  const VoxelGrid& original = room.result.voxels.grid;
+  const GridSpec& s = original.spec;
+  const FloorCeiling levels = room.result.features->levels;
+  Memoized m(levels);
+  m.features(original, 0);
+  const std::size_t columns = s.column_count();
+  EXPECT_EQ(m.memo().columns.derived, columns);
+
+  // A 0.4 m box on the floor in the middle of the room: furniture, no wall.
+  VoxelGrid boxed = original;
+  const int cx = s.nx / 2, cz = s.nz / 2;
+  fill(boxed, {cx - 2, levels.floor + 1, cz - 2}, {cx + 1, levels.floor + 4, cz + 1}, 1);
+  const detail::FeatureMemo& memo = m.memo();
+  const std::size_t rooms = memo.rooms.derived(), enclosed = memo.enclosed.derived();
+  const RoomFeatures with_box = m.features(boxed, m.serial());
+  EXPECT_NE(with_box.furniture, room.result.features->furniture);
+  EXPECT_EQ(memo.rooms.derived(), rooms);
+  EXPECT_EQ(memo.enclosed.derived(), enclosed);
+  EXPECT_GT(memo.columns.derived, 0u);
+  EXPECT_LT(memo.columns.derived, columns / 10);
+
+  m.features(original, m.serial());  // taken away again
+
+  // A wall across half the room: the walls change, and every step that reads them runs again.
+  VoxelGrid walled = original;
+  fill(walled, {1, levels.floor, cz}, {s.nx / 2, levels.ceiling, cz}, 1);
+  const RoomFeatures with_wall = m.features(walled, m.serial());
+  EXPECT_NE(with_wall.walls, room.result.features->walls);
+  EXPECT_GT(memo.enclosed.derived(), enclosed);
+  EXPECT_GT(memo.rooms.derived(), rooms);
+
+  // A grid compared against one the memo did not read (an analysis between them failed), as the serials say:
+  // every column again. The comparison finds no change, so trusting it would keep the walled grid's furniture.
+  m.compare_against(boxed);
+  m.features(boxed, m.serial() + 7);
+  EXPECT_EQ(memo.columns.derived, columns);
+}
+
+TEST(FeatureMemo, KeepsNoResultADeriveFailedFor) {
+  detail::StepMemo<int, int> step;
+  EXPECT_EQ(step.get([] { return 1; }, 5), 1);
+  EXPECT_EQ(step.get([] { return 2; }, 5), 1);  // the same input: kept
+  EXPECT_EQ(step.get([] { return 3; }, 6), 3);
+  EXPECT_THROW(step.get([]() -> int { throw std::runtime_error("failed"); }, 7), std::runtime_error);
+  EXPECT_EQ(step.get([] { return 4; }, 6), 4);  // the failure left nothing kept, not even 6's
+  EXPECT_EQ(step.derived(), 3u);
+}
+
+}  // namespace
+}  // namespace roomsense

@@ -1,7 +1,7 @@
 // FeatureMemo (core/src/features/feature_memo.h, internal): detect_features through an IncrementalAnalysis's
-// memo of its whole-storey steps and column steps equals detect_features on its own, over a run of grids that
-// add and take away furniture and a wall, and with a memo whose grid is not the one before; a change of
-// furniture alone derives no whole-storey step again and few columns.
+// memo of its whole-storey steps, column steps, wall normals and openings equals detect_features on its own,
+// over a run of grids that add and take away furniture, a window and a wall, and with a memo whose grid is not
+// the one before; a local change derives no whole-storey step again, and few columns.
 #include "../../core/src/features/feature_memo.h"
 #include "roomsense/synthetic.h"
 #include "synthetic_fixture.h"
@@ -81,7 +81,7 @@ TEST(FeatureMemo, EqualsTheFeaturesDerivedWholeAsFurnitureAndWallsComeAndGo) {
   Memoized m(levels);
   m.features(original, 0);
   const std::size_t columns = s.column_count();
-  EXPECT_EQ(m.memo().columns.derived, columns);
+  EXPECT_EQ(m.memo().columns.inputs.derived(), columns);
 
   // A 0.4 m box on the floor in the middle of the room: furniture, no wall.
   VoxelGrid boxed = original;
@@ -93,10 +93,33 @@ TEST(FeatureMemo, EqualsTheFeaturesDerivedWholeAsFurnitureAndWallsComeAndGo) {
   EXPECT_NE(with_box.furniture, room.result.features->furniture);
   EXPECT_EQ(memo.rooms.derived(), rooms);
   EXPECT_EQ(memo.enclosed.derived(), enclosed);
-  EXPECT_GT(memo.columns.derived, 0u);
-  EXPECT_LT(memo.columns.derived, columns / 10);
+  EXPECT_GT(memo.columns.inputs.derived(), 0u);
+  EXPECT_LT(memo.columns.inputs.derived(), columns / 10);
 
   m.features(original, m.serial());  // taken away again
+
+  // A cabinet eight voxels from the wall at the grid's low x end: the wall's runs end at it, the normals change
+  // there, and are derived again near it alone.
+  int wall_x = 0;
+  while (wall_x < s.nx && !room.result.features->walls[s.column(wall_x, cz)]) ++wall_x;
+  ASSERT_LT(wall_x + 10, s.nx);
+  VoxelGrid cabinet = original;
+  fill(cabinet, {wall_x + 8, levels.floor + 1, cz - 2}, {wall_x + 9, levels.floor + 8, cz + 1}, 1);
+  const RoomFeatures with_cabinet = m.features(cabinet, m.serial());
+  EXPECT_NE(with_cabinet.normals, room.result.features->normals);
+  EXPECT_GT(memo.normals.inputs.derived(), 0u);
+  EXPECT_LT(memo.normals.inputs.derived(), columns / 10);
+  m.features(original, m.serial());
+
+  // A window in that wall: the voxels before it are blocked, derived again near it alone.
+  VoxelGrid window = original;
+  fill(window, {0, levels.floor + 10, cz}, {wall_x, levels.floor + 13, cz + 2}, 0);
+  const RoomFeatures with_window = m.features(window, m.serial());
+  EXPECT_EQ(with_window.walls, room.result.features->walls);
+  EXPECT_NE(with_window.wall_blocked, room.result.features->wall_blocked);
+  EXPECT_GT(memo.openings.inputs.derived(), 0u);
+  EXPECT_LT(memo.openings.inputs.derived(), columns / 10);
+  m.features(original, m.serial());
 
   // A wall across half the room: the walls change, and every step that reads them runs again.
   VoxelGrid walled = original;
@@ -106,11 +129,23 @@ TEST(FeatureMemo, EqualsTheFeaturesDerivedWholeAsFurnitureAndWallsComeAndGo) {
   EXPECT_GT(memo.enclosed.derived(), enclosed);
   EXPECT_GT(memo.rooms.derived(), rooms);
 
+  // A hole through that wall, then a cabinet behind the hole: the voxels in front of the hole are blocked until
+  // the cabinet closes it two columns behind them (the wall's face and its recess).
+  VoxelGrid holed = walled;
+  fill(holed, {5, levels.floor + 10, cz}, {7, levels.floor + 13, cz}, 0);
+  const RoomFeatures with_hole = m.features(holed, m.serial());
+  VoxelGrid closed = holed;
+  fill(closed, {5, levels.floor + 10, cz - 1}, {7, levels.floor + 13, cz - 1}, 1);
+  const RoomFeatures behind = m.features(closed, m.serial());
+  EXPECT_EQ(behind.walls, with_hole.walls);
+  EXPECT_NE(behind.wall_blocked, with_hole.wall_blocked);
+  EXPECT_LT(memo.openings.inputs.derived(), columns / 10);
+
   // A grid compared against one the memo did not read (an analysis between them failed), as the serials say:
-  // every column again. The comparison finds no change, so trusting it would keep the walled grid's furniture.
+  // every column again. The comparison finds no change, so trusting it would keep the walled grid's results.
   m.compare_against(boxed);
   m.features(boxed, m.serial() + 7);
-  EXPECT_EQ(memo.columns.derived, columns);
+  EXPECT_EQ(memo.columns.inputs.derived(), columns);
 }
 
 TEST(FeatureMemo, KeepsNoResultADeriveFailedFor) {

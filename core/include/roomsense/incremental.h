@@ -13,8 +13,8 @@
 //   result's (a chunk refined within its voxels);
 // - otherwise, each storey's feature steps that read the whole storey (the walls' heights, the walls' closure,
 //   the ceiling's facets, the rooms) where the column arrays they read are as before, and the steps that read a
-//   column alone (furniture tops, free floor and ceiling tiles) at the columns whose voxels or entries did not
-//   change (features/feature_memo.h);
+//   column alone (furniture tops, free floor and ceiling tiles) or the columns a reach along the axes (wall
+//   normals, openings) away from the columns whose voxels or entries changed (features/feature_memo.h);
 // - each area search's rectangles by bands of 8 grid rows: a band is searched again only within the search's
 //   reach of a row whose features changed, and a square search's band only within reach of the columns that
 //   changed (areas/search_cache.h);
@@ -23,7 +23,7 @@
 // - packing's decisions away from the rectangles that changed (areas/reduce.h: PackReplay);
 // - each bounds mesh's slices (the home's, each room's): only the slices through voxel layers whose bounds
 //   volume changed are meshed again (bounds/mesh_memo.h).
-// Levels, reach, the ceilings, walls, wall normals and openings, areas and bounds volumes are derived again.
+// Levels, reach, the ceilings and walls, areas and bounds volumes are derived again.
 // An unchanged set of chunks returns the previous result at once.
 #pragma once
 #include "roomsense/analysis.h"

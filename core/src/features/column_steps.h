@@ -1,12 +1,15 @@
-// The steps of §3.2 that decide each column from that column alone: its voxels and its own entries of the
-// walls, the room's inside and the ceiling. detect_furniture, detect_free_floor and detect_free_ceiling run them
-// over every column; an IncrementalAnalysis runs them again only where a column's voxels or entries changed
-// (feature_memo.h).
+// The steps of §3.2 that decide each column from that column alone (its voxels and its own entries of the walls,
+// the room's inside and the ceiling), or from the columns a reach away along the grid's axes (wall normals,
+// openings). detect_furniture, detect_free_floor, detect_free_ceiling, detect_wall_normals and
+// detect_wall_openings run them over every column; an IncrementalAnalysis runs them again only where a column's
+// voxels or entries changed, or within that reach of one (feature_memo.h).
 #pragma once
 #include "roomsense/features.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace roomsense::detail {
@@ -62,6 +65,32 @@ class FreeCeilingTile {
   const std::vector<std::uint8_t>& room_;
   int clear_;
 };
+
+// F (Alg. 1) of `normals`, detect_wall_normals's result for these levels and reach on a grid and entries that
+// differ from these at the `changed` columns alone: derived again where a wall's run reads one of them.
+void update_wall_normals(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<int>& ceiling, int reach,
+                         const std::vector<std::uint8_t>& walls, const std::vector<std::uint8_t>& room,
+                         const std::vector<int>& furniture, std::span<const std::uint32_t> changed,
+                         std::vector<std::uint8_t>& normals);
+
+// The wall openings of `blocked`, detect_wall_openings's result for these levels, walls, labels and parameters
+// on a grid and inside that differ from these at the `changed` columns alone: derived again near them.
+void update_wall_openings(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<std::uint8_t>& walls,
+                          const std::vector<std::uint8_t>& room, int recess_voxels, int max_opening_voxels,
+                          const LabelGrid& labels, std::span<const std::uint32_t> changed,
+                          std::vector<std::uint8_t>& blocked);
+
+// 1 for each column within `reach` (at least 1) of a `changed` column along the x or the z axis.
+inline std::vector<std::uint8_t> along_axes(const GridSpec& s, std::span<const std::uint32_t> changed, int reach) {
+  reach = std::max(reach, 1);
+  std::vector<std::uint8_t> out(s.column_count(), 0);
+  for (const std::uint32_t c : changed) {
+    const int x = int(c % std::uint32_t(s.nx)), z = int(c / std::uint32_t(s.nx));
+    for (int k = std::max(0, x - reach); k <= std::min(s.nx - 1, x + reach); ++k) out[s.column(k, z)] = 1;
+    for (int k = std::max(0, z - reach); k <= std::min(s.nz - 1, z + reach); ++k) out[s.column(x, k)] = 1;
+  }
+  return out;
+}
 
 // `step` of every column, as a vector.
 template <class Value, class Step>

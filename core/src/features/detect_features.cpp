@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 namespace roomsense {
 
@@ -95,19 +96,11 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
   // columns where those changed since the grid it read, at the same levels and parameters.
   ColumnSteps fresh;
   ColumnSteps& steps = memo ? memo->columns : fresh;
-  const ColumnSteps::Scalars scalars{grid.spec, f.levels, f.y_end, furniture_clear, ceiling_clear, rough};
-  std::vector<std::uint32_t> changed;
-  const bool known = change.changed != nullptr && steps.grid != 0 && steps.grid == change.before &&
-                     steps.scalars == scalars;
-  if (known)
-    for (std::size_t c = 0; c < inside.size(); ++c)
-      if ((*change.changed)[c] || steps.walls[c] != f.walls[c] || steps.inside[c] != inside[c] ||
-          steps.ceiling[c] != f.ceiling[c])
-        changed.push_back(std::uint32_t(c));
-  const std::vector<std::uint32_t>* redo = known ? &changed : nullptr;
-  steps.grid = 0;  // until every step below is done
-  steps.derived = known ? changed.size() : inside.size();
-  if (memo) steps.scalars = scalars, steps.walls = f.walls, steps.inside = inside, steps.ceiling = f.ceiling;
+  const std::optional<std::vector<std::uint32_t>> changed =
+      memo ? steps.inputs.begin(change, {grid.spec, f.levels, f.y_end, furniture_clear, ceiling_clear, rough}, f.walls,
+                                inside, f.ceiling)
+           : std::nullopt;
+  const std::vector<std::uint32_t>* redo = changed ? &*changed : nullptr;
   const std::size_t columns = inside.size();
   // Free floor needs the headroom a furniture top needs (Eq. 3.13's clear space).
   const auto floor = [&] {
@@ -141,24 +134,44 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
     if (task == 1) f.free_ceiling = ceiling();
     if (task == 2) f.free_floor = floor();
   });
-  steps.grid = change.now;
+  steps.inputs.done(change);
   for (std::size_t c = 0; c < inside.size(); ++c)
     if (!inside[c]) f.furniture[c] = kNoFurniture;
   apply_furniture_labels(grid.spec, f.levels, labels, f.free_floor, f.furniture);
   stop_point(stop);
+  // F through the memo: derived again where a wall's run reads a column whose voxels or entries changed.
+  const auto normals = [&] {
+    const int reach = voxels_for(params.wall_normal_reach, s);
+    if (!memo) return detect_wall_normals(grid, f.levels, f.ceiling, reach, f.walls, inside, f.furniture);
+    NormalSteps& kept = memo->normals;
+    const std::optional<std::vector<std::uint32_t>> again =
+        kept.inputs.begin(change, {grid.spec, f.levels, reach}, f.walls, inside, f.ceiling, f.furniture);
+    if (again) update_wall_normals(grid, f.levels, f.ceiling, reach, f.walls, inside, f.furniture, *again, kept.normals);
+    else kept.normals = detect_wall_normals(grid, f.levels, f.ceiling, reach, f.walls, inside, f.furniture);
+    kept.inputs.done(change);
+    return kept.normals;
+  };
+  // The openings through the memo: derived again near a column whose voxels or inside changed.
+  const auto openings = [&] {
+    const int recess = voxels_for(params.wall_recess, s);
+    if (!memo) return detect_wall_openings(grid, f.levels, f.walls, inside, recess, max_opening, labels);
+    OpeningSteps& kept = memo->openings;
+    const std::optional<std::vector<std::uint32_t>> again = kept.inputs.begin(
+        change, {grid.spec, f.levels, recess, max_opening, f.walls, labels.present, labels.masks}, inside);
+    if (again) update_wall_openings(grid, f.levels, f.walls, inside, recess, max_opening, labels, *again, kept.blocked);
+    else kept.blocked = detect_wall_openings(grid, f.levels, f.walls, inside, recess, max_opening, labels);
+    kept.inputs.done(change);
+    return kept.blocked;
+  };
   // F, the rooms and the openings read what is above and not each other: side by side.
   detail::parallel_tasks(3, threads, [&](std::size_t task) {
-    if (task == 0)
-      f.normals = detect_wall_normals(grid, f.levels, f.ceiling, voxels_for(params.wall_normal_reach, s), f.walls,
-                                      inside, f.furniture);
+    if (task == 0) f.normals = normals();
     if (task == 1)
       f.rooms = through(
           memo ? &memo->rooms : nullptr,
           [&] { return split_rooms(grid.spec, inside, f.walls, params.min_passage, params.min_room_area); },
           grid.spec, inside, f.walls, params.min_passage, params.min_room_area);
-    if (task == 2)
-      f.wall_blocked = detect_wall_openings(grid, f.levels, f.walls, inside, voxels_for(params.wall_recess, s),
-                                            max_opening, labels);
+    if (task == 2) f.wall_blocked = openings();
   });
   return f;
 }

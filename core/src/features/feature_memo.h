@@ -2,8 +2,9 @@
 // analysis. The steps that read the whole storey at once (the walls' heights, the walls' closure, the ceiling's
 // facets, the split into rooms) are functions of a few column arrays and parameters alone; a change that leaves
 // those as they were (furniture added, a wall refined within its columns) finds each such step's result kept
-// instead of deriving it again. A kept result is returned only for inputs equal to those it was derived from,
-// so it is the step's own.
+// instead of deriving it again. The steps that read a column, or a wall's runs, alone (furniture tops, free
+// tiles, wall normals, openings) are derived again only where the voxels or the entries they read changed. Either is
+// reused only for inputs equal to those it was derived from, so every result is the step's own.
 #pragma once
 #include "roomsense/features.h"
 
@@ -44,8 +45,52 @@ struct CeilingFacets {
   std::vector<CeilingFacet> facets;
 };
 
-// The column steps (column_steps.h) of the latest analysis: their results, and the per-column entries and the
-// levels they read besides the grid.
+// The grid an analysis reads against the one the analysis before it read, each analysis known by a serial number
+// (AnalysisCaches::serial): `changed` holds 1 for each column whose voxels differ, where both grids are known.
+struct GridChange {
+  std::uint64_t before = 0, now = 0;
+  const std::vector<std::uint8_t>* changed = nullptr;
+};
+
+// What a memo of per-column results read besides the grid: the analysis whose grid it was, the levels and
+// parameters (`Scalars`), and per-column entries (walls, the inside, ...).
+template <class Scalars, class... Entries>
+class ColumnInputs {
+ public:
+  // The columns whose results must be derived again on the grid `change` describes with these scalars and
+  // entries; nullopt where every column must be (no grid read before, another one, other scalars). Keeps
+  // these as the memo's inputs; until done(), every column must be derived again next time.
+  std::optional<std::vector<std::uint32_t>> begin(const GridChange& change, const Scalars& scalars,
+                                                  const Entries&... entries) {
+    std::optional<std::vector<std::uint32_t>> out;
+    if (change.changed != nullptr && grid_ != 0 && grid_ == change.before && scalars_ == scalars) {
+      out.emplace();
+      for (std::size_t c = 0; c < change.changed->size(); ++c)
+        if ((*change.changed)[c] ||
+            std::apply([&](const auto&... kept) { return ((kept[c] != entries[c]) || ...); }, entries_))
+          out->push_back(std::uint32_t(c));
+    }
+    grid_ = 0;
+    derived_ = out ? out->size() : std::get<0>(std::tie(entries...)).size();
+    scalars_ = scalars;
+    entries_ = std::tie(entries...);
+    return out;
+  }
+  void done(const GridChange& change) { grid_ = change.now; }
+  // The grid read is `change.now`'s too (the same voxels): what the memo holds still stands.
+  void same_grid(const GridChange& change) {
+    if (grid_ != 0 && grid_ == change.before) grid_ = change.now;
+  }
+  std::size_t derived() const { return derived_; }  // the columns the latest begin() asked for
+
+ private:
+  std::uint64_t grid_ = 0;  // the analysis whose grid it read; 0: none
+  std::size_t derived_ = 0;
+  Scalars scalars_{};
+  std::tuple<Entries...> entries_;
+};
+
+// The column steps (column_steps.h) of the latest analysis: what they read, and their results.
 struct ColumnSteps {
   struct Scalars {
     GridSpec spec;
@@ -53,13 +98,38 @@ struct ColumnSteps {
     int y_end = 0, furniture_clear = 0, ceiling_clear = 0, rough = 0;
     bool operator==(const Scalars&) const = default;
   };
-  std::uint64_t grid = 0;  // the analysis whose grid they read (GridChange); 0: none, derive every column
-  std::size_t derived = 0;  // the columns the latest run derived
-  Scalars scalars;
-  std::vector<std::uint8_t> walls, inside;
-  std::vector<int> ceiling;
-  std::vector<int> furniture;                      // C, before it is cut to the inside and to the labels
+  // walls, the inside, the ceiling
+  ColumnInputs<Scalars, std::vector<std::uint8_t>, std::vector<std::uint8_t>, std::vector<int>> inputs;
+  std::vector<int> furniture;                          // C, before it is cut to the inside and to the labels
   std::vector<std::uint8_t> free_floor, free_ceiling;  // D and E, before the labels and the facets
+};
+
+// The wall normals F of the latest analysis: what they read, and the normals.
+struct NormalSteps {
+  struct Scalars {
+    GridSpec spec;
+    FloorCeiling levels;
+    int reach = 0;
+    bool operator==(const Scalars&) const = default;
+  };
+  // walls, the inside, the ceiling, the furniture tops
+  ColumnInputs<Scalars, std::vector<std::uint8_t>, std::vector<std::uint8_t>, std::vector<int>, std::vector<int>> inputs;
+  std::vector<std::uint8_t> normals;
+};
+
+// The wall openings of the latest analysis: what they read, and the blocked voxels.
+struct OpeningSteps {
+  struct Scalars {
+    GridSpec spec;
+    FloorCeiling levels;
+    int recess = 0, max_opening = 0;
+    std::vector<std::uint8_t> walls;  // doors read whole lines of them: any change derives every column again
+    LabelMask present = 0;
+    std::vector<LabelMask> labels;  // the labels' voxels
+    bool operator==(const Scalars&) const = default;
+  };
+  ColumnInputs<Scalars, std::vector<std::uint8_t>> inputs;  // the inside
+  std::vector<std::uint8_t> blocked;
 };
 
 // One storey's steps, each with the inputs detect_features gives it.
@@ -71,13 +141,8 @@ struct FeatureMemo {
   StepMemo<CeilingFacets, GridSpec, FloorCeiling, Levels, Columns, std::size_t> facets;
   StepMemo<RoomSplit, GridSpec, Columns, Columns, float, float> rooms;  // split_rooms
   ColumnSteps columns;
-};
-
-// The grid an analysis reads against the one the analysis before it read, each analysis known by a serial number
-// (AnalysisCaches::serial): `changed` holds 1 for each column whose voxels differ, where both grids are known.
-struct GridChange {
-  std::uint64_t before = 0, now = 0;
-  const std::vector<std::uint8_t>* changed = nullptr;
+  NormalSteps normals;
+  OpeningSteps openings;
 };
 
 // 1 for each column whose voxels differ between `a` and `b`, grids of one GridSpec.

@@ -1,9 +1,11 @@
 // Wall normals F (Alg. 1).
+#include "column_steps.h"
 #include "roomsense/features.h"
 
 #include <algorithm>
 #include <bit>
 #include <memory>
+#include <span>
 
 namespace roomsense {
 namespace {
@@ -56,6 +58,73 @@ class FreeLevels {
   std::vector<std::uint8_t> known_;
 };
 
+// Alg. 1's runs from wall columns, each writing the normal bits it finds into the column next to its wall.
+class NormalRuns {
+ public:
+  NormalRuns(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<int>& ceiling, int reach,
+             const std::vector<std::uint8_t>& walls, const std::vector<std::uint8_t>& room,
+             const std::vector<int>& furniture)
+      : s_(grid.spec), levels_(levels), walls_(walls), room_(room), reach_(reach),
+        free_(grid, levels, ceiling, walls, room, furniture), running_(free_.words()), clear_(free_.words()) {}
+
+  struct Direction {
+    int dx, dz;
+    std::uint8_t bit;
+  };
+  static constexpr Direction kDirections[] = {
+      {-1, 0, kNormalLeft}, {1, 0, kNormalRight}, {0, -1, kNormalBackward}, {0, 1, kNormalForward}};
+
+  // The run from wall column (x, z) in direction d: sets d's bit at the levels of column (x + dx, z + dz) where it
+  // is clear. That column must lie in the grid.
+  void run(int x, int z, const Direction& d, std::vector<std::uint8_t>& normals) {
+    // A step (x, z) is free at level y when it is inside the grid and its FreeLevels bit is set. Alg. 1 lets the
+    // Left/Backward scans silently skip indices below 0; we treat leaving the grid as blocked on every side, since
+    // outside the grid is outside the room (b = 0) anyway.
+    const std::size_t words = free_.words();
+    const int count = free_.count();
+    // Per level: whether its run is still free (`running`), and whether it ended clear (`clear`).
+    for (std::size_t w = 0; w < words; ++w)
+      running_[w] = w + 1 < words || count % 64 == 0 ? ~std::uint64_t{0} : (std::uint64_t{1} << (count % 64)) - 1;
+    std::fill(clear_.begin(), clear_.end(), std::uint64_t{0});
+    bool any = true;
+    for (int i = 1; i <= reach_ && any; ++i) {
+      const int xi = x + i * d.dx, zi = z + i * d.dz;
+      // Beyond the thesis: a run of half the reach that ends at a wall, or where the room ends, is clear too: an
+      // alcove or a corridor narrower than the reach still has walls to hang things on. A run that ends at a
+      // voxel (furniture, clutter) is not.
+      const bool half_run = 2 * (i - 1) >= reach_;
+      if (!s_.contains(xi, 0, zi)) {
+        if (half_run)
+          for (std::size_t w = 0; w < words; ++w) clear_[w] |= running_[w];
+        std::fill(running_.begin(), running_.end(), std::uint64_t{0});
+        break;
+      }
+      const std::size_t col = s_.column(xi, zi);
+      const std::uint64_t* step = free_.at(col);
+      const bool ends = half_run && (walls_[col] || !room_[col]);
+      any = false;
+      for (std::size_t w = 0; w < words; ++w) {
+        if (ends) clear_[w] |= running_[w] & ~step[w];
+        running_[w] &= step[w];
+        any = any || running_[w] != 0;
+      }
+    }
+    std::uint8_t* column = normals.data() + s_.index(x + d.dx, levels_.floor, z + d.dz);
+    for (std::size_t w = 0; w < words; ++w)
+      for (std::uint64_t bits = clear_[w] | running_[w]; bits != 0; bits &= bits - 1)
+        column[w * 64 + std::size_t(std::countr_zero(bits))] |= d.bit;
+  }
+
+ private:
+  const GridSpec& s_;
+  const FloorCeiling& levels_;
+  const std::vector<std::uint8_t>& walls_;
+  const std::vector<std::uint8_t>& room_;
+  int reach_;
+  FreeLevels free_;
+  std::vector<std::uint64_t> running_, clear_;
+};
+
 }  // namespace
 
 std::vector<std::uint8_t> detect_wall_normals(const VoxelGrid& grid, const FloorCeiling& levels,
@@ -66,59 +135,36 @@ std::vector<std::uint8_t> detect_wall_normals(const VoxelGrid& grid, const Floor
   const GridSpec& s = grid.spec;
   std::vector<std::uint8_t> normals(s.voxel_count(), 0);
   if (levels.ceiling < levels.floor) return normals;
-  // A step (x, z) is free at level y when it is inside the grid and its FreeLevels bit is set. Alg. 1 lets the
-  // Left/Backward scans silently skip indices below 0; we treat leaving the grid as blocked on every side, since
-  // outside the grid is outside the room (b = 0) anyway.
-  FreeLevels free(grid, levels, ceiling, walls, room, furniture);
-  const std::size_t words = free.words();
-  // Beyond the thesis: a run of half the reach that ends at a wall, or where the room ends, is clear too: an
-  // alcove or a corridor narrower than the reach still has walls to hang things on. A run that ends at a voxel
-  // (furniture, clutter) is not.
-  const auto ends_room = [&](std::size_t col) { return walls[col] || !room[col]; };
-  struct Direction {
-    int dx, dz;
-    std::uint8_t bit;
-  };
-  constexpr Direction kDirections[] = {
-      {-1, 0, kNormalLeft}, {1, 0, kNormalRight}, {0, -1, kNormalBackward}, {0, 1, kNormalForward}};
-  const int count = free.count();
-  std::vector<std::uint64_t> running(words), clear(words);
+  NormalRuns runs(grid, levels, ceiling, reach, walls, room, furniture);
   for (int z = 0; z < s.nz; ++z)
     for (int x = 0; x < s.nx; ++x) {
       if (!walls[s.column(x, z)]) continue;
-      for (const Direction& d : kDirections) {
-        if (!s.contains(x + d.dx, 0, z + d.dz)) continue;  // the run's first step leaves the grid: never clear
-        // Per level: whether its run is still free (`running`), and whether it ended clear (`clear`).
-        for (std::size_t w = 0; w < words; ++w)
-          running[w] = w + 1 < words || count % 64 == 0 ? ~std::uint64_t{0} : (std::uint64_t{1} << (count % 64)) - 1;
-        std::fill(clear.begin(), clear.end(), std::uint64_t{0});
-        bool any = true;
-        for (int i = 1; i <= reach && any; ++i) {
-          const int xi = x + i * d.dx, zi = z + i * d.dz;
-          const bool half_run = 2 * (i - 1) >= reach;
-          if (!s.contains(xi, 0, zi)) {
-            if (half_run)
-              for (std::size_t w = 0; w < words; ++w) clear[w] |= running[w];
-            std::fill(running.begin(), running.end(), std::uint64_t{0});
-            break;
-          }
-          const std::size_t col = s.column(xi, zi);
-          const std::uint64_t* step = free.at(col);
-          const bool ends = half_run && ends_room(col);
-          any = false;
-          for (std::size_t w = 0; w < words; ++w) {
-            if (ends) clear[w] |= running[w] & ~step[w];
-            running[w] &= step[w];
-            any = any || running[w] != 0;
-          }
-        }
-        std::uint8_t* column = normals.data() + s.index(x + d.dx, levels.floor, z + d.dz);
-        for (std::size_t w = 0; w < words; ++w)
-          for (std::uint64_t bits = clear[w] | running[w]; bits != 0; bits &= bits - 1)
-            column[w * 64 + std::size_t(std::countr_zero(bits))] |= d.bit;
-      }
+      for (const NormalRuns::Direction& d : NormalRuns::kDirections)
+        if (s.contains(x + d.dx, 0, z + d.dz)) runs.run(x, z, d, normals);  // else never clear
     }
   return normals;
+}
+
+void detail::update_wall_normals(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<int>& ceiling,
+                                 int reach, const std::vector<std::uint8_t>& walls,
+                                 const std::vector<std::uint8_t>& room, const std::vector<int>& furniture,
+                                 std::span<const std::uint32_t> changed, std::vector<std::uint8_t>& normals) {
+  const GridSpec& s = grid.spec;
+  if (levels.ceiling < levels.floor || changed.empty()) return;
+  // The bits of column t in direction d come from the run of the wall at t - d through t, t + d, ...,
+  // t + (reach - 1) d: a changed column c reaches the columns from c - reach to c + reach along each axis.
+  const std::vector<std::uint8_t> again = along_axes(s, changed, reach);
+  NormalRuns runs(grid, levels, ceiling, reach, walls, room, furniture);
+  const auto ny = std::size_t(s.ny);
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) {
+      if (!again[s.column(x, z)]) continue;
+      std::fill_n(normals.begin() + std::ptrdiff_t(s.column(x, z) * ny), ny, std::uint8_t{0});
+      for (const NormalRuns::Direction& d : NormalRuns::kDirections) {
+        const int wx = x - d.dx, wz = z - d.dz;
+        if (s.contains(wx, 0, wz) && walls[s.column(wx, wz)]) runs.run(wx, wz, d, normals);
+      }
+    }
 }
 
 }  // namespace roomsense

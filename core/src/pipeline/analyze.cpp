@@ -277,7 +277,11 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
       if (const RoomFeatures* same = previous_features(*all[k])) {
         storey_features[k] = *same;
         // The grid is the previous one: what the memo's column steps derived from that still holds.
-        if (memo && memo->columns.grid == change.before) memo->columns.grid = change.now;
+        if (memo) {
+          memo->columns.inputs.same_grid(change);
+          memo->normals.inputs.same_grid(change);
+          memo->openings.inputs.same_grid(change);
+        }
       } else if (k == 0)
         storey_features[k] = detail::detect_features(r.voxels.grid, *all[k], r.voxels.column_counts,
                                                      r.voxels.column_any, options.features, options.threads,

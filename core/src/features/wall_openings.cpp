@@ -36,8 +36,9 @@ class Openings {
     find_doors(levels, max_opening_voxels);
   }
 
-  // Sets the blocked voxels of column (x, z); whether it has any.
-  bool block(int x, int z, std::vector<std::uint8_t>& blocked) const {
+  // Sets the blocked voxels of column (x, z); whether it has any. Inlined: a call per column cost the hall 1.4 M
+  // instructions.
+  [[gnu::always_inline]] bool block(int x, int z, std::vector<std::uint8_t>& blocked) const {
     const std::size_t c = s_.column(x, z);
     if (walls_[c] || !room_[c]) return false;
     bool any = false;

@@ -2,9 +2,10 @@
 // analysis. The steps that read the whole storey at once (the walls' heights, the walls' closure, the ceiling's
 // facets, the split into rooms) are functions of a few column arrays and parameters alone; a change that leaves
 // those as they were (furniture added, a wall refined within its columns) finds each such step's result kept
-// instead of deriving it again. The steps that read a column, or a wall's runs, alone (furniture tops, free
-// tiles, wall normals, openings) are derived again only where the voxels or the entries they read changed. Either is
-// reused only for inputs equal to those it was derived from, so every result is the step's own.
+// instead of deriving it again. The steps that read a column, or the columns a reach away along the axes
+// (furniture tops, free tiles, wall normals, openings: column_steps.h), are derived again only near the columns
+// whose voxels or entries changed. Either is reused only for inputs equal to those it was derived from, so every
+// result is the step's own.
 #pragma once
 #include "roomsense/features.h"
 
@@ -148,8 +149,8 @@ struct FeatureMemo {
 // 1 for each column whose voxels differ between `a` and `b`, grids of one GridSpec.
 std::vector<std::uint8_t> changed_columns(const VoxelGrid& a, const VoxelGrid& b);
 
-// detect_features (features.h), its whole-storey steps served by `memo` where not null, and its column steps
-// derived again only at the columns `change` and their entries say changed.
+// detect_features (features.h), through `memo` where not null: its whole-storey steps kept where their inputs
+// are, its local steps derived again only near the columns `change` and their entries say changed.
 RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
                              const std::vector<std::uint32_t>& column_counts,
                              const std::vector<std::uint8_t>& column_any, const FeatureParams& params,

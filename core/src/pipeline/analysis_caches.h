@@ -1,7 +1,7 @@
 // What an IncrementalAnalysis keeps between its analyses besides each chunk's voxels: its combined scan with each
-// chunk's input summary and surface sums, each storey's whole-storey feature steps (features/feature_memo.h) and
-// area searches by bands of rows (areas/search_cache.h), the labels' voxels of the latest result (whose features
-// and bounds it reads, not copies), each bounds mesh's slices (bounds/mesh_memo.h) and the analyses' threads.
+// chunk's input summary and surface sums, each storey's feature steps (features/feature_memo.h) and area searches
+// by bands of rows (areas/search_cache.h), the labels' voxels of the latest result (whose features and bounds it
+// reads, not copies), each bounds mesh's slices (bounds/mesh_memo.h) and the analyses' threads.
 #pragma once
 #include "roomsense/analysis.h"
 #include "../areas/search_cache.h"
@@ -55,7 +55,7 @@ class ChunkBandSums {
 // For one AnalysisOptions: an IncrementalAnalysis's own.
 struct AnalysisCaches {
   std::vector<std::unique_ptr<SearchCache>> storeys;  // storey i of the latest analysis
-  std::vector<FeatureMemo> features;                  // storey i's whole-storey feature steps, the main one first
+  std::vector<FeatureMemo> features;                  // storey i's feature steps, the main one first
   // The latest complete analysis's result (IncrementalAnalysis::result() keeps it alive through the next
   // analysis; null where there is none) and the labels' voxels of its scan: an analysis of the same grid,
   // labels and storey levels has its features and bounds (a scan refined within its voxels), copied from it.

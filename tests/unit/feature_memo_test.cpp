@@ -4,6 +4,7 @@
 // the one before; a local change derives no whole-storey step again, and few columns.
 #include "../../core/src/features/feature_memo.h"
 #include "roomsense/synthetic.h"
+#include "same_features.h"
 #include "synthetic_fixture.h"
 
 #include <gtest/gtest.h>
@@ -15,26 +16,7 @@ namespace {
 
 void expect_same(const RoomFeatures& a, const RoomFeatures& b, const std::string& step) {
   SCOPED_TRACE(step);
-  EXPECT_EQ(a.levels, b.levels);
-  EXPECT_EQ(a.y_end, b.y_end);
-  EXPECT_EQ(a.walls, b.walls);
-  EXPECT_EQ(a.room, b.room);
-  EXPECT_EQ(a.furniture, b.furniture);
-  EXPECT_EQ(a.free_floor, b.free_floor);
-  EXPECT_EQ(a.free_ceiling, b.free_ceiling);
-  EXPECT_EQ(a.normals, b.normals);
-  EXPECT_EQ(a.enclosed, b.enclosed);
-  EXPECT_EQ(a.wall_blocked, b.wall_blocked);
-  EXPECT_EQ(a.rooms.room, b.rooms.room);
-  EXPECT_EQ(a.rooms.count, b.rooms.count);
-  EXPECT_EQ(a.ceiling, b.ceiling);
-  EXPECT_EQ(a.ceiling_facet, b.ceiling_facet);
-  ASSERT_EQ(a.facets.size(), b.facets.size());
-  for (std::size_t i = 0; i < a.facets.size(); ++i) {
-    EXPECT_EQ(a.facets[i].level, b.facets[i].level);
-    EXPECT_EQ(a.facets[i].columns, b.facets[i].columns);
-    EXPECT_EQ(a.facets[i].offset, b.facets[i].offset);
-  }
+  test::expect_same_features(a, b);
 }
 
 // Sets the voxels of columns [x0, x1] x [z0, z1] at levels [y0, y1] to `value`.

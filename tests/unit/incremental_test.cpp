@@ -8,6 +8,7 @@
 #include "roomsense/quest_capture.h"
 #include "roomsense/scanio.h"
 #include "roomsense/synthetic.h"
+#include "same_features.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -40,6 +41,11 @@ void expect_same(const AnalysisResult& got, const AnalysisResult& want, const st
   a.erase("timings_ms");
   b.erase("timings_ms");
   EXPECT_TRUE(a == b) << "the JSON differs";
+  ASSERT_EQ(got.features.has_value(), want.features.has_value());
+  if (got.features) roomsense::test::expect_same_features(*got.features, *want.features);
+  ASSERT_EQ(got.other_features.size(), want.other_features.size());
+  for (std::size_t i = 0; i < got.other_features.size(); ++i)
+    roomsense::test::expect_same_features(got.other_features[i], want.other_features[i]);
   EXPECT_EQ(got.voxels.grid.cells, want.voxels.grid.cells);
   EXPECT_EQ(got.voxels.voxel_tests, want.voxels.voxel_tests);
   EXPECT_EQ(got.bounds.vertices, want.bounds.vertices);

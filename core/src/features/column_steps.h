@@ -14,6 +14,16 @@
 
 namespace roomsense::detail {
 
+// What the steps read of a storey besides their parameters: the grid, the levels, and per column the ceiling,
+// the walls and the room (or its inside).
+struct StoreyColumns {
+  const VoxelGrid& grid;
+  const FloorCeiling& levels;
+  const std::vector<int>& ceiling;
+  const std::vector<std::uint8_t>& walls;
+  const std::vector<std::uint8_t>& room;
+};
+
 // C (Eq. 3.13) of one column: the level above its furniture top, or kNoFurniture.
 class FurnitureTop {
  public:
@@ -37,16 +47,11 @@ class FreeFloorTile {
   FreeFloorTile(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<int>& ceiling, int y_end,
                 const std::vector<std::uint8_t>& walls, const std::vector<std::uint8_t>& room, int rough_levels,
                 int headroom_levels)
-      : grid_(grid), levels_(levels), ceiling_(ceiling), walls_(walls), room_(room), y_end_(y_end),
-        rough_(rough_levels), headroom_(headroom_levels) {}
+      : in_{grid, levels, ceiling, walls, room}, y_end_(y_end), rough_(rough_levels), headroom_(headroom_levels) {}
   std::uint8_t operator()(std::size_t col) const;
 
  private:
-  const VoxelGrid& grid_;
-  const FloorCeiling& levels_;
-  const std::vector<int>& ceiling_;
-  const std::vector<std::uint8_t>& walls_;
-  const std::vector<std::uint8_t>& room_;
+  StoreyColumns in_;
   int y_end_, rough_, headroom_;
 };
 

@@ -19,19 +19,20 @@ bool clear_between(const VoxelGrid& grid, std::size_t col, int from, int to) {
 }  // namespace
 
 std::uint8_t detail::FreeFloorTile::operator()(std::size_t col) const {
-  if (walls_[col] || !room_[col]) return 0;
+  const auto& [grid, levels, ceiling, walls, room] = in_;
+  if (walls[col] || !room[col]) return 0;
   // Beyond the thesis: voxels within the floor's roughness above I_Floor are floor (a rug, a sloping scan);
   // under a ceiling lower than I_yEnd (a roof's eaves) the column must be clear up to it, and high enough.
-  const int to = ceiling_[col] - levels_.floor < headroom_   ? -1
-                 : ceiling_[col] < levels_.ceiling ? std::min(y_end_, ceiling_[col] - 1)
-                                                   : y_end_;
-  if (!clear_between(grid_, col, levels_.floor + 1 + rough_, to)) return 0;
+  const int to = ceiling[col] - levels.floor < headroom_ ? -1
+                 : ceiling[col] < levels.ceiling         ? std::min(y_end_, ceiling[col] - 1)
+                                                         : y_end_;
+  if (!clear_between(grid, col, levels.floor + 1 + rough_, to)) return 0;
   // Beyond the thesis: B fills the patches of floor the scan missed, but a column with no floor voxel that
   // has scanned surface further down looks down a drop (a stairwell, a gallery's edge): no free floor.
-  const GridSpec& s = grid_.spec;
-  const int band_lo = std::max(levels_.floor_peak - 1, 0), band_hi = std::min(levels_.floor + rough_, s.ny - 1);
+  const GridSpec& s = grid.spec;
+  const int band_lo = std::max(levels.floor_peak - 1, 0), band_hi = std::min(levels.floor + rough_, s.ny - 1);
   const auto any = [](const std::uint8_t* b, const std::uint8_t* e) { return std::find(b, e, std::uint8_t{1}) != e; };
-  const std::uint8_t* v = grid_.cells.data() + col * std::size_t(s.ny);
+  const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
   return !any(v + band_lo, v + band_hi + 1) && any(v, v + band_lo) ? 0 : 1;
 }
 

@@ -18,7 +18,7 @@ class FreeLevels {
   FreeLevels(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<int>& ceiling,
              const std::vector<std::uint8_t>& walls, const std::vector<std::uint8_t>& room,
              const std::vector<int>& furniture)
-      : grid_(grid), levels_(levels), ceiling_(ceiling), walls_(walls), room_(room), furniture_(furniture),
+      : in_{grid, levels, ceiling, walls, room}, furniture_(furniture),
         count_(levels.ceiling - levels.floor + 1),
         words_(std::size_t(count_ + 63) / 64),
         masks_(std::make_unique_for_overwrite<std::uint64_t[]>(grid.spec.column_count() * words_)),
@@ -34,23 +34,20 @@ class FreeLevels {
     if (known_[col]) return mask;
     known_[col] = 1;
     std::fill(mask, mask + words_, std::uint64_t{0});
-    if (walls_[col] || !room_[col]) return mask;
-    const int from = std::max(levels_.floor, furniture_[col] + 1);
-    const int to = ceiling_[col] >= levels_.ceiling ? levels_.ceiling : std::min(levels_.ceiling, ceiling_[col] - 1);
-    const std::uint8_t* cells = grid_.cells.data() + col * std::size_t(grid_.spec.ny);
+    const auto& [grid, levels, ceiling, walls, room] = in_;
+    if (walls[col] || !room[col]) return mask;
+    const int from = std::max(levels.floor, furniture_[col] + 1);
+    const int to = ceiling[col] >= levels.ceiling ? levels.ceiling : std::min(levels.ceiling, ceiling[col] - 1);
+    const std::uint8_t* cells = grid.cells.data() + col * std::size_t(grid.spec.ny);
     for (int y = from; y <= to; ++y) {
-      const auto j = std::size_t(y - levels_.floor);
+      const auto j = std::size_t(y - levels.floor);
       mask[j / 64] |= std::uint64_t{cells[y] == 0} << (j % 64);
     }
     return mask;
   }
 
  private:
-  const VoxelGrid& grid_;
-  const FloorCeiling& levels_;
-  const std::vector<int>& ceiling_;
-  const std::vector<std::uint8_t>& walls_;
-  const std::vector<std::uint8_t>& room_;
+  detail::StoreyColumns in_;
   const std::vector<int>& furniture_;
   int count_;
   std::size_t words_;

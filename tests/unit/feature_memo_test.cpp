@@ -37,9 +37,11 @@ class Memoized {
     const std::vector<std::uint8_t> changed =
         previous_ ? detail::changed_columns(*previous_, grid) : std::vector<std::uint8_t>();
     const detail::GridChange change{before, serial_ + 1, previous_ ? &changed : nullptr};
-    RoomFeatures f = detail::detect_features(grid, levels_, counts, any, {}, 2, {}, {}, &memo_, change);
+    RoomFeatures f = detail::detect_features(grid, levels_, counts, any, {}, 2, {}, {}, &memo_, change,
+                                             features_ ? &*features_ : nullptr);
     ++serial_;
     previous_ = grid;
+    features_ = f;
     expect_same(f, detect_features(grid, levels_, counts, any, {}, 2), "serial " + std::to_string(serial_));
     return f;
   }
@@ -53,6 +55,7 @@ class Memoized {
   detail::FeatureMemo memo_;
   std::uint64_t serial_ = 0;
   std::optional<VoxelGrid> previous_;
+  std::optional<RoomFeatures> features_;  // of the previous grid
 };
 
 TEST(FeatureMemo, EqualsTheFeaturesDerivedWholeAsFurnitureAndWallsComeAndGo) {

@@ -24,7 +24,8 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
                              const std::vector<std::uint32_t>& column_counts,
                              const std::vector<std::uint8_t>& column_any, const FeatureParams& params,
                              unsigned threads, const std::stop_token& stop, const LabelGrid& labels) {
-  return detail::detect_features(grid, levels, column_counts, column_any, params, threads, stop, labels, nullptr, {});
+  return detail::detect_features(grid, levels, column_counts, column_any, params, threads, stop, labels, nullptr, {},
+                                 nullptr);
 }
 
 namespace detail {
@@ -73,7 +74,7 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
                              const std::vector<std::uint32_t>& column_counts,
                              const std::vector<std::uint8_t>& column_any, const FeatureParams& params,
                              unsigned threads, const std::stop_token& stop, const LabelGrid& labels,
-                             FeatureMemo* memo, const GridChange& change) {
+                             FeatureMemo* memo, const GridChange& change, const RoomFeatures* previous) {
   check_params(params);
   const float s = grid.spec.voxel_size;
   RoomFeatures f;
@@ -153,29 +154,44 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
     if (!inside[c]) f.furniture[c] = kNoFurniture;
   apply_furniture_labels(grid.spec, f.levels, labels, f.free_floor, f.furniture);
   stop_point(stop);
-  // F through the memo: derived again where a wall's run reads a column whose voxels or entries changed.
+  // F through the memo: the previous analysis's, derived again where a wall's run reads a column whose voxels or
+  // entries changed.
   const auto normals = [&] {
     const int reach = voxels_for(params.wall_normal_reach, s);
-    if (!memo) return detect_wall_normals(grid, f.levels, f.ceiling, reach, f.walls, inside, f.furniture);
+    const auto whole = [&] { return detect_wall_normals(grid, f.levels, f.ceiling, reach, f.walls, inside, f.furniture); };
+    if (!memo) return whole();
     NormalSteps& kept = memo->normals;
     const std::optional<std::vector<std::uint32_t>> again =
         kept.inputs.begin(change, {grid.spec, f.levels, reach}, f.walls, inside, f.ceiling, f.furniture);
-    if (again) update_wall_normals(grid, f.levels, f.ceiling, reach, f.walls, inside, f.furniture, *again, kept.normals);
-    else kept.normals = detect_wall_normals(grid, f.levels, f.ceiling, reach, f.walls, inside, f.furniture);
+    std::vector<std::uint8_t> out;
+    if (again && previous != nullptr && previous->normals.size() == grid.spec.voxel_count()) {
+      out = previous->normals;
+      update_wall_normals(grid, f.levels, f.ceiling, reach, f.walls, inside, f.furniture, *again, out);
+    } else {
+      out = whole();
+    }
     kept.inputs.done(change);
-    return kept.normals;
+    return out;
   };
-  // The openings through the memo: derived again near a column whose voxels or inside changed.
+  // The openings through the memo: the previous analysis's, derived again near a column whose voxels or inside
+  // changed.
   const auto openings = [&] {
     const int recess = voxels_for(params.wall_recess, s);
-    if (!memo) return detect_wall_openings(grid, f.levels, f.walls, inside, recess, max_opening, labels);
+    const auto whole = [&] { return detect_wall_openings(grid, f.levels, f.walls, inside, recess, max_opening, labels); };
+    if (!memo) return whole();
     OpeningSteps& kept = memo->openings;
     const std::optional<std::vector<std::uint32_t>> again = kept.inputs.begin(
         change, {grid.spec, f.levels, recess, max_opening, f.walls, labels.present, labels.masks}, inside);
-    if (again) update_wall_openings(grid, f.levels, f.walls, inside, recess, max_opening, labels, *again, kept.blocked);
-    else kept.blocked = detect_wall_openings(grid, f.levels, f.walls, inside, recess, max_opening, labels);
+    std::vector<std::uint8_t> out;
+    if (again && previous != nullptr &&
+        (previous->wall_blocked.empty() || previous->wall_blocked.size() == grid.spec.voxel_count())) {
+      out = previous->wall_blocked;
+      update_wall_openings(grid, f.levels, f.walls, inside, recess, max_opening, labels, *again, out);
+    } else {
+      out = whole();
+    }
     kept.inputs.done(change);
-    return kept.blocked;
+    return out;
   };
   // F, the rooms and the openings read what is above and not each other: side by side.
   detail::parallel_tasks(3, threads, [&](std::size_t task) {

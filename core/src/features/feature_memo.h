@@ -105,7 +105,7 @@ struct ColumnSteps {
   std::vector<std::uint8_t> free_floor, free_ceiling;  // D and E, before the labels and the facets
 };
 
-// The wall normals F of the latest analysis: what they read, and the normals.
+// What the wall normals F of the latest analysis read (the normals themselves are the analysis's result).
 struct NormalSteps {
   struct Scalars {
     GridSpec spec;
@@ -115,10 +115,9 @@ struct NormalSteps {
   };
   // walls, the inside, the ceiling, the furniture tops
   ColumnInputs<Scalars, std::vector<std::uint8_t>, std::vector<std::uint8_t>, std::vector<int>, std::vector<int>> inputs;
-  std::vector<std::uint8_t> normals;
 };
 
-// The wall openings of the latest analysis: what they read, and the blocked voxels.
+// What the wall openings of the latest analysis read (the blocked voxels are the analysis's result).
 struct OpeningSteps {
   struct Scalars {
     GridSpec spec;
@@ -130,7 +129,6 @@ struct OpeningSteps {
     bool operator==(const Scalars&) const = default;
   };
   ColumnInputs<Scalars, std::vector<std::uint8_t>> inputs;  // the inside
-  std::vector<std::uint8_t> blocked;
 };
 
 // One storey's steps, each with the inputs detect_features gives it.
@@ -150,11 +148,13 @@ struct FeatureMemo {
 std::vector<std::uint8_t> changed_columns(const VoxelGrid& a, const VoxelGrid& b);
 
 // detect_features (features.h), through `memo` where not null: its whole-storey steps kept where their inputs
-// are, its local steps derived again only near the columns `change` and their entries say changed.
+// are, its local steps derived again only near the columns `change` and their entries say changed. `previous`:
+// the features of the analysis before (`change.before`) on these levels, where it has them; the wall normals and
+// openings are its own, updated (without it they are derived whole).
 RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
                              const std::vector<std::uint32_t>& column_counts,
                              const std::vector<std::uint8_t>& column_any, const FeatureParams& params,
                              unsigned threads, const std::stop_token& stop, const LabelGrid& labels,
-                             FeatureMemo* memo, const GridChange& change);
+                             FeatureMemo* memo, const GridChange& change, const RoomFeatures* previous);
 
 }  // namespace roomsense::detail

@@ -261,11 +261,13 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
                          std::find(changed.begin(), changed.end(), std::uint8_t{1}) == changed.end() &&
                          caches->previous_labels.present == labels.present &&
                          caches->previous_labels.masks == labels.masks;
-  const auto previous_features = [&](const FloorCeiling& storey) -> const RoomFeatures* {
-    for (std::size_t i = 0; same_grid && i < previous->storeys.size(); ++i)
+  // The previous analysis's features of a storey on these levels, where it has one.
+  const auto previous_storey = [&](const FloorCeiling& storey) -> const RoomFeatures* {
+    for (std::size_t i = 0; previous != nullptr && i < previous->storeys.size(); ++i)
       if (previous->storeys[i].levels == storey) return i == 0 ? &*previous->features : &previous->other_features[i - 1];
     return nullptr;
   };
+  const auto previous_features = [&](const FloorCeiling& storey) { return same_grid ? previous_storey(storey) : nullptr; };
   std::vector<RoomFeatures> storey_features(all.size());  // as `all`
   std::vector<BandSum> sums;  // as `bands`; none for a point cloud
   if (caches && caches->features.size() < all.size()) caches->features.resize(all.size());
@@ -285,14 +287,14 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
       } else if (k == 0)
         storey_features[k] = detail::detect_features(r.voxels.grid, *all[k], r.voxels.column_counts,
                                                      r.voxels.column_any, options.features, options.threads,
-                                                     options.stop, labels, memo, change);
+                                                     options.stop, labels, memo, change, previous_storey(*all[k]));
       else {
         std::vector<std::uint32_t> column_counts;
         std::vector<std::uint8_t> column_any;
         count_columns(r.voxels.grid, *all[k], column_counts, column_any);
         storey_features[k] = detail::detect_features(r.voxels.grid, *all[k], column_counts, column_any,
                                                      options.features, options.threads, options.stop, labels, memo,
-                                                     change);
+                                                     change, previous_storey(*all[k]));
       }
       return;
     }

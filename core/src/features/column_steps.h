@@ -85,16 +85,25 @@ void update_wall_openings(const VoxelGrid& grid, const FloorCeiling& levels, con
                           const LabelGrid& labels, std::span<const std::uint32_t> changed,
                           std::vector<std::uint8_t>& blocked);
 
-// 1 for each column within `reach` (at least 1) of a `changed` column along the x or the z axis.
-inline std::vector<std::uint8_t> along_axes(const GridSpec& s, std::span<const std::uint32_t> changed, int reach) {
+// Derives a local step's voxels again near a change: each column within `reach` (at least 1) of a `changed`
+// column along the x or the z axis has its voxels in `voxels` cleared, then redo(x, z) sets them.
+template <class Redo>
+void redo_along_axes(const GridSpec& s, std::span<const std::uint32_t> changed, int reach,
+                     std::vector<std::uint8_t>& voxels, const Redo& redo) {
   reach = std::max(reach, 1);
-  std::vector<std::uint8_t> out(s.column_count(), 0);
+  std::vector<std::uint8_t> again(s.column_count(), 0);
   for (const std::uint32_t c : changed) {
     const int x = int(c % std::uint32_t(s.nx)), z = int(c / std::uint32_t(s.nx));
-    for (int k = std::max(0, x - reach); k <= std::min(s.nx - 1, x + reach); ++k) out[s.column(k, z)] = 1;
-    for (int k = std::max(0, z - reach); k <= std::min(s.nz - 1, z + reach); ++k) out[s.column(x, k)] = 1;
+    for (int k = std::max(0, x - reach); k <= std::min(s.nx - 1, x + reach); ++k) again[s.column(k, z)] = 1;
+    for (int k = std::max(0, z - reach); k <= std::min(s.nz - 1, z + reach); ++k) again[s.column(x, k)] = 1;
   }
-  return out;
+  const auto ny = std::size_t(s.ny);
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x)
+      if (again[s.column(x, z)]) {
+        std::fill_n(voxels.begin() + std::ptrdiff_t(s.column(x, z) * ny), ny, std::uint8_t{0});
+        redo(x, z);
+      }
 }
 
 // `step` of every column, as a vector.

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <optional>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace roomsense::detail {
@@ -61,7 +62,7 @@ class ColumnInputs {
   // The columns whose results must be derived again on the grid `change` describes with these scalars and
   // entries; nullopt where every column must be (no grid read before, another one, other scalars). Keeps
   // these as the memo's inputs; until done(), every column must be derived again next time.
-  std::optional<std::vector<std::uint32_t>> begin(const GridChange& change, const Scalars& scalars,
+  std::optional<std::vector<std::uint32_t>> begin(const GridChange& change, Scalars scalars,
                                                   const Entries&... entries) {
     std::optional<std::vector<std::uint32_t>> out;
     if (change.changed != nullptr && grid_ != 0 && grid_ == change.before && scalars_ == scalars) {
@@ -73,7 +74,7 @@ class ColumnInputs {
     }
     grid_ = 0;
     derived_ = out ? out->size() : std::get<0>(std::tie(entries...)).size();
-    scalars_ = scalars;
+    scalars_ = std::move(scalars);  // taken by value: the openings' scalars hold the walls and the labels' voxels
     entries_ = std::tie(entries...);
     return out;
   }

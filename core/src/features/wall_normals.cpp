@@ -150,18 +150,13 @@ void detail::update_wall_normals(const VoxelGrid& grid, const FloorCeiling& leve
   if (levels.ceiling < levels.floor || changed.empty()) return;
   // The bits of column t in direction d come from the run of the wall at t - d through t, t + d, ...,
   // t + (reach - 1) d: a changed column c reaches the columns from c - reach to c + reach along each axis.
-  const std::vector<std::uint8_t> again = along_axes(s, changed, reach);
   NormalRuns runs(grid, levels, ceiling, reach, walls, room, furniture);
-  const auto ny = std::size_t(s.ny);
-  for (int z = 0; z < s.nz; ++z)
-    for (int x = 0; x < s.nx; ++x) {
-      if (!again[s.column(x, z)]) continue;
-      std::fill_n(normals.begin() + std::ptrdiff_t(s.column(x, z) * ny), ny, std::uint8_t{0});
-      for (const NormalRuns::Direction& d : NormalRuns::kDirections) {
-        const int wx = x - d.dx, wz = z - d.dz;
-        if (s.contains(wx, 0, wz) && walls[s.column(wx, wz)]) runs.run(wx, wz, d, normals);
-      }
+  redo_along_axes(s, changed, reach, normals, [&](int x, int z) {
+    for (const NormalRuns::Direction& d : NormalRuns::kDirections) {
+      const int wx = x - d.dx, wz = z - d.dz;
+      if (s.contains(wx, 0, wz) && walls[s.column(wx, wz)]) runs.run(wx, wz, d, normals);
     }
+  });
 }
 
 }  // namespace roomsense

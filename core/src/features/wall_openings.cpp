@@ -155,15 +155,8 @@ void detail::update_wall_openings(const VoxelGrid& grid, const FloorCeiling& lev
   if (changed.empty()) return;
   const GridSpec& s = grid.spec;
   const Openings openings(grid, levels, walls, room, recess_voxels, max_opening_voxels, labels);
-  const std::vector<std::uint8_t> again = detail::along_axes(s, changed, openings.reach());
   if (blocked.empty()) blocked.assign(s.voxel_count(), 0);
-  const auto ny = std::size_t(s.ny);
-  for (int z = 0; z < s.nz; ++z)
-    for (int x = 0; x < s.nx; ++x)
-      if (again[s.column(x, z)]) {
-        std::fill_n(blocked.begin() + std::ptrdiff_t(s.column(x, z) * ny), ny, std::uint8_t{0});
-        openings.block(x, z, blocked);
-      }
+  detail::redo_along_axes(s, changed, openings.reach(), blocked, [&](int x, int z) { openings.block(x, z, blocked); });
   if (std::find(blocked.begin(), blocked.end(), std::uint8_t{1}) == blocked.end()) blocked.clear();
 }
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace roomsense {
@@ -18,34 +19,72 @@ namespace {
 bool finite(float f) { return (std::bit_cast<std::uint32_t>(f) & 0x7f800000u) != 0x7f800000u; }
 bool finite(const glm::vec3& v) { return int(finite(v.x)) + int(finite(v.y)) + int(finite(v.z)) == 3; }
 
-// The k-th value (from 0) of `v` in the order `before` (std::less: the k-th smallest; std::greater: the k-th
-// largest), as std::nth_element finds it. For a k near that end, a bound from every 8th value first: where more
-// than k values come before the bound, the k-th is among those few; where the bound's own ties reach past k,
-// it is the bound (a scan's floor or walls: many equal values).
-template <class Before>
-float order_statistic(std::vector<float>& v, std::size_t k, Before before) {
+// The k-th smallest and the k-th largest value (from 0) of `v`, as std::nth_element finds them. For a k near the
+// ends, bounds from every 8th value first; then one pass counts the values past each bound and at it (it
+// vectorizes), and a second gathers the few past a bound where more than k are. Where more than k values lie
+// past a bound, the k-th is among those few; where the bound's own ties reach past k, it is the bound (a scan's
+// floor or walls: many equal values); else nth_element over all of `v`.
+std::pair<float, float> both_tails(std::vector<float>& v, std::size_t k) {
   constexpr std::size_t kStride = 8;
-  const std::size_t sample_rank = 2 * (k / kStride) + 8;  // about twice k's share of the sample
-  if (v.size() >= 64 * kStride && 4 * sample_rank < v.size() / kStride) {
+  const std::size_t n = v.size(), sample_rank = 2 * (k / kStride) + 8;  // about twice k's share of the sample
+  std::optional<float> lo, hi;
+  if (n >= 64 * kStride && 4 * sample_rank < n / kStride && n <= std::numeric_limits<std::uint32_t>::max()) {
     std::vector<float> sample;
-    sample.reserve(v.size() / kStride + 1);
-    for (std::size_t i = 0; i < v.size(); i += kStride) sample.push_back(v[i]);
-    std::nth_element(sample.begin(), sample.begin() + std::ptrdiff_t(sample_rank), sample.end(), before);
-    const float bound = sample[sample_rank];
-    std::size_t earlier = 0, equal = 0;
-    for (const float x : v) earlier += before(x, bound), equal += x == bound;
-    if (earlier > k) {
-      std::vector<float> first;
-      first.reserve(earlier);
-      for (const float x : v)
-        if (before(x, bound)) first.push_back(x);
-      std::nth_element(first.begin(), first.begin() + std::ptrdiff_t(k), first.end(), before);
-      return first[k];
+    sample.reserve(n / kStride + 1);
+    for (std::size_t i = 0; i < n; i += kStride) sample.push_back(v[i]);
+    const auto at = [&](std::size_t rank) {
+      std::nth_element(sample.begin(), sample.begin() + std::ptrdiff_t(rank), sample.end());
+      return sample[rank];
+    };
+    // The low bound is at most the high one (ranks well apart), so no value lies past both.
+    const float low_bound = at(sample_rank), high_bound = at(sample.size() - 1 - sample_rank);
+    std::uint32_t below = 0, above = 0, low_ties = 0, high_ties = 0;  // 32 bits: four lanes to a register
+    for (const float x : v) {
+      below += x < low_bound;
+      above += x > high_bound;
+      low_ties += x == low_bound;
+      high_ties += x == high_bound;
     }
-    if (earlier + equal > k) return bound;
+    std::vector<float> lower(below > k ? below : 0), upper(above > k ? above : 0);
+    if (!lower.empty() || !upper.empty()) {
+      // By blocks of 16, most of which hold none of them: a test of the block (it vectorizes), then its values.
+      constexpr std::size_t kBlock = 16;
+      float* l = lower.data();
+      float* u = upper.data();
+      for (std::size_t begin = 0; begin < n; begin += kBlock) {
+        const std::size_t end = std::min(n, begin + kBlock);
+        std::uint32_t past = 0;
+        for (std::size_t i = begin; i < end; ++i) past |= std::uint32_t(v[i] < low_bound) | std::uint32_t(v[i] > high_bound);
+        for (std::size_t i = begin; past != 0 && i < end; ++i)
+          if (v[i] < low_bound) {
+            if (!lower.empty()) *l++ = v[i];
+          } else if (v[i] > high_bound && !upper.empty()) {
+            *u++ = v[i];
+          }
+      }
+    }
+    if (!lower.empty()) {
+      std::nth_element(lower.begin(), lower.begin() + std::ptrdiff_t(k), lower.end());
+      lo = lower[k];
+    } else if (below + low_ties > k) {
+      lo = low_bound;
+    }
+    if (!upper.empty()) {
+      std::nth_element(upper.begin(), upper.begin() + std::ptrdiff_t(k), upper.end(), std::greater<float>());
+      hi = upper[k];
+    } else if (above + high_ties > k) {
+      hi = high_bound;
+    }
   }
-  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end(), before);
-  return v[k];
+  if (!lo) {
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+    lo = v[k];
+  }
+  if (!hi) {
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end(), std::greater<float>());
+    hi = v[k];
+  }
+  return {*lo, *hi};
 }
 
 // The [q, 1-q] quantiles of each axis over the kept vertices (`keep` empty: all), widened by the outlier margin.
@@ -74,7 +113,7 @@ std::array<std::pair<float, float>, 3> robust_ranges(const std::vector<glm::vec3
     }
     // The k-th smallest and the k-th largest.
     const std::size_t k = std::size_t(double(v.size() - 1) * kOutlierQuantile);
-    const float lo = order_statistic(v, k, std::less<float>()), hi = order_statistic(v, k, std::greater<float>());
+    const auto [lo, hi] = both_tails(v, k);
     const float margin = std::max(kOutlierMinMargin, hi - lo);
     ranges[axis] = {lo - margin, hi + margin};
   });

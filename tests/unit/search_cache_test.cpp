@@ -1,5 +1,6 @@
 // What an IncrementalAnalysis's SearchCache (core/src/areas/search_cache.h, internal) takes from the previous
-// analysis besides the searches: the reach lists' areas in metres, and growth replayed area by area (grow.h).
+// analysis besides the searches: the reach lists' areas in metres, growth replayed area by area (grow.h), and
+// each area's reach (classify.h's ReachMemo).
 // Each must be taken only where nothing it read changed; the chunk-by-chunk replay tests check whole rooms, these
 // the edges of each rule on purpose-made features.
 #include "../../core/src/areas/grow.h"
@@ -8,8 +9,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <functional>
+#include <random>
 #include <vector>
 
 namespace {
@@ -213,6 +217,102 @@ TEST(GrowthReplay, EqualsGrowingAgainAfterChangesAnywhere) {
     record = std::move(next);
   }
   EXPECT_LT(double(all_replay_reads), 0.6 * double(all_fresh_reads));
+}
+
+// Reach from the memo equals reach searched afresh, after every change of V_Floor (floors removed, added,
+// reordered), of V_Wall and of the areas, on a room split by a partition wall, so that areas see floors near
+// (Close), only far (Distance) or none (None); and where only floors changed, most areas are not searched.
+TEST(ReachMemo, EqualsReachSearchedAfreshAsFloorsComeAndGo) {
+  const auto area = [](AreaType type, glm::vec3 center, float half_width, glm::vec3 normal) {
+    Area a;
+    a.type = type, a.center = center, a.half_width = half_width, a.normal = normal;
+    return a;
+  };
+  // A wall area along a-b (in X-Z, a to b its top edge), centred at height y, facing `normal`.
+  const auto wall = [&](glm::vec2 a, glm::vec2 b, float y, glm::vec3 normal) {
+    const glm::vec2 mid = 0.5f * (a + b);
+    Area w = area(AreaType::Wall, {mid.x, y, mid.y}, 0.5f * glm::length(b - a), normal);
+    w.corners[3] = {a.x, y + 0.3f, a.y}, w.corners[2] = {b.x, y + 0.3f, b.y};
+    return w;
+  };
+  std::vector<Area> wall_areas;
+  for (float x = 0.0f; x < 10.0f; x += 2.0f) {
+    wall_areas.push_back(wall({x, 0.0f}, {x + 2.0f, 0.0f}, 1.2f, {0, 0, 1}));
+    wall_areas.push_back(wall({x + 2.0f, 8.0f}, {x, 8.0f}, 0.8f, {0, 0, -1}));
+  }
+  for (float z = 0.0f; z < 8.0f; z += 2.0f) {
+    wall_areas.push_back(wall({0.0f, z + 2.0f}, {0.0f, z}, 2.0f, {1, 0, 0}));
+    wall_areas.push_back(wall({10.0f, z}, {10.0f, z + 2.0f}, 1.0f, {-1, 0, 0}));
+  }
+  wall_areas.push_back(wall({5.0f, 0.0f}, {5.0f, 5.5f}, 1.2f, {1, 0, 0}));   // the partition, facing +x
+  wall_areas.push_back(wall({5.0f, 5.5f}, {5.0f, 0.0f}, 1.2f, {-1, 0, 0}));  // and -x
+  wall_areas.push_back(wall({3.0f, 0.0f}, {1.0f, 0.0f}, 1.0f, {0, 0, -1}));  // facing out of the room: None
+  // A closet in the corner x > 8, z < 1.6: what stands in it sees only its floors, of which there is one or
+  // none at every step (so its reach moves between Close, Distance and None).
+  wall_areas.push_back(wall({8.0f, 0.0f}, {8.0f, 1.6f}, 1.2f, {-1, 0, 0}));
+  wall_areas.push_back(wall({8.0f, 1.6f}, {10.0f, 1.6f}, 1.2f, {0, 0, 1}));
+  const auto in_closet = [](const Area& a) { return a.center.x > 8.0f && a.center.z < 1.6f; };
+
+  std::mt19937 random(7);
+  // Floor areas on a lattice, half of them there at first, none at first in a corner behind the partition.
+  std::vector<Area> pool;
+  for (float z = 0.3f; z < 7.8f; z += 0.4f)
+    for (float x = 0.3f; x < 9.8f; x += 0.4f) pool.push_back(area(AreaType::Floor, {x, 0.0f, z}, 0.12f, {0, 1, 0}));
+  std::vector<std::uint8_t> present(pool.size());
+  for (std::size_t i = 0; i < pool.size(); ++i)
+    present[i] = std::uint8_t(random() % 2 == 0 && !(pool[i].center.x > 5.5f && pool[i].center.z > 3.0f));
+  std::vector<std::size_t> closet;
+  for (std::size_t i = 0; i < pool.size(); ++i)
+    if (in_closet(pool[i])) closet.push_back(i), present[i] = i % 5 == 0;
+  std::vector<Area> areas = wall_areas;
+  areas.push_back(area(AreaType::Furniture, {9.7f, 0.7f, 0.2f}, 0.05f, {0, 1, 0}));
+  areas.push_back(area(AreaType::Floor, {8.2f, 0.0f, 1.4f}, 0.05f, {0, 1, 0}));
+  const std::size_t fixed = areas.size();
+  std::uniform_real_distribution<float> x_of(0.2f, 9.8f), z_of(0.2f, 7.8f);
+  for (int i = 0; i < 60; ++i) {
+    const AreaType type = i % 3 == 0 ? AreaType::Ceiling : i % 3 == 1 ? AreaType::Furniture : AreaType::Floor;
+    areas.push_back(area(type, {x_of(random), type == AreaType::Ceiling ? 2.6f : 0.7f, z_of(random)}, 0.1f, {0, 1, 0}));
+  }
+
+  AreaParams params;
+  ReachMemo memo;
+  std::array<std::size_t, 4> reaches{};
+  std::size_t kept_steps = 0;
+  for (int step = 0; step < 30; ++step) {
+    bool walls_changed = false;
+    if (step > 0) {
+      for (int k = 0; k < 6; ++k) present[random() % pool.size()] ^= 1;
+      for (const std::size_t i : closet) present[i] = 0;
+      if (random() % 3 != 0) present[closet[random() % closet.size()]] = 1;
+      if (step % 9 == 4) wall_areas[3].corners[2].x += 0.05f, walls_changed = true;
+      if (step % 5 == 2) areas.push_back(area(AreaType::Furniture, {x_of(random), 0.7f, z_of(random)}, 0.2f, {0, 1, 0}));
+      if (step % 7 == 5)  // one of the areas on the lattice's floor, ceiling or furniture
+        areas.erase(areas.begin() + std::ptrdiff_t(fixed + random() % (areas.size() - fixed)));
+    }
+    std::vector<ReachFloor> floors;
+    for (std::size_t i = 0; i < pool.size(); ++i)
+      if (present[i]) floors.emplace_back(pool[i]);
+    if (step % 4 == 3) std::shuffle(floors.begin(), floors.end(), random);
+    std::vector<ReachWall> walls;
+    for (const Area& w : wall_areas) walls.emplace_back(w);
+
+    std::vector<Area> fresh = areas, from_memo = areas;
+    assign_reach(fresh, floors, walls, 0.0f, params, 1);
+    assign_reach(from_memo, floors, walls, 0.0f, params, 2, &memo);
+    for (std::size_t i = 0; i < areas.size(); ++i) {
+      ASSERT_EQ(from_memo[i].reach, fresh[i].reach) << "step " << step << ", area " << i;
+      ASSERT_EQ(from_memo[i].flags, fresh[i].flags) << "step " << step << ", area " << i;
+      ++reaches[std::size_t(fresh[i].reach)];
+    }
+    if (step > 0 && !walls_changed) {
+      EXPECT_LT(memo.searched, areas.size() / 2) << "step " << step;
+      ++kept_steps;
+    } else {
+      EXPECT_EQ(memo.searched, areas.size()) << "step " << step;
+    }
+  }
+  EXPECT_GT(kept_steps, 20u);
+  for (const Reach r : {Reach::Close, Reach::Distance, Reach::None}) EXPECT_GE(reaches[std::size_t(r)], 30u) << int(r);
 }
 
 }  // namespace

@@ -410,7 +410,8 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
 
   // §3.5: reach against V_Floor and V_Wall (before packing).
   for (std::vector<Area>& areas : kept_areas) result.areas.insert(result.areas.end(), areas.begin(), areas.end());
-  assign_reach(result.areas, floor_areas, wall_areas, surfaces.floor_y, params, threads);
+  assign_reach(result.areas, floor_areas, wall_areas, surfaces.floor_y, params, threads,
+               cache ? &cache->reach_memo() : nullptr);
   result.timings.classify = elapsed_ms(clock);
   for (std::size_t type = 0; type < 4 && cache; ++type)
     if (!reused[type]) cache->keep_type(type, std::move(red[type]), params);

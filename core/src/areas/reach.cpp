@@ -8,8 +8,11 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <bit>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <unordered_map>
@@ -40,14 +43,15 @@ bool segments_intersect(P2 p1, P2 q1, P2 p2, P2 q2) {  // [Geeks, 2020] as §3.5
          (o3 == 0 && on_segment(p2, q2, p1)) || (o4 == 0 && on_segment(p2, q2, q1));
 }
 
-struct Segment {
-  P2 a, b;
-};
+}  // namespace
 
 // The upper edges of the wall areas V_Wall, bucketed on a grid in X-Z, so a line of sight meets only the
 // walls along it (a grid walk) instead of all of them.
 class WallSegments {
  public:
+  struct Segment {
+    P2 a, b;
+  };
   // Walls of one footprint in X-Z (areas one above another on a wall: most of V_Wall) block and are excluded
   // alike, as reach reads nothing but that footprint: each footprint is bucketed once, by its first wall.
   WallSegments(const std::vector<ReachWall>& walls, double bucket) : size_(bucket) {
@@ -134,6 +138,8 @@ class WallSegments {
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> buckets_;
 };
 
+namespace {
+
 // The floor areas V_Floor bucketed by centre on a grid in X-Z, to visit them nearest first without measuring
 // the distance to every one of them from every area.
 class FloorIndex {
@@ -157,13 +163,17 @@ class FloorIndex {
   // Which floor areas `from` sees. Reach reads only whether the nearest visible one's gap is below `close`,
   // not the gap itself, so rather than every floor in gap order: the floors with a gap below `close` (only
   // those near `from`) in any order, then the others. Within at the first visible one of the first, Beyond at
-  // the first of the second, None when no floor for which gap_of gives a value is visible. gap_of must be at
-  // least the centre distance less `slack` and less the floor's half width, which bounds where the near ones
-  // lie. Buckets are visited nearest first, where a visible floor is likeliest.
-  enum class Visible { None, Within, Beyond };
+  // the first of the second, None when no floor for which gap_of gives a value is visible; with the floor that
+  // decided. gap_of must be at least the centre distance less `slack` and less the floor's half width, which
+  // bounds where the near ones lie. Buckets are visited nearest first, where a visible floor is likeliest.
+  enum class Visible : std::uint8_t { None, Within, Beyond };
+  struct Found {
+    Visible visible = Visible::None;
+    const ReachFloor* floor = nullptr;
+  };
   template <class GapOf, class IsVisible>
-  Visible visible_floor(P2 from, double slack, double close, GapOf gap_of, IsVisible visible) const {
-    if (floors_.empty()) return Visible::None;
+  Found visible_floor(P2 from, double slack, double close, GapOf gap_of, IsVisible visible) const {
+    if (floors_.empty()) return {};
     const glm::ivec2 c = cell(from);  // may lie outside the grid
     const int last_ring = std::max({std::abs(c.x), std::abs(c.y), std::abs(nx_ - 1 - c.x), std::abs(nz_ - 1 - c.y)});
     // Centres in ring r lie at least r - 1 buckets away, so their gaps are at least that less the slack and
@@ -173,7 +183,7 @@ class FloorIndex {
     const int near_rings = near_reach >= -1.0 && near_reach <= double(last_ring) ? int(near_reach)
                            : near_reach < -1.0                                    ? -1
                                                                                   : last_ring;
-    const auto first_visible = [&](int rings, bool near) {
+    const auto first_visible = [&](int rings, bool near) -> const ReachFloor* {
       for (int ring = 0; ring <= rings; ++ring)
         for (int bz = c.y - ring; bz <= c.y + ring; ++bz)
           for (int bx = c.x - ring; bx <= c.x + ring; ++bx) {
@@ -181,13 +191,14 @@ class FloorIndex {
               continue;
             for (std::size_t i : buckets_[std::size_t(bz) * std::size_t(nx_) + std::size_t(bx)]) {
               const std::optional<double> gap = gap_of(floors_[i]);
-              if (gap && (*gap < close) == near && visible(floors_[i], *gap)) return true;
+              if (gap && (*gap < close) == near && visible(floors_[i], *gap)) return &floors_[i];
             }
           }
-      return false;
+      return nullptr;
     };
-    if (first_visible(near_rings, true)) return Visible::Within;
-    return first_visible(last_ring, false) ? Visible::Beyond : Visible::None;
+    if (const ReachFloor* near = first_visible(near_rings, true)) return {Visible::Within, near};
+    if (const ReachFloor* far = first_visible(last_ring, false)) return {Visible::Beyond, far};
+    return {};
   }
 
  private:
@@ -202,16 +213,118 @@ class FloorIndex {
   std::vector<std::vector<std::size_t>> buckets_;
 };
 
+std::uint32_t bits(float v) { return std::bit_cast<std::uint32_t>(v); }
+
+ReachMemo::FloorKey key_of(const ReachFloor& f) { return {bits(f.center.x), bits(f.center.y), bits(f.half_width)}; }
+
+// What reach_of reads of an area.
+ReachMemo::AreaKey key_of(const Area& a) {
+  return {std::uint32_t(a.type), bits(a.center.x), bits(a.center.y), bits(a.center.z), bits(a.half_width),
+          bits(a.normal.x), bits(a.normal.z), bits(a.corners[3].x), bits(a.corners[3].z), bits(a.corners[2].x),
+          bits(a.corners[2].z)};
+}
+
+template <std::size_t N>
+std::uint64_t hash_of(const std::array<std::uint32_t, N>& key) {
+  WordHash h;
+  for (const std::uint32_t word : key) h.add(word);
+  return h.value();
+}
+
+// The first index of each key of a list.
+template <class Key>
+class KeyIndex {
+ public:
+  explicit KeyIndex(const std::vector<Key>& keys) : keys_(keys) {
+    index_.reserve(keys.size());
+    for (std::uint32_t i = 0; i < keys.size(); ++i)
+      index_.insert(hash_of(keys[i]), i, [&](std::uint32_t j) { return keys[j] == keys[i]; });
+  }
+  std::uint32_t find(const Key& key) const {
+    return index_.find(hash_of(key), [&](std::uint32_t j) { return keys_[j] == key; });
+  }
+
+ private:
+  const std::vector<Key>& keys_;
+  FirstIndex index_;
+};
+
+bool same_walls(const std::vector<ReachWall>& a, const std::vector<ReachWall>& b) {
+  const auto words = [](const ReachWall& w) {
+    return std::array<std::uint32_t, 7>{bits(w.center.x), bits(w.center.y), bits(w.half_width), bits(w.top_left.x),
+                                        bits(w.top_left.y), bits(w.top_right.x), bits(w.top_right.y)};
+  };
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [&](const ReachWall& x, const ReachWall& y) { return words(x) == words(y); });
+}
+
+std::vector<ReachMemo::FloorKey> floor_keys(const std::vector<ReachFloor>& floors) {
+  std::vector<ReachMemo::FloorKey> keys;
+  keys.reserve(floors.size());
+  for (const ReachFloor& f : floors) keys.push_back(key_of(f));
+  return keys;
+}
+
 }  // namespace
 
 void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floors, const std::vector<ReachWall>& walls,
-                  float floor_y, const AreaParams& params, unsigned threads) {
-  const WallSegments segments(walls, 1.0);
+                  float floor_y, const AreaParams& params, unsigned threads, ReachMemo* memo) {
   const FloorIndex floor_index(floors, 1.0);
   const double close = params.close_distance;
   const double cone_cos = std::cos(double(params.wall_view_cone_deg) * std::numbers::pi / 180.0);
+  using Visible = FloorIndex::Visible;
 
-  const auto reach_of = [&](const Area& area) {
+  // The previous analysis's reach holds where it read these walls, floor height and parameters (ReachMemo).
+  const std::array<std::uint32_t, 4> scalars{bits(floor_y), bits(params.close_distance), bits(params.close_height),
+                                             bits(params.wall_view_cone_deg)};
+  const bool known = memo != nullptr && memo->valid && memo->scalars == scalars && same_walls(memo->walls, walls);
+  // The walls' buckets, the previous analysis's where its walls are these.
+  const std::shared_ptr<const WallSegments> kept_segments =
+      known && memo->segments ? memo->segments : std::make_shared<const WallSegments>(walls, 1.0);
+  const WallSegments& segments = *kept_segments;
+  const std::vector<ReachMemo::FloorKey> keys = memo != nullptr ? floor_keys(floors) : std::vector<ReachMemo::FloorKey>();
+  std::optional<KeyIndex<ReachMemo::FloorKey>> floors_now;
+  std::optional<KeyIndex<ReachMemo::AreaKey>> areas_before;
+  std::vector<std::size_t> added;  // the floors the previous analysis did not have
+  if (known) {
+    floors_now.emplace(keys);
+    areas_before.emplace(memo->areas);
+    const std::vector<ReachMemo::FloorKey> before = floor_keys(memo->floors);
+    const KeyIndex floors_before(before);
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (floors_before.find(keys[i]) == FirstIndex::kAbsent) added.push_back(i);
+  }
+  std::vector<ReachMemo::AreaKey> area_keys(memo != nullptr ? areas.size() : 0);
+  std::vector<FloorIndex::Found> found(memo != nullptr ? areas.size() : 0);
+  std::atomic<std::size_t> searched = 0;
+
+  // What an area sees: from its previous analysis's, where that holds, else by a search of the floors. Previously
+  // Within: while the floor that showed it is there. Beyond or None: no floor then was near and visible, so only an
+  // added one can be; and Beyond holds while its floor is there. (`j`: the area's entry in the memo.)
+  const auto look = [&](P2 c, double slack, auto gap_of, auto visible, std::uint32_t j) -> FloorIndex::Found {
+    if (j != FirstIndex::kAbsent) {
+      const auto seen = Visible(memo->seen[j]);
+      const std::uint32_t at = seen == Visible::None ? FirstIndex::kAbsent : floors_now->find(memo->witness[j]);
+      const FloorIndex::Found before{seen, at == FirstIndex::kAbsent ? nullptr : &floors[at]};
+      if (seen == Visible::Within && before.floor) return before;
+      if (seen == Visible::None || (seen == Visible::Beyond && before.floor)) {
+        FloorIndex::Found now = before;
+        for (const std::size_t i : added) {
+          const std::optional<double> gap = gap_of(floors[i]);
+          if (!gap || (*gap >= close && now.visible != Visible::None)) continue;
+          if (visible(floors[i], *gap)) {
+            if (*gap < close) return {Visible::Within, &floors[i]};
+            now = {Visible::Beyond, &floors[i]};
+          }
+        }
+        return now;
+      }
+    }
+    searched.fetch_add(1, std::memory_order_relaxed);
+    return floor_index.visible_floor(c, slack, close, gap_of, visible);
+  };
+
+  const auto reach_of = [&](const Area& area, std::uint32_t j, FloorIndex::Found* decided) {
     const P2 c = xz(area.center);
     const auto sight = [&](const ReachFloor& floor, auto excluded) {
       return !segments.blocked(c, P2(floor.center), excluded);
@@ -222,7 +335,7 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
       const P2 n = glm::normalize(xz(area.normal));
       const P2 top_a = xz(area.corners[3]), top_b = xz(area.corners[2]);
       const auto same_wall = [&](std::size_t i) {
-        const Segment& s = segments.segment(i);
+        const WallSegments::Segment& s = segments.segment(i);
         return segments_intersect(top_a, top_b, s.a, s.b) ||
                glm::distance(c, P2(walls[i].center)) - area.half_width - walls[i].half_width < close;
       };
@@ -232,31 +345,47 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
         if (len == 0.0 || glm::dot(u, n) < cone_cos * len) return std::nullopt;
         return len - floor.half_width;
       };
-      const auto found = floor_index.visible_floor(c, 0.0, close, gap,
-                                                     [&](const ReachFloor& f, double) { return sight(f, same_wall); });
-      if (found == FloorIndex::Visible::None) return Reach::None;
+      const auto visible = [&](const ReachFloor& f, double) { return sight(f, same_wall); };
+      const FloorIndex::Found seen = *decided = look(c, 0.0, gap, visible, j);
+      if (seen.visible == Visible::None) return Reach::None;
       const bool low = area.center.y - floor_y <= params.close_height;
-      return low && found == FloorIndex::Visible::Within ? Reach::Close : Reach::Distance;
+      return low && seen.visible == Visible::Within ? Reach::Close : Reach::Distance;
     }
     // §3.5.2: the distance between centres less both half sizes; overlapping areas need no line of sight.
     const auto none = [](std::size_t) { return false; };
     const auto gap = [&](const ReachFloor& floor) -> std::optional<double> {
       return glm::distance(c, P2(floor.center)) - area.half_width - floor.half_width;
     };
-    const auto found = floor_index.visible_floor(c, area.half_width, close, gap, [&](const ReachFloor& f, double g) {
+    const FloorIndex::Found seen = *decided = look(c, area.half_width, gap, [&](const ReachFloor& f, double g) {
       return g <= 0.0 || sight(f, none);
-    });
-    if (found == FloorIndex::Visible::None) return Reach::None;
+    }, j);
+    if (seen.visible == Visible::None) return Reach::None;
     if (area.type == AreaType::Ceiling) return Reach::Distance;  // never within reach of a hand
-    return found == FloorIndex::Visible::Within ? Reach::Close : Reach::Distance;
+    return seen.visible == Visible::Within ? Reach::Close : Reach::Distance;
   };
 
   parallel_for(areas.size(), threads, 16, [&](std::size_t begin, std::size_t end, std::size_t) {
     for (std::size_t i = begin; i < end; ++i) {
-      areas[i].reach = reach_of(areas[i]);
+      FloorIndex::Found decided;
+      std::uint32_t j = FirstIndex::kAbsent;
+      if (memo != nullptr) {
+        area_keys[i] = key_of(areas[i]);
+        if (known) j = areas_before->find(area_keys[i]);
+      }
+      areas[i].reach = reach_of(areas[i], j, &decided);
       areas[i].flags = category_flags(areas[i].type, areas[i].size, areas[i].reach);
+      if (memo != nullptr) found[i] = decided;
     }
   });
+  if (memo == nullptr) return;
+  ReachMemo next{true, floors, walls, scalars, kept_segments, std::move(area_keys), {}, {}, searched.load()};
+  next.seen.reserve(found.size());
+  next.witness.reserve(found.size());
+  for (const FloorIndex::Found& f : found) {
+    next.seen.push_back(std::uint8_t(f.visible));
+    next.witness.push_back(f.floor ? key_of(*f.floor) : ReachMemo::FloorKey{});
+  }
+  *memo = std::move(next);
 }
 
 }  // namespace roomsense::detail

@@ -4,7 +4,7 @@
 // band only the rectangles within reach of a changed column; each rectangle's packing decision
 // and rank (a square's kept where its centre was not searched again), for packing's replay (reduce.h); each
 // area type's reduction, for a type nothing of which changed; each type's growth, replayed area by area (grow.h);
-// the reach lists' areas in metres. Every result equals the whole analysis's exactly
+// the reach lists' areas in metres, and what reach found (classify.h's ReachMemo). Every result equals the whole analysis's exactly
 // (tests/unit/incremental_test.cpp replays rooms chunk by chunk against full analyses; search_cache_test.cpp
 // tests each rule's edges).
 #pragma once
@@ -71,6 +71,8 @@ class SearchCache {
   const PackReplay* replay(std::size_t type, std::size_t size) const;
   void record_packing(std::size_t type, std::size_t size, std::span<const std::size_t> packed,
                       std::span<const std::uint32_t> ranks = {});
+  // What reach found in the previous analysis (classify.h).
+  ReachMemo& reach_memo() { return reach_memo_; }
   // Over the searches since begin(): the bands searched, and the bands there were.
   std::size_t bands_searched() const { return searched_; }
   std::size_t bands_total() const { return total_; }
@@ -144,6 +146,7 @@ class SearchCache {
                                      const std::function<Reach(const Sized&)>& place);
   Placed<ReachFloor> floors_for_reach_;
   Placed<ReachWall> walls_for_reach_;
+  ReachMemo reach_memo_;
   // Counts begin()s. A search's pieces are reused only when kept in the previous one: one skipped (too many
   // corner pairs) or cut short (a stop, an error) since searches everything again.
   std::uint64_t generation_ = 0;

@@ -48,6 +48,10 @@ void expect_same(const AnalysisResult& got, const AnalysisResult& want, const st
     roomsense::test::expect_same_features(got.other_features[i], want.other_features[i]);
   EXPECT_EQ(got.voxels.grid.cells, want.voxels.grid.cells);
   EXPECT_EQ(got.voxels.voxel_tests, want.voxels.voxel_tests);
+  EXPECT_EQ(got.voxels.level_counts, want.voxels.level_counts);
+  EXPECT_EQ(got.voxels.levels, want.voxels.levels);
+  EXPECT_EQ(got.voxels.column_counts, want.voxels.column_counts);
+  EXPECT_EQ(got.voxels.column_any, want.voxels.column_any);
   EXPECT_EQ(got.bounds.vertices, want.bounds.vertices);
   EXPECT_EQ(got.bounds.indices, want.bounds.indices);
   ASSERT_EQ(got.room_bounds.size(), want.room_bounds.size());
@@ -237,6 +241,42 @@ TEST(Incremental, ChunksWithNaNVerticesOrOutliersEqualTheFullAnalysis) {
   check("clean again");
   EXPECT_EQ(inc.result().input.outlier_vertices, 0u);
   EXPECT_EQ(inc.result().input.skipped_vertices, 0u);
+}
+
+// A closed box of side `side` (two triangles a face) with its lowest corner at `corner`.
+Scan box(const glm::vec3& corner, float side) {
+  Scan s;
+  for (int i = 0; i < 8; ++i)
+    s.vertices.push_back(corner + side * glm::vec3(float(i & 1), float((i >> 1) & 1), float((i >> 2) & 1)));
+  s.indices = {0, 1, 3, 0, 3, 2, 4, 7, 5, 4, 6, 7, 0, 4, 5, 0, 5, 1, 2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
+  return s;
+}
+
+// The voxel stage counts levels and columns again only where chunks changed, from the previous result's counts,
+// which hold only where its grid came from the chunks the stage keeps. A result whose input checks removed a
+// vertex is voxelized whole (the stage keeps no chunk): a box dropped with it, alone in its columns, must
+// leave the next counts too.
+TEST(Incremental, CountsAfterAWholeVoxelizationEqualTheFullAnalysis) {
+  const Scan room = synth::generate_builtin_source("synthetic:default");
+  IncrementalAnalysis inc;
+  for (const auto& [id, tile] : split_into_blocks(room, 2.0f)) inc.set_chunk(id, tile);
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::vec3& v : room.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+  // The far box holds the grid's extent; the near one stands in columns no other chunk reaches.
+  inc.set_chunk(1001, box({hi.x + 2.0f, lo.y, lo.z}, 0.3f));
+  inc.set_chunk(1002, box({hi.x + 0.8f, lo.y, lo.z}, 0.3f));
+  Scan with_nan = box({lo.x + 1.0f, lo.y, lo.z + 1.0f}, 0.3f);
+  const Scan clean = with_nan;
+  with_nan.vertices[0] = glm::vec3(NAN, 0.0f, 0.0f);
+  inc.set_chunk(1003, with_nan);
+  expect_same(inc.result(), analyze(inc.combined_scan()), "a NaN vertex: voxelized whole");
+  ASSERT_GT(inc.result().input.skipped_vertices, 0u);
+  inc.remove_chunk(1002);
+  inc.set_chunk(1003, clean);
+  const AnalysisResult& got = inc.result();
+  const AnalysisResult want = analyze(inc.combined_scan());
+  ASSERT_EQ(got.voxels.grid.spec, want.voxels.grid.spec);  // the same grid: counted from the previous result
+  expect_same(got, want, "the near box gone, the NaN vertex mended");
 }
 
 // A result cancelled at any point (the voxels, the features, halfway through the area searches and their

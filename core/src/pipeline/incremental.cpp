@@ -38,18 +38,27 @@ std::uint64_t content_hash(const Scan& scan) {
 }  // namespace
 
 // Serves the voxel stage of analyze() from the chunks' kept voxels. Before each analysis the owner gives it the
-// combined scan, which says where each chunk's triangles lie (set_chunks).
+// combined scan, which says where each chunk's triangles lie, and the previous analysis's stage result
+// (set_chunks): where that is the grid of this stage's previous run, the level and column counts are those
+// counted again only in the columns of the chunks voxelized again or dropped since.
 class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
  public:
   explicit ChunkVoxelStage(unsigned threads) : threads_(threads) {}
   std::string name() const override { return CpuVoxelStage().name(); }
 
-  void set_chunks(const detail::CombinedScan& combined) { combined_ = &combined; }
+  void set_chunks(const detail::CombinedScan& combined, const VoxelStageResult* previous) {
+    combined_ = &combined;
+    previous_ = previous;
+  }
   std::size_t revoxelized() const { return revoxelized_; }
 
   VoxelStageResult run(const VoxelizeRequest& request) override {
     revoxelized_ = 0;
     const detail::CombinedScan& c = *combined_;
+    // The previous analysis's grid is the one the chunks in kept_ made where this stage's previous run made it
+    // from them (an analysis that failed after the stage leaves no previous result).
+    const VoxelStageResult* previous = std::exchange(previous_, nullptr);
+    const bool from_previous = std::exchange(made_grid_, false) && previous != nullptr && previous->grid.spec == request.spec;
     // analyze() maps the vertices itself only where the input checks dropped or renumbered something, or there
     // are no triangles: the stage in full. Otherwise (grid_vertices empty: the combined scan as it is, in triangle
     // mode) each chunk voxelized again is mapped alone below.
@@ -60,15 +69,23 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     }
     if (request.spec != spec_) kept_.clear(), spec_ = request.spec;
     std::map<std::uint64_t, Kept> now;
+    // The columns whose voxels may differ from the previous grid's: those of the chunks voxelized again, and of
+    // the ones dropped or replaced (left in kept_ below).
+    std::vector<std::uint8_t> touched(from_previous ? request.spec.column_count() : 0);
+    const auto touch = [&](const Kept& kept) {
+      for (const std::uint32_t v : kept.voxels) touched[v / std::uint32_t(request.spec.ny)] = 1;
+    };
     try {
       for (std::size_t k = 0; k < c.placed.size(); ++k) {
         const detail::CombinedScan::Placed& chunk = c.placed[k];
         const auto it = kept_.find(chunk.id);
         if (it != kept_.end() && it->second.hash == chunk.hash) {
           now.emplace(chunk.id, std::move(it->second));
+          kept_.erase(it);
           continue;
         }
-        now.emplace(chunk.id, voxelize_chunk(request, chunk.hash, k));
+        const auto placed = now.emplace(chunk.id, voxelize_chunk(request, chunk.hash, k)).first;
+        if (from_previous) touch(placed->second);
         ++revoxelized_;
       }
     } catch (...) {
@@ -76,6 +93,8 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
       scratch_ = VoxelGrid(GridSpec{});
       throw;
     }
+    if (from_previous)
+      for (const auto& [id, gone] : kept_) touch(gone);
     kept_ = std::move(now);
     scratch_ = VoxelGrid(GridSpec{});  // between analyses the stage holds no grid of its own
 
@@ -88,9 +107,8 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     // The whole stage's budget, as voxelize_cpu counts it over all triangles.
     if (r.voxel_tests > request.test_budget)
       throw Error(ErrorCode::TooMuchWork, too_much_work_message(request.test_budget));
-    r.level_counts = count_levels(r.grid);
-    r.levels = select_floor_ceiling(r.level_counts, request.min_separation_levels);
-    count_columns(r.grid, r.levels, r.column_counts, r.column_any);
+    count_from(from_previous ? previous : nullptr, touched, request.min_separation_levels, r);
+    made_grid_ = true;
     return r;
   }
 
@@ -142,8 +160,43 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     return kept;
   }
 
+  // r's level counts, levels and column counts: the previous result's, counted again in the touched columns,
+  // where there is one (its levels' column counts only where the levels are the same); else over the grid.
+  static void count_from(const VoxelStageResult* previous, const std::vector<std::uint8_t>& touched,
+                         int min_separation, VoxelStageResult& r) {
+    const GridSpec& s = r.grid.spec;
+    const auto column = [&](const VoxelGrid& g, std::size_t col) { return g.cells.data() + col * std::size_t(s.ny); };
+    if (previous == nullptr) {
+      r.level_counts = count_levels(r.grid);
+    } else {
+      r.level_counts = previous->level_counts;
+      for (std::size_t col = 0; col < touched.size(); ++col) {
+        if (!touched[col]) continue;
+        const std::uint8_t *was = column(previous->grid, col), *is = column(r.grid, col);
+        for (int y = 0; y < s.ny; ++y) r.level_counts[std::size_t(y)] += std::uint32_t(is[y]) - std::uint32_t(was[y]);
+      }
+    }
+    r.levels = select_floor_ceiling(r.level_counts, min_separation);
+    if (previous == nullptr || !r.levels || previous->levels != r.levels) {
+      count_columns(r.grid, r.levels, r.column_counts, r.column_any);
+      return;
+    }
+    r.column_counts = previous->column_counts;
+    r.column_any = previous->column_any;
+    for (std::size_t col = 0; col < touched.size(); ++col) {
+      if (!touched[col]) continue;
+      const std::uint8_t* is = column(r.grid, col);
+      std::uint32_t n = 0;
+      for (int y = r.levels->floor; y <= r.levels->ceiling; ++y) n += is[y];
+      r.column_counts[col] = n;
+      r.column_any[col] = n > 0 ? 1 : 0;
+    }
+  }
+
   unsigned threads_;
   const detail::CombinedScan* combined_ = nullptr;  // the owner's, set before each analysis
+  const VoxelStageResult* previous_ = nullptr;      // the previous result's, for one run
+  bool made_grid_ = false;                          // the previous run made its grid from kept_'s chunks
   GridSpec spec_{};
   std::map<std::uint64_t, Kept> kept_;
   std::size_t revoxelized_ = 0;
@@ -313,10 +366,10 @@ const AnalysisResult& IncrementalAnalysis::result() {
   // The analysis's threads (analyze() makes the same pool current), for the copies too.
   const detail::PoolScope scope(detail::pool_for(caches_->workers, options_.threads));
   update_combined();
-  stage_->set_chunks(caches_->combined);
   // The previous result, alive through the analysis, which may take its features and bounds (a chunk refined
   // within its voxels) and compares against it; gone once the analysis ends, or fails.
   const std::optional<AnalysisResult> previous = std::exchange(result_, std::nullopt);
+  stage_->set_chunks(caches_->combined, previous ? &previous->voxels : nullptr);
   caches_->previous = previous ? &*previous : nullptr;
   struct Forget {
     detail::AnalysisCaches& caches;

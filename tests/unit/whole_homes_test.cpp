@@ -5,6 +5,7 @@
 #include "roomsense/export.h"
 #include "roomsense/surfaces.h"
 #include "roomsense/synthetic.h"
+#include "../../core/src/pipeline/storeys.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@
 #include <span>
 #include <cmath>
 #include <cstdio>
+#include <random>
 
 namespace roomsense {
 namespace {
@@ -65,6 +67,29 @@ std::size_t storey_index(const AnalysisResult& r, const synth::RoomSpec& spec) {
 
 bool in_rect(const synth::Rect& rect, glm::vec2 p, float margin) {
   return p.x > rect.lo.x - margin && p.x < rect.hi.x + margin && p.y > rect.lo.y - margin && p.y < rect.hi.y + margin;
+}
+
+// An IncrementalAnalysis counts the horizontal surfaces per level (which find the storeys' slabs) again only in
+// the columns that changed: equal to counting the whole grid, step after step of random changes.
+TEST(Storeys, HorizontalCountsUpdatedInChangedColumnsEqualTheWholeCount) {
+  GridSpec spec;
+  spec.nx = 20, spec.ny = 16, spec.nz = 18;
+  std::mt19937 random(3);
+  VoxelGrid grid(spec);
+  for (std::uint8_t& cell : grid.cells) cell = random() % 3 == 0;
+  std::vector<std::uint32_t> counts = detail::horizontal_counts(grid);
+  for (int step = 0; step < 20; ++step) {
+    VoxelGrid next = grid;
+    std::vector<std::uint8_t> changed(spec.column_count(), 0);
+    for (int k = 0; k < 12; ++k) {
+      const std::size_t col = random() % spec.column_count();
+      changed[col] = 1;
+      for (int n = 0; n < 4; ++n) next.cells[col * std::size_t(spec.ny) + random() % std::size_t(spec.ny)] ^= 1;
+    }
+    counts = detail::horizontal_counts(next, grid, counts, changed);
+    ASSERT_EQ(counts, detail::horizontal_counts(next)) << "step " << step;
+    grid = std::move(next);
+  }
 }
 
 TEST(Storeys, EveryStoreyOfTheHouseAtItsHeights) {

@@ -62,6 +62,9 @@ struct AnalysisCaches {
   const AnalysisResult* previous = nullptr;
   std::uint64_t serial = 0;  // the analyses begun: the latest's number
   LabelGrid previous_labels;
+  // The horizontal counts (storeys.h) of analysis number horizontal_serial's grid.
+  std::vector<std::uint32_t> horizontal;
+  std::uint64_t horizontal_serial = 0;
   CombinedScan combined;
   ChunkBandSums band_sums;  // of `combined`
   std::vector<MeshMemo> bounds;  // the home's bounds mesh, then each room's (AnalysisResult::room_bounds)

@@ -199,10 +199,21 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   if (!r.voxels.levels)
     return no_room("no floor and ceiling found: no two horizontal levels are at least " + metres(min_height) +
                    " apart (" + std::to_string(spec.ny) + " levels scanned)");
+  // An IncrementalAnalysis's previous result, alive through this analysis, which may take its features and
+  // bounds (a chunk refined within its voxels) and compares against it.
+  const AnalysisResult* previous = caches ? caches->previous : nullptr;
+  // Which columns' voxels changed since the previous analysis: its horizontal counts and the features' column
+  // steps are derived again there.
+  const std::vector<std::uint8_t> changed = previous != nullptr && previous->voxels.grid.spec == spec
+                                                ? detail::changed_columns(previous->voxels.grid, r.voxels.grid)
+                                                : std::vector<std::uint8_t>();
   // Beyond the thesis: the stage's pair may span several storeys (storeys.h); the main one gets its own counts.
-  detail::StoreyLevels storeys =
-      detail::find_storeys(r.voxels.level_counts, detail::horizontal_counts(r.voxels.grid), *r.voxels.levels,
-                           min_separation);
+  std::vector<std::uint32_t> horizontal =
+      !changed.empty() && caches->horizontal_serial + 1 == serial
+          ? detail::horizontal_counts(r.voxels.grid, previous->voxels.grid, std::move(caches->horizontal), changed)
+          : detail::horizontal_counts(r.voxels.grid);
+  detail::StoreyLevels storeys = detail::find_storeys(r.voxels.level_counts, horizontal, *r.voxels.levels, min_separation);
+  if (caches) caches->horizontal = std::move(horizontal), caches->horizontal_serial = serial;
   // Beyond the thesis (issue 15): a storey under a pitched roof reaches up to its ridge (raised_ceiling), below
   // the next storey's floor.
   // Every storey's levels, the main one first.
@@ -251,11 +262,6 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   LabelGrid labels = voxelize_labels(spec, scan.labels, options.voxel_test_budget, label_warnings);
   // An IncrementalAnalysis whose chunks changed within their voxels: the features of a storey on the levels of one
   // of the previous analysis's (and below, the bounds, where every storey is) are that analysis's.
-  const AnalysisResult* previous = caches ? caches->previous : nullptr;
-  // Which columns' voxels changed since the previous analysis: the features' column steps derive those again.
-  const std::vector<std::uint8_t> changed = previous != nullptr && previous->voxels.grid.spec == spec
-                                                ? detail::changed_columns(previous->voxels.grid, r.voxels.grid)
-                                                : std::vector<std::uint8_t>();
   const detail::GridChange change{serial - 1, serial, changed.empty() ? nullptr : &changed};
   const bool same_grid = previous != nullptr && previous->features && change.changed != nullptr &&
                          std::find(changed.begin(), changed.end(), std::uint8_t{1}) == changed.end() &&

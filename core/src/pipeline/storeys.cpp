@@ -39,15 +39,32 @@ std::vector<FloorCeiling> split(std::span<const std::uint32_t> counts, std::span
 
 }  // namespace
 
+namespace {
+
+// Adds `sign` (+1 or -1, mod 2^32) to out[y] for each voxel of column `col` with an empty voxel above or below.
+void count_horizontal(const VoxelGrid& grid, std::size_t col, std::uint32_t sign, std::vector<std::uint32_t>& out) {
+  const int ny = grid.spec.ny;
+  const std::uint8_t* v = grid.cells.data() + col * std::size_t(ny);
+  for (int y = 0; y < ny; ++y)
+    if (v[y] && (y == 0 || !v[y - 1] || y + 1 == ny || !v[y + 1])) out[std::size_t(y)] += sign;
+}
+
+}  // namespace
+
 std::vector<std::uint32_t> horizontal_counts(const VoxelGrid& grid) {
-  const GridSpec& s = grid.spec;
-  std::vector<std::uint32_t> out(std::size_t(s.ny), 0);
-  for (std::size_t col = 0; col < s.column_count(); ++col) {
-    const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
-    for (int y = 0; y < s.ny; ++y)
-      if (v[y] && (y == 0 || !v[y - 1] || y + 1 == s.ny || !v[y + 1])) ++out[std::size_t(y)];
-  }
+  std::vector<std::uint32_t> out(std::size_t(grid.spec.ny), 0);
+  for (std::size_t col = 0; col < grid.spec.column_count(); ++col) count_horizontal(grid, col, 1, out);
   return out;
+}
+
+std::vector<std::uint32_t> horizontal_counts(const VoxelGrid& grid, const VoxelGrid& previous,
+                                             std::vector<std::uint32_t> before, const std::vector<std::uint8_t>& changed) {
+  for (std::size_t col = 0; col < changed.size(); ++col) {
+    if (!changed[col]) continue;
+    count_horizontal(previous, col, ~std::uint32_t{0}, before);
+    count_horizontal(grid, col, 1, before);
+  }
+  return before;
 }
 
 StoreyLevels find_storeys(std::span<const std::uint32_t> counts, std::span<const std::uint32_t> horizontal,

@@ -11,6 +11,10 @@ namespace roomsense::detail {
 // Per level, the voxels with an empty voxel right above or right below: horizontal surfaces. A wall's voxels
 // stack up in their column, so they count only where the wall ends.
 std::vector<std::uint32_t> horizontal_counts(const VoxelGrid& grid);
+// The same from `previous`'s counts `before`, counted again in the columns `changed` marks (where `grid` and
+// `previous`, of one spec, differ).
+std::vector<std::uint32_t> horizontal_counts(const VoxelGrid& grid, const VoxelGrid& previous,
+                                             std::vector<std::uint32_t> before, const std::vector<std::uint8_t>& changed);
 
 struct StoreyLevels {
   FloorCeiling main;                 // the voxel stage's pair, or the storey of it that holds its fuller level

@@ -258,7 +258,9 @@ int main(int argc, char** argv) {
       const AnalysisResult& first = first_result(state, inc, *versions);
       const GridSpec grid = first.voxels.grid.spec;
       const float floor_y = first.floor_y;
-      constexpr std::uint64_t kObject = std::uint64_t{1} << 62;  // beyond split_into_blocks's ids
+      // Below split_into_blocks's ids (about 2^63): the object comes first in id order, so every update also
+      // copies every block into the combined scan again (incremental.h), the most an added chunk costs there.
+      constexpr std::uint64_t kObject = std::uint64_t{1} << 62;
       std::size_t turn = 0;
       time_updates(state, inc, [&] {
         const std::size_t place = (turn / 2) % 24;

@@ -5,7 +5,8 @@
 // all its chunks, in id order, as one scan. That result equals analyze(combined_scan(), options) exactly,
 // timings aside. What it reuses between results, each only where what it reads is as before:
 // - each chunk's voxels (its triangles' marks on the grid, kept per chunk while the grid and the chunk are
-//   unchanged): a change voxelizes only the chunks it touched;
+//   unchanged): a change voxelizes only the chunks it touched; and the level counts, column counts and
+//   horizontal-surface counts, counted again only in the columns of the chunks voxelized again or dropped;
 // - the combined scan, copied again from the first changed chunk (in id order) on, and each chunk's input
 //   checks (its finite vertices' bounds, against the outlier ranges) and its surface heights' sums (exact in
 //   any grouping), so unchanged chunks cost those passes nothing;
@@ -21,9 +22,11 @@
 // - an area type's whole reduction (deduplication, packing) where nothing its searches read changed, and its
 //   growth where its packed areas are also as before;
 // - packing's decisions away from the rectangles that changed (areas/reduce.h: PackReplay);
+// - each area's reach where the wall areas are as before: kept while the floor area that decided it is there,
+//   and tested only against the floor areas added (areas/classify.h: ReachMemo);
 // - each bounds mesh's slices (the home's, each room's): only the slices through voxel layers whose bounds
 //   volume changed are meshed again (bounds/mesh_memo.h).
-// Levels, reach, the ceilings and walls, areas and bounds volumes are derived again.
+// The levels' choice, the ceilings and walls, areas and bounds volumes are derived again.
 // An unchanged set of chunks returns the previous result at once.
 #pragma once
 #include "roomsense/analysis.h"

@@ -37,10 +37,6 @@ std::vector<FloorCeiling> split(std::span<const std::uint32_t> counts, std::span
   return out;
 }
 
-}  // namespace
-
-namespace {
-
 // Adds `sign` (+1 or -1, mod 2^32) to out[y] for each voxel of column `col` with an empty voxel above or below.
 void count_horizontal(const VoxelGrid& grid, std::size_t col, std::uint32_t sign, std::vector<std::uint32_t>& out) {
   const int ny = grid.spec.ny;

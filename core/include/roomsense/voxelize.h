@@ -116,5 +116,7 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
 std::vector<std::uint32_t> count_levels(const VoxelGrid& grid);
 void count_columns(const VoxelGrid& grid, const std::optional<FloorCeiling>& levels,
                    std::vector<std::uint32_t>& column_counts, std::vector<std::uint8_t>& column_any);
+// count_columns's count of one column: its voxels in [levels.floor, levels.ceiling].
+std::uint32_t count_column(const VoxelGrid& grid, std::size_t column, const FloorCeiling& levels);
 
 }  // namespace roomsense

@@ -40,21 +40,21 @@ struct ReachWall : ReachFloor {
       : ReachFloor(a), top_left(a.corners[3].x, a.corners[3].z), top_right(a.corners[2].x, a.corners[2].z) {}
 };
 
+class WallSegments;  // reach.cpp: V_Wall's top edges bucketed in X-Z
+
 // What assign_reach found in an IncrementalAnalysis's previous analysis of a storey (its SearchCache keeps it).
 // An area's reach is a function of what reach reads of the area, the set of V_Floor, V_Wall, the floor's height
 // and three parameters: whether some floor area with a gap below the close distance is visible, else some other.
 // So where V_Wall, the height and the parameters are the previous ones, an area found before keeps what it saw
 // while the floor that showed it is still there, and only the floors V_Floor gained can make it see more.
-class WallSegments;  // reach.cpp: V_Wall's top edges bucketed in X-Z
-
+// Empty (no segments) until an analysis wrote it.
 struct ReachMemo {
   using AreaKey = std::array<std::uint32_t, 11>;   // the bits of what reach reads of an area
   using FloorKey = std::array<std::uint32_t, 3>;   // of a ReachFloor
-  bool valid = false;
-  std::vector<ReachFloor> floors;
+  std::vector<FloorKey> floors;  // V_Floor
   std::vector<ReachWall> walls;
   std::array<std::uint32_t, 4> scalars{};  // the floor's height, close_distance, close_height, wall_view_cone_deg
-  std::shared_ptr<const WallSegments> segments;  // of `walls`, kept while they are
+  std::shared_ptr<const WallSegments> segments;  // of `walls`
   // Per area of the previous analysis: its key, what it saw (FloorIndex::Visible in reach.cpp) and the floor
   // that decided it (for None, none).
   std::vector<AreaKey> areas;

@@ -277,10 +277,11 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
   // The previous analysis's reach holds where it read these walls, floor height and parameters (ReachMemo).
   const std::array<std::uint32_t, 4> scalars{bits(floor_y), bits(params.close_distance), bits(params.close_height),
                                              bits(params.wall_view_cone_deg)};
-  const bool known = memo != nullptr && memo->valid && memo->scalars == scalars && same_walls(memo->walls, walls);
+  const bool known =
+      memo != nullptr && memo->segments && memo->scalars == scalars && same_walls(memo->walls, walls);
   // The walls' buckets, the previous analysis's where its walls are these.
   const std::shared_ptr<const WallSegments> kept_segments =
-      known && memo->segments ? memo->segments : std::make_shared<const WallSegments>(walls, 1.0);
+      known ? memo->segments : std::make_shared<const WallSegments>(walls, 1.0);
   const WallSegments& segments = *kept_segments;
   const std::vector<ReachMemo::FloorKey> keys = memo != nullptr ? floor_keys(floors) : std::vector<ReachMemo::FloorKey>();
   std::optional<KeyIndex<ReachMemo::FloorKey>> floors_now;
@@ -289,8 +290,7 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
   if (known) {
     floors_now.emplace(keys);
     areas_before.emplace(memo->areas);
-    const std::vector<ReachMemo::FloorKey> before = floor_keys(memo->floors);
-    const KeyIndex floors_before(before);
+    const KeyIndex floors_before(memo->floors);
     for (std::size_t i = 0; i < keys.size(); ++i)
       if (floors_before.find(keys[i]) == FirstIndex::kAbsent) added.push_back(i);
   }
@@ -378,7 +378,7 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
     }
   });
   if (memo == nullptr) return;
-  ReachMemo next{true, floors, walls, scalars, kept_segments, std::move(area_keys), {}, {}, searched.load()};
+  ReachMemo next{keys, walls, scalars, kept_segments, std::move(area_keys), {}, {}, searched.load()};
   next.seen.reserve(found.size());
   next.witness.reserve(found.size());
   for (const FloorIndex::Found& f : found) {

@@ -360,12 +360,16 @@ void count_columns(const VoxelGrid& grid, const std::optional<FloorCeiling>& lev
   column_any.assign(s.column_count(), 0);
   if (!levels) return;
   for (std::size_t col = 0; col < s.column_count(); ++col) {
-    const std::uint8_t* cells = grid.cells.data() + col * std::size_t(s.ny);
-    std::uint32_t n = 0;
-    for (int y = levels->floor; y <= levels->ceiling; ++y) n += cells[y];
-    column_counts[col] = n;
-    column_any[col] = n > 0 ? 1 : 0;
+    column_counts[col] = count_column(grid, col, *levels);
+    column_any[col] = column_counts[col] > 0 ? 1 : 0;
   }
+}
+
+std::uint32_t count_column(const VoxelGrid& grid, std::size_t column, const FloorCeiling& levels) {
+  const std::uint8_t* cells = grid.cells.data() + column * std::size_t(grid.spec.ny);
+  std::uint32_t n = 0;
+  for (int y = levels.floor; y <= levels.ceiling; ++y) n += cells[y];
+  return n;
 }
 
 VoxelStageResult CpuVoxelStage::run(const VoxelizeRequest& request) {

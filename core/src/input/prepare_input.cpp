@@ -45,9 +45,11 @@ std::pair<float, float> both_tails(std::vector<float>& v, std::size_t k) {
       low_ties += x == low_bound;
       high_ties += x == high_bound;
     }
-    std::vector<float> lower(below > k ? below : 0), upper(above > k ? above : 0);
-    if (!lower.empty() || !upper.empty()) {
-      // By blocks of 16, most of which hold none of them: a test of the block (it vectorizes), then its values.
+    // The values past either bound, where more than k lie past one: by blocks of 16, most of which hold none of
+    // them, a test of the block (it vectorizes), then its values.
+    std::vector<float> lower, upper;
+    if (below > k || above > k) {
+      lower.resize(below), upper.resize(above);
       constexpr std::size_t kBlock = 16;
       float* l = lower.data();
       float* u = upper.data();
@@ -55,21 +57,19 @@ std::pair<float, float> both_tails(std::vector<float>& v, std::size_t k) {
         const std::size_t end = std::min(n, begin + kBlock);
         std::uint32_t past = 0;
         for (std::size_t i = begin; i < end; ++i) past |= std::uint32_t(v[i] < low_bound) | std::uint32_t(v[i] > high_bound);
-        for (std::size_t i = begin; past != 0 && i < end; ++i)
-          if (v[i] < low_bound) {
-            if (!lower.empty()) *l++ = v[i];
-          } else if (v[i] > high_bound && !upper.empty()) {
-            *u++ = v[i];
-          }
+        for (std::size_t i = begin; past != 0 && i < end; ++i) {
+          if (v[i] < low_bound) *l++ = v[i];
+          if (v[i] > high_bound) *u++ = v[i];
+        }
       }
     }
-    if (!lower.empty()) {
+    if (below > k) {
       std::nth_element(lower.begin(), lower.begin() + std::ptrdiff_t(k), lower.end());
       lo = lower[k];
     } else if (below + low_ties > k) {
       lo = low_bound;
     }
-    if (!upper.empty()) {
+    if (above > k) {
       std::nth_element(upper.begin(), upper.begin() + std::ptrdiff_t(k), upper.end(), std::greater<float>());
       hi = upper[k];
     } else if (above + high_ties > k) {

@@ -185,11 +185,8 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     r.column_any = previous->column_any;
     for (std::size_t col = 0; col < touched.size(); ++col) {
       if (!touched[col]) continue;
-      const std::uint8_t* is = column(r.grid, col);
-      std::uint32_t n = 0;
-      for (int y = r.levels->floor; y <= r.levels->ceiling; ++y) n += is[y];
-      r.column_counts[col] = n;
-      r.column_any[col] = n > 0 ? 1 : 0;
+      r.column_counts[col] = count_column(r.grid, col, *r.levels);
+      r.column_any[col] = r.column_counts[col] > 0 ? 1 : 0;
     }
   }
 

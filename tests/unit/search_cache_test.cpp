@@ -219,9 +219,65 @@ TEST(GrowthReplay, EqualsGrowingAgainAfterChangesAnywhere) {
   EXPECT_LT(double(all_replay_reads), 0.6 * double(all_fresh_reads));
 }
 
+// Floors and ceilings whose height a re-sent chunk refined grow as they did (their cells are columns), so a replay
+// takes their growth where their samples stay in the same layers of sample cells; where a height moves areas into
+// the layer of others they meet, they now conflict, and grow afresh. Each time, equal to growing from nothing.
+TEST(GrowthReplay, TakesGrowthAcrossARefinedHeightWhileSamplesKeepTheirLayers) {
+  const GridSpec s = grid();
+  std::vector<std::uint8_t> free(s.column_count(), 1);
+  for (int z = 0; z < s.nz; ++z) free[s.column(30, z)] = 0;
+  for (int x = 0; x < s.nx; ++x) free[s.column(x, 20)] = 0;
+  // Group a at a height that changes, group b at 0.2 m, over the same columns (b's squares overlap a's).
+  const auto squares_at = [&](float a_height) {
+    std::vector<Area> out;
+    for (const glm::vec2 at : {glm::vec2(0.4f, 0.3f), glm::vec2(1.9f, 1.2f), glm::vec2(0.5f, 2.6f)}) {
+      out.push_back(floor_square(s, at.x, at.y, 0.4f));
+      for (glm::vec3& c : out.back().corners) c.y = a_height;
+      out.back().center.y = a_height;
+    }
+    for (const glm::vec2 at : {glm::vec2(0.6f, 0.5f), glm::vec2(2.1f, 1.0f)}) {
+      out.push_back(floor_square(s, at.x, at.y, 0.4f));
+      for (glm::vec3& c : out.back().corners) c.y = 0.2f;
+      out.back().center.y = 0.2f;
+    }
+    return out;
+  };
+  const AreaParams params;
+  const auto rule = [&](std::size_t* reads) {
+    GrowthRule r = rule_over(s, free, reads);
+    r.cells_read_height = false;
+    return r;
+  };
+  GrowthRecord record;
+  std::vector<Area> grown = squares_at(0.0f);
+  std::size_t reads = 0;
+  grow_areas(grown, rule(&reads), params, {}, {}, &record);
+  const std::vector<glm::ivec2> rows(std::size_t(s.nz), glm::ivec2(s.nx, -1));  // no column changed
+  // 0.0003 m: the same layer; 0.2 m: b's layer, where a and b meet; back below.
+  for (const float height : {0.0003f, 0.2f, 0.0002f, -0.0004f}) {
+    const std::vector<Area> squares = squares_at(height);
+    std::vector<Area> expected = squares;
+    std::size_t fresh_reads = 0, replay_reads = 0;
+    grow_areas(expected, rule(&fresh_reads), params);
+    GrowthRecord next;
+    std::vector<Area> replayed = squares;
+    grow_areas(replayed, rule(&replay_reads), params, {}, {&record, &s, rows}, &next);
+    ASSERT_TRUE(same_areas(replayed, expected)) << "height " << height;
+    if (height == 0.0003f) EXPECT_EQ(replay_reads, 0u);  // every square moved as before
+    else EXPECT_GT(replay_reads, 0u) << "height " << height;
+    record = std::move(next);
+  }
+  // At b's layer a's squares stop at b's: their growth differs from that at 0.
+  std::vector<Area> apart = squares_at(0.0f), met = squares_at(0.2f);
+  grow_areas(apart, rule(&reads), params);
+  grow_areas(met, rule(&reads), params);
+  EXPECT_NE(apart[0].half_width + apart[0].half_height, met[0].half_width + met[0].half_height);
+}
+
 // Reach from the memo equals reach searched afresh, after every change of V_Floor (floors removed, added,
-// reordered), of V_Wall and of the areas, on a room split by a partition wall, so that areas see floors near
-// (Close), only far (Distance) or none (None); and where only floors changed, most areas are not searched.
+// reordered), of V_Wall, of the areas and of the floor's height, on a room split by a partition wall, so that
+// areas see floors near (Close), only far (Distance) or none (None); and where only floors or the floor's height
+// changed (a re-sent chunk refines the height), most areas are not searched.
 TEST(ReachMemo, EqualsReachSearchedAfreshAsFloorsComeAndGo) {
   const auto area = [](AreaType type, glm::vec3 center, float half_width, glm::vec3 normal) {
     Area a;
@@ -277,7 +333,7 @@ TEST(ReachMemo, EqualsReachSearchedAfreshAsFloorsComeAndGo) {
   AreaParams params;
   ReachMemo memo;
   std::array<std::size_t, 4> reaches{};
-  std::size_t kept_steps = 0;
+  std::size_t kept_steps = 0, decided_by_height = 0;
   for (int step = 0; step < 30; ++step) {
     bool walls_changed = false;
     if (step > 0) {
@@ -296,13 +352,20 @@ TEST(ReachMemo, EqualsReachSearchedAfreshAsFloorsComeAndGo) {
     std::vector<ReachWall> walls;
     for (const Area& w : wall_areas) walls.emplace_back(w);
 
-    std::vector<Area> fresh = areas, from_memo = areas;
-    assign_reach(fresh, floors, walls, 0.0f, params, 1);
-    assign_reach(from_memo, floors, walls, 0.0f, params, 2, &memo);
+    // The floor's height, and the floor areas' with it: low walls within reach of a hand at one, not another.
+    const float floor_y = step % 3 == 0 ? 0.0f : step % 3 == 1 ? 0.45f : -0.35f;
+    for (Area& a : areas)
+      if (a.type == AreaType::Floor) a.center.y = floor_y;
+
+    std::vector<Area> fresh = areas, from_memo = areas, at_zero = areas;
+    assign_reach(fresh, floors, walls, floor_y, params, 1);
+    assign_reach(from_memo, floors, walls, floor_y, params, 2, &memo);
+    assign_reach(at_zero, floors, walls, 0.0f, params, 1);
     for (std::size_t i = 0; i < areas.size(); ++i) {
       ASSERT_EQ(from_memo[i].reach, fresh[i].reach) << "step " << step << ", area " << i;
       ASSERT_EQ(from_memo[i].flags, fresh[i].flags) << "step " << step << ", area " << i;
       ++reaches[std::size_t(fresh[i].reach)];
+      decided_by_height += fresh[i].reach != at_zero[i].reach;
     }
     if (step > 0 && !walls_changed) {
       EXPECT_LT(memo.searched, areas.size() / 2) << "step " << step;
@@ -312,6 +375,7 @@ TEST(ReachMemo, EqualsReachSearchedAfreshAsFloorsComeAndGo) {
     }
   }
   EXPECT_GT(kept_steps, 20u);
+  EXPECT_GE(decided_by_height, 20u);
   for (const Reach r : {Reach::Close, Reach::Distance, Reach::None}) EXPECT_GE(reaches[std::size_t(r)], 30u) << int(r);
 }
 

@@ -43,17 +43,18 @@ struct ReachWall : ReachFloor {
 class WallSegments;  // reach.cpp: V_Wall's top edges bucketed in X-Z
 
 // What assign_reach found in an IncrementalAnalysis's previous analysis of a storey (its SearchCache keeps it).
-// An area's reach is a function of what reach reads of the area, the set of V_Floor, V_Wall, the floor's height
-// and three parameters: whether some floor area with a gap below the close distance is visible, else some other.
-// So where V_Wall, the height and the parameters are the previous ones, an area found before keeps what it saw
-// while the floor that showed it is still there, and only the floors V_Floor gained can make it see more.
-// Empty (no segments) until an analysis wrote it.
+// What an area sees is a function of what reach reads of the area in X-Z, the set of V_Floor, V_Wall and two
+// parameters: whether some floor area with a gap below the close distance is visible, else some other. (Heights
+// decide only whether a wall seeing a near floor is low enough for Close, which is tested anew each time: a floor
+// height refined by a re-sent chunk keeps the memo.) So where V_Wall and the parameters are the previous ones, an
+// area found before keeps what it saw while the floor that showed it is still there, and only the floors V_Floor
+// gained can make it see more. Empty (no segments) until an analysis wrote it.
 struct ReachMemo {
-  using AreaKey = std::array<std::uint32_t, 11>;   // the bits of what reach reads of an area
+  using AreaKey = std::array<std::uint32_t, 10>;   // the bits of what reach reads of an area in X-Z
   using FloorKey = std::array<std::uint32_t, 3>;   // of a ReachFloor
   std::vector<FloorKey> floors;  // V_Floor
   std::vector<ReachWall> walls;
-  std::array<std::uint32_t, 4> scalars{};  // the floor's height, close_distance, close_height, wall_view_cone_deg
+  std::array<std::uint32_t, 2> scalars{};  // close_distance, wall_view_cone_deg
   std::shared_ptr<const WallSegments> segments;  // of `walls`
   // Per area of the previous analysis: its key, what it saw (FloorIndex::Visible in reach.cpp) and the floor
   // that decided it (for None, none).

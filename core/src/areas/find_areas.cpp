@@ -60,6 +60,7 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
     };
     return rule;
   }
+  rule.cells_read_height = type == 3;  // a top's level; floor and ceiling cells are columns
   if (type == 3) {
     rule.lookahead = 0.5f * voxel;
     for (int l = 1; l < params.reduction_offset; ++l) {  // Eq. 3.49: tops fewer levels apart are one top

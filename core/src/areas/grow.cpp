@@ -70,28 +70,57 @@ void set_size(Area& a, const AreaParams& params) {
 bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
 bool same_bits(const glm::vec3& a, const glm::vec3& b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
 
-// A hash of an area's corners' bits, for finding it among another growth's (same_bits decides).
-std::uint64_t corner_hash(const Area& a) {
+// A hash of an area's corners' bits (their heights left out where the rule's cells read none), for finding it
+// among another growth's (grows_alike decides).
+std::uint64_t corner_hash(const Area& a, const GrowthRule& rule) {
   WordHash h;
-  for (const glm::vec3& c : a.corners) h.add(c.x).add(c.y).add(c.z);
+  for (const glm::vec3& c : a.corners) {
+    h.add(c.x).add(c.z);
+    if (rule.cells_read_height) h.add(c.y);
+  }
   return h.value();
+}
+
+// Whether growth reads `a` and `b` alike: the same bits; or, where the rule's cells read no height, flat
+// horizontal areas the same but for their heights, whose samples lie in the same layers of sample cells at every
+// conflict depth. An extent's axes then have no height, so the samples' x and z are the same numbers, every
+// cell_at answers alike, and two areas' samples share a cell in one growth exactly when they do in the other.
+bool grows_alike(const Area& a, const Area& b, const GrowthRule& rule) {
+  if (detail::same_bits(a, b)) return true;
+  const auto flat = [](const Area& x) {
+    return x.normal.x == 0.0f && x.normal.z == 0.0f && std::ranges::all_of(x.corners, [&](const glm::vec3& c) {
+             return same_bits(c.y, x.corners[0].y);
+           });
+  };
+  if (rule.cells_read_height || !flat(a) || !flat(b)) return false;
+  Area lifted = b;  // b at a's height
+  for (glm::vec3& c : lifted.corners) c.y = a.corners[0].y;
+  lifted.center.y = a.center.y;
+  if (!detail::same_bits(a, lifted)) return false;
+  const auto layer = [&](const Area& x, float depth) {
+    return sample_cell(glm::vec3(0.0f, x.corners[0].y, 0.0f) + depth * x.normal, rule.step).y;
+  };
+  return layer(a, 0.0f) == layer(b, 0.0f) &&
+         std::ranges::all_of(rule.conflict_depths, [&](float depth) { return layer(a, depth) == layer(b, depth); });
 }
 
 constexpr std::uint32_t kNew = ~std::uint32_t{0};
 
-// Each of `areas`' index among `previous`, where an area of the same bits is there after the one the area before
+// Each of `areas`' index among `previous`, where an area that grows alike is there after the one the area before
 // it has (kNew otherwise): the matched areas keep their order, so that any sample cell two of them share has the
-// same first owner (SampleOwners) in both growths. Of equal areas, the first is matched.
-std::vector<std::uint32_t> match_previous(std::span<const Area> areas, const std::vector<Area>& previous) {
+// same first owner (SampleOwners) in both growths. Of such areas, the first is matched.
+std::vector<std::uint32_t> match_previous(std::span<const Area> areas, const std::vector<Area>& previous,
+                                          const GrowthRule& rule) {
   FirstIndex where;
   where.reserve(previous.size());
   for (std::uint32_t j = 0; j < previous.size(); ++j)
-    where.insert(corner_hash(previous[j]), j, [&](std::uint32_t i) { return detail::same_bits(previous[i], previous[j]); });
+    where.insert(corner_hash(previous[j], rule), j,
+                 [&](std::uint32_t i) { return grows_alike(previous[i], previous[j], rule); });
   std::vector<std::uint32_t> matched(areas.size(), kNew);
   std::int64_t last = -1;
   for (std::size_t k = 0; k < areas.size(); ++k) {
-    const std::uint32_t j =
-        where.find(corner_hash(areas[k]), [&](std::uint32_t i) { return detail::same_bits(previous[i], areas[k]); });
+    const std::uint32_t j = where.find(corner_hash(areas[k], rule),
+                                       [&](std::uint32_t i) { return grows_alike(previous[i], areas[k], rule); });
     if (j != FirstIndex::kAbsent && std::int64_t(j) > last) matched[k] = j, last = j;
   }
   return matched;
@@ -231,7 +260,7 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
   std::optional<ChangedRegion> changed;
   if (previous) {
     const GridSpec& spec = *replay.spec;
-    previous_of = match_previous(areas, previous->before);
+    previous_of = match_previous(areas, previous->before, rule);
     changed.emplace(ChangedRegion::Box{glm::ivec2(0), glm::ivec2(spec.nx - 1, spec.nz - 1)});
     for (std::size_t z = 0; z < replay.changed_rows.size(); ++z)
       if (const glm::ivec2 span = replay.changed_rows[z]; span.x <= span.y)

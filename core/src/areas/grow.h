@@ -32,6 +32,10 @@ struct GrowthRule {
   // voxel either side of their plane (as packing, reduce.h), furniture tops the levels Eq. 3.49 treats as one.
   std::vector<float> conflict_depths{0.0f};
   std::function<SurfaceCell(const glm::vec3& world, const Area& area)> cell_at;  // a point of the area's plane
+  // Whether cell_at reads a point's height or the area's. Where it reads neither (floor, ceiling), a flat area
+  // grows alike at any height at which its samples lie in the same layers of sample cells: a replay takes its
+  // growth across a floor or ceiling height that a re-sent chunk refined.
+  bool cells_read_height = true;
 };
 
 // One growth, for the next analysis's (issue 19): its areas before and after, and the edges each one moved, in
@@ -55,7 +59,8 @@ struct GrowthReplay {
 // step at a time, in turn, while the new strip is surface the search would accept (`strip_fill` of it Usable,
 // `fill` of the whole area, nothing Forbidden) and no other area's. The area stays a rectangle on its own axes; its size class becomes the
 // largest whose width (and height, for walls) it now holds, so an app asking for a class gets at least that.
-// An area that `replay`'s previous growth grew too (the same bits, in the same order among those) moves its
+// An area that `replay`'s previous growth grew too (the same bits, or as above the same but for its height, in
+// the same order among those) moves its
 // edges as it did there where nothing it read there changed: no feature column, and no other area's samples
 // (another area new, gone or grown otherwise). `record`, where given, receives this growth's record.
 void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams& params,

@@ -217,9 +217,9 @@ std::uint32_t bits(float v) { return std::bit_cast<std::uint32_t>(v); }
 
 ReachMemo::FloorKey key_of(const ReachFloor& f) { return {bits(f.center.x), bits(f.center.y), bits(f.half_width)}; }
 
-// What reach_of reads of an area.
+// What reach_of reads of an area to find what it sees (its height only decides Close, anew each time).
 ReachMemo::AreaKey key_of(const Area& a) {
-  return {std::uint32_t(a.type), bits(a.center.x), bits(a.center.y), bits(a.center.z), bits(a.half_width),
+  return {std::uint32_t(a.type), bits(a.center.x), bits(a.center.z), bits(a.half_width),
           bits(a.normal.x), bits(a.normal.z), bits(a.corners[3].x), bits(a.corners[3].z), bits(a.corners[2].x),
           bits(a.corners[2].z)};
 }
@@ -274,9 +274,8 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
   const double cone_cos = std::cos(double(params.wall_view_cone_deg) * std::numbers::pi / 180.0);
   using Visible = FloorIndex::Visible;
 
-  // The previous analysis's reach holds where it read these walls, floor height and parameters (ReachMemo).
-  const std::array<std::uint32_t, 4> scalars{bits(floor_y), bits(params.close_distance), bits(params.close_height),
-                                             bits(params.wall_view_cone_deg)};
+  // What the previous analysis's areas saw holds where it read these walls and parameters (ReachMemo).
+  const std::array<std::uint32_t, 2> scalars{bits(params.close_distance), bits(params.wall_view_cone_deg)};
   const bool known =
       memo != nullptr && memo->segments && memo->scalars == scalars && same_walls(memo->walls, walls);
   // The walls' buckets, the previous analysis's where its walls are these.

@@ -123,13 +123,20 @@ void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& 
   std::vector<Small> smalls;
   std::vector<std::size_t> small_cells;
   std::vector<std::pair<int, int>> border;  // (neighbour height, shared edges)
+  // A column with min_cells - 1 neighbours of its height lies in a large plateau: no search starts from it (one
+  // from a small plateau's column never reaches it, so the small plateaus found are the same).
+  const auto surely_large = [&](std::size_t c) {
+    int same = 0;
+    for_neighbours(c, [&](std::size_t n) { same += room[n] && height[n] == height[c]; });
+    return same + 1 >= min_cells;
+  };
   for (int pass = 0; pass < 8 && !from.empty(); ++pass) {
     // The small plateaus reached from `from`, as they are at the start of the pass.
     smalls.clear();
     small_cells.clear();
     int searches = 0;
     for (const std::size_t start : from) {
-      if (owner[start] >= 0) continue;
+      if (owner[start] >= 0 || surely_large(start)) continue;
       const int id = searches++, h = height[start];
       bool is_large = false;
       cells.clear();

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -51,6 +52,30 @@ TEST(Packing, KeepsTheSameSquaresWithoutRankingEverySquare) {
   // The comparison means something: many squares, a few kept.
   EXPECT_GT(compared, 100000u);
   EXPECT_GT(kept_total, 100u);
+}
+
+// The walls' dominant direction: their first edges' degrees (modulo 90, so a wall and the one across the corner
+// count alike) weighted by length and smoothed over ±1°. Walls at 27° (and 26° and 28° beside) outweigh longer
+// ones along an axis; in any order of the walls, each offset met many times.
+TEST(Packing, DominantDirectionWeighsWallsByLengthAndFoldsRightAngles) {
+  std::vector<Sized> walls;
+  const auto add = [&](int dx, int dz, int count) {
+    for (int i = 0; i < count; ++i) walls.push_back({PackedCandidate(glm::ivec3(10 + i, 5, 20), dx, dz, 3), AreaSize::Small});
+  };
+  add(4, 2, 6);    // 26.6° -> 27, 4.47 each
+  add(-2, 4, 4);   // 116.6° folds to 27
+  add(41, 20, 1);  // 26.0°, 45.6
+  add(15, 8, 3);   // 28.1°, 17 each
+  add(3, 0, 20);   // 0°, 60 in all: the most walls, less weight than 26-28° together
+  EXPECT_EQ(dominant_direction_deg(walls), 27.0);
+  std::reverse(walls.begin(), walls.end());
+  EXPECT_EQ(dominant_direction_deg(walls), 27.0);
+  add(0, 5, 20);   // 90° folds to 0: 160 there
+  EXPECT_EQ(dominant_direction_deg(walls), 0.0);
+  walls.erase(walls.end() - 20, walls.end());
+  add(4, 0, 30);   // 0° again, along the first walls' dx: 180 there
+  EXPECT_EQ(dominant_direction_deg(walls), 0.0);
+  EXPECT_EQ(dominant_direction_deg({}), 0.0);
 }
 
 }  // namespace

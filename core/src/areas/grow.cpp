@@ -168,6 +168,36 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
     extents.push_back({a.corners[0], x, glm::cross(a.normal, x), 0.0f, 2.0f * a.half_width, 0.0f, 2.0f * a.half_height});
   }
 
+  // Replay (issue 19): what an area reads while it grows lies within a few columns of where it ends (its last
+  // strips tested, the lookahead, the conflict depths, half a voxel to a wall's voxel, a sample cell across a
+  // column border). An area the previous growth grew, nothing within that of whose end there changed, moves
+  // as it did there: the same cells answer, and the same areas own the same samples. `changed` gathers the
+  // feature columns that changed, the areas new or gone, and the areas that moved otherwise than there.
+  constexpr int kReadMargin = 4;
+  const GrowthRecord* previous = replay.previous;
+  std::vector<std::uint32_t> previous_of;
+  std::optional<ChangedRegion> changed;
+  // Where nothing changed, every area moves as it did (a moved area only adds to `changed`) and no growth reads
+  // the sample owners: none are kept (a re-sent chunk that refined a floor height).
+  bool every_area_replayed = false;
+  if (previous) {
+    const GridSpec& spec = *replay.spec;
+    previous_of = match_previous(areas, previous->before, rule);
+    changed.emplace(ChangedRegion::Box{glm::ivec2(0), glm::ivec2(spec.nx - 1, spec.nz - 1)});
+    bool any_change = false;
+    const auto add = [&](const ChangedRegion::Box& box) { changed->add(box), any_change = true; };
+    for (std::size_t z = 0; z < replay.changed_rows.size(); ++z)
+      if (const glm::ivec2 span = replay.changed_rows[z]; span.x <= span.y)
+        add({glm::ivec2(span.x, int(z)), glm::ivec2(span.y, int(z))});
+    std::vector<std::uint8_t> kept(previous->before.size(), 0);
+    for (std::size_t k = 0; k < areas.size(); ++k) {
+      if (previous_of[k] != kNew) kept[previous_of[k]] = 1;
+      else add(columns_under(areas[k], spec, 0));
+    }
+    for (std::size_t j = 0; j < kept.size(); ++j)
+      if (!kept[j]) add(columns_under(previous->after[j], spec, 0));
+    every_area_replayed = !any_change;
+  }
   // Which area holds each sample cell. Opposite faces of a thin wall lie a voxel apart and never conflict.
   const bool horizontal = std::all_of(areas.begin(), areas.end(), [](const Area& a) { return std::fabs(a.normal.y) > 0.5f; });
   SampleOwners owner(horizontal ? glm::ivec3(3, 0, 3) : glm::ivec3(2, 2, 2));
@@ -176,8 +206,8 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
   // along an axis a quarter of its cubes'.
   std::size_t samples = 0;
   for (const Extent& e : extents) samples += std::size_t(sample_count(e.u1 - e.u0, h)) * std::size_t(sample_count(e.v1 - e.v0, h));
-  owner.reserve(samples / (horizontal ? 64 : 16) + 1);
-  for (std::uint32_t k = 0; k < extents.size(); ++k) {
+  if (!every_area_replayed) owner.reserve(samples / (horizontal ? 64 : 16) + 1);
+  for (std::uint32_t k = 0; k < extents.size() && !every_area_replayed; ++k) {
     const Extent& e = extents[k];
     for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
       for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j)
@@ -249,30 +279,6 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
     }
   };
 
-  // Replay (issue 19): what an area reads while it grows lies within a few columns of where it ends (its last
-  // strips tested, the lookahead, the conflict depths, half a voxel to a wall's voxel, a sample cell across a
-  // column border). An area the previous growth grew, nothing within that of whose end there changed, moves
-  // as it did there: the same cells answer, and the same areas own the same samples. `changed` gathers the
-  // feature columns that changed, the areas new or gone, and the areas that moved otherwise than there.
-  constexpr int kReadMargin = 4;
-  const GrowthRecord* previous = replay.previous;
-  std::vector<std::uint32_t> previous_of;
-  std::optional<ChangedRegion> changed;
-  if (previous) {
-    const GridSpec& spec = *replay.spec;
-    previous_of = match_previous(areas, previous->before, rule);
-    changed.emplace(ChangedRegion::Box{glm::ivec2(0), glm::ivec2(spec.nx - 1, spec.nz - 1)});
-    for (std::size_t z = 0; z < replay.changed_rows.size(); ++z)
-      if (const glm::ivec2 span = replay.changed_rows[z]; span.x <= span.y)
-        changed->add({glm::ivec2(span.x, int(z)), glm::ivec2(span.y, int(z))});
-    std::vector<std::uint8_t> kept(previous->before.size(), 0);
-    for (std::size_t k = 0; k < areas.size(); ++k) {
-      if (previous_of[k] != kNew) kept[previous_of[k]] = 1;
-      else changed->add(columns_under(areas[k], spec, 0));
-    }
-    for (std::size_t j = 0; j < kept.size(); ++j)
-      if (!kept[j]) changed->add(columns_under(previous->after[j], spec, 0));
-  }
   const auto previous_moves = [&](std::uint32_t j) {
     const std::uint32_t begin = j == 0 ? 0 : previous->moves_end[j - 1];
     return std::span<const std::uint8_t>(previous->moves.data() + begin, previous->moves_end[j] - begin);
@@ -283,7 +289,7 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
     Extent& e = extents[k];
     moves.clear();
     const auto move = [&](int edge) {  // the strip beyond `edge` becomes the area's
-      strip_samples(e, edge, h, [&](float u, float v) { mark(k, e.at(u, v)); });
+      if (!every_area_replayed) strip_samples(e, edge, h, [&](float u, float v) { mark(k, e.at(u, v)); });
       (edge == 0 ? e.v0 : edge == 1 ? e.u1 : edge == 2 ? e.v1 : e.u0) += (edge == 0 || edge == 3 ? -h : h);
       moves.push_back(std::uint8_t(edge));
     };

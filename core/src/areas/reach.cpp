@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <numbers>
 #include <optional>
 #include <unordered_map>
@@ -269,7 +270,9 @@ std::vector<ReachMemo::FloorKey> floor_keys(const std::vector<ReachFloor>& floor
 
 void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floors, const std::vector<ReachWall>& walls,
                   float floor_y, const AreaParams& params, unsigned threads, ReachMemo* memo) {
-  const FloorIndex floor_index(floors, 1.0);
+  // The floors' buckets, made by the first search: where the memo decides every area (a re-sent chunk), none.
+  std::once_flag index_made;
+  std::optional<FloorIndex> floor_index;
   const double close = params.close_distance;
   const double cone_cos = std::cos(double(params.wall_view_cone_deg) * std::numbers::pi / 180.0);
   using Visible = FloorIndex::Visible;
@@ -320,7 +323,8 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
       }
     }
     searched.fetch_add(1, std::memory_order_relaxed);
-    return floor_index.visible_floor(c, slack, close, gap_of, visible);
+    std::call_once(index_made, [&] { floor_index.emplace(floors, 1.0); });
+    return floor_index->visible_floor(c, slack, close, gap_of, visible);
   };
 
   const auto reach_of = [&](const Area& area, std::uint32_t j, FloorIndex::Found* decided) {

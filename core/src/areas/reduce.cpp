@@ -209,10 +209,32 @@ std::size_t CentreDeduplicator::add(const Candidates& rects, AreaSize size,
 
 double dominant_direction_deg(const std::vector<Sized>& walls) {
   std::array<double, 90> weight{};
+  // Walls' first edges are ring offsets, a few hundred distinct ones among thousands of walls: each offset's
+  // degree and length once (an atan2, a fmod and a hypot), added in the walls' order as before.
+  int reach = 0;
+  for (const Sized& w : walls) {
+    const glm::ivec3 e = w.c().corners[1] - w.c().corners[0];
+    reach = std::max({reach, std::abs(e.x), std::abs(e.z)});
+  }
+  struct Offset {
+    int degree = -1;  // not yet known
+    double length = 0.0;
+  };
+  const std::size_t side = std::size_t(2 * reach + 1);
+  std::vector<Offset> offsets(side * side <= (std::size_t{1} << 16) ? side * side : 0);
   for (const Sized& w : walls) {
     const Candidate c = w.c();
     const glm::ivec3 e = c.corners[1] - c.corners[0];
-    weight[std::size_t(std::lround(angle_mod_90(e.x, e.z))) % 90] += std::hypot(double(e.x), double(e.z));
+    const auto of = [&] { return Offset{int(std::lround(angle_mod_90(e.x, e.z)) % 90), std::hypot(double(e.x), double(e.z))}; };
+    Offset o;
+    if (offsets.empty()) {
+      o = of();
+    } else {
+      Offset& known = offsets[std::size_t(e.z + reach) * side + std::size_t(e.x + reach)];
+      if (known.degree < 0) known = of();
+      o = known;
+    }
+    weight[std::size_t(o.degree)] += o.length;
   }
   std::size_t best = 0;
   double best_weight = 0.0;

@@ -20,10 +20,12 @@
 //   reach of a row whose features changed, and a square search's band only within reach of the columns that
 //   changed (areas/search_cache.h);
 // - an area type's whole reduction (deduplication, packing) where nothing its searches read changed, and its
-//   growth where its packed areas are also as before;
+//   growth where its packed areas are also as before; otherwise each area's growth where nothing it read
+//   changed, floor and ceiling areas matched across a refined height (areas/grow.h);
 // - packing's decisions away from the rectangles that changed (areas/reduce.h: PackReplay);
-// - each area's reach where the wall areas are as before: kept while the floor area that decided it is there,
-//   and tested only against the floor areas added (areas/classify.h: ReachMemo);
+// - what each area sees for its reach where the wall areas are as before (whatever the floor's height): kept
+//   while the floor area that decided it is there, and tested only against the floor areas added
+//   (areas/classify.h: ReachMemo);
 // - each bounds mesh's slices (the home's, each room's): only the slices through voxel layers whose bounds
 //   volume changed are meshed again (bounds/mesh_memo.h).
 // The levels' choice, the ceilings and walls, areas and bounds volumes are derived again.

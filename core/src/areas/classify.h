@@ -61,6 +61,7 @@ struct ReachMemo {
   std::vector<AreaKey> areas;
   std::vector<std::uint8_t> seen;
   std::vector<FloorKey> witness;
+  std::vector<std::uint32_t> witness_at;  // its index in V_Floor; for None, none
   std::size_t searched = 0;  // of those areas, the ones whose floors were searched (not taken from the memo)
 };
 

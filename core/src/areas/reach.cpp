@@ -286,17 +286,24 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
       known ? memo->segments : std::make_shared<const WallSegments>(walls, 1.0);
   const WallSegments& segments = *kept_segments;
   const std::vector<ReachMemo::FloorKey> keys = memo != nullptr ? floor_keys(floors) : std::vector<ReachMemo::FloorKey>();
+  std::vector<ReachMemo::AreaKey> area_keys;
+  if (memo != nullptr) {
+    area_keys.reserve(areas.size());
+    for (const Area& a : areas) area_keys.push_back(key_of(a));
+  }
+  // The same floors and areas in the same order (a re-sent chunk that moved none): each area sees what it saw,
+  // through the same floor, and the memo stays as it is.
+  const bool same_lists = known && keys == memo->floors && area_keys == memo->areas;
   std::optional<KeyIndex<ReachMemo::FloorKey>> floors_now;
   std::optional<KeyIndex<ReachMemo::AreaKey>> areas_before;
   std::vector<std::size_t> added;  // the floors the previous analysis did not have
-  if (known) {
+  if (known && !same_lists) {
     floors_now.emplace(keys);
     areas_before.emplace(memo->areas);
     const KeyIndex floors_before(memo->floors);
     for (std::size_t i = 0; i < keys.size(); ++i)
       if (floors_before.find(keys[i]) == FirstIndex::kAbsent) added.push_back(i);
   }
-  std::vector<ReachMemo::AreaKey> area_keys(memo != nullptr ? areas.size() : 0);
   std::vector<FloorIndex::Found> found(memo != nullptr ? areas.size() : 0);
   std::atomic<std::size_t> searched = 0;
 
@@ -306,7 +313,9 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
   const auto look = [&](P2 c, double slack, auto gap_of, auto visible, std::uint32_t j) -> FloorIndex::Found {
     if (j != FirstIndex::kAbsent) {
       const auto seen = Visible(memo->seen[j]);
-      const std::uint32_t at = seen == Visible::None ? FirstIndex::kAbsent : floors_now->find(memo->witness[j]);
+      const std::uint32_t at = seen == Visible::None ? FirstIndex::kAbsent
+                               : same_lists           ? memo->witness_at[j]
+                                                      : floors_now->find(memo->witness[j]);
       const FloorIndex::Found before{seen, at == FirstIndex::kAbsent ? nullptr : &floors[at]};
       if (seen == Visible::Within && before.floor) return before;
       if (seen == Visible::None || (seen == Visible::Beyond && before.floor)) {
@@ -370,23 +379,27 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
   parallel_for(areas.size(), threads, 16, [&](std::size_t begin, std::size_t end, std::size_t) {
     for (std::size_t i = begin; i < end; ++i) {
       FloorIndex::Found decided;
-      std::uint32_t j = FirstIndex::kAbsent;
-      if (memo != nullptr) {
-        area_keys[i] = key_of(areas[i]);
-        if (known) j = areas_before->find(area_keys[i]);
-      }
+      const std::uint32_t j = same_lists ? std::uint32_t(i)
+                              : known    ? areas_before->find(area_keys[i])
+                                         : FirstIndex::kAbsent;
       areas[i].reach = reach_of(areas[i], j, &decided);
       areas[i].flags = category_flags(areas[i].type, areas[i].size, areas[i].reach);
       if (memo != nullptr) found[i] = decided;
     }
   });
   if (memo == nullptr) return;
-  ReachMemo next{keys, walls, scalars, kept_segments, std::move(area_keys), {}, {}, searched.load()};
+  if (same_lists) {
+    memo->searched = searched.load();  // none
+    return;
+  }
+  ReachMemo next{keys, walls, scalars, kept_segments, std::move(area_keys), {}, {}, {}, searched.load()};
   next.seen.reserve(found.size());
   next.witness.reserve(found.size());
+  next.witness_at.reserve(found.size());
   for (const FloorIndex::Found& f : found) {
     next.seen.push_back(std::uint8_t(f.visible));
     next.witness.push_back(f.floor ? key_of(*f.floor) : ReachMemo::FloorKey{});
+    next.witness_at.push_back(f.floor ? std::uint32_t(f.floor - floors.data()) : FirstIndex::kAbsent);
   }
   *memo = std::move(next);
 }

@@ -243,6 +243,36 @@ TEST(Bounds, SmallPlateausAreFlattenedAndLargerOnesKept) {
   EXPECT_EQ(kept[s.index(bx, y, bz)], 1);
 }
 
+TEST(Bounds, PlateausJustBelowTheSmallestSizeAreFlattenedWhateverTheirShape) {
+  // Posts of two levels on a flat floor, each plateau one column short of the smallest size kept or just at it:
+  // a pair and a bent three at 3 columns, a 2 x 2 block and a plus at 5. Every column of a small plateau has
+  // fewer neighbours of its height than the size less one, the test that spares searches from large ones.
+  GridSpec s;
+  s.nx = 16, s.ny = 6, s.nz = 16, s.voxel_size = 0.1f;
+  VoxelGrid grid(s);
+  std::vector<std::uint8_t> room(s.column_count(), 1);
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) grid.cells[s.index(x, 0, z)] = grid.cells[s.index(x, 5, z)] = 1;
+  const auto post = [&](std::initializer_list<std::pair<int, int>> columns) {
+    for (const auto& [x, z] : columns) grid.cells[s.index(x, 1, z)] = grid.cells[s.index(x, 2, z)] = 1;
+  };
+  post({{2, 2}, {3, 2}});                          // a pair
+  post({{8, 2}, {9, 2}, {9, 3}});                  // three, bent
+  post({{2, 8}, {3, 8}, {2, 9}, {3, 9}});          // a 2 x 2 block
+  post({{9, 8}, {8, 9}, {9, 9}, {10, 9}, {9, 10}});  // a plus
+  const FloorCeiling levels{0, 5, 0, 5};
+  const auto standing = [&](float min_area, int x, int z) {
+    return bounds_volume(grid, levels, 3, room, BoundsParams{min_area})[s.index(x, 1, z)] != 0;
+  };
+  // 3 columns at least (0.03 m²): the pair goes, the bent three stays.
+  EXPECT_FALSE(standing(0.03f, 2, 2));
+  EXPECT_TRUE(standing(0.03f, 9, 2));
+  // 5 columns at least: the block goes, the plus stays; so does a pair at 2 columns.
+  EXPECT_FALSE(standing(0.05f, 3, 9));
+  EXPECT_TRUE(standing(0.05f, 9, 9));
+  EXPECT_TRUE(standing(0.02f, 3, 2));
+}
+
 TEST(Bounds, TheRoomIsHollowAndTheFloorIsSolid) {
   const test::AnalysedRoom& room = test::analysed(synth::default_room());
   const AnalysisResult& r = room.result;

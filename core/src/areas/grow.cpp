@@ -202,16 +202,18 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
   const bool horizontal = std::all_of(areas.begin(), areas.end(), [](const Area& a) { return std::fabs(a.normal.y) > 0.5f; });
   SampleOwners owner(horizontal ? glm::ivec3(3, 0, 3) : glm::ivec3(2, 2, 2));
   const auto mark = [&](std::uint32_t k, const glm::vec3& p) { owner.insert(sample_cell(p, h), k); };
-  // The tiles the areas' samples take before growth: a horizontal plane fills its flat tiles' 64 cells, a wall
-  // along an axis a quarter of its cubes'.
-  std::size_t samples = 0;
-  for (const Extent& e : extents) samples += std::size_t(sample_count(e.u1 - e.u0, h)) * std::size_t(sample_count(e.v1 - e.v0, h));
-  if (!every_area_replayed) owner.reserve(samples / (horizontal ? 64 : 16) + 1);
-  for (std::uint32_t k = 0; k < extents.size() && !every_area_replayed; ++k) {
-    const Extent& e = extents[k];
-    for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
-      for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j)
-        mark(k, e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h));
+  if (!every_area_replayed) {
+    // The tiles the areas' samples take before growth: a horizontal plane fills its flat tiles' 64 cells, a wall
+    // along an axis a quarter of its cubes'.
+    std::size_t samples = 0;
+    for (const Extent& e : extents) samples += std::size_t(sample_count(e.u1 - e.u0, h)) * std::size_t(sample_count(e.v1 - e.v0, h));
+    owner.reserve(samples / (horizontal ? 64 : 16) + 1);
+    for (std::uint32_t k = 0; k < extents.size(); ++k) {
+      const Extent& e = extents[k];
+      for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
+        for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j)
+          mark(k, e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h));
+    }
   }
   const auto conflicts = [&](std::uint32_t k, const glm::vec3& p) {
     for (const float depth : rule.conflict_depths) {

@@ -60,9 +60,9 @@ struct GrowthReplay {
 // `fill` of the whole area, nothing Forbidden) and no other area's. The area stays a rectangle on its own axes; its size class becomes the
 // largest whose width (and height, for walls) it now holds, so an app asking for a class gets at least that.
 // An area that `replay`'s previous growth grew too (the same bits, or as above the same but for its height, in
-// the same order among those) moves its
-// edges as it did there where nothing it read there changed: no feature column, and no other area's samples
-// (another area new, gone or grown otherwise). `record`, where given, receives this growth's record.
+// the same order among those) moves its edges as it did there where nothing it read there changed: no feature
+// column, and no other area's samples (another area new, gone or grown otherwise). `record`, where given,
+// receives this growth's record.
 void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams& params,
                 const std::stop_token& stop = {}, const GrowthReplay& replay = {}, GrowthRecord* record = nullptr);
 

@@ -210,7 +210,7 @@ std::size_t CentreDeduplicator::add(const Candidates& rects, AreaSize size,
 double dominant_direction_deg(const std::vector<Sized>& walls) {
   std::array<double, 90> weight{};
   // Walls' first edges are ring offsets, a few hundred distinct ones among thousands of walls: each offset's
-  // degree and length once (an atan2, a fmod and a hypot), added in the walls' order as before.
+  // degree and length once (an atan2, two fmods and a hypot), added in the walls' order as before.
   int reach = 0;
   for (const Sized& w : walls) {
     const glm::ivec3 e = w.c().corners[1] - w.c().corners[0];

@@ -4,6 +4,7 @@
 #include "reduce.h"
 
 #include "../floor_int.h"
+#include "../key_table.h"
 #include "sample_raster.h"
 #include "roomsense/cancel.h"
 
@@ -211,30 +212,23 @@ double dominant_direction_deg(const std::vector<Sized>& walls) {
   std::array<double, 90> weight{};
   // Walls' first edges are ring offsets, a few hundred distinct ones among thousands of walls: each offset's
   // degree and length once (an atan2, two fmods and a hypot), added in the walls' order as before.
-  int reach = 0;
-  for (const Sized& w : walls) {
-    const glm::ivec3 e = w.c().corners[1] - w.c().corners[0];
-    reach = std::max({reach, std::abs(e.x), std::abs(e.z)});
-  }
   struct Offset {
-    int degree = -1;  // not yet known
-    double length = 0.0;
+    std::size_t degree;
+    double length;
   };
-  const std::size_t side = std::size_t(2 * reach + 1);
-  std::vector<Offset> offsets(side * side <= (std::size_t{1} << 16) ? side * side : 0);
+  std::vector<Offset> offsets;
+  KeyTable index;  // an offset's place in `offsets`
   for (const Sized& w : walls) {
     const Candidate c = w.c();
     const glm::ivec3 e = c.corners[1] - c.corners[0];
-    const auto of = [&] { return Offset{int(std::lround(angle_mod_90(e.x, e.z)) % 90), std::hypot(double(e.x), double(e.z))}; };
-    Offset o;
-    if (offsets.empty()) {
-      o = of();
-    } else {
-      Offset& known = offsets[std::size_t(e.z + reach) * side + std::size_t(e.x + reach)];
-      if (known.degree < 0) known = of();
-      o = known;
+    const std::uint64_t key = pack_key(e.x, 0, e.z);  // edges lie in the grid: far below 2^20 voxels an axis
+    std::uint32_t at = index.find(key);
+    if (at == KeyTable::kAbsent) {
+      at = std::uint32_t(offsets.size());
+      index.insert(key, at);
+      offsets.push_back({std::size_t(std::lround(angle_mod_90(e.x, e.z))) % 90, std::hypot(double(e.x), double(e.z))});
     }
-    weight[std::size_t(o.degree)] += o.length;
+    weight[offsets[at].degree] += offsets[at].length;
   }
   std::size_t best = 0;
   double best_weight = 0.0;

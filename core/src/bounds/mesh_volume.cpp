@@ -26,14 +26,6 @@ struct Point {
   int v[3];
   bool operator==(const Point& o) const { return v[0] == o.v[0] && v[1] == o.v[1] && v[2] == o.v[2]; }
 };
-struct PointHash {
-  std::size_t operator()(const Point& p) const {
-    std::size_t h = std::size_t(std::uint32_t(p.v[0]));
-    h = h * 0x9E3779B97F4A7C15ull ^ std::size_t(std::uint32_t(p.v[1]));
-    h = h * 0x9E3779B97F4A7C15ull ^ std::size_t(std::uint32_t(p.v[2]));
-    return h;
-  }
-};
 
 // The thesis's lexicographic order per plane: (a, b) = (X, Y) for slices along Z, (Y, Z) along X, (Z, X)
 // along Y. In each, e_a x e_b = +e_c, so a loop counter-clockwise in (a, b) is counter-clockwise seen
@@ -212,10 +204,7 @@ struct SliceRecord {
 class MeshBuilder {
  public:
   // Begins a slice: no point of an earlier slice lies in its plane. Returns where it begins, for since().
-  std::pair<std::size_t, std::size_t> begin_slice() {
-    index_.clear();
-    return {points_.size(), indices_.size()};
-  }
+  std::pair<std::size_t, std::size_t> begin_slice() const { return {points_.size(), indices_.size()}; }
   SliceRecord since(std::pair<std::size_t, std::size_t> mark) const {
     SliceRecord r{{points_.begin() + std::ptrdiff_t(mark.first), points_.end()}, {}};
     for (std::size_t i = mark.second; i < indices_.size(); ++i) r.triangles.push_back(indices_[i] - std::uint32_t(mark.first));
@@ -227,10 +216,11 @@ class MeshBuilder {
     points_.insert(points_.end(), r.points.begin(), r.points.end());
     for (const std::uint32_t i : r.triangles) indices_.push_back(first + i);
   }
-  std::uint32_t vertex(const Point& p) {
-    const auto [it, inserted] = index_.try_emplace(p, std::uint32_t(points_.size()));
-    if (inserted) points_.push_back(p);
-    return it->second;
+  std::size_t point_count() const { return points_.size(); }
+  // A point new to the slice being meshed (SliceMesher finds each once): its index.
+  std::uint32_t add_point(const Point& p) {
+    points_.push_back(p);
+    return std::uint32_t(points_.size() - 1);
   }
   void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) { indices_.insert(indices_.end(), {a, b, c}); }
 
@@ -261,7 +251,6 @@ class MeshBuilder {
  private:
   std::vector<Point> points_;
   std::vector<std::uint32_t> indices_;
-  std::unordered_map<Point, std::uint32_t, PointHash> index_;  // the points of the slice being meshed
 };
 
 // One slice's mask (Eq. 3.63 with the orientation folded in: +1 where the face points +c, -1 where it points
@@ -274,6 +263,7 @@ class SliceMesher {
         mask_(width_ * (std::size_t(nb) + 2), 0),
         label_(mask_.size(), -1),
         visited_(mask_.size(), 0),
+        point_(mask_.size(), kNoPoint),
         neighbour_{-std::ptrdiff_t(width_), 1, std::ptrdiff_t(width_), -1} {}
   // One non-zero cell (a, b) of the slice, in any order. Labelling and tracing visit only these, not the
   // whole slice, most of which a room's surface never crosses.
@@ -290,6 +280,7 @@ class SliceMesher {
     // Row order (b, then a): regions are numbered and traced in it, so the mesh does not depend on how the
     // cells were found.
     if (!std::is_sorted(filled_.begin(), filled_.end())) std::sort(filled_.begin(), filled_.end());
+    first_point_ = out.point_count();
     label_regions();
     loops_.clear();
     for (const std::size_t c : filled_) {
@@ -377,7 +368,7 @@ class SliceMesher {
       const bool ahead_right = value(ea + kLeftCell[r][0], eb + kLeftCell[r][1]) == m;
       const int nd = !ahead_left ? (d + 1) % 4 : ahead_right ? (d + 3) % 4 : d;
       const Point p = to_point(ea, eb);
-      if (nd != d || corners.contains(p)) loop.points.push_back({ea, eb, out.vertex(p)});
+      if (nd != d || corners.contains(p)) loop.points.push_back({ea, eb, vertex(ea, eb, p, out)});
       pa = ea;
       pb = eb;
       d = nd;
@@ -388,11 +379,22 @@ class SliceMesher {
     loops_.push_back(std::move(loop));
   }
 
+  // Lattice point (a, b)'s index in `out`, each point added once per slice: an index from before this slice's
+  // first point (an earlier slice's) or kNoPoint is none. No hashing: the slice's points are its lattice's.
+  std::uint32_t vertex(int a, int b, const Point& p, MeshBuilder& out) {
+    std::uint32_t& at = point_[cell(a, b)];  // a in [0, na], b in [0, nb]: inside the bordered mask
+    if (at == kNoPoint || at < first_point_) at = out.add_point(p);
+    return at;
+  }
+
+  static constexpr std::uint32_t kNoPoint = ~std::uint32_t{0};
   std::size_t width_;  // na + 2
   std::vector<signed char> mask_;
   std::vector<std::size_t> filled_;
   std::vector<int> label_;
   std::vector<std::uint8_t> visited_;
+  std::vector<std::uint32_t> point_;
+  std::size_t first_point_ = 0;
   std::vector<std::size_t> stack_;
   std::vector<Traced> loops_;
   std::vector<detail::Loop> holes_;
@@ -403,7 +405,7 @@ class SliceMesher {
 // Each slice of an axis, by c - c0 + 1 (slice c lies between voxel layers c and c + 1): the previous volume's
 // record where both layers are as they were (`kept`), else meshed; `records`, where not null, gets every slice's.
 struct SliceReuse {
-  const std::vector<SliceRecord>* kept = nullptr;
+  std::vector<SliceRecord>* kept = nullptr;  // moved into `records` as they are replayed
   const std::vector<std::uint8_t>* changed = nullptr;  // per voxel layer along the axis
   std::vector<SliceRecord>* records = nullptr;
 };
@@ -461,9 +463,9 @@ void mesh_axis(const GridSpec& s, const std::vector<std::uint8_t>& volume, const
     stop_point(stop);
     const std::size_t slot = std::size_t(c - c0 + 1);
     if (replayed(c)) {
-      const SliceRecord& kept = (*reuse.kept)[slot];
+      SliceRecord& kept = (*reuse.kept)[slot];
       out.replay(kept);
-      if (reuse.records) (*reuse.records)[slot] = kept;
+      if (reuse.records) (*reuse.records)[slot] = std::move(kept);
       continue;
     }
     const auto mark = out.begin_slice();
@@ -555,11 +557,13 @@ BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint
     if (memo) memo->state_.reset();
     return {};
   }
-  // The previous volume's slices, where it had this grid and solid box.
-  const MeshMemo::State* kept = memo && memo->state_ && memo->state_->spec == spec && memo->state_->box == box &&
-                                        memo->state_->volume.size() == volume.size()
-                                    ? memo->state_.get()
-                                    : nullptr;
+  // The previous volume's slices, where it had this grid and solid box. Taken out of the memo: its slices and
+  // corners move into the next state, and a failure on the way leaves the memo empty, not half moved.
+  const std::unique_ptr<MeshMemo::State> previous = memo ? std::move(memo->state_) : nullptr;
+  MeshMemo::State* kept =
+      previous && previous->spec == spec && previous->box == box && previous->volume.size() == volume.size()
+          ? previous.get()
+          : nullptr;
   VolumeChanges changed;
   if (kept) changed = volume_changes(spec, kept->volume, volume);
   auto next = memo ? std::make_unique<MeshMemo::State>() : nullptr;
@@ -570,9 +574,9 @@ BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint
   // them); else all, on the threads.
   const std::size_t columns = std::size_t(box.hi[0] - box.lo[0] + 2) * std::size_t(box.hi[2] - box.lo[2] + 2);
   if (all_kept) {
-    if (next) next->corners = kept->corners;
+    if (next) next->corners = std::move(kept->corners);
   } else if (kept && kept->corners && 4 * changed.columns.size() < columns / 8) {
-    corners.emplace(spec, volume, *kept->corners, changed.columns);
+    corners.emplace(spec, volume, std::move(*kept->corners), changed.columns);
   } else {
     corners.emplace(spec, volume, box, threads, stop);
   }
@@ -590,7 +594,9 @@ BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint
     part.append_to(mesh, index, spec);
   }
   if (memo) {
-    next->spec = spec, next->volume = volume, next->box = box;
+    if (previous) next->volume = std::move(previous->volume);  // its storage, not a new allocation
+    next->volume.assign(volume.begin(), volume.end());
+    next->spec = spec, next->box = box;
     if (corners) next->corners = std::move(corners);
     memo->state_ = std::move(next);
   }

@@ -1,5 +1,6 @@
 // Room bounds (§3.6): the volume I, its mesh, closure, orientation.
 #include "roomsense/bounds.h"
+#include "roomsense/error.h"
 #include "roomsense/synthetic.h"
 #include "mesh_checks.h"
 #include "synthetic_fixture.h"
@@ -63,7 +64,7 @@ TEST(MeshVolume, RandomVolumesGiveClosedOutwardSurfacesOfTheRightVolume) {
 
 // An IncrementalAnalysis's bounds (mesh_memo.h): a volume meshed with the memo of the volume before it, which
 // replays the slices and keeps the surface corners where nothing changed, gives the mesh meshing it afresh gives,
-// point for point. Boxes are added and cleared, small (the corners beside them found again) and large (all found
+// point for point, also after a cancelled one. Boxes are added and cleared, small (the corners beside them found again) and large (all found
 // again), next to each other, at the solid box's faces and over a previous edit.
 TEST(MeshVolume, AMemoMeshesEachEditedVolumeAsMeshingItAfresh) {
   std::mt19937 rng(7);
@@ -84,6 +85,16 @@ TEST(MeshVolume, AMemoMeshesEachEditedVolumeAsMeshingItAfresh) {
     std::vector<std::uint8_t> filled = volume;
     fill_edge_contacts(s, filled);
     const BoundsMesh afresh = mesh_volume(s, filled);
+    if (edit % 7 == 6) {  // a cancelled mesh leaves a memo the next one can use
+      std::stop_source cancel;
+      cancel.request_stop();
+      try {
+        detail::mesh_volume(s, filled, 2, cancel.get_token(), &memo);
+        ADD_FAILURE() << "edit " << edit << ": not cancelled";
+      } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ErrorCode::Cancelled);
+      }
+    }
     const BoundsMesh memoized = detail::mesh_volume(s, filled, 2, {}, &memo);
     ASSERT_EQ(memoized.vertices, afresh.vertices) << "edit " << edit;
     ASSERT_EQ(memoized.indices, afresh.indices) << "edit " << edit;

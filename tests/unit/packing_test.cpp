@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -52,6 +54,65 @@ TEST(Packing, KeepsTheSameSquaresWithoutRankingEverySquare) {
   // The comparison means something: many squares, a few kept.
   EXPECT_GT(compared, 100000u);
   EXPECT_GT(kept_total, 100u);
+}
+
+// Packing's samples against a count of its own: each half-voxel sample centre strictly inside a square, found by
+// an exact integer test over the square's box (no run, no cache). Squares at every rotation of a few sizes, many
+// at the same orientation (the packer keeps each shape's runs), scattered so that many overlap by a sample or
+// two. Whatever order packing takes them in, no two kept squares share a sample, and every refused square shares
+// one with a kept square.
+TEST(Packing, KeptSquaresShareNoSampleAndEachRefusedOneMeetsAKeptOne) {
+  const GridSpec spec = make_grid_spec({0, 0, 0}, {4.0f, 0.4f, 4.0f}, 0.1f);
+  const std::vector<std::uint8_t> floor(spec.column_count(), 1);
+  const TileMap is_tile{spec, floor, {}};
+  // The samples inside a square: centre (sx / 2 + 1/4, sz / 2 + 1/4) voxels, corners at corner + 1/2; in quarter
+  // voxels every value is an integer, so the test is exact.
+  const auto samples = [](const Candidate& c) {
+    std::vector<std::pair<long, long>> inside;
+    glm::ivec3 lo = c.corners[0], hi = c.corners[0];
+    for (const glm::ivec3& k : c.corners) lo = glm::min(lo, k), hi = glm::max(hi, k);
+    const auto side = [&](int i, long px, long pz) {
+      const glm::ivec3 a = c.corners[i], b = c.corners[(i + 1) % 4];
+      return long(b.x - a.x) * (pz - (4L * a.z + 2)) - long(b.z - a.z) * (px - (4L * a.x + 2));
+    };
+    for (long sz = 2L * lo.z; sz <= 2L * hi.z + 1; ++sz)
+      for (long sx = 2L * lo.x; sx <= 2L * hi.x + 1; ++sx) {
+        const long px = 2 * sx + 1, pz = 2 * sz + 1;
+        bool positive = true, negative = true;
+        for (int i = 0; i < 4; ++i) positive = positive && side(i, px, pz) > 0, negative = negative && side(i, px, pz) < 0;
+        if (positive || negative) inside.push_back({sx, sz});
+      }
+    std::sort(inside.begin(), inside.end());
+    return inside;
+  };
+  std::vector<Candidates::Shape> shapes;
+  for (const glm::ivec2 d : {glm::ivec2(6, 0), glm::ivec2(5, 2), glm::ivec2(2, 5), glm::ivec2(4, 4), glm::ivec2(7, 1),
+                             glm::ivec2(3, -4), glm::ivec2(1, 3)})
+    shapes.push_back({d.x, d.y, PackedCandidate::kSquare});
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> place(10, 28), pick(0, int(shapes.size()) - 1);
+  Candidates squares(spec, 2, shapes);
+  for (int i = 0; i < 400; ++i) squares.push_back(glm::ivec3(place(rng), 1, place(rng)), std::uint32_t(pick(rng)));
+  SquarePacker packer(spec, 0, 0.0, is_tile);
+  const std::vector<std::size_t> kept = packer.pack(squares);
+  ASSERT_GT(kept.size(), 5u);
+  ASSERT_LT(kept.size(), squares.size() / 2);
+  std::vector<std::vector<std::pair<long, long>>> of_kept;
+  for (const std::size_t i : kept) of_kept.push_back(samples(squares[i].unpack()));
+  const auto meet = [](const std::vector<std::pair<long, long>>& a, const std::vector<std::pair<long, long>>& b) {
+    std::vector<std::pair<long, long>> both;
+    std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
+    return !both.empty();
+  };
+  for (std::size_t a = 0; a < of_kept.size(); ++a)
+    for (std::size_t b = a + 1; b < of_kept.size(); ++b)
+      EXPECT_FALSE(meet(of_kept[a], of_kept[b])) << "kept squares " << kept[a] << " and " << kept[b];
+  for (std::size_t i = 0; i < squares.size(); ++i) {
+    if (std::binary_search(kept.begin(), kept.end(), i)) continue;
+    const auto mine = samples(squares[i].unpack());
+    EXPECT_TRUE(std::any_of(of_kept.begin(), of_kept.end(), [&](const auto& k) { return meet(mine, k); }))
+        << "refused square " << i << " meets no kept one";
+  }
 }
 
 // The walls' dominant direction: their first edges' degrees (modulo 90, so a wall and the one across the corner

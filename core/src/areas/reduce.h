@@ -144,16 +144,21 @@ class SquarePacker {
 
  private:
   class NonTileCounts;
+  class ShapeSamples;
   int contact(const Candidate& c) const;
   int misalignment_step(const Candidate& c);
-  bool free(const Candidate& c) const;
+  bool free(const Candidate& c);
+  // square_samples (reduce.cpp) of c by its shape's runs.
+  template <class F>
+  bool each_sample_run(const Candidate& c, F f);
   struct ShapeFacts {
     int step = 0;             // misalignment_step
     bool has_middle = false;  // a middle sample inside the square (middle_sample)
     long middle_x = 0, middle_z = 0;  // the middle sample of the square whose corner 1 is (0, 0, 0)
   };
   ShapeFacts shape_facts(const Candidates::Shape& shape);
-  bool middle_taken(int level, long x, long z) const;
+  // Inlined: pack_fresh asks it of most squares, and GCC otherwise calls it.
+  [[gnu::always_inline]] bool middle_taken(int level, long x, long z) const;
   void take(const Candidate& c);
   std::vector<std::size_t> pack_fresh(const Candidates& squares);
 
@@ -161,6 +166,7 @@ class SquarePacker {
   double dominant_deg_;
   TileMap is_tile_;
   std::unique_ptr<NonTileCounts> runs_;  // floor and ceiling: contact along the axes by run, not by cell
+  std::unique_ptr<ShapeSamples> samples_;  // each shape's sample runs, found once
   std::unordered_map<std::uint64_t, int> steps_of_direction_;
   std::unique_ptr<SampleRaster> taken_;
   ChangedRegion changed_;  // over all sizes: a large square's change reaches the smaller ones after it

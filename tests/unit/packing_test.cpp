@@ -60,7 +60,7 @@ TEST(Packing, KeepsTheSameSquaresWithoutRankingEverySquare) {
 // an exact integer test over the square's box (no run, no cache). Squares at every rotation of a few sizes, many
 // at the same orientation (the packer keeps each shape's runs), scattered so that many overlap by a sample or
 // two. Whatever order packing takes them in, no two kept squares share a sample, and every refused square shares
-// one with a kept square.
+// one with a kept square; moved by whole voxels, the same squares are kept.
 TEST(Packing, KeptSquaresShareNoSampleAndEachRefusedOneMeetsAKeptOne) {
   const GridSpec spec = make_grid_spec({0, 0, 0}, {4.0f, 0.4f, 4.0f}, 0.1f);
   const std::vector<std::uint8_t> floor(spec.column_count(), 1);
@@ -113,6 +113,16 @@ TEST(Packing, KeptSquaresShareNoSampleAndEachRefusedOneMeetsAKeptOne) {
     EXPECT_TRUE(std::any_of(of_kept.begin(), of_kept.end(), [&](const auto& k) { return meet(mine, k); }))
         << "refused square " << i << " meets no kept one";
   }
+  // An IncrementalAnalysis's packers share runs from one analysis to the next: the same squares moved by whole
+  // voxels, packed with the runs the first packing found, keep the same ones.
+  SquareSampleRuns shared;
+  SquarePacker(spec, 0, 0.0, is_tile, {}, &shared).pack(squares);
+  Candidates moved(spec, 2, shapes);
+  for (std::size_t i = 0; i < squares.size(); ++i)
+    moved.push_back(squares[i].corner(0) + glm::ivec3(3, 0, -5), squares.item(i).shape);
+  const std::vector<std::size_t> kept_moved = SquarePacker(spec, 0, 0.0, is_tile, {}, &shared).pack(moved);
+  EXPECT_EQ(kept_moved, kept);
+  EXPECT_EQ(kept_moved, SquarePacker(spec, 0, 0.0, is_tile).pack(moved));  // runs found where they now are
 }
 
 // The walls' dominant direction: their first edges' degrees (modulo 90, so a wall and the one across the corner

@@ -313,7 +313,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
                             type == 3 ? std::span<const int>(features.furniture) : std::span<const int>()};
       // Eq. 3.49: furniture squares less than reduction_offset levels apart are on one top.
       packers[type] = std::make_unique<SquarePacker>(spec, type == 3 ? params.reduction_offset - 1 : 0, dominant_deg,
-                                                     is_tile, stop);
+                                                     is_tile, stop, cache ? &cache->sample_runs(type) : nullptr);
     }
     const Candidates& squares = found[type][size];
     std::vector<std::uint32_t> ranks;

@@ -382,66 +382,49 @@ class SquarePacker::NonTileCounts {
   std::vector<int> along_x_, along_z_;
 };
 
-// Each rotated square shape's sample runs (square_samples) relative to corner 1, found once: square_samples decides
-// every sample with exact arithmetic (corners and sample centres are multiples of 1/4), so a square moved by whole
-// voxels has the same samples moved by two cells each way. A size's squares have a few hundred shapes.
-class SquarePacker::ShapeSamples {
- public:
-  struct Run {
-    int dz, dx0, dx1;  // sample row and cells from 2 x corner 1's (x, z)
-  };
-  // None where c's edges are not those of the shape kept under its key (not a square's: e3 not fixed by e1).
-  std::optional<std::span<const Run>> of(const Candidate& c) {
-    const glm::ivec3 e1 = c.corners[1] - c.corners[0], e3 = c.corners[3] - c.corners[0];
-    const std::uint64_t key = pack_key(e1.x, e1.z, e3.x);  // edges lie in the grid: far below 2^20 voxels
-    std::uint32_t at = index_.find(key);
-    if (at == KeyTable::kAbsent) {
-      at = std::uint32_t(shapes_.size());
-      index_.insert(key, at);
-      Shape shape{e1, e3, runs_.size(), 0};
-      const long x0 = 2L * c.corners[0].x, z0 = 2L * c.corners[0].z;
-      square_samples(c, [&](long z, long first, long last) {
-        runs_.push_back({int(z - z0), int(first - x0), int(last - x0)});
-        return true;
-      });
-      shape.end = runs_.size();
-      shapes_.push_back(shape);
-    }
-    const Shape& shape = shapes_[at];
-    if (shape.e1 != e1 || shape.e3 != e3) return std::nullopt;
-    return std::span<const Run>(runs_).subspan(shape.begin, shape.end - shape.begin);
+std::optional<std::span<const SquareSampleRuns::Run>> SquareSampleRuns::of(const Candidate& c) {
+  const glm::ivec3 e1 = c.corners[1] - c.corners[0], e3 = c.corners[3] - c.corners[0];
+  const std::uint64_t key = pack_key(e1.x, e1.z, e3.x);  // edges lie in the grid: far below 2^20 voxels
+  std::uint32_t at = index_.find(key);
+  if (at == KeyTable::kAbsent) {
+    if (runs_.size() > kMaxRuns) *this = {};  // shapes of many sizes and grids: start again
+    at = std::uint32_t(shapes_.size());
+    index_.insert(key, at);
+    Shape shape{e1, e3, runs_.size(), 0};
+    const long x0 = 2L * c.corners[0].x, z0 = 2L * c.corners[0].z;
+    square_samples(c, [&](long z, long first, long last) {
+      runs_.push_back({int(z - z0), int(first - x0), int(last - x0)});
+      return true;
+    });
+    shape.end = runs_.size();
+    shapes_.push_back(shape);
   }
-
- private:
-  struct Shape {
-    glm::ivec3 e1, e3;
-    std::size_t begin, end;  // into runs_
-  };
-  KeyTable index_;
-  std::vector<Shape> shapes_;
-  std::vector<Run> runs_;
-};
+  const Shape& shape = shapes_[at];
+  if (shape.e1 != e1 || shape.e3 != e3) return std::nullopt;
+  return std::span<const Run>(runs_).subspan(shape.begin, shape.end - shape.begin);
+}
 
 // The runs of square_samples(c), in its order, until f returns false; returns whether every run was visited.
 template <class F>
 bool SquarePacker::each_sample_run(const Candidate& c, F f) {
   const glm::ivec3 e = c.corners[1] - c.corners[0];
   if (e.x == 0 || e.z == 0) return square_samples(c, f);  // along the axes: runs without tests (axis_box)
-  const std::optional<std::span<const ShapeSamples::Run>> runs = samples_->of(c);
+  const std::optional<std::span<const SquareSampleRuns::Run>> runs = samples_->of(c);
   if (!runs) return square_samples(c, f);
   const long x0 = 2L * c.corners[0].x, z0 = 2L * c.corners[0].z;
-  for (const ShapeSamples::Run& r : *runs)
+  for (const SquareSampleRuns::Run& r : *runs)
     if (!f(z0 + r.dz, x0 + r.dx0, x0 + r.dx1)) return false;
   return true;
 }
 
 SquarePacker::SquarePacker(const GridSpec& spec, int level_tolerance, double dominant_deg, const TileMap& is_tile,
-                           std::stop_token stop)
+                           std::stop_token stop, SquareSampleRuns* shared_samples)
     : level_tolerance_(level_tolerance),
       dominant_deg_(dominant_deg),
       is_tile_(is_tile),
       runs_(is_tile.mask.empty() ? nullptr : std::make_unique<NonTileCounts>(is_tile)),
-      samples_(std::make_unique<ShapeSamples>()),
+      own_samples_(shared_samples ? nullptr : std::make_unique<SquareSampleRuns>()),
+      samples_(shared_samples ? shared_samples : own_samples_.get()),
       // Per level, rows of half-voxel samples along x over the grid's columns: corners are voxel indices in the
       // grid (at most a level beyond, for a top's y_Actual) and samples lie within a voxel and a half of them.
       taken_(std::make_unique<SampleRaster>(-2, spec.ny + 2, -4, 2L * spec.nz + 4, -4, 2L * spec.nx + 4)),

@@ -1,6 +1,7 @@
 // Result reduction of §3.4: centre deduplication (Eq. 3.42-3.44), then, beyond the thesis, packing in place
 // of its overlap reduction (Eq. 3.45-3.53).
 #pragma once
+#include "../key_table.h"
 #include "candidate.h"
 
 #include "roomsense/grid.h"
@@ -8,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <stop_token>
 #include <unordered_map>
@@ -130,10 +132,34 @@ struct TileMap {
 // edge of a top) go first, leaving the free surface in one piece for the next ones. For furniture, squares
 // more than `level_tolerance` levels apart never conflict (Eq. 3.49). One size at a time: the size leads the
 // order, so a size's squares can be searched, packed and dropped before the next size's are searched.
+// Each rotated square shape's sample runs relative to corner 1, found once: packing decides every sample with
+// exact arithmetic (corners and sample centres are multiples of 1/4), so a square moved by whole voxels has the
+// same samples moved by two cells each way. A size's squares have a few hundred shapes; an IncrementalAnalysis
+// keeps them from one analysis to the next (search_cache.h).
+class SquareSampleRuns {
+ public:
+  struct Run {
+    int dz, dx0, dx1;  // sample row and cells from 2 x corner 1's (x, z)
+  };
+  // None where c's edges are not those of the shape kept under its key (not a square's: e3 not fixed by e1).
+  std::optional<std::span<const Run>> of(const Candidate& c);
+
+ private:
+  static constexpr std::size_t kMaxRuns = std::size_t{1} << 20;  // 12 MB
+  struct Shape {
+    glm::ivec3 e1, e3;
+    std::size_t begin, end;  // into runs_
+  };
+  KeyTable index_;
+  std::vector<Shape> shapes_;
+  std::vector<Run> runs_;
+};
+
 class SquarePacker {
  public:
+  // `shared_samples`, where not null, is used instead of the packer's own (one packer at a time).
   SquarePacker(const GridSpec& spec, int level_tolerance, double dominant_deg, const TileMap& is_tile,
-               std::stop_token stop = {});
+               std::stop_token stop = {}, SquareSampleRuns* shared_samples = nullptr);
   ~SquarePacker();
   // The squares of the next size (large, then medium, then small), in search order; returns the indices kept,
   // ascending.
@@ -144,7 +170,6 @@ class SquarePacker {
 
  private:
   class NonTileCounts;
-  class ShapeSamples;
   int contact(const Candidate& c) const;
   int misalignment_step(const Candidate& c);
   bool free(const Candidate& c);
@@ -166,7 +191,8 @@ class SquarePacker {
   double dominant_deg_;
   TileMap is_tile_;
   std::unique_ptr<NonTileCounts> runs_;  // floor and ceiling: contact along the axes by run, not by cell
-  std::unique_ptr<ShapeSamples> samples_;  // each shape's sample runs, found once
+  std::unique_ptr<SquareSampleRuns> own_samples_;
+  SquareSampleRuns* samples_;  // own_samples_ or the caller's
   std::unordered_map<std::uint64_t, int> steps_of_direction_;
   std::unique_ptr<SampleRaster> taken_;
   ChangedRegion changed_;  // over all sizes: a large square's change reaches the smaller ones after it

@@ -73,6 +73,8 @@ class SearchCache {
                       std::span<const std::uint32_t> ranks = {});
   // What reach found in the previous analysis (classify.h).
   ReachMemo& reach_memo() { return reach_memo_; }
+  // Packing's square sample runs (reduce.h) for type 1-3's packer, kept from one analysis to the next.
+  SquareSampleRuns& sample_runs(std::size_t type) { return sample_runs_[type]; }
   // Over the searches since begin(): the bands searched, and the bands there were.
   std::size_t bands_searched() const { return searched_; }
   std::size_t bands_total() const { return total_; }
@@ -122,6 +124,7 @@ class SearchCache {
   Candidates assemble(Kept& kept, const Candidates& found, std::vector<Replaced> replaced, bool walls);
 
   std::array<Kept, 12> kept_;  // search t: type t / 3, size t % 3
+  std::array<SquareSampleRuns, 4> sample_runs_;  // by type: the types' packers run side by side
   struct Grown {
     std::uint64_t generation = 0;
     GrowthRecord record;

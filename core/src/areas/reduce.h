@@ -128,10 +128,6 @@ struct TileMap {
   }
 };
 
-// Within a size and alignment, squares pressed against more unusable cells (not tiles: walls, clutter, the
-// edge of a top) go first, leaving the free surface in one piece for the next ones. For furniture, squares
-// more than `level_tolerance` levels apart never conflict (Eq. 3.49). One size at a time: the size leads the
-// order, so a size's squares can be searched, packed and dropped before the next size's are searched.
 // Each rotated square shape's sample runs relative to corner 1, found once: packing decides every sample with
 // exact arithmetic (corners and sample centres are multiples of 1/4), so a square moved by whole voxels has the
 // same samples moved by two cells each way. A size's squares have a few hundred shapes; an IncrementalAnalysis
@@ -155,6 +151,10 @@ class SquareSampleRuns {
   std::vector<Run> runs_;
 };
 
+// Within a size and alignment, squares pressed against more unusable cells (not tiles: walls, clutter, the
+// edge of a top) go first, leaving the free surface in one piece for the next ones. For furniture, squares
+// more than `level_tolerance` levels apart never conflict (Eq. 3.49). One size at a time: the size leads the
+// order, so a size's squares can be searched, packed and dropped before the next size's are searched.
 class SquarePacker {
  public:
   // `shared_samples`, where not null, is used instead of the packer's own (one packer at a time).

@@ -4,7 +4,8 @@
 // band only the rectangles within reach of a changed column; each rectangle's packing decision
 // and rank (a square's kept where its centre was not searched again), for packing's replay (reduce.h); each
 // area type's reduction, for a type nothing of which changed; each type's growth, replayed area by area (grow.h);
-// the reach lists' areas in metres, and what reach found (classify.h's ReachMemo). Every result equals the whole analysis's exactly
+// the reach lists' areas in metres, and what reach found (classify.h's ReachMemo); packing's square sample
+// runs (reduce.h's SquareSampleRuns). Every result equals the whole analysis's exactly
 // (tests/unit/incremental_test.cpp replays rooms chunk by chunk against full analyses; search_cache_test.cpp
 // tests each rule's edges).
 #pragma once

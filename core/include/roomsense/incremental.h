@@ -22,7 +22,8 @@
 // - an area type's whole reduction (deduplication, packing) where nothing its searches read changed, and its
 //   growth where its packed areas are also as before; otherwise each area's growth where nothing it read
 //   changed, floor and ceiling areas matched across a refined height (areas/grow.h);
-// - packing's decisions away from the rectangles that changed (areas/reduce.h: PackReplay);
+// - packing's decisions away from the rectangles that changed (areas/reduce.h: PackReplay), and each rotated
+//   square shape's samples (SquareSampleRuns);
 // - what each area sees for its reach where the wall areas are as before (whatever the floor's height): kept
 //   while the floor area that decided it is there, and tested only against the floor areas added
 //   (areas/classify.h: ReachMemo);

@@ -64,8 +64,8 @@ TEST(MeshVolume, RandomVolumesGiveClosedOutwardSurfacesOfTheRightVolume) {
 
 // An IncrementalAnalysis's bounds (mesh_memo.h): a volume meshed with the memo of the volume before it, which
 // replays the slices and keeps the surface corners where nothing changed, gives the mesh meshing it afresh gives,
-// point for point, also after a cancelled one. Boxes are added and cleared, small (the corners beside them found again) and large (all found
-// again), next to each other, at the solid box's faces and over a previous edit.
+// point for point, also after a cancelled one. Boxes are added and cleared, small (the corners beside them found
+// again) and large (all found again), next to each other, at the solid box's faces and over a previous edit.
 TEST(MeshVolume, AMemoMeshesEachEditedVolumeAsMeshingItAfresh) {
   std::mt19937 rng(7);
   const GridSpec s = make_grid_spec({0, 0, 0}, {4.0f, 1.6f, 3.6f}, 0.1f);

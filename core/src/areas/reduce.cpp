@@ -390,14 +390,13 @@ std::optional<std::span<const SquareSampleRuns::Run>> SquareSampleRuns::of(const
     if (runs_.size() > kMaxRuns) *this = {};  // shapes of many sizes and grids: start again
     at = std::uint32_t(shapes_.size());
     index_.insert(key, at);
-    Shape shape{e1, e3, runs_.size(), 0};
+    const std::size_t begin = runs_.size();
     const long x0 = 2L * c.corners[0].x, z0 = 2L * c.corners[0].z;
     square_samples(c, [&](long z, long first, long last) {
       runs_.push_back({int(z - z0), int(first - x0), int(last - x0)});
       return true;
     });
-    shape.end = runs_.size();
-    shapes_.push_back(shape);
+    shapes_.push_back({e1, e3, begin, runs_.size()});
   }
   const Shape& shape = shapes_[at];
   if (shape.e1 != e1 || shape.e3 != e3) return std::nullopt;

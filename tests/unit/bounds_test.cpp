@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <random>
 #include <string>
 
@@ -169,16 +170,20 @@ std::vector<std::uint8_t> edge_contacts_by_full_passes(const GridSpec& s, std::v
 
 TEST(MeshVolume, EdgeContactsFillWhatWholePassesFill) {
   // Columns mostly copied from a neighbour (a room's volume is), with random specks: blocks of equal
-  // columns, contacts that take several passes, and fills that make a settled block fillable again.
+  // columns, contacts that take several passes, and fills that make a settled block fillable again. Grids
+  // of 8, 21 and 70 levels (the library tests eight levels at a time, the last few one by one), and solid
+  // voxels that are not 1 (any non-zero byte is solid).
   std::mt19937 rng(7);
-  for (int trial = 0; trial < 200; ++trial) {
-    const GridSpec s = make_grid_spec({0, 0, 0}, {0.95f, 0.75f, 0.85f}, 0.1f);
+  for (int trial = 0; trial < 240; ++trial) {
+    const float height = trial % 3 == 0 ? 0.75f : trial % 3 == 1 ? 2.05f : 6.95f;
+    const GridSpec s = make_grid_spec({0, 0, 0}, {0.95f, height, 0.85f}, 0.1f);
     std::vector<std::uint8_t> volume(s.voxel_count(), 0);
-    std::bernoulli_distribution solid(0.15 + 0.05 * (trial % 8)), copy(trial % 3 == 0 ? 0.0 : 0.8);
+    std::bernoulli_distribution solid(0.15 + 0.05 * (trial % 8)), copy(trial % 4 == 0 ? 0.0 : 0.8);
+    const std::uint8_t one = trial % 5 == 0 ? 0x80 : trial % 5 == 1 ? 2 : 1;
     for (int z = 0; z < s.nz; ++z)
       for (int x = 0; x < s.nx; ++x)
         for (int y = 0; y < s.ny; ++y)
-          volume[s.index(x, y, z)] = x > 0 && copy(rng) ? volume[s.index(x - 1, y, z)] : solid(rng) ? 1 : 0;
+          volume[s.index(x, y, z)] = x > 0 && copy(rng) ? volume[s.index(x - 1, y, z)] : solid(rng) ? one : 0;
     const std::vector<std::uint8_t> expected = edge_contacts_by_full_passes(s, volume);
     fill_edge_contacts(s, volume);
     ASSERT_EQ(volume, expected) << "trial " << trial;
@@ -282,6 +287,75 @@ TEST(Bounds, PlateausJustBelowTheSmallestSizeAreFlattenedWhateverTheirShape) {
   EXPECT_FALSE(standing(0.05f, 3, 9));
   EXPECT_TRUE(standing(0.05f, 9, 9));
   EXPECT_TRUE(standing(0.02f, 3, 2));
+}
+
+// bounds_volume with no plateau flattened, as Eq. 3.60-3.62 and §3.6's hole filling define it, voxel by voxel.
+std::vector<std::uint8_t> bounds_volume_by_definition(const VoxelGrid& grid, const BoundsStorey& storey) {
+  const GridSpec& s = grid.spec;
+  const FloorCeiling& l = storey.levels;
+  const int y_end = std::clamp(storey.y_end, l.floor + 1, l.ceiling - 1);
+  std::vector<std::uint8_t> volume(s.voxel_count(), 0);
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) {
+      const std::size_t col = s.column(x, z);
+      const bool room = (*storey.room)[col] != 0;
+      const int ceiling = std::min((*storey.ceiling)[col], l.ceiling);
+      int g = room ? l.floor : -1, h = room ? l.ceiling : l.ceiling + 1;
+      for (int y = l.floor + 1; y <= std::min(y_end, ceiling - 1); ++y)
+        if (grid.at(x, y, z)) g = y;
+      for (int y = l.ceiling - 1; y >= y_end; --y)
+        if (grid.at(x, y, z)) h = y;
+      if (room && ceiling < l.ceiling) h = std::min(h, std::max(ceiling, l.floor + 1));
+      for (int y = l.floor; y <= l.ceiling; ++y) volume[s.index(x, y, z)] = y <= g || y >= h ? 1 : 0;
+    }
+  const auto at = [&](int x, int y, int z) {
+    return x >= 0 && y >= 0 && z >= 0 && x < s.nx && y < s.ny && z < s.nz ? int(volume[s.index(x, y, z)]) : 0;
+  };
+  std::vector<std::uint8_t> filled = volume;
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x)
+      for (int y = l.floor; y <= l.ceiling; ++y) {
+        const int left = at(x - 1, y, z), right = at(x + 1, y, z), back = at(x, y, z - 1), front = at(x, y, z + 1),
+                  down = at(x, y - 1, z), up = at(x, y + 1, z);
+        if (left + right + back + front >= 3 || left + right + down + up >= 3 || down + up + back + front >= 3)
+          filled[s.index(x, y, z)] = 1;
+      }
+  return filled;
+}
+
+TEST(Bounds, TheVolumeWithNoPlateauFlattenedIsTheThesisVolumeWithItsHolesFilled) {
+  // Random grids of voxels in columns of a few runs, random rooms and ceilings, levels from the grid's bottom to
+  // its top and inside it, storeys of 10 to 120 levels. The hole filling reads 64 levels at a time: every other
+  // trial puts the runs' ends (G or H) about the 64th and 128th level of the storey.
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 160; ++trial) {
+    GridSpec s;
+    s.nx = 9 + trial % 5, s.nz = 7 + trial % 4, s.voxel_size = 0.1f;
+    s.ny = std::array{12, 40, 70, 135}[std::size_t(trial / 2 % 4)];
+    const int floor = trial % 3 == 0 ? 0 : int(rng() % 3), ceiling = trial % 5 < 2 ? s.ny - 1 : s.ny - 1 - int(rng() % 3);
+    const bool at_words = trial % 2 == 1, g_at_words = at_words && trial / 8 % 2 == 0;
+    const int y_end = !at_words ? floor + int(rng() % std::uint32_t(ceiling - floor)) : g_at_words ? ceiling - 1 : floor + 1;
+    VoxelGrid grid(s);
+    std::vector<std::uint8_t> room(s.column_count());
+    std::vector<int> ceilings(s.column_count());
+    std::uniform_int_distribution<int> level(0, s.ny - 1);
+    for (std::size_t col = 0; col < s.column_count(); ++col) {
+      room[col] = rng() % 4 != 0;
+      ceilings[col] = rng() % 3 == 0 ? level(rng) : ceiling;
+      for (int run = int(rng() % 4); run > 0; --run) {
+        // A run ending (for G) or starting (for H) a level or two from the storey's 63rd or 127th level above
+        // its floor (bit 0 of the second or third word holds level floor + 63 or + 127); else anywhere.
+        const int edge = floor + (rng() % 2 == 0 ? 62 : 126) + int(rng() % 4);
+        const int length = int(rng() % 6);
+        const int a = !at_words ? level(rng) : g_at_words ? edge - length : edge;
+        const int b = std::min(s.ny - 1, a + length);
+        for (int y = std::max(a, 0); y <= b; ++y) grid.cells[col * std::size_t(s.ny) + std::size_t(y)] = 1;
+      }
+    }
+    const BoundsStorey storey{{floor, ceiling, 0, 0}, y_end, &room, &ceilings};
+    EXPECT_EQ(bounds_volume(grid, std::span(&storey, 1), BoundsParams{0.0f}), bounds_volume_by_definition(grid, storey))
+        << "trial " << trial << ": " << s.ny << " levels, " << floor << " to " << ceiling;
+  }
 }
 
 TEST(Bounds, TheRoomIsHollowAndTheFloorIsSolid) {

@@ -37,53 +37,66 @@ int highest_solid(const std::uint8_t* v, int below, int to) {
   return below;
 }
 
+// The bits of levels [lo, hi] in word k of a column's levels [first, first + 64 * words), level `first` in
+// bit 0 of word 0.
+std::uint64_t level_bits(int first, std::size_t k, int lo, int hi) {
+  const int from = std::max(lo - first - 64 * int(k), 0), to = std::min(hi - first - 64 * int(k), 63);
+  if (from > to) return 0;
+  return (~std::uint64_t{0} >> (63 - to)) & (~std::uint64_t{0} << from);
+}
+// Whether at least three of four bits are set, bit by bit.
+std::uint64_t three_of_four(std::uint64_t a, std::uint64_t b, std::uint64_t c, std::uint64_t d) {
+  return (a & b & (c | d)) | (c & d & (a | b));
+}
+
 // §3.6's last step: an inactive voxel becomes active when, in any of the X-Z, X-Y and Y-Z planes, at least
-// three of its four neighbours are active. Neighbours are read from the volume before this pass: the
-// cells to fill are collected first (per worker, over its own z layers) and set afterwards.
-void fill_plane_holes(const GridSpec& s, const FloorCeiling& levels, std::vector<std::uint8_t>& volume,
-                      unsigned threads) {
-  const std::size_t ny = std::size_t(s.ny);
-  const std::vector<std::uint8_t> empty(ny, 0);
-  const auto column = [&](int x, int z) {
-    return x >= 0 && z >= 0 && x < s.nx && z < s.nz ? volume.data() + s.column(x, z) * ny : empty.data();
-  };
+// three of its four neighbours are active. Neighbours are read from the volume before this pass, I (Eq. 3.62)
+// of `g` and `h`: a column holds levels [floor, g] and [h, ceiling], so it is read from those two numbers, 64
+// levels at a time. The cells to fill are collected first (per worker, over its own z layers) and set afterwards.
+void fill_plane_holes(const GridSpec& s, const FloorCeiling& levels, const std::vector<int>& g,
+                      const std::vector<int>& h, std::vector<std::uint8_t>& volume, unsigned threads) {
   const int y_lo = levels.floor, y_hi = levels.ceiling;
+  // Each column's levels in [y_lo, y_hi] as one number: [y_lo, top] and [bottom, y_hi] with the empty and the
+  // full ranges written one way each, so that two columns alike there have the same number.
+  const auto runs = [&](std::size_t col) {
+    int top = std::max(g[col], y_lo - 1), bottom = std::min(h[col], y_hi + 1);
+    if (top + 1 >= bottom) top = y_hi, bottom = y_hi + 1;
+    return std::uint64_t(std::uint32_t(top)) << 32 | std::uint32_t(bottom);
+  };
+  // With a border of empty columns around the grid, so that a neighbour is read unchecked.
+  const std::uint64_t kEmpty = std::uint64_t(std::uint32_t(y_lo - 1)) << 32 | std::uint32_t(y_hi + 1);
+  const std::size_t width = std::size_t(s.nx) + 2;
+  std::vector<std::uint64_t> column_runs(width * (std::size_t(s.nz) + 2), kEmpty);
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) column_runs[std::size_t(z + 1) * width + std::size_t(x + 1)] = runs(s.column(x, z));
+  // The levels checked and the one below and above them, as bits.
+  const int first = y_lo - 1;
+  const std::size_t words = (std::size_t(y_hi - y_lo + 3) + 63) / 64;
   std::vector<std::vector<std::size_t>> fills(detail::parallel_workers(std::size_t(s.nz), threads, 8));
   detail::parallel_for(std::size_t(s.nz), threads, 8, [&](std::size_t z_begin, std::size_t z_end, std::size_t w) {
     std::vector<std::size_t>& fill = fills[w];
     for (int z = int(z_begin); z < int(z_end); ++z)
       for (int x = 0; x < s.nx; ++x) {
-        const std::uint8_t *c = column(x, z), *l = column(x - 1, z), *r = column(x + 1, z), *b = column(x, z - 1),
-                           *f = column(x, z + 1);
+        const std::uint64_t* at = column_runs.data() + std::size_t(z + 1) * width + std::size_t(x + 1);
+        const std::uint64_t here = *at, around[4] = {at[-1], at[1], *(at - width), at[width]};
         // Where the four neighbours equal the column, an empty voxel has no active neighbour in the X-Z plane
         // and at most two (below, above) in the others: nothing to fill.
-        const auto same = [&](const std::uint8_t* n) { return n == c || std::equal(c + y_lo, c + y_hi + 1, n + y_lo); };
-        if (same(l) && same(r) && same(b) && same(f)) continue;
-        const auto check = [&](int y) {
-          if (c[y]) return;
-          const int left = l[y], right = r[y], back = b[y], front = f[y];
-          const int down = y > 0 ? c[y - 1] : 0, up = y + 1 < s.ny ? c[y + 1] : 0;
-          const int xz = left + right + back + front, xy = left + right + down + up, yz = down + up + back + front;
-          if (xz >= 3 || xy >= 3 || yz >= 3) fill.push_back(s.index(x, y, z));
+        if (around[0] == here && around[1] == here && around[2] == here && around[3] == here) continue;
+        const auto word = [&](std::uint64_t r, std::size_t k) {
+          const int top = int(std::int32_t(r >> 32)), bottom = int(std::int32_t(r & 0xFFFFFFFFu));
+          return level_bits(first, k, y_lo, top) | level_bits(first, k, bottom, y_hi);
         };
-        // Eight levels at a time (voxels are 0 or 1, so no sum of four carries into the next byte), where the
-        // levels below and above lie in the column.
-        int y = y_lo;
-        for (; y < 1 && y <= y_hi; ++y) check(y);
-        for (; y + 8 <= std::min(y_hi + 1, s.ny - 1); y += 8) {
-          constexpr std::uint64_t kOnes = 0x0101010101010101ull;
-          const std::uint64_t here = eight_levels(c, y), down = eight_levels(c, y - 1), up = eight_levels(c, y + 1);
-          const std::uint64_t left_right = eight_levels(l, y) + eight_levels(r, y),
-                              back_front = eight_levels(b, y) + eight_levels(f, y);
-          const std::uint64_t down_up = down + up;
-          // A byte of a sum is at least 3 where adding 5 sets its bit 3 (sums are at most 4).
-          const std::uint64_t three = ((left_right + back_front + 5 * kOnes) | (left_right + down_up + 5 * kOnes) |
-                                       (down_up + back_front + 5 * kOnes)) & (8 * kOnes);
-          std::uint64_t to_fill = three & ~(here << 3);
+        for (std::size_t k = 0; k < words; ++k) {
+          const std::uint64_t c = word(here, k), l = word(around[0], k), r = word(around[1], k),
+                              b = word(around[2], k), f = word(around[3], k);
+          // The levels below and above (the grid's levels -1 and ny read as empty: no run reaches them).
+          const std::uint64_t down = c << 1 | (k > 0 ? word(here, k - 1) >> 63 : 0),
+                              up = c >> 1 | (k + 1 < words ? word(here, k + 1) << 63 : 0);
+          std::uint64_t to_fill = ~c & level_bits(first, k, y_lo, y_hi) &
+                                  (three_of_four(l, r, b, f) | three_of_four(l, r, down, up) | three_of_four(down, up, b, f));
           for (; to_fill != 0; to_fill &= to_fill - 1)
-            fill.push_back(s.index(x, y + std::countr_zero(to_fill) / 8, z));
+            fill.push_back(s.index(x, first + 64 * int(k) + std::countr_zero(to_fill), z));
         }
-        for (; y <= y_hi; ++y) check(y);
       }
   });
   for (const auto& fill : fills)
@@ -242,7 +255,7 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
     }
   });
   stop_point(stop);
-  fill_plane_holes(s, levels, volume, threads);
+  fill_plane_holes(s, levels, g, h, volume, threads);
   return volume;
 }
 
@@ -287,6 +300,43 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
   const auto same = [&](const std::uint8_t* a, const std::uint8_t* b) {
     return std::equal(a + read_from, a + read_from + read_count, b + read_from);
   };
+  // Whether an edge of a block can fill as the block stands (the edges along y, z and x where check_y, check_z
+  // and check_x), eight levels at a time: a block none of whose edges can fill fills nothing, as only a fill
+  // changes it. A voxel reads as 1 where it is not 0.
+  const auto can_fill = [&](const std::uint8_t* c, const std::uint8_t* cx, const std::uint8_t* cz,
+                            const std::uint8_t* cxz, bool check_y, bool check_z, bool check_x) {
+    constexpr std::uint64_t kOnes = 0x0101010101010101ull, kLow7 = 0x7F7F7F7F7F7F7F7Full;
+    const auto solid = [&](const std::uint8_t* v, int y) {
+      const std::uint64_t w = eight_levels(v, y);
+      return ((((w & kLow7) + kLow7) | w) >> 7) & kOnes;
+    };
+    int y = y_lo;
+    for (; y + 8 <= y_end + 1 && y + 9 <= s.ny; y += 8) {
+      const std::uint64_t C = solid(c, y), C_up = solid(c, y + 1);
+      std::uint64_t edges = 0;
+      if (check_y) {
+        const std::uint64_t X = solid(cx, y), Z = solid(cz, y), XZ = solid(cxz, y);
+        edges |= (C & XZ & ~X & ~Z) | (X & Z & ~C & ~XZ);
+      }
+      if (check_z) {
+        const std::uint64_t X = solid(cx, y), X_up = solid(cx, y + 1);
+        edges |= (C & X_up & ~X & ~C_up) | (X & C_up & ~C & ~X_up);
+      }
+      if (check_x) {
+        const std::uint64_t Z = solid(cz, y), Z_up = solid(cz, y + 1);
+        edges |= (C & Z_up & ~Z & ~C_up) | (Z & C_up & ~C & ~Z_up);
+      }
+      if (edges & kOnes) return true;
+    }
+    const auto can = [](bool p, bool q, bool r, bool t) { return (p && q && !r && !t) || (r && t && !p && !q); };
+    for (; y <= y_end; ++y) {
+      if (check_y && can(c[y], cxz[y], cx[y], cz[y])) return true;
+      if (y + 1 < s.ny && ((check_z && can(c[y], cx[y + 1], cx[y], c[y + 1])) ||
+                           (check_x && can(c[y], cz[y + 1], cz[y], c[y + 1]))))
+        return true;
+    }
+    return false;
+  };
   // Which columns a pass filled in: a later pass visits only the blocks with such a column (earlier in this
   // pass or anywhere in the last). Any other block holds what it held when the last pass checked it and found
   // nothing to fill, so skipping it changes nothing: the passes fill exactly what full passes would.
@@ -311,6 +361,7 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
         bool check_y = cxz && !same(c, cx) && !same(c, cz) && !same(cxz, cx) && !same(cxz, cz);
         bool check_z = cx && !same(c, cx), check_x = cz && !same(c, cz);
         if (!check_y && !check_z && !check_x) continue;
+        if (!can_fill(c, cx, cz, cxz, check_y, check_z, check_x)) continue;
         bool filled = false;
         const auto fill = [&](std::uint8_t& p, std::uint8_t& q, std::uint8_t& r, std::uint8_t& t) {
           if (!settle(p, q, r, t)) return;

@@ -10,8 +10,10 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <map>
 #include <random>
 #include <string>
+#include <tuple>
 
 namespace roomsense {
 namespace {
@@ -289,12 +291,59 @@ TEST(Bounds, PlateausJustBelowTheSmallestSizeAreFlattenedWhateverTheirShape) {
   EXPECT_TRUE(standing(0.02f, 3, 2));
 }
 
-// bounds_volume with no plateau flattened, as Eq. 3.60-3.62 and §3.6's hole filling define it, voxel by voxel.
-std::vector<std::uint8_t> bounds_volume_by_definition(const VoxelGrid& grid, const BoundsStorey& storey) {
+// BoundsParams::min_plateau_area as bounds.h states it, on G or H: in passes until one flattens nothing (at most
+// eight), every plateau (room columns of one height, 4-connected) as the pass begins, in order of its first
+// column, if smaller than `min_cells` columns, takes the height its border shares most with it as the pass has
+// left it (on a tie the nearer, then the lower).
+void flatten_by_definition(const GridSpec& s, const std::vector<std::uint8_t>& room, int min_cells, std::vector<int>& height) {
+  for (int pass = 0; pass < 8; ++pass) {
+    std::vector<int> label(height.size(), -1);
+    std::vector<std::vector<std::size_t>> plateaus;
+    for (std::size_t start = 0; start < height.size(); ++start) {
+      if (!room[start] || label[start] >= 0) continue;
+      std::vector<std::size_t> cells{start}, stack{start};
+      label[start] = int(plateaus.size());
+      while (!stack.empty()) {
+        const std::size_t c = stack.back();
+        stack.pop_back();
+        const int x = int(c % std::size_t(s.nx)), z = int(c / std::size_t(s.nx));
+        for (const auto& [nx, nz] : {std::pair{x - 1, z}, {x + 1, z}, {x, z - 1}, {x, z + 1}}) {
+          if (nx < 0 || nz < 0 || nx >= s.nx || nz >= s.nz) continue;
+          const std::size_t n = s.column(nx, nz);
+          if (room[n] && label[n] < 0 && height[n] == height[start]) label[n] = label[start], cells.push_back(n), stack.push_back(n);
+        }
+      }
+      plateaus.push_back(cells);
+    }
+    bool flattened = false;
+    for (const std::vector<std::size_t>& p : plateaus) {  // in order of their first column
+      if (int(p.size()) >= min_cells) continue;
+      const int h = height[p[0]];
+      std::map<int, int> border;  // height -> shared edges
+      for (const std::size_t c : p) {
+        const int x = int(c % std::size_t(s.nx)), z = int(c / std::size_t(s.nx));
+        for (const auto& [nx, nz] : {std::pair{x - 1, z}, {x + 1, z}, {x, z - 1}, {x, z + 1}})
+          if (nx >= 0 && nz >= 0 && nx < s.nx && nz < s.nz && room[s.column(nx, nz)] && height[s.column(nx, nz)] != h)
+            ++border[height[s.column(nx, nz)]];
+      }
+      if (border.empty()) continue;
+      const auto best = std::min_element(border.begin(), border.end(), [&](const auto& a, const auto& b) {
+        return std::tuple(-a.second, std::abs(a.first - h), a.first) < std::tuple(-b.second, std::abs(b.first - h), b.first);
+      });
+      for (const std::size_t c : p) height[c] = best->first;
+      flattened = true;
+    }
+    if (!flattened) return;
+  }
+}
+
+// bounds_volume as Eq. 3.60-3.62, the flattening above (`min_cells` columns; 0: none) and §3.6's hole filling
+// define it, voxel by voxel.
+std::vector<std::uint8_t> bounds_volume_by_definition(const VoxelGrid& grid, const BoundsStorey& storey, int min_cells) {
   const GridSpec& s = grid.spec;
   const FloorCeiling& l = storey.levels;
   const int y_end = std::clamp(storey.y_end, l.floor + 1, l.ceiling - 1);
-  std::vector<std::uint8_t> volume(s.voxel_count(), 0);
+  std::vector<int> gs(s.column_count()), hs(s.column_count());
   for (int z = 0; z < s.nz; ++z)
     for (int x = 0; x < s.nx; ++x) {
       const std::size_t col = s.column(x, z);
@@ -306,8 +355,13 @@ std::vector<std::uint8_t> bounds_volume_by_definition(const VoxelGrid& grid, con
       for (int y = l.ceiling - 1; y >= y_end; --y)
         if (grid.at(x, y, z)) h = y;
       if (room && ceiling < l.ceiling) h = std::min(h, std::max(ceiling, l.floor + 1));
-      for (int y = l.floor; y <= l.ceiling; ++y) volume[s.index(x, y, z)] = y <= g || y >= h ? 1 : 0;
+      gs[col] = g, hs[col] = h;
     }
+  flatten_by_definition(s, *storey.room, min_cells, gs);
+  flatten_by_definition(s, *storey.room, min_cells, hs);
+  std::vector<std::uint8_t> volume(s.voxel_count(), 0);
+  for (std::size_t col = 0; col < s.column_count(); ++col)
+    for (int y = l.floor; y <= l.ceiling; ++y) volume[col * std::size_t(s.ny) + std::size_t(y)] = y <= gs[col] || y >= hs[col] ? 1 : 0;
   const auto at = [&](int x, int y, int z) {
     return x >= 0 && y >= 0 && z >= 0 && x < s.nx && y < s.ny && z < s.nz ? int(volume[s.index(x, y, z)]) : 0;
   };
@@ -323,7 +377,7 @@ std::vector<std::uint8_t> bounds_volume_by_definition(const VoxelGrid& grid, con
   return filled;
 }
 
-TEST(Bounds, TheVolumeWithNoPlateauFlattenedIsTheThesisVolumeWithItsHolesFilled) {
+TEST(Bounds, TheVolumeIsTheThesisVolumeWithSmallPlateausFlattenedAndItsHolesFilled) {
   // Random grids of voxels in columns of a few runs, random rooms and ceilings, levels from the grid's bottom to
   // its top and inside it, storeys of 10 to 120 levels. The hole filling reads 64 levels at a time: every other
   // trial puts the runs' ends (G or H) about the 64th and 128th level of the storey.
@@ -353,8 +407,13 @@ TEST(Bounds, TheVolumeWithNoPlateauFlattenedIsTheThesisVolumeWithItsHolesFilled)
       }
     }
     const BoundsStorey storey{{floor, ceiling, 0, 0}, y_end, &room, &ceilings};
-    EXPECT_EQ(bounds_volume(grid, std::span(&storey, 1), BoundsParams{0.0f}), bounds_volume_by_definition(grid, storey))
+    EXPECT_EQ(bounds_volume(grid, std::span(&storey, 1), BoundsParams{0.0f}), bounds_volume_by_definition(grid, storey, 0))
         << "trial " << trial << ": " << s.ny << " levels, " << floor << " to " << ceiling;
+    // Plateaus of up to 2, 4 and 8 columns flattened (0.03, 0.05 and 0.09 m² at 0.1 m).
+    const float area = std::array{0.03f, 0.05f, 0.09f}[std::size_t(trial % 3)];
+    EXPECT_EQ(bounds_volume(grid, std::span(&storey, 1), BoundsParams{area}),
+              bounds_volume_by_definition(grid, storey, int(std::lround(area * 100.0f))))
+        << "trial " << trial << ", plateaus below " << area << " m² flattened";
   }
 }
 

@@ -9,6 +9,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace roomsense {
 namespace {
@@ -124,10 +125,8 @@ void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& 
     if (z > 0) f(c - nx);
     if (z + 1 < std::size_t(s.nz)) f(c + nx);
   };
-  // The columns to look from: every room column at first, then those the last pass changed and their neighbours.
+  // The columns to look from after the first pass: those the last pass changed and their neighbours.
   std::vector<std::size_t> from;
-  for (std::size_t c = 0; c < room.size(); ++c)
-    if (room[c]) from.push_back(c);
   std::vector<int> owner(height.size(), -1);  // the search that reached a column in this pass
   std::vector<std::size_t> reached, cells, stack, changed;
   struct Small {
@@ -143,13 +142,20 @@ void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& 
     for_neighbours(c, [&](std::size_t n) { same += room[n] && height[n] == height[c]; });
     return same + 1 >= min_cells;
   };
-  for (int pass = 0; pass < 8 && !from.empty(); ++pass) {
-    // The small plateaus reached from `from`, as they are at the start of the pass.
+  // The first pass looks from every room column, in order. Their heights with a border, a column outside the
+  // room holding none (no room column's height), so that its neighbours of its height are counted unchecked.
+  constexpr int kNoHeight = std::numeric_limits<int>::min();
+  const std::ptrdiff_t width = std::ptrdiff_t(nx) + 2;
+  std::vector<int> bordered(std::size_t(width) * (std::size_t(s.nz) + 2), kNoHeight);
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x)
+      if (room[s.column(x, z)]) bordered[std::size_t((z + 1) * width + x + 1)] = height[s.column(x, z)];
+  for (int pass = 0; pass < 8 && (pass == 0 || !from.empty()); ++pass) {
+    // The small plateaus reached from the columns looked from, as they are at the start of the pass.
     smalls.clear();
     small_cells.clear();
     int searches = 0;
-    for (const std::size_t start : from) {
-      if (owner[start] >= 0 || surely_large(start)) continue;
+    const auto look_from = [&](std::size_t start) {
       const int id = searches++, h = height[start];
       bool is_large = false;
       cells.clear();
@@ -172,9 +178,22 @@ void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& 
           }
         });
       }
-      if (is_large) continue;
+      if (is_large) return;
       smalls.push_back({*std::min_element(cells.begin(), cells.end()), small_cells.size(), small_cells.size() + cells.size()});
       small_cells.insert(small_cells.end(), cells.begin(), cells.end());
+    };
+    if (pass == 0) {
+      for (int z = 0; z < s.nz; ++z)
+        for (int x = 0; x < s.nx; ++x) {
+          const std::size_t c = s.column(x, z);
+          if (!room[c] || owner[c] >= 0) continue;
+          const int* b = bordered.data() + (z + 1) * width + x + 1;
+          const int same = int(b[-1] == *b) + int(b[1] == *b) + int(b[-width] == *b) + int(b[width] == *b);
+          if (same + 1 < min_cells) look_from(c);  // else surely large
+        }
+    } else {
+      for (const std::size_t start : from)
+        if (owner[start] < 0 && !surely_large(start)) look_from(start);
     }
     for (const std::size_t c : reached) owner[c] = -1;
     reached.clear();

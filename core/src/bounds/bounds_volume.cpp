@@ -2,6 +2,7 @@
 #include "roomsense/bounds.h"
 #include "roomsense/cancel.h"
 
+#include "column_levels.h"
 #include "mesh_memo.h"
 #include "parallel.h"
 
@@ -14,29 +15,9 @@
 namespace roomsense {
 namespace {
 
-// A column's levels eight at a time, a byte each, the lowest level in the lowest byte.
-static_assert(std::endian::native == std::endian::little);
-std::uint64_t eight_levels(const std::uint8_t* v, int y) {
-  std::uint64_t w;
-  std::memcpy(&w, v + y, 8);
-  return w;
-}
-// The lowest level in [from, to) holding a voxel of column `v`; `to` where none does.
-int lowest_solid(const std::uint8_t* v, int from, int to) {
-  for (; from + 8 <= to; from += 8)
-    if (const std::uint64_t w = eight_levels(v, from)) return from + std::countr_zero(w) / 8;
-  for (; from < to; ++from)
-    if (v[from]) return from;
-  return to;
-}
-// The highest level in (below, to] holding a voxel of column `v`; `below` where none does.
-int highest_solid(const std::uint8_t* v, int below, int to) {
-  for (; to - 8 >= below; to -= 8)
-    if (const std::uint64_t w = eight_levels(v, to - 7)) return to - 7 + (63 - std::countl_zero(w)) / 8;
-  for (; to > below; --to)
-    if (v[to]) return to;
-  return below;
-}
+using detail::eight_levels;
+using detail::highest_solid;
+using detail::lowest_solid;
 
 // The bits of levels [lo, hi] in word k of a column's levels [first, first + 64 * words), level `first` in
 // bit 0 of word 0.
@@ -293,10 +274,8 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
   int y_lo = s.ny, y_hi = -1;
   for (std::size_t col = 0; col < s.column_count(); ++col) {
     const std::uint8_t* v = volume.data() + col * ny;
-    for (int y = 0; y < y_lo; ++y)
-      if (v[y]) y_lo = y;
-    for (int y = s.ny - 1; y > y_hi; --y)
-      if (v[y]) y_hi = y;
+    y_lo = lowest_solid(v, 0, y_lo);
+    y_hi = highest_solid(v, y_hi, s.ny - 1);
   }
   if (y_hi < 0) return;
   const int y_end = std::min(y_hi + 1, s.ny - 1);
@@ -468,32 +447,41 @@ BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& 
   crop.nx = x1 - x0 + 1;
   crop.nz = z1 - z0 + 1;
   crop.origin = s.lattice_to_world(float(x0), 0.0f, float(z0));
-  VoxelGrid part(crop);
-  std::vector<std::uint8_t> part_room(crop.column_count()), part_storey(crop.column_count());
-  std::vector<int> part_ceiling(crop.column_count(), storey.levels.ceiling);
-  for (int z = 0; z < crop.nz; ++z)
+  // The room's inputs: the grid's and the masks' crops (a row of the crop's columns is one run of the grid's bytes).
+  MeshMemo::RoomInputs in{crop,
+                          std::vector<std::uint8_t>(crop.voxel_count()),
+                          std::vector<std::uint8_t>(crop.column_count()),
+                          std::vector<std::uint8_t>(crop.column_count()),
+                          std::vector<int>(crop.column_count(), storey.levels.ceiling),
+                          storey.levels,
+                          storey.y_end,
+                          std::bit_cast<std::uint32_t>(params.min_plateau_area)};
+  for (int z = 0; z < crop.nz; ++z) {
+    std::copy_n(grid.column_data(x0, z + z0), std::size_t(crop.nx) * std::size_t(s.ny),
+                in.cells.begin() + std::ptrdiff_t(crop.column(0, z) * std::size_t(s.ny)));
     for (int x = 0; x < crop.nx; ++x) {
       const std::size_t from = s.column(x + x0, z + z0), to = crop.column(x, z);
-      std::copy_n(grid.column_data(x + x0, z + z0), s.ny, part.cells.begin() + std::ptrdiff_t(to * std::size_t(s.ny)));
-      part_room[to] = room_columns[from];
-      part_storey[to] = (*storey.room)[from];
-      if (storey.ceiling != nullptr) part_ceiling[to] = (*storey.ceiling)[from];
+      in.room[to] = room_columns[from];
+      in.storey[to] = (*storey.room)[from];
+      if (storey.ceiling != nullptr) in.ceiling[to] = (*storey.ceiling)[from];
     }
+  }
   // The room's inputs as they were: its mesh as it was.
-  MeshMemo::RoomInputs inputs;
   if (memo) {
-    inputs = {crop, part.cells, part_room, part_storey, part_ceiling, storey.levels, storey.y_end,
-              std::bit_cast<std::uint32_t>(params.min_plateau_area)};
-    if (memo->room == inputs) return memo->room_mesh;
+    if (memo->room == in) return memo->room_mesh;
     memo->room.reset();  // kept again below, once the mesh is built
   }
+  VoxelGrid part;
+  part.spec = crop;
+  part.cells = std::move(in.cells);
   BoundsStorey cropped = storey;
-  cropped.room = &part_storey;
-  cropped.ceiling = &part_ceiling;
-  std::vector<std::uint8_t> volume = room_bounds_volume(part, cropped, part_room, params, threads, stop);
+  cropped.room = &in.storey;
+  cropped.ceiling = &in.ceiling;
+  std::vector<std::uint8_t> volume = room_bounds_volume(part, cropped, in.room, params, threads, stop);
+  in.cells = std::move(part.cells);
   fill_edge_contacts(crop, volume);
   BoundsMesh mesh = detail::mesh_volume(crop, volume, threads, std::move(stop), memo);
-  if (memo) memo->room = std::move(inputs), memo->room_mesh = mesh;
+  if (memo) memo->room = std::move(in), memo->room_mesh = mesh;
   return mesh;
 }
 

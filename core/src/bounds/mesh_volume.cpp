@@ -6,6 +6,7 @@
 #include "roomsense/bounds.h"
 #include "roomsense/cancel.h"
 
+#include "column_levels.h"
 #include "key_table.h"
 #include "mesh_memo.h"
 #include "parallel.h"
@@ -42,15 +43,13 @@ struct Box {
 };
 Box solid_box(const GridSpec& s, const std::vector<std::uint8_t>& volume) {
   Box box{{s.nx, s.ny, s.nz}, {-1, -1, -1}};
-  const auto solid = [](std::uint8_t v) { return v != 0; };
   for (int z = 0; z < s.nz; ++z)
     for (int x = 0; x < s.nx; ++x) {
       // A column's lowest and highest solid voxels: found from either end, most columns' first.
       const std::uint8_t* v = volume.data() + s.column(x, z) * std::size_t(s.ny);
-      const std::uint8_t* first = std::find_if(v, v + s.ny, solid);
-      if (first == v + s.ny) continue;
-      const auto last = std::find_if(std::make_reverse_iterator(v + s.ny), std::make_reverse_iterator(first), solid);
-      const int lo[3] = {x, int(first - v), z}, hi[3] = {x, int(last.base() - v) - 1, z};
+      const int first = detail::lowest_solid(v, 0, s.ny);
+      if (first == s.ny) continue;
+      const int lo[3] = {x, first, z}, hi[3] = {x, detail::highest_solid(v, first, s.ny - 1), z};
       for (int k = 0; k < 3; ++k) {
         box.lo[k] = std::min(box.lo[k], lo[k]);
         box.hi[k] = std::max(box.hi[k], hi[k]);

@@ -115,7 +115,8 @@ TEST(MeshVolume, RandomBoxStacksGiveExactSurfaces) {
     std::vector<std::uint8_t> volume(s.voxel_count(), 0);
     std::uniform_int_distribution<int> x(0, s.nx - 1), y(0, s.ny - 1), z(0, s.nz - 1), len(1, 8);
     for (int box = 0; box < 25; ++box) {
-      const int x0 = x(rng), y0 = tall ? y(rng) : y(rng) / 2, z0 = z(rng), w = len(rng), h = len(rng) / 2 + 1, d = len(rng);
+      const int x0 = x(rng), y0 = tall ? y(rng) : y(rng) / 2, z0 = z(rng);
+      const int w = len(rng), h = len(rng) / 2 + 1, d = len(rng);
       const std::uint8_t value = box % 4 == 3 ? 0 : 1;  // every fourth box carves
       for (int k = z0; k < std::min(s.nz, z0 + d); ++k)
         for (int i = x0; i < std::min(s.nx, x0 + w); ++i)
@@ -297,7 +298,8 @@ TEST(Bounds, PlateausJustBelowTheSmallestSizeAreFlattenedWhateverTheirShape) {
 // eight), every plateau (room columns of one height, 4-connected) as the pass begins, in order of its first
 // column, if smaller than `min_cells` columns, takes the height its border shares most with it as the pass has
 // left it (on a tie the nearer, then the lower).
-void flatten_by_definition(const GridSpec& s, const std::vector<std::uint8_t>& room, int min_cells, std::vector<int>& height) {
+void flatten_by_definition(const GridSpec& s, const std::vector<std::uint8_t>& room, int min_cells,
+                           std::vector<int>& height) {
   for (int pass = 0; pass < 8; ++pass) {
     std::vector<int> label(height.size(), -1);
     std::vector<std::vector<std::size_t>> plateaus;
@@ -312,7 +314,10 @@ void flatten_by_definition(const GridSpec& s, const std::vector<std::uint8_t>& r
         for (const auto& [nx, nz] : {std::pair{x - 1, z}, {x + 1, z}, {x, z - 1}, {x, z + 1}}) {
           if (nx < 0 || nz < 0 || nx >= s.nx || nz >= s.nz) continue;
           const std::size_t n = s.column(nx, nz);
-          if (room[n] && label[n] < 0 && height[n] == height[start]) label[n] = label[start], cells.push_back(n), stack.push_back(n);
+          if (!room[n] || label[n] >= 0 || height[n] != height[start]) continue;
+          label[n] = label[start];
+          cells.push_back(n);
+          stack.push_back(n);
         }
       }
       plateaus.push_back(cells);
@@ -330,7 +335,8 @@ void flatten_by_definition(const GridSpec& s, const std::vector<std::uint8_t>& r
       }
       if (border.empty()) continue;
       const auto best = std::min_element(border.begin(), border.end(), [&](const auto& a, const auto& b) {
-        return std::tuple(-a.second, std::abs(a.first - h), a.first) < std::tuple(-b.second, std::abs(b.first - h), b.first);
+        return std::tuple(-a.second, std::abs(a.first - h), a.first) <
+               std::tuple(-b.second, std::abs(b.first - h), b.first);
       });
       for (const std::size_t c : p) height[c] = best->first;
       flattened = true;
@@ -341,7 +347,8 @@ void flatten_by_definition(const GridSpec& s, const std::vector<std::uint8_t>& r
 
 // bounds_volume as Eq. 3.60-3.62, the flattening above (`min_cells` columns; 0: none) and §3.6's hole filling
 // define it, voxel by voxel.
-std::vector<std::uint8_t> bounds_volume_by_definition(const VoxelGrid& grid, const BoundsStorey& storey, int min_cells) {
+std::vector<std::uint8_t> bounds_volume_by_definition(const VoxelGrid& grid, const BoundsStorey& storey,
+                                                      int min_cells) {
   const GridSpec& s = grid.spec;
   const FloorCeiling& l = storey.levels;
   const int y_end = std::clamp(storey.y_end, l.floor + 1, l.ceiling - 1);
@@ -363,7 +370,8 @@ std::vector<std::uint8_t> bounds_volume_by_definition(const VoxelGrid& grid, con
   flatten_by_definition(s, *storey.room, min_cells, hs);
   std::vector<std::uint8_t> volume(s.voxel_count(), 0);
   for (std::size_t col = 0; col < s.column_count(); ++col)
-    for (int y = l.floor; y <= l.ceiling; ++y) volume[col * std::size_t(s.ny) + std::size_t(y)] = y <= gs[col] || y >= hs[col] ? 1 : 0;
+    for (int y = l.floor; y <= l.ceiling; ++y)
+      volume[col * std::size_t(s.ny) + std::size_t(y)] = y <= gs[col] || y >= hs[col] ? 1 : 0;
   const auto at = [&](int x, int y, int z) {
     return x >= 0 && y >= 0 && z >= 0 && x < s.nx && y < s.ny && z < s.nz ? int(volume[s.index(x, y, z)]) : 0;
   };
@@ -388,9 +396,12 @@ TEST(Bounds, TheVolumeIsTheThesisVolumeWithSmallPlateausFlattenedAndItsHolesFill
     GridSpec s;
     s.nx = 9 + trial % 5, s.nz = 7 + trial % 4, s.voxel_size = 0.1f;
     s.ny = std::array{12, 40, 70, 135}[std::size_t(trial / 2 % 4)];
-    const int floor = trial % 3 == 0 ? 0 : int(rng() % 3), ceiling = trial % 5 < 2 ? s.ny - 1 : s.ny - 1 - int(rng() % 3);
+    const int floor = trial % 3 == 0 ? 0 : int(rng() % 3);
+    const int ceiling = trial % 5 < 2 ? s.ny - 1 : s.ny - 1 - int(rng() % 3);
     const bool at_words = trial % 2 == 1, g_at_words = at_words && trial / 8 % 2 == 0;
-    const int y_end = !at_words ? floor + int(rng() % std::uint32_t(ceiling - floor)) : g_at_words ? ceiling - 1 : floor + 1;
+    const int y_end = !at_words  ? floor + int(rng() % std::uint32_t(ceiling - floor))
+                      : g_at_words ? ceiling - 1
+                                   : floor + 1;
     VoxelGrid grid(s);
     std::vector<std::uint8_t> room(s.column_count());
     std::vector<int> ceilings(s.column_count());
@@ -409,7 +420,8 @@ TEST(Bounds, TheVolumeIsTheThesisVolumeWithSmallPlateausFlattenedAndItsHolesFill
       }
     }
     const BoundsStorey storey{{floor, ceiling, 0, 0}, y_end, &room, &ceilings};
-    EXPECT_EQ(bounds_volume(grid, std::span(&storey, 1), BoundsParams{0.0f}), bounds_volume_by_definition(grid, storey, 0))
+    EXPECT_EQ(bounds_volume(grid, std::span(&storey, 1), BoundsParams{0.0f}),
+              bounds_volume_by_definition(grid, storey, 0))
         << "trial " << trial << ": " << s.ny << " levels, " << floor << " to " << ceiling;
     // Plateaus of up to 2, 4 and 8 columns flattened (0.03, 0.05 and 0.09 m² at 0.1 m).
     const float area = std::array{0.03f, 0.05f, 0.09f}[std::size_t(trial % 3)];

@@ -74,8 +74,9 @@ void fill_plane_holes(const GridSpec& s, const FloorCeiling& levels, const std::
           // The levels below and above (the grid's levels -1 and ny read as empty: no run reaches them).
           const std::uint64_t down = c << 1 | (k > 0 ? word(here, k - 1) >> 63 : 0),
                               up = c >> 1 | (k + 1 < words ? word(here, k + 1) << 63 : 0);
-          std::uint64_t to_fill = ~c & level_bits(first, k, y_lo, y_hi) &
-                                  (three_of_four(l, r, b, f) | three_of_four(l, r, down, up) | three_of_four(down, up, b, f));
+          const std::uint64_t three = three_of_four(l, r, b, f) | three_of_four(l, r, down, up) |
+                                      three_of_four(down, up, b, f);
+          std::uint64_t to_fill = ~c & level_bits(first, k, y_lo, y_hi) & three;
           for (; to_fill != 0; to_fill &= to_fill - 1)
             fill.push_back(s.index(x, first + 64 * int(k) + std::countr_zero(to_fill), z));
         }

@@ -36,7 +36,8 @@ inline int highest_solid(const std::uint8_t* v, int below, int to) {
   // Whole words, then the first eight levels above `below` (those it shares with the words read are empty).
   for (; to - 8 >= below; to -= 8)
     if (const std::uint64_t w = eight_levels(v, to - 7)) return to - 7 + (63 - std::countl_zero(w)) / 8;
-  if (const std::uint64_t w = to > below ? eight_levels(v, below + 1) : 0) return below + 1 + (63 - std::countl_zero(w)) / 8;
+  if (const std::uint64_t w = to > below ? eight_levels(v, below + 1) : 0)
+    return below + 1 + (63 - std::countl_zero(w)) / 8;
   return below;
 }
 

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 namespace roomsense {
@@ -283,16 +282,12 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
   // A 2x2 block around an edge holds cells p, q (one diagonal) and r, t (the other). When one diagonal is
   // solid and the other empty, the empty pair is filled. Filling only adds solid voxels, so the loop ends;
   // in practice after one or two passes.
-  const auto settle = [](std::uint8_t& p, std::uint8_t& q, std::uint8_t& r, std::uint8_t& t) {
-    if (p && q && !r && !t) {
-      r = t = 1;
-      return true;
-    }
-    if (r && t && !p && !q) {
-      p = q = 1;
-      return true;
-    }
-    return false;
+  const auto fillable = [](bool p, bool q, bool r, bool t) { return (p && q && !r && !t) || (r && t && !p && !q); };
+  const auto settle = [&](std::uint8_t& p, std::uint8_t& q, std::uint8_t& r, std::uint8_t& t) {
+    if (!fillable(p, q, r, t)) return false;
+    if (p) r = t = 1;
+    else p = q = 1;
+    return true;
   };
   // The levels the checks read, [y_lo, y_end + 1] within the grid.
   const std::size_t read_from = std::size_t(y_lo), read_count = std::size_t(std::min(y_end + 1, s.ny - 1) - y_lo + 1);
@@ -300,8 +295,8 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
     return std::equal(a + read_from, a + read_from + read_count, b + read_from);
   };
   // Whether an edge of a block can fill as the block stands (the edges along y, z and x where check_y, check_z
-  // and check_x), eight levels at a time: a block none of whose edges can fill fills nothing, as only a fill
-  // changes it. A voxel reads as 1 where it is not 0.
+  // and check_x), eight levels at a time (`fillable` on each byte's lowest bit): a block none of whose edges can
+  // fill fills nothing, as only a fill changes it. A voxel reads as 1 where it is not 0.
   const auto can_fill = [&](const std::uint8_t* c, const std::uint8_t* cx, const std::uint8_t* cz,
                             const std::uint8_t* cxz, bool check_y, bool check_z, bool check_x) {
     constexpr std::uint64_t kOnes = 0x0101010101010101ull, kLow7 = 0x7F7F7F7F7F7F7F7Full;
@@ -327,11 +322,10 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
       }
       if (edges & kOnes) return true;
     }
-    const auto can = [](bool p, bool q, bool r, bool t) { return (p && q && !r && !t) || (r && t && !p && !q); };
     for (; y <= y_end; ++y) {
-      if (check_y && can(c[y], cxz[y], cx[y], cz[y])) return true;
-      if (y + 1 < s.ny && ((check_z && can(c[y], cx[y + 1], cx[y], c[y + 1])) ||
-                           (check_x && can(c[y], cz[y + 1], cz[y], c[y + 1]))))
+      if (check_y && fillable(c[y], cxz[y], cx[y], cz[y])) return true;
+      if (y + 1 < s.ny && ((check_z && fillable(c[y], cx[y + 1], cx[y], c[y + 1])) ||
+                           (check_x && fillable(c[y], cz[y + 1], cz[y], c[y + 1]))))
         return true;
     }
     return false;

@@ -87,16 +87,6 @@ constexpr std::array<bool, 256> make_corner_table() {
   return table;
 }
 constexpr std::array<bool, 256> kCornerTable = make_corner_table();
-// A point between two levels of the same four voxels is no corner: every face around it continues straight on.
-static_assert([] {
-  for (int level = 0; level < 16; ++level) {
-    int pattern = 0;  // the level's four voxels (bit dx | dz << 1) below the point and again above it
-    for (int k = 0; k < 4; ++k)
-      if (level >> k & 1) pattern |= 1 << ((k & 1) | (k >> 1) << 2) | 1 << ((k & 1) | 2 | (k >> 1) << 2);
-    if (kCornerTable[std::size_t(pattern)]) return false;
-  }
-  return true;
-}());
 
 // The corners of the whole surface, one bit per lattice point of the solid box. A face region's polygon
 // takes every corner on its border: its own turns and the T-junctions where its neighbours turn, so the
@@ -110,6 +100,12 @@ class SurfaceCorners {
         if (bits >> k & 1) spread[std::size_t(bits)] |= 1 << ((k & 1) | (k >> 1) << 2);
     return spread;
   }();
+  // A point between two levels of the same four voxels is no corner: every face around it continues straight on.
+  static_assert([] {
+    for (std::size_t level = 0; level < 16; ++level)
+      if (kCornerTable[std::size_t(kSpread[level] | kSpread[level] << 2)]) return false;
+    return true;
+  }());
 
  public:
   // Every lattice column of the box.

@@ -1,5 +1,5 @@
-// A minimal fork-join loop. Each worker owns a fixed contiguous slice of [0, n), so results never depend
-// on timing or on the thread count. The workers run on the thread's current pool (worker_pool.h), or on threads
+// Minimal fork-join loops. A loop's slices of [0, n) are fixed by n and the thread count alone, and each slice's
+// outputs are its own, so results never depend on timing or on the thread count. The workers run on the thread's current pool (worker_pool.h), or on threads
 // started for the loop where there is none.
 #pragma once
 #include "worker_pool.h"
@@ -39,32 +39,41 @@ void run_workers(std::size_t workers, Work&& work) {
   work(std::size_t{0});
 }
 
-// How many workers parallel_for uses: at most `threads`, each with a slice of at least min_grain items.
-inline std::size_t parallel_workers(std::size_t n, unsigned threads, std::size_t min_grain) {
-  const std::size_t max_workers = std::max<std::size_t>(1, n / std::max<std::size_t>(1, min_grain));
-  return std::min<std::size_t>(resolve_threads(threads), max_workers);
+// How many slices parallel_for cuts [0, n) into: one on one thread; else up to kSlicesPerThread per thread, each
+// of at least min_grain items. More slices than threads, taken by whichever thread is free, let the calling
+// thread go on with the next slice while a pool thread still wakes (some 50 us on this project's 2-core VM, as
+// much as a small loop's whole slice): an update of a few milliseconds ran six or so such loops.
+inline constexpr std::size_t kSlicesPerThread = 4;
+inline std::size_t parallel_slices(std::size_t n, unsigned threads, std::size_t min_grain) {
+  const unsigned t = resolve_threads(threads);
+  if (t <= 1) return 1;
+  const std::size_t most = std::max<std::size_t>(1, n / std::max<std::size_t>(1, min_grain));
+  return std::min<std::size_t>(kSlicesPerThread * t, most);
 }
 
-// Calls body(begin, end, worker) for parallel_workers(...) contiguous slices of [0, n).
+// Calls body(begin, end, slice) for the parallel_slices(...) contiguous slices of [0, n), slice k being
+// [n k / slices, n (k + 1) / slices): a body's outputs kept per slice, in slice order, are those of one pass.
 template <class Body>
 void parallel_for(std::size_t n, unsigned threads, std::size_t min_grain, Body&& body) {
-  const std::size_t workers = parallel_workers(n, threads, min_grain);
-  if (workers <= 1) {
+  const std::size_t slices = parallel_slices(n, threads, min_grain);
+  if (slices <= 1) {
     body(std::size_t{0}, n, std::size_t{0});
     return;
   }
-  const auto slice = [&](std::size_t w) { return n * w / workers; };
+  const auto bound = [&](std::size_t k) { return n * k / slices; };
+  std::atomic<std::size_t> next{0};
   std::exception_ptr failure;  // an exception escaping a thread would terminate the process: carry it here
   std::mutex failure_mutex;
-  const auto run = [&](std::size_t w) {
+  const auto run = [&](std::size_t) {
     try {
-      body(slice(w), slice(w + 1), w);
+      for (std::size_t k = next++; k < slices; k = next++) body(bound(k), bound(k + 1), k);
     } catch (...) {
+      next = slices;  // no slice starts after a failure
       const std::lock_guard lock(failure_mutex);
       if (!failure) failure = std::current_exception();
     }
   };
-  run_workers(workers, run);
+  run_workers(std::min<std::size_t>(resolve_threads(threads), slices), run);
   if (failure) std::rethrow_exception(failure);
 }
 

@@ -4,6 +4,7 @@
 // as it runs; an IncrementalAnalysis keeps its pool between results. No pool outlives its owner, so a layer
 // unloaded from an app leaves no thread behind.
 #pragma once
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -44,6 +45,7 @@ class WorkerPool {
   std::mutex mutex_;
   std::condition_variable work_;  // a batch has jobs not taken, a batch ended, or the pool ends
   std::deque<Batch*> queue_;      // batches with jobs not taken, oldest first
+  std::atomic<std::size_t> queued_ = 0;  // queue_.size(), read without the lock while spinning
   bool ending_ = false;
   std::vector<std::jthread> threads_;
 };

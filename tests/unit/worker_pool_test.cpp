@@ -1,6 +1,7 @@
 // WorkerPool (core/src/worker_pool.h, internal): the threads an analysis keeps for its parallel loops. Every job
 // runs once, loops inside loops finish on a pool of any size (the caller runs what no pool thread took), a job's
-// exception reaches the caller after every job ended, and parallel.h's loops use the pool of their thread.
+// exception reaches the caller after every job ended, and parallel.h's loops use the pool of their thread;
+// parallel_for's slices are fixed by the count and the threads, and any free thread takes the next one.
 #include "../../core/src/parallel.h"
 #include "../../core/src/worker_pool.h"
 
@@ -97,6 +98,55 @@ TEST(WorkerPool, ParallelLoopsUseTheirThreadsPool) {
     EXPECT_EQ(WorkerPool::current(), &pool);
   }
   EXPECT_EQ(WorkerPool::current(), nullptr);
+}
+
+TEST(ParallelFor, SlicesAreFixedByTheCountAndTheThreadsAlone) {
+  using roomsense::detail::parallel_slices;
+  EXPECT_EQ(parallel_slices(1000, 1, 1), 1u);  // one thread: one pass
+  EXPECT_EQ(parallel_slices(1000, 2, 1), 2 * roomsense::detail::kSlicesPerThread);
+  EXPECT_EQ(parallel_slices(1000, 2, 400), 2u);  // each slice at least the grain
+  EXPECT_EQ(parallel_slices(399, 2, 400), 1u);
+  for (const unsigned threads : {1u, 2u, 3u}) {
+    WorkerPool pool(threads - 1);
+    const PoolScope scope(&pool);
+    for (const std::size_t n : {0u, 1u, 7u, 100u, 1001u}) {
+      const std::size_t slices = parallel_slices(n, threads, 3);
+      std::vector<std::pair<std::size_t, std::size_t>> seen(std::max<std::size_t>(slices, 1), {n + 1, n + 1});
+      std::vector<std::atomic<int>> visits(n);
+      roomsense::detail::parallel_for(n, threads, 3, [&](std::size_t begin, std::size_t end, std::size_t slice) {
+        seen[slice] = {begin, end};  // each slice's own entry
+        for (std::size_t i = begin; i < end; ++i) ++visits[i];
+      });
+      for (std::size_t k = 0; k < slices; ++k)
+        EXPECT_EQ(seen[k], std::pair(n * k / slices, n * (k + 1) / slices)) << n << " items, slice " << k;
+      for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(visits[i].load(), 1) << n << " items, item " << i;
+    }
+  }
+}
+
+TEST(ParallelFor, AThreadHeldInOneSliceLeavesTheOthersToTheOtherThread) {
+  // Slice 0 ends only once every other slice has (waiting up to 10 s): with a slice fixed per thread, the thread
+  // holding slice 0 would hold half of them and the loop would wait out; taken by whichever thread is free, the
+  // other thread runs them all.
+  WorkerPool pool(1);
+  const PoolScope scope(&pool);
+  const std::size_t slices = roomsense::detail::parallel_slices(64, 2, 1);
+  ASSERT_GT(slices, 2u);
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::size_t others_ended = 0;
+  bool waited_out = false;
+  roomsense::detail::parallel_for(64, 2, 1, [&](std::size_t, std::size_t, std::size_t slice) {
+    std::unique_lock lock(mutex);
+    if (slice == 0) {
+      waited_out = !changed.wait_for(lock, std::chrono::seconds(10), [&] { return others_ended == slices - 1; });
+      return;
+    }
+    ++others_ended;
+    changed.notify_all();
+  });
+  EXPECT_FALSE(waited_out);
+  EXPECT_EQ(others_ended, slices - 1);
 }
 
 }  // namespace

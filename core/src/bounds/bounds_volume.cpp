@@ -53,9 +53,9 @@ void fill_plane_holes(const GridSpec& s, const FloorCeiling& levels, const std::
   // The levels checked and the one below and above them, as bits.
   const int first = y_lo - 1;
   const std::size_t words = (std::size_t(y_hi - y_lo + 3) + 63) / 64;
-  std::vector<std::vector<std::size_t>> fills(detail::parallel_workers(std::size_t(s.nz), threads, 8));
-  detail::parallel_for(std::size_t(s.nz), threads, 8, [&](std::size_t z_begin, std::size_t z_end, std::size_t w) {
-    std::vector<std::size_t>& fill = fills[w];
+  std::vector<std::vector<std::size_t>> fills(detail::parallel_slices(std::size_t(s.nz), threads, 8));
+  detail::parallel_for(std::size_t(s.nz), threads, 8, [&](std::size_t z_begin, std::size_t z_end, std::size_t slice) {
+    std::vector<std::size_t>& fill = fills[slice];
     for (int z = int(z_begin); z < int(z_end); ++z)
       for (int x = 0; x < s.nx; ++x) {
         const std::uint64_t* at = column_runs.data() + std::size_t(z + 1) * width + std::size_t(x + 1);

@@ -258,14 +258,14 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
   // exceed the budget, the sum of TriangleScan's lower bounds decides, a room's few large triangles each
   // costing a plane in double.
   TestCounter counter(request);
-  const std::size_t workers = detail::parallel_workers(triangles, threads, 1 << 12);
-  std::vector<std::vector<std::size_t>> large(workers);
-  std::vector<std::uint64_t> small_boxes(workers, 0), large_boxes(workers, 0);  // box voxels: one-voxel ones count 1
+  const std::size_t slices = detail::parallel_slices(triangles, threads, 1 << 12);
+  std::vector<std::vector<std::size_t>> large(slices);
+  std::vector<std::uint64_t> small_boxes(slices, 0), large_boxes(slices, 0);  // box voxels: one-voxel ones count 1
   const auto corners_of = [&](std::size_t t) {
     const std::uint32_t* corner = &request.indices[3 * t];
     return std::array<std::uint32_t, 3>{corner[0], corner[1], corner[2]};
   };
-  detail::parallel_for(triangles, threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t worker) {
+  detail::parallel_for(triangles, threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t slice) {
     std::uint64_t tests = 0, boxes = 0, large_box = 0;
     for (std::size_t t = begin; t < end; ++t) {
       const auto [i, j, k] = corners_of(t);
@@ -277,13 +277,13 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
         test_small_box(box, p[i], p[j], p[k], s, grid, tests);
         boxes += box.box_volume();
       } else {
-        large[worker].push_back(t);
+        large[slice].push_back(t);
         large_box += box.box_volume();
       }
       if (tests >= TestCounter::kFlushEvery || (t & 0xff) == 0) counter.flush(tests);
     }
     counter.flush(tests);
-    small_boxes[worker] = boxes, large_boxes[worker] = large_box;
+    small_boxes[slice] = boxes, large_boxes[slice] = large_box;
   });
   std::vector<std::size_t> listed;
   for (std::vector<std::size_t>& part : large) listed.insert(listed.end(), part.begin(), part.end()), part = {};

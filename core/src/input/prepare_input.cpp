@@ -180,21 +180,23 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
   if (known == nullptr || !covers(known->runs, scan.vertices.size())) own.emplace_back();
   if (check_indices || !own.empty()) {
     constexpr std::size_t kGrain = 1 << 15;
-    const std::size_t workers =
-        detail::parallel_workers(std::max(scan.vertices.size(), scan.indices.size()), threads, kGrain);
-    std::vector<detail::VertexRun> slices(workers);
-    std::vector<std::uint8_t> out_of_range(workers, 0);
-    detail::run_workers(workers, [&](std::size_t w) {
-      const auto slice = [&](std::size_t n) { return std::pair(n * w / workers, n * (w + 1) / workers); };
-      if (!own.empty()) {
-        const auto [begin, end] = slice(scan.vertices.size());
-        slices[w] = detail::summarize_vertices(std::span(scan.vertices).subspan(begin, end - begin));
-      }
-      if (check_indices) {
-        const auto [begin, end] = slice(scan.indices.size());
-        std::uint32_t bad = 0;  // an or of comparisons, which vectorizes (a max of unsigned does not on SSE2)
-        for (std::size_t i = begin; i < end; ++i) bad |= std::uint32_t(scan.indices[i] >= vertex_count);
-        out_of_range[w] = std::uint8_t(bad);
+    const std::size_t count =
+        detail::parallel_slices(std::max(scan.vertices.size(), scan.indices.size()), threads, kGrain);
+    std::vector<detail::VertexRun> slices(count);
+    std::vector<std::uint8_t> out_of_range(count, 0);
+    detail::parallel_for(count, threads, 1, [&](std::size_t first, std::size_t last, std::size_t) {
+      for (std::size_t w = first; w < last; ++w) {
+        const auto slice = [&](std::size_t n) { return std::pair(n * w / count, n * (w + 1) / count); };
+        if (!own.empty()) {
+          const auto [begin, end] = slice(scan.vertices.size());
+          slices[w] = detail::summarize_vertices(std::span(scan.vertices).subspan(begin, end - begin));
+        }
+        if (check_indices) {
+          const auto [begin, end] = slice(scan.indices.size());
+          std::uint32_t bad = 0;  // an or of comparisons, which vectorizes (a max of unsigned does not on SSE2)
+          for (std::size_t i = begin; i < end; ++i) bad |= std::uint32_t(scan.indices[i] >= vertex_count);
+          out_of_range[w] = std::uint8_t(bad);
+        }
       }
     });
     // Where an index is out of range, the first one names the error.

@@ -1,6 +1,6 @@
 // Minimal fork-join loops. A loop's slices of [0, n) are fixed by n and the thread count alone, and each slice's
-// outputs are its own, so results never depend on timing or on the thread count. The workers run on the thread's current pool (worker_pool.h), or on threads
-// started for the loop where there is none.
+// outputs are its own, so results never depend on timing or on the thread count. The workers run on the thread's
+// current pool (worker_pool.h), or on threads started for the loop where there is none.
 #pragma once
 #include "worker_pool.h"
 

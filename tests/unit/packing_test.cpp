@@ -1,7 +1,8 @@
 // SquarePacker (core/src/areas/reduce.h, internal) packs a whole analysis's squares without ranking every one
 // (pack_fresh: a square whose middle sample is taken when its alignment step begins is refused without a
 // contact). An IncrementalAnalysis packs through the ranked path, which ranks them all. Both must keep the same
-// squares, size after size, on rooms off the grid's axes too, at any main direction.
+// squares, size after size, on rooms off the grid's axes too, at any main direction. A replay finds each
+// rectangle's changed-region box from its shape's, exactly the box of its corners.
 #include "../../core/src/areas/reduce.h"
 #include "../../core/src/areas/search.h"
 #include "synthetic_fixture.h"
@@ -147,6 +148,24 @@ TEST(Packing, DominantDirectionWeighsWallsByLengthAndFoldsRightAngles) {
   add(4, 0, 30);   // 0° again, along the first walls' dx: 180 there
   EXPECT_EQ(dominant_direction_deg(walls), 0.0);
   EXPECT_EQ(dominant_direction_deg({}), 0.0);
+}
+
+TEST(Packing, AReplaysBoxFromTheShapeIsTheBoxOfTheCorners) {
+  std::mt19937 random(19);
+  std::uniform_int_distribution<int> offset(-40, 40), place(0, 300), height(0, 60);
+  std::vector<Candidates::Shape> shapes;
+  for (int k = 0; k < 200; ++k)
+    shapes.push_back({offset(random), offset(random), k % 2 == 0 ? PackedCandidate::kSquare : height(random)});
+  const std::vector<ChangedRegion::Box> boxes = ChangedRegion::around_shapes(shapes);
+  ASSERT_EQ(boxes.size(), shapes.size());
+  for (int k = 0; k < 2000; ++k) {
+    const std::size_t s = std::size_t(k) % shapes.size();
+    const PackedCandidate c(glm::ivec3(place(random), place(random) % 40, place(random)), shapes[s].dx, shapes[s].dz,
+                            shapes[s].side);
+    const ChangedRegion::Box expected = ChangedRegion::around(c.unpack()), got = ChangedRegion::around(c, boxes[s]);
+    EXPECT_EQ(got.lo, expected.lo) << "shape " << s;
+    EXPECT_EQ(got.hi, expected.hi) << "shape " << s;
+  }
 }
 
 }  // namespace

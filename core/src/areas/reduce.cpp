@@ -251,6 +251,20 @@ ChangedRegion::Box ChangedRegion::around(const Candidate& c) {
   return {b.lo - 2, b.hi + 2};
 }
 
+std::vector<ChangedRegion::Box> ChangedRegion::around_shapes(std::span<const Candidates::Shape> shapes) {
+  std::vector<Box> boxes;
+  boxes.reserve(shapes.size());
+  for (const Candidates::Shape& shape : shapes)
+    boxes.push_back(around(PackedCandidate(glm::ivec3(0), shape.dx, shape.dz, shape.side).unpack()));
+  return boxes;
+}
+
+ChangedRegion::Box ChangedRegion::around(const PackedCandidate& c, const Box& shape_box) {
+  const glm::ivec3 first = c.corner(0);
+  const glm::ivec2 at(first.x, first.z);
+  return {at + shape_box.lo, at + shape_box.hi};
+}
+
 ChangedRegion::ChangedRegion(const Box& columns)
     : origin_(columns.lo),
       columns_(std::max(1, (columns.hi.x - columns.lo.x) / kBlock + 1)),
@@ -290,16 +304,18 @@ bool ChangedRegion::touches(const Box& b) const {
 
 namespace {
 
-// A replayed packing (PackReplay): item i's previous decision where nothing that changed lies near it, else
-// nothing (the packer tests it, and notes the change where its decision differs).
-std::optional<bool> previous_decision(const PackReplay* replay, std::size_t i, const Candidate& c,
+// A replayed packing (PackReplay): item i's previous decision where nothing that changed lies near it (`around`,
+// ChangedRegion::around of the item), else nothing (the packer tests it, and notes the change where its decision
+// differs).
+std::optional<bool> previous_decision(const PackReplay* replay, std::size_t i, const ChangedRegion::Box& around,
                                       const ChangedRegion& changed) {
-  if (!replay || replay->previous[i] < 0 || changed.touches(ChangedRegion::around(c))) return std::nullopt;
+  if (!replay || replay->previous[i] < 0 || changed.touches(around)) return std::nullopt;
   return replay->previous[i] == 1;
 }
-void note_decision(const PackReplay* replay, std::size_t i, const Candidate& c, bool packed, ChangedRegion& changed) {
+void note_decision(const PackReplay* replay, std::size_t i, const ChangedRegion::Box& around, bool packed,
+                   ChangedRegion& changed) {
   // An item refused now and unknown before changes nothing.
-  if (replay && packed != (replay->previous[i] == 1)) changed.add(ChangedRegion::around(c));
+  if (replay && packed != (replay->previous[i] == 1)) changed.add(around);
 }
 
 }  // namespace
@@ -320,14 +336,17 @@ std::vector<std::size_t> WallPacker::pack(const Candidates& walls, const PackRep
   // Each shape's top edge once: a rectangle's would be a square root and a division ahead of its samples.
   std::vector<WallLine> lines;
   for (const Candidates::Shape& shape : walls.shapes()) lines.push_back(wall_line(shape.dx, shape.dz));
+  const std::vector<ChangedRegion::Box> shape_boxes = replay ? ChangedRegion::around_shapes(walls.shapes())
+                                                             : std::vector<ChangedRegion::Box>();
   std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < walls.size(); ++i) {
     if (i % kStopEvery == 0) stop_point(stop_);
     const Candidates::Item& item = walls.item(i);
     const PackedCandidate wall = walls.decode(item);
     const WallLine& line = lines[item.shape];
-    const std::optional<Candidate> corners = replay ? std::optional(wall.unpack()) : std::nullopt;  // a replay's
-    const std::optional<bool> previous = corners ? previous_decision(replay, i, *corners, changed_) : std::nullopt;
+    const std::optional<ChangedRegion::Box> around =  // a replay's
+        replay ? std::optional(ChangedRegion::around(wall, shape_boxes[item.shape])) : std::nullopt;
+    const std::optional<bool> previous = around ? previous_decision(replay, i, *around, changed_) : std::nullopt;
     // Most walls are refused at their first sample, a quarter voxel along the top edge from corner 1: with dx >= 0
     // (ring_offsets) it lies in half-voxel cell 2 x1 + 1, and in 2 z1 + 1 or 2 z1 as dz >= 0 or not (a step of
     // |dz| / length keeps it off the cell's border). Tested first, without the edge's arithmetic.
@@ -338,7 +357,7 @@ std::vector<std::size_t> WallPacker::pack(const Candidates& walls, const PackRep
     const bool free = previous ? *previous : !first_taken && wall_samples(wall, line, 0, [&](long x, long z, long y0, long y1) {
       return !taken_->any(x, z, y0, y1);
     });
-    if (corners && !previous) note_decision(replay, i, *corners, free, changed_);
+    if (around && !previous) note_decision(replay, i, *around, free, changed_);
     if (!free) continue;
     // Marked a voxel thick either side: a rectangle one voxel in front of another on a wall off the axes
     // (the staircase of its voxels) covers the same wall.
@@ -629,14 +648,19 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const Pac
   if (!replayable_) replay = nullptr;
   if (replay)
     for (const Candidate& c : replay->gone) changed_.add(ChangedRegion::around(c));
+  const std::vector<ChangedRegion::Box> shape_boxes = ChangedRegion::around_shapes(squares.shapes());
   std::vector<std::size_t> kept;
   for (std::size_t k = 0; k < order.size(); ++k) {
     if (k % kStopEvery == 0) stop_point(stop_);
     const std::size_t i = order[k];
-    const Candidate c = squares[i].unpack();
-    const std::optional<bool> previous = previous_decision(replay, i, c, changed_);
+    const Candidates::Item& item = squares.item(i);
+    const PackedCandidate square = squares.decode(item);
+    const ChangedRegion::Box around = ChangedRegion::around(square, shape_boxes[item.shape]);
+    const std::optional<bool> previous = previous_decision(replay, i, around, changed_);
+    if (previous && !*previous) continue;  // refused as before: its corners are not needed
+    const Candidate c = square.unpack();
     const bool is_free = previous ? *previous : free(c);
-    if (!previous) note_decision(replay, i, c, is_free, changed_);
+    if (!previous) note_decision(replay, i, around, is_free, changed_);
     if (!is_free) continue;
     take(c);
     kept.push_back(i);

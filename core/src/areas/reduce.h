@@ -72,6 +72,10 @@ class ChangedRegion {
   explicit ChangedRegion(const Box& columns);
   // A rectangle's samples, marks and conflicts lie within its corners' columns and two more around them.
   static Box around(const Candidate& c);
+  // around() of each of a list's shapes with corner 1 at (0, 0), and around() of a rectangle of the list from it
+  // and its corner 1: a packing's replay tests every rectangle, most far from what changed, without unpacking.
+  static std::vector<Box> around_shapes(std::span<const Candidates::Shape> shapes);
+  static Box around(const PackedCandidate& c, const Box& shape_box);
   void add(const Box& b);
   bool touches(const Box& b) const;
 

@@ -11,10 +11,10 @@ namespace {
 thread_local WorkerPool* t_current = nullptr;
 
 // A thread that would sleep on the condition variable first watches for its wake-up this long. Waking a
-// sleeping thread took some 50 us on this project's 2-core VM, about a small loop's whole share, and an
-// update's loops come a few tens of microseconds apart: a pool thread still watching takes the next loop's
-// jobs at once, and a caller whose last job runs elsewhere sees it end. Short enough that a pool left idle
-// costs a core this long after its last loop, and no more.
+// sleeping thread took some 50 us on this project's 2-core VM, about a small loop's whole share, and most of an
+// update's loops begin within this time of the one before: a pool thread still watching takes the next loop's
+// jobs at once (a median 0.3 us after the loop began, against 37-51 us asleep), and a caller whose last job
+// runs elsewhere sees it end. Short enough that a pool left idle costs a core this long after its last loop.
 constexpr auto kSpin = std::chrono::microseconds(100);
 
 void cpu_relax() {

@@ -648,19 +648,21 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const Pac
   if (!replayable_) replay = nullptr;
   if (replay)
     for (const Candidate& c : replay->gone) changed_.add(ChangedRegion::around(c));
-  const std::vector<ChangedRegion::Box> shape_boxes = ChangedRegion::around_shapes(squares.shapes());
+  const std::vector<ChangedRegion::Box> shape_boxes = replay ? ChangedRegion::around_shapes(squares.shapes())
+                                                             : std::vector<ChangedRegion::Box>();
   std::vector<std::size_t> kept;
   for (std::size_t k = 0; k < order.size(); ++k) {
     if (k % kStopEvery == 0) stop_point(stop_);
     const std::size_t i = order[k];
     const Candidates::Item& item = squares.item(i);
     const PackedCandidate square = squares.decode(item);
-    const ChangedRegion::Box around = ChangedRegion::around(square, shape_boxes[item.shape]);
-    const std::optional<bool> previous = previous_decision(replay, i, around, changed_);
+    const std::optional<ChangedRegion::Box> around =  // a replay's
+        replay ? std::optional(ChangedRegion::around(square, shape_boxes[item.shape])) : std::nullopt;
+    const std::optional<bool> previous = around ? previous_decision(replay, i, *around, changed_) : std::nullopt;
     if (previous && !*previous) continue;  // refused as before: its corners are not needed
     const Candidate c = square.unpack();
     const bool is_free = previous ? *previous : free(c);
-    if (!previous) note_decision(replay, i, around, is_free, changed_);
+    if (around && !previous) note_decision(replay, i, *around, is_free, changed_);
     if (!is_free) continue;
     take(c);
     kept.push_back(i);

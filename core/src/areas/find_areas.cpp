@@ -189,6 +189,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   // Reach reads the deduplicated walls and floors; of ceilings and furniture only the count is kept.
   const PlacementContext context{spec, features, surfaces, feature_params};
   std::vector<ReachWall> wall_areas;
+  std::shared_ptr<const WallSegments> wall_segments;  // of wall_areas, for reach
   std::vector<ReachFloor> floor_areas;
   std::array<std::vector<Area>, 4> kept_areas;
   // The areas in metres of what the reduction keeps; each type's grown (grow.h).
@@ -197,10 +198,11 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     const auto place = [&](const Sized& s) { return ReachWall(to_area(s, AreaType::Wall, context)); };
     if (cache) {
       wall_areas = cache->reach_walls(red[0].for_reach, place);
-      return;
+    } else {
+      for (const Sized& s : red[0].for_reach) wall_areas.push_back(place(s));
+      red[0].for_reach = {};
     }
-    for (const Sized& s : red[0].for_reach) wall_areas.push_back(place(s));
-    red[0].for_reach = {};
+    wall_segments = reach_segments(wall_areas, cache ? &cache->reach_memo() : nullptr);
   };
   const auto finish_floors_for_reach = [&] {
     const auto place = [&](const Sized& s) { return ReachFloor(to_area(s, AreaType::Floor, context)); };
@@ -412,7 +414,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   // §3.5: reach against V_Floor and V_Wall (before packing).
   for (std::vector<Area>& areas : kept_areas) result.areas.insert(result.areas.end(), areas.begin(), areas.end());
   assign_reach(result.areas, floor_areas, wall_areas, surfaces.floor_y, params, threads,
-               cache ? &cache->reach_memo() : nullptr);
+               cache ? &cache->reach_memo() : nullptr, std::move(wall_segments));
   result.timings.classify = elapsed_ms(clock);
   for (std::size_t type = 0; type < 4 && cache; ++type)
     if (!reused[type]) cache->keep_type(type, std::move(red[type]), params);

@@ -15,6 +15,7 @@
 #include <memory>
 #include <mutex>
 #include <numbers>
+#include <numeric>
 #include <optional>
 #include <unordered_map>
 
@@ -154,11 +155,19 @@ class FloorIndex {
     }
     origin_ = lo;
     nx_ = int((hi.x - lo.x) / size_) + 1, nz_ = int((hi.y - lo.y) / size_) + 1;
-    buckets_.resize(std::size_t(nx_) * std::size_t(nz_));
+    // Bucket by bucket in one array, each bucket's floors in order (counted, then placed): a floor's areas are
+    // tens of thousands, and a vector per bucket cost an allocation per few of them while the other thread waited.
+    std::vector<std::size_t> bucket_of(floors.size());
+    start_.assign(std::size_t(nx_) * std::size_t(nz_) + 1, 0);
     for (std::size_t i = 0; i < floors.size(); ++i) {
       const glm::ivec2 b = cell(P2(floors[i].center));
-      buckets_[std::size_t(b.y) * std::size_t(nx_) + std::size_t(b.x)].push_back(i);
+      bucket_of[i] = std::size_t(b.y) * std::size_t(nx_) + std::size_t(b.x);
+      ++start_[bucket_of[i] + 1];
     }
+    std::partial_sum(start_.begin(), start_.end(), start_.begin());
+    members_.resize(floors.size());
+    std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
+    for (std::size_t i = 0; i < floors.size(); ++i) members_[next[bucket_of[i]]++] = i;
   }
 
   // Which floor areas `from` sees. Reach reads only whether the nearest visible one's gap is below `close`,
@@ -190,7 +199,9 @@ class FloorIndex {
           for (int bx = c.x - ring; bx <= c.x + ring; ++bx) {
             if (std::max(std::abs(bx - c.x), std::abs(bz - c.y)) != ring || bx < 0 || bz < 0 || bx >= nx_ || bz >= nz_)
               continue;
-            for (std::size_t i : buckets_[std::size_t(bz) * std::size_t(nx_) + std::size_t(bx)]) {
+            const std::size_t b = std::size_t(bz) * std::size_t(nx_) + std::size_t(bx);
+            for (std::size_t k = start_[b]; k < start_[b + 1]; ++k) {
+              const std::size_t i = members_[k];
               const std::optional<double> gap = gap_of(floors_[i]);
               if (gap && (*gap < close) == near && visible(floors_[i], *gap)) return &floors_[i];
             }
@@ -211,7 +222,8 @@ class FloorIndex {
   P2 origin_{0.0};
   int nx_ = 0, nz_ = 0;
   double max_half_ = 0.0;
-  std::vector<std::vector<std::size_t>> buckets_;
+  std::vector<std::size_t> start_;    // bucket b's floors: members_[start_[b], start_[b + 1])
+  std::vector<std::size_t> members_;  // indices into floors_, bucket by bucket
 };
 
 std::uint32_t bits(float v) { return std::bit_cast<std::uint32_t>(v); }
@@ -268,8 +280,14 @@ std::vector<ReachMemo::FloorKey> floor_keys(const std::vector<ReachFloor>& floor
 
 }  // namespace
 
+std::shared_ptr<const WallSegments> reach_segments(const std::vector<ReachWall>& walls, const ReachMemo* memo) {
+  if (memo != nullptr && memo->segments && same_walls(memo->walls, walls)) return memo->segments;
+  return std::make_shared<const WallSegments>(walls, 1.0);
+}
+
 void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floors, const std::vector<ReachWall>& walls,
-                  float floor_y, const AreaParams& params, unsigned threads, ReachMemo* memo) {
+                  float floor_y, const AreaParams& params, unsigned threads, ReachMemo* memo,
+                  std::shared_ptr<const WallSegments> wall_segments) {
   // The floors' buckets, made by the first search: where the memo decides every area (a re-sent chunk), none.
   std::once_flag index_made;
   std::optional<FloorIndex> floor_index;
@@ -279,12 +297,11 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
 
   // What the previous analysis's areas saw holds where it read these walls and parameters (ReachMemo).
   const std::array<std::uint32_t, 2> scalars{bits(params.close_distance), bits(params.wall_view_cone_deg)};
-  const bool known =
-      memo != nullptr && memo->segments && memo->scalars == scalars && same_walls(memo->walls, walls);
-  // The walls' buckets, the previous analysis's where its walls are these.
+  // The walls' buckets, the previous analysis's where its walls are these (then reach_segments gave its own).
   const std::shared_ptr<const WallSegments> kept_segments =
-      known ? memo->segments : std::make_shared<const WallSegments>(walls, 1.0);
+      wall_segments ? std::move(wall_segments) : reach_segments(walls, memo);
   const WallSegments& segments = *kept_segments;
+  const bool known = memo != nullptr && memo->segments && kept_segments == memo->segments && memo->scalars == scalars;
   const std::vector<ReachMemo::FloorKey> keys = memo != nullptr ? floor_keys(floors) : std::vector<ReachMemo::FloorKey>();
   std::vector<ReachMemo::AreaKey> area_keys;
   if (memo != nullptr) {

@@ -72,6 +72,42 @@ glm::vec3 normal_bits_direction(std::uint8_t bits) {
   return d;
 }
 
+namespace {
+
+// A horizontal area's corners at height y: v1..v4 run clockwise seen from above (Eq. 3.28); upward areas reverse
+// them to run counter-clockwise seen from their front. The start is the corner whose first edge makes the
+// rotation lie in [0°, 90°).
+std::array<glm::vec3, 4> horizontal_corners(const Candidate& c, bool up, float y, const GridSpec& s) {
+  std::array<glm::ivec3, 4> v = c.corners;
+  if (up) std::swap(v[1], v[3]);
+  std::size_t start = 0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const glm::ivec3 e = v[(k + 1) % 4] - v[k];
+    if (e.x > 0 && (up ? e.z <= 0 : e.z >= 0)) start = k;
+  }
+  std::array<glm::vec3, 4> corners;
+  for (std::size_t k = 0; k < 4; ++k) {
+    glm::vec3 p = voxel_centre(s, v[(start + k) % 4]);
+    p.y = y;
+    corners[k] = p;
+  }
+  return corners;
+}
+
+glm::vec3 centre_of(const std::array<glm::vec3, 4>& corners) {  // Eq. 3.42
+  return 0.25f * (corners[0] + corners[1] + corners[2] + corners[3]);
+}
+
+float half_width_of(const std::array<glm::vec3, 4>& corners) { return 0.5f * glm::distance(corners[0], corners[1]); }  // Eq. 3.56
+
+}  // namespace
+
+ReachFloor reach_floor(const Sized& found, const PlacementContext& ctx) {
+  const std::array<glm::vec3, 4> corners = horizontal_corners(found.c(), true, ctx.surfaces.floor_y, ctx.spec);
+  const glm::vec3 centre = centre_of(corners);
+  return ReachFloor(glm::vec2(centre.x, centre.z), half_width_of(corners));
+}
+
 Area to_area(const Sized& found, AreaType type, const PlacementContext& ctx) {
   const GridSpec& s = ctx.spec;
   const Candidate c = found.c();
@@ -99,20 +135,7 @@ Area to_area(const Sized& found, AreaType type, const PlacementContext& ctx) {
     if (type == AreaType::Furniture) y = s.origin.y + float(c.corners[0].y) * voxel;
     const bool up = type != AreaType::Ceiling;
     a.normal = glm::vec3(0.0f, up ? 1.0f : -1.0f, 0.0f);  // Eq. 3.55
-    // v1..v4 run clockwise seen from above (Eq. 3.28); upward areas reverse them to run counter-clockwise seen
-    // from their front. The start is the corner whose first edge makes the rotation lie in [0°, 90°).
-    std::array<glm::ivec3, 4> v = c.corners;
-    if (up) std::swap(v[1], v[3]);
-    std::size_t start = 0;
-    for (std::size_t k = 0; k < 4; ++k) {
-      const glm::ivec3 e = v[(k + 1) % 4] - v[k];
-      if (e.x > 0 && (up ? e.z <= 0 : e.z >= 0)) start = k;
-    }
-    for (std::size_t k = 0; k < 4; ++k) {
-      glm::vec3 p = voxel_centre(s, v[(start + k) % 4]);
-      p.y = y;
-      a.corners[k] = p;
-    }
+    a.corners = horizontal_corners(c, up, y, s);
     const glm::vec3 e = a.corners[1] - a.corners[0];
     if (const auto plane = ceiling_plane(c, type, ctx)) place_on_plane(*plane, a);
     // Eq. 3.57 as a signed angle about the normal: about -Y for ceilings, so the thesis's "negative rotation".
@@ -121,8 +144,8 @@ Area to_area(const Sized& found, AreaType type, const PlacementContext& ctx) {
     a.volume_height = type == AreaType::Floor ? fp.furniture_top : type == AreaType::Ceiling ? fp.ceiling_clear
                                                                                           : fp.furniture_clear;
   }
-  a.center = 0.25f * (a.corners[0] + a.corners[1] + a.corners[2] + a.corners[3]);  // Eq. 3.42
-  a.half_width = 0.5f * glm::distance(a.corners[0], a.corners[1]);                // Eq. 3.56
+  a.center = centre_of(a.corners);
+  a.half_width = half_width_of(a.corners);
   a.half_height = 0.5f * glm::distance(a.corners[1], a.corners[2]);
   a.reach = Reach::None;
   a.flags = category_flags(a.type, a.size, a.reach);

@@ -31,7 +31,12 @@ struct ReachFloor {
   glm::vec2 center{0.0f};
   float half_width = 0.0f;
   explicit ReachFloor(const Area& a) : center(a.center.x, a.center.z), half_width(a.half_width) {}
+  ReachFloor(glm::vec2 center_xz, float half) : center(center_xz), half_width(half) {}
 };
+
+// ReachFloor(to_area(found, AreaType::Floor, context)) without the rest of the Area (its rotation's atan2, its
+// flags): V_Floor's areas are tens of thousands on a large floor.
+ReachFloor reach_floor(const Sized& found, const PlacementContext& context);
 
 // And of an area of V_Wall: the same, and its top edge.
 struct ReachWall : ReachFloor {

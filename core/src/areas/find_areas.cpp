@@ -205,7 +205,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     wall_segments = reach_segments(wall_areas, cache ? &cache->reach_memo() : nullptr);
   };
   const auto finish_floors_for_reach = [&] {
-    const auto place = [&](const Sized& s) { return ReachFloor(to_area(s, AreaType::Floor, context)); };
+    const auto place = [&](const Sized& s) { return reach_floor(s, context); };
     if (cache) floor_areas = cache->reach_floors(red[1].for_reach, place);
     else for (const Sized& s : red[1].for_reach) floor_areas.push_back(place(s));
   };
@@ -293,7 +293,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     red[type].deduplicated += deduplicators[type]->add(found[type][size], kAreaSizes[size], [&](const Sized& s) {
       if (type != 1) return;
       if (cache) red[type].for_reach.push_back(s);
-      else floor_areas.emplace_back(to_area(s, AreaType::Floor, context));
+      else floor_areas.push_back(reach_floor(s, context));
     });
     release(type, size);
     if (size + 1 < kAreaSizes.size()) return;

@@ -229,13 +229,23 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
                             : CellBox{glm::max(searched.lo - corner_reach, glm::ivec2(0)),
                                       glm::min(searched.hi + corner_reach, glm::ivec2(spec.nx - 1, spec.nz - 1))};
   }
-  for (int z = scan.lo.y; z <= scan.hi.y; ++z)
+  for (int z = scan.lo.y; z <= scan.hi.y; ++z) {
+    if (layers == 1) {  // a floor's, a flat ceiling's: the row's first and last first corner alone
+      int first = scan.lo.x, last = scan.hi.x;
+      while (first <= last && layer_of(spec.column(first, z)) != 0) ++first;
+      if (first > last) continue;
+      while (layer_of(spec.column(last, z)) != 0) --last;
+      CellBox& b = first_box[0];
+      b.lo = glm::min(b.lo, glm::ivec2(first, z)), b.hi = glm::max(b.hi, glm::ivec2(last, z));
+      continue;
+    }
     for (int x = scan.lo.x; x <= scan.hi.x; ++x) {
       const int layer = layer_of(spec.column(x, z));
       if (layer < 0 || layer >= layers) continue;
       CellBox& b = first_box[std::size_t(layer)];
       b.lo = glm::min(b.lo, glm::ivec2(x, z)), b.hi = glm::max(b.hi, glm::ivec2(x, z));
     }
+  }
   CellBox cleared;  // the rows of the bits set since they were last cleared
   for (int layer = 0; layer < layers; centres[std::size_t(layer++)].release()) {  // later layers never read it
     const int y1 = by_facet ? features.facets[std::size_t(layer)].level : y_from + layer;

@@ -37,13 +37,21 @@ auto through(Step* step, const Derive& derive, const Inputs&... inputs) {
   return step != nullptr ? step->get(derive, inputs...) : derive();
 }
 
-// `step` of every column into `out` where `redo` is null, else of the columns it lists.
+// `step` of every column into `out` where `redo` is null, else of the columns it lists. Every column by slices
+// on up to `threads` threads: three such steps run as three tasks on two threads, and a thread whose task has
+// ended takes the others' slices rather than wait (on the hall one thread ran two of them, 8.2 M instructions
+// against 6.6 M shared evenly).
 template <class Value, class Step>
 void derive_columns(std::vector<Value>& out, std::size_t columns, const std::vector<std::uint32_t>* redo,
-                    const Step& step) {
-  if (redo == nullptr) out = every_column<Value>(columns, step);
-  else
+                    const Step& step, unsigned threads) {
+  if (redo == nullptr) {
+    out.resize(columns);
+    parallel_for(columns, threads, 2048, [&](std::size_t begin, std::size_t end, std::size_t) {
+      for (std::size_t col = begin; col < end; ++col) out[col] = step(col);
+    });
+  } else {
     for (const std::uint32_t col : *redo) out[col] = step(col);
+  }
 }
 
 }  // namespace
@@ -120,11 +128,12 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
   // Free floor needs the headroom a furniture top needs (Eq. 3.13's clear space).
   const auto floor = [&] {
     derive_columns(steps.free_floor, columns, redo,
-                   FreeFloorTile(grid, f.levels, f.ceiling, f.y_end, f.walls, inside, rough, furniture_clear));
+                   FreeFloorTile(grid, f.levels, f.ceiling, f.y_end, f.walls, inside, rough, furniture_clear), threads);
     return memo ? steps.free_floor : std::move(steps.free_floor);
   };
   const auto ceiling = [&] {
-    derive_columns(steps.free_ceiling, columns, redo, FreeCeilingTile(grid, f.ceiling, ceiling_clear, f.walls, inside));
+    derive_columns(steps.free_ceiling, columns, redo, FreeCeilingTile(grid, f.ceiling, ceiling_clear, f.walls, inside),
+                   threads);
     std::vector<std::uint8_t> tiles = memo ? steps.free_ceiling : std::move(steps.free_ceiling);
     CeilingFacets found = through(
         memo ? &memo->facets : nullptr,
@@ -143,7 +152,7 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
   detail::parallel_tasks(3, threads, [&](std::size_t task) {
     if (task == 0) {
       derive_columns(steps.furniture, columns, redo,
-                     FurnitureTop(grid, f.levels, f.ceiling, f.y_end, f.walls, furniture_clear, rough));
+                     FurnitureTop(grid, f.levels, f.ceiling, f.y_end, f.walls, furniture_clear, rough), threads);
       f.furniture = memo ? steps.furniture : std::move(steps.furniture);
     }
     if (task == 1) f.free_ceiling = ceiling();

@@ -27,6 +27,9 @@ std::vector<int> wall_ceilings(const GridSpec& spec, const FloorCeiling& levels,
   const detail::Components parts = detail::label_components(
       spec.nx, spec.nz, [&](std::size_t c) { return room[c] && ceiling[c] <= levels.ceiling - step_levels; },
       [](std::size_t, std::size_t) { return true; });
+  // Without a wide lower ceiling every column's is the storey's, its neighbours' highest included (most rooms).
+  if (std::none_of(parts.sizes.begin(), parts.sizes.end(), [&](std::size_t n) { return n >= min_columns; }))
+    return std::vector<int>(spec.column_count(), levels.ceiling);
   std::vector<int> wide(ceiling.size(), levels.ceiling);
   for (std::size_t c = 0; c < wide.size(); ++c)
     if (parts.label[c] >= 0 && parts.sizes[std::size_t(parts.label[c])] >= min_columns) wide[c] = ceiling[c];

@@ -4,6 +4,7 @@
 // detect_wall_openings run them over every column; an IncrementalAnalysis runs them again only where a column's
 // voxels or entries changed, or within that reach of one (feature_memo.h).
 #pragma once
+#include "../parallel.h"
 #include "roomsense/features.h"
 
 #include <algorithm>
@@ -106,11 +107,15 @@ void redo_along_axes(const GridSpec& s, std::span<const std::uint32_t> changed, 
       }
 }
 
-// `step` of every column, as a vector.
+// `step` of every column, as a vector, by slices of columns on up to `threads` threads: detect_features runs three
+// such steps as three tasks on two threads, and a thread whose task has ended takes the others' slices rather
+// than wait (on the hall one thread ran two of them, 8.2 M instructions against 6.6 M shared evenly).
 template <class Value, class Step>
-std::vector<Value> every_column(std::size_t columns, const Step& step) {
+std::vector<Value> every_column(std::size_t columns, const Step& step, unsigned threads = 1) {
   std::vector<Value> out(columns);
-  for (std::size_t col = 0; col < columns; ++col) out[col] = step(col);
+  parallel_for(columns, threads, 2048, [&](std::size_t begin, std::size_t end, std::size_t) {
+    for (std::size_t col = begin; col < end; ++col) out[col] = step(col);
+  });
   return out;
 }
 

@@ -141,14 +141,21 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
       if (f.ceiling_facet[c] == kNoFacet) tiles[c] = 0;
     return tiles;
   };
-  detail::parallel_tasks(3, threads, [&](std::size_t task) {
-    if (task == 0) {
+  // The rooms read the inside and the walls alone: beside C, D and E (a large storey's split is as long as the
+  // three together), first, so that one thread takes it while the other takes the column steps' slices.
+  detail::parallel_tasks(4, threads, [&](std::size_t task) {
+    if (task == 0)
+      f.rooms = through(
+          memo ? &memo->rooms : nullptr,
+          [&] { return split_rooms(grid.spec, inside, f.walls, params.min_passage, params.min_room_area); },
+          grid.spec, inside, f.walls, params.min_passage, params.min_room_area);
+    if (task == 1) {
       derive_columns(steps.furniture, columns, redo,
                      FurnitureTop(grid, f.levels, f.ceiling, f.y_end, f.walls, furniture_clear, rough), threads);
       f.furniture = memo ? steps.furniture : std::move(steps.furniture);
     }
-    if (task == 1) f.free_ceiling = ceiling();
-    if (task == 2) f.free_floor = floor();
+    if (task == 2) f.free_ceiling = ceiling();
+    if (task == 3) f.free_floor = floor();
   });
   steps.inputs.done(change);
   for (std::size_t c = 0; c < inside.size(); ++c)
@@ -194,15 +201,10 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
     kept.inputs.done(change);
     return out;
   };
-  // F, the rooms and the openings read what is above and not each other: side by side.
-  detail::parallel_tasks(3, threads, [&](std::size_t task) {
+  // F and the openings read what is above and not each other: side by side.
+  detail::parallel_tasks(2, threads, [&](std::size_t task) {
     if (task == 0) f.normals = normals();
-    if (task == 1)
-      f.rooms = through(
-          memo ? &memo->rooms : nullptr,
-          [&] { return split_rooms(grid.spec, inside, f.walls, params.min_passage, params.min_room_area); },
-          grid.spec, inside, f.walls, params.min_passage, params.min_room_area);
-    if (task == 2) f.wall_blocked = openings();
+    if (task == 1) f.wall_blocked = openings();
   });
   return f;
 }

@@ -28,7 +28,6 @@ std::vector<int> flood_tops(const VoxelGrid& grid, const FloorCeiling& levels, c
   if (hi < lo) return highest;
   struct Run {
     int y0, y1;
-    std::size_t col;
   };
   std::vector<Run> runs;
   std::vector<std::size_t> first(s.column_count() + 1, 0);  // runs of column c: [first[c], first[c + 1])
@@ -48,42 +47,45 @@ std::vector<int> flood_tops(const VoxelGrid& grid, const FloorCeiling& levels, c
         if (word != 0) break;
       }
       while (y <= hi && !v[y]) ++y;
-      runs.push_back({y0, y - 1, col});
+      runs.push_back({y0, y - 1});
     }
   }
   first[s.column_count()] = runs.size();
-  std::vector<int> part(runs.size(), -1);
-  std::vector<int> part_top;
-  std::vector<std::size_t> stack;
+  // The parts, as union-find over the runs in column order: each run joins the runs it touches in the columns
+  // before it along x and z. Every part is then what a flood from any of its runs reaches; a part holds a seed
+  // where one of its runs starts just above the floor. One sequential pass, not a flood's stack.
+  std::vector<std::size_t> parent(runs.size());
+  const auto root = [&](std::size_t r) {
+    while (parent[r] != r) r = parent[r] = parent[parent[r]];
+    return r;
+  };
+  const auto join = [&](std::size_t a, std::size_t b) {
+    a = root(a), b = root(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  };
   for (std::size_t col = 0; col < s.column_count(); ++col) {
-    for (std::size_t seed = first[col]; seed < first[col + 1]; ++seed) {
-      if (runs[seed].y0 != lo || part[seed] >= 0) continue;
-      const int id = int(part_top.size());
-      part_top.push_back(runs[seed].y1);
-      part[seed] = id;
-      stack.assign(1, seed);
-      while (!stack.empty()) {
-        const std::size_t r = stack.back();
-        stack.pop_back();
-        const std::size_t c = runs[r].col;
-        const int x = int(c % std::size_t(s.nx)), z = int(c / std::size_t(s.nx));
-        const int nbr[4][2] = {{x - 1, z}, {x + 1, z}, {x, z - 1}, {x, z + 1}};
-        for (const auto& n : nbr) {
-          if (n[0] < 0 || n[1] < 0 || n[0] >= s.nx || n[1] >= s.nz) continue;
-          const std::size_t nc = s.column(n[0], n[1]);
-          for (std::size_t q = first[nc]; q < first[nc + 1]; ++q)
-            if (part[q] < 0 && runs[q].y0 <= runs[r].y1 && runs[r].y0 <= runs[q].y1) {
-              part[q] = id;
-              part_top[std::size_t(id)] = std::max(part_top[std::size_t(id)], runs[q].y1);
-              stack.push_back(q);
-            }
-        }
+    const std::size_t x = col % std::size_t(s.nx);
+    for (std::size_t r = first[col]; r < first[col + 1]; ++r) {
+      parent[r] = r;
+      for (const std::size_t before : {x > 0 ? col - 1 : col, col >= std::size_t(s.nx) ? col - std::size_t(s.nx) : col}) {
+        if (before == col) continue;
+        for (std::size_t q = first[before]; q < first[before + 1]; ++q)
+          if (runs[q].y0 <= runs[r].y1 && runs[r].y0 <= runs[q].y1) join(q, r);
       }
     }
   }
+  std::vector<int> part_top(runs.size(), -1);  // per root: its highest level, where the part holds a seed
+  std::vector<std::uint8_t> seeded(runs.size(), 0);
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const std::size_t p = root(r);
+    part_top[p] = std::max(part_top[p], runs[r].y1);
+    if (runs[r].y0 == lo) seeded[p] = 1;
+  }
   for (std::size_t col = 0; col < s.column_count(); ++col)
-    for (std::size_t r = first[col]; r < first[col + 1]; ++r)
-      if (part[r] >= 0 && part_top[std::size_t(part[r])] >= reach) highest[col] = std::max(highest[col], runs[r].y1);
+    for (std::size_t r = first[col]; r < first[col + 1]; ++r) {
+      const std::size_t p = root(r);
+      if (seeded[p] && part_top[p] >= reach) highest[col] = std::max(highest[col], runs[r].y1);
+    }
   return highest;
 }
 

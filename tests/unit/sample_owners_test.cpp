@@ -1,6 +1,7 @@
 // SampleOwners (core/src/areas/sample_owners.h, internal): growth's owner of each sample cell, in tiles kept in
 // blocks that are added, never moved, as the areas grow past the tiles reserved for them. Checked against a
-// plain map on cells spread over many more tiles than were reserved, on both tile shapes.
+// plain map on cells spread over many more tiles than were reserved, on both tile shapes; `lower`, which a replay's
+// growth uses to mark areas out of order, against the lowest value per cell.
 #include "../../core/src/areas/sample_owners.h"
 
 #include <gtest/gtest.h>
@@ -36,6 +37,23 @@ TEST(SampleOwners, KeepsEachCellsFirstOwnerAcrossBlocksAddedAsTheyGrow) {
   expect_same_as_a_map(glm::ivec3(3, 0, 3), 4, 300);   // flat tiles, 16-tile blocks: thousands of tiles
   expect_same_as_a_map(glm::ivec3(2, 2, 2), 64, 120);  // cubes
   expect_same_as_a_map(glm::ivec3(3, 0, 3), 100000, 40);  // more reserved than used: one block
+}
+
+TEST(SampleOwners, LowerLeavesEachCellsLowestOwnerWhateverTheOrder) {
+  SampleOwners owners(glm::ivec3(3, 0, 3));
+  std::map<std::tuple<int, int, int>, std::uint32_t> lowest;
+  std::mt19937 random(11);
+  std::uniform_int_distribution<int> coordinate(-60, 60);
+  std::uniform_int_distribution<std::uint32_t> any_value(0, 5000);
+  for (int n = 0; n < 50000; ++n) {
+    const glm::ivec3 cell(coordinate(random), coordinate(random) / 8, coordinate(random));
+    const std::uint32_t value = any_value(random);
+    owners.lower(cell, value);
+    const auto [it, added] = lowest.try_emplace({cell.x, cell.y, cell.z}, value);
+    if (!added) it->second = std::min(it->second, value);
+  }
+  for (const auto& [cell, value] : lowest)
+    ASSERT_EQ(owners.find(glm::ivec3(std::get<0>(cell), std::get<1>(cell), std::get<2>(cell))), value);
 }
 
 }  // namespace

@@ -14,7 +14,9 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <optional>
+#include <utility>
 
 namespace roomsense::detail {
 namespace {
@@ -141,6 +143,84 @@ ChangedRegion::Box columns_under(const Area& a, const GridSpec& spec, int margin
   return {column(lo) - margin, column(hi) + margin};
 }
 
+// A replay's growth asks the sample owners only near the few areas it grows again: each area's own samples are
+// marked once a cell they may lie in is asked for, not all of them before growth (on an added object, 60 % of the
+// update's growth). The areas are listed by buckets of 16 x 16 sample cells in x-z that their samples' cells, a
+// cell more each way against rounding, touch; an area too large for that, or not finite, is marked at once.
+class LazyMarks {
+ public:
+  static constexpr int kShift = 4;                // a bucket's side: 2^kShift sample cells
+  static constexpr std::size_t kMostBuckets = 1 << 20;  // past it (areas strewn over kilometres) all are marked
+
+  // `cells(k)`: the lowest and highest sample cell (x, z) area k's samples may lie in, or nullopt where unknown.
+  template <class Cells>
+  LazyMarks(std::size_t areas, const Cells& cells) : marked_(areas, 0) {
+    std::vector<std::optional<std::pair<glm::ivec2, glm::ivec2>>> range(areas);
+    glm::ivec2 lo(std::numeric_limits<int>::max()), hi(std::numeric_limits<int>::min());
+    for (std::size_t k = 0; k < areas; ++k) {
+      range[k] = cells(k);
+      if (!range[k]) continue;
+      const glm::ivec2 b0 = (range[k]->first - 1) >> kShift, b1 = (range[k]->second + 1) >> kShift;
+      if (std::size_t(b1.x - b0.x + 1) * std::size_t(b1.y - b0.y + 1) > 64) {
+        range[k].reset();  // marked at once: it would be listed in many buckets
+        continue;
+      }
+      range[k] = {b0, b1};
+      lo = glm::min(lo, b0), hi = glm::max(hi, b1);
+    }
+    if (lo.x <= hi.x && std::size_t(hi.x - lo.x + 1) * std::size_t(hi.y - lo.y + 1) <= kMostBuckets) {
+      lo_ = lo, count_ = hi - lo + 1;
+    } else {
+      for (auto& r : range) r.reset();
+    }
+    const std::size_t buckets = std::size_t(count_.x) * std::size_t(count_.y);
+    start_.assign(buckets + 1, 0);
+    const auto each_bucket = [&](std::size_t k, auto f) {
+      for (int z = range[k]->first.y; z <= range[k]->second.y; ++z)
+        for (int x = range[k]->first.x; x <= range[k]->second.x; ++x) f(bucket(x, z));
+    };
+    for (std::size_t k = 0; k < areas; ++k) {
+      if (range[k]) each_bucket(k, [&](std::size_t b) { ++start_[b + 1]; });
+      else now_.push_back(std::uint32_t(k));
+    }
+    for (std::size_t b = 0; b < buckets; ++b) start_[b + 1] += start_[b];
+    areas_.resize(start_[buckets]);
+    std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
+    for (std::size_t k = 0; k < areas; ++k)
+      if (range[k]) each_bucket(k, [&](std::size_t b) { areas_[next[b]++] = std::uint32_t(k); });
+    resolved_.assign(buckets, 0);
+  }
+
+  // Marks (mark(k)) the areas whose samples may lie in `cell` and are not marked yet; the first call, every area
+  // listed in no bucket.
+  template <class Mark>
+  void cover(glm::ivec3 cell, const Mark& mark) {
+    for (const std::uint32_t k : now_) mark_once(k, mark);
+    now_.clear();
+    const glm::ivec2 b = (glm::ivec2(cell.x, cell.z) >> kShift) - lo_;
+    if (b.x < 0 || b.y < 0 || b.x >= count_.x || b.y >= count_.y) return;  // no area's samples there
+    const std::size_t i = std::size_t(b.y) * std::size_t(count_.x) + std::size_t(b.x);
+    if (resolved_[i]) return;
+    for (std::size_t a = start_[i]; a < start_[i + 1]; ++a) mark_once(areas_[a], mark);
+    resolved_[i] = 1;
+  }
+
+ private:
+  std::size_t bucket(int x, int z) const {
+    return std::size_t(z - lo_.y) * std::size_t(count_.x) + std::size_t(x - lo_.x);
+  }
+  template <class Mark>
+  void mark_once(std::uint32_t k, const Mark& mark) {
+    if (!marked_[k]) marked_[k] = 1, mark(k);
+  }
+
+  glm::ivec2 lo_{0}, count_{0};
+  std::vector<std::size_t> start_;   // per bucket: its areas in areas_[start_[b], start_[b + 1])
+  std::vector<std::uint32_t> areas_;
+  std::vector<std::uint32_t> now_;   // listed in no bucket: marked at the first call
+  std::vector<std::uint8_t> resolved_, marked_;
+};
+
 }  // namespace
 
 bool same_bits(const Area& a, const Area& b) {
@@ -198,26 +278,52 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
       if (!kept[j]) add(columns_under(previous->after[j], spec, 0));
     every_area_replayed = !any_change;
   }
-  // Which area holds each sample cell. Opposite faces of a thin wall lie a voxel apart and never conflict.
+  // Which area holds each sample cell: the areas' own samples, lowest area first, then the strips growth adds, in
+  // the order it adds them. Opposite faces of a thin wall lie a voxel apart and never conflict.
   const bool horizontal = std::all_of(areas.begin(), areas.end(), [](const Area& a) { return std::fabs(a.normal.y) > 0.5f; });
-  SampleOwners owner(horizontal ? glm::ivec3(3, 0, 3) : glm::ivec3(2, 2, 2));
-  const auto mark = [&](std::uint32_t k, const glm::vec3& p) { owner.insert(sample_cell(p, h), k); };
-  if (!every_area_replayed) {
+  const glm::ivec3 tile_shift = horizontal ? glm::ivec3(3, 0, 3) : glm::ivec3(2, 2, 2);
+  SampleOwners owner(tile_shift);
+  // A replay marks the areas' own samples as growth asks for them (LazyMarks), and the strips apart.
+  const std::vector<Extent> own_extents = previous && !every_area_replayed ? extents : std::vector<Extent>();
+  std::optional<LazyMarks> lazy;
+  std::optional<SampleOwners> strips;
+  const auto mark_area = [&](std::uint32_t k) {
+    const Extent& e = lazy ? own_extents[k] : extents[k];
+    for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
+      for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j)
+        owner.lower(sample_cell(e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h), h), k);
+  };
+  const auto mark = [&](std::uint32_t k, const glm::vec3& p) { (strips ? *strips : owner).insert(sample_cell(p, h), k); };
+  if (!own_extents.empty()) {
+    lazy.emplace(own_extents.size(), [&](std::size_t k) -> std::optional<std::pair<glm::ivec2, glm::ivec2>> {
+      const Extent& e = own_extents[k];
+      glm::ivec2 lo(std::numeric_limits<int>::max()), hi(std::numeric_limits<int>::min());
+      for (const glm::vec3& c : {e.at(e.u0, e.v0), e.at(e.u1, e.v0), e.at(e.u1, e.v1), e.at(e.u0, e.v1)}) {
+        const glm::vec3 q = c / h;
+        if (!(std::fabs(q.x) < 1e6f && std::fabs(q.z) < 1e6f)) return std::nullopt;
+        const glm::ivec3 cell = sample_cell(c, h);
+        lo = glm::min(lo, glm::ivec2(cell.x, cell.z)), hi = glm::max(hi, glm::ivec2(cell.x, cell.z));
+      }
+      return std::pair(lo, hi);
+    });
+    strips.emplace(tile_shift);
+  } else if (!every_area_replayed) {
     // The tiles the areas' samples take before growth: a horizontal plane fills its flat tiles' 64 cells, a wall
     // along an axis a quarter of its cubes'.
     std::size_t samples = 0;
     for (const Extent& e : extents) samples += std::size_t(sample_count(e.u1 - e.u0, h)) * std::size_t(sample_count(e.v1 - e.v0, h));
     owner.reserve(samples / (horizontal ? 64 : 16) + 1);
-    for (std::uint32_t k = 0; k < extents.size(); ++k) {
-      const Extent& e = extents[k];
-      for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
-        for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j)
-          mark(k, e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h));
-    }
+    for (std::uint32_t k = 0; k < extents.size(); ++k) mark_area(k);
   }
+  const auto owner_of = [&](glm::ivec3 cell) {
+    if (!lazy) return owner.find(cell);
+    lazy->cover(cell, mark_area);
+    const std::uint32_t own = owner.find(cell);
+    return own != SampleOwners::kAbsent ? own : strips->find(cell);
+  };
   const auto conflicts = [&](std::uint32_t k, const glm::vec3& p) {
     for (const float depth : rule.conflict_depths) {
-      const std::uint32_t other = owner.find(sample_cell(p + depth * areas[k].normal, h));
+      const std::uint32_t other = owner_of(sample_cell(p + depth * areas[k].normal, h));
       if (other != SampleOwners::kAbsent && other != k && glm::dot(areas[other].normal, areas[k].normal) > 0.0f)
         return true;
     }

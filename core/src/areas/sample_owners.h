@@ -42,6 +42,19 @@ class SampleOwners {
 
   // Makes value the owner of cell unless it has one (as KeyTable::insert).
   void insert(glm::ivec3 cell, std::uint32_t value) {
+    std::uint32_t& owner = slot(cell);
+    if (owner == kAbsent) owner = value;
+  }
+  // Makes value the owner of cell unless it has a lower one: values inserted in any order leave the owners that
+  // inserting them in ascending order would.
+  void lower(glm::ivec3 cell, std::uint32_t value) {
+    std::uint32_t& owner = slot(cell);
+    owner = std::min(owner, value);  // kAbsent is the highest value
+  }
+
+ private:
+  // The owner of cell, kAbsent where it has none; its tile made where it has none.
+  std::uint32_t& slot(glm::ivec3 cell) {
     const std::uint64_t key = tile_key(cell);
     std::uint32_t tile = tile_of(key);
     if (tile == KeyTable::kAbsent) {
@@ -51,11 +64,9 @@ class SampleOwners {
       std::fill_n(owners(tile), cells_, kAbsent);
       last_tile_ = tile;
     }
-    std::uint32_t& owner = owners(tile)[offset(cell)];
-    if (owner == kAbsent) owner = value;
+    return owners(tile)[offset(cell)];
   }
 
- private:
   // Cells as pack_key sees them (21 bits an axis), so that two cells are one exactly when their keys are.
   static glm::ivec3 wrapped(glm::ivec3 c) { return c & glm::ivec3(0x1FFFFF); }
   std::uint64_t tile_key(glm::ivec3 cell) const {

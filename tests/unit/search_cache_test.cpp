@@ -274,6 +274,58 @@ TEST(GrowthReplay, TakesGrowthAcrossARefinedHeightWhileSamplesKeepTheirLayers) {
   EXPECT_NE(apart[0].half_width + apart[0].half_height, met[0].half_width + met[0].half_height);
 }
 
+// A rule that gives its cells as its voxels' (GrowthRule::voxel_at, cell_of) grows exactly as the same rule sample by
+// sample: growth counts an area along the grid's axes by runs of samples in one voxel. Squares along the axes and
+// turned ones, and walls, over a floor with specks missing and a fill that the counts decide.
+TEST(Growth, CountsCellsByVoxelRunsAsSampleBySample) {
+  const GridSpec s = grid();
+  std::vector<std::uint8_t> free(s.column_count(), 1);
+  std::mt19937 random(5);
+  std::bernoulli_distribution speck(0.06);
+  for (std::uint8_t& f : free) f = speck(random) ? 0 : 1;
+  std::vector<Area> areas;
+  for (float x : {0.3f, 1.33f, 2.6f, 3.72f})
+    for (float z : {0.25f, 1.5f, 2.77f, 3.9f}) areas.push_back(floor_square(s, x, z, 0.5f));
+  Area turned = floor_square(s, 2.0f, 2.0f, 0.4f);  // 30° about its centre: along no axis
+  for (glm::vec3& c : turned.corners) {
+    const glm::vec3 d = c - turned.center;
+    c = turned.center + glm::vec3(0.866f * d.x - 0.5f * d.z, 0.0f, 0.5f * d.x + 0.866f * d.z);
+  }
+  areas.push_back(turned);
+  std::vector<Area> walls;
+  for (float z : {0.5f, 2.5f}) {  // facing +x, along z, 0.6 m wide and 0.5 m high
+    Area w;
+    w.type = AreaType::Wall;
+    w.size = AreaSize::Small;
+    w.normal = glm::vec3(1, 0, 0);
+    w.corners = {glm::vec3(1.05f, 0.1f, z + 0.6f), glm::vec3(1.05f, 0.1f, z), glm::vec3(1.05f, 0.6f, z),
+                 glm::vec3(1.05f, 0.6f, z + 0.6f)};
+    w.center = glm::vec3(1.05f, 0.35f, z + 0.3f);
+    w.half_width = 0.3f, w.half_height = 0.25f;
+    walls.push_back(w);
+  }
+  const AreaParams params;
+  for (std::vector<Area>* group : {&areas, &walls}) {
+    std::size_t reads = 0;
+    GrowthRule by_sample = rule_over(s, free, &reads);
+    by_sample.fill = 0.95f;  // an area's own count decides whether it grows
+    by_sample.strip_fill = 0.6f;
+    GrowthRule by_voxel = by_sample;
+    by_voxel.voxel_at = [&s](const glm::vec3& p, const Area&) {
+      return glm::ivec3(glm::floor((p - s.origin) / s.voxel_size));
+    };
+    by_voxel.cell_of = [&s, &free](const glm::ivec3& v, const Area&) {
+      if (v.x < 0 || v.z < 0 || v.x >= s.nx || v.z >= s.nz) return SurfaceCell::Forbidden;
+      return free[s.column(v.x, v.z)] ? SurfaceCell::Usable : SurfaceCell::Unusable;
+    };
+    std::vector<Area> expected = *group, grown = *group;
+    grow_areas(expected, by_sample, params);
+    grow_areas(grown, by_voxel, params);
+    EXPECT_TRUE(same_areas(grown, expected));
+    EXPECT_FALSE(same_areas(grown, *group));  // they grew
+  }
+}
+
 // Reach from the memo equals reach searched afresh, after every change of V_Floor (floors removed, added,
 // reordered), of V_Wall, of the areas and of the floor's height, on a room split by a partition wall, so that
 // areas see floors near (Close), only far (Distance) or none (None); and where only floors or the floor's height

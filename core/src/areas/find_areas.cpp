@@ -27,6 +27,14 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
 }
 
+// A rule's cells as its voxels' (grow.h): voxel_at, cell_of, and cell_at the two in turn.
+template <class VoxelAt, class CellOf>
+void set_cells(detail::GrowthRule& rule, VoxelAt voxel_at, CellOf cell_of) {
+  rule.voxel_at = voxel_at;
+  rule.cell_of = cell_of;
+  rule.cell_at = [voxel_at, cell_of](const glm::vec3& p, const Area& a) { return cell_of(voxel_at(p, a), a); };
+}
+
 // What each type may grow over (grow.h): the cells its search accepts (Alg. 2, Alg. 3, §3.3.4).
 detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& features, const AreaParams& params,
                                std::size_t type) {
@@ -46,8 +54,8 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
     // Walls lie on the wall-side face of the voxels F marks (to_area): the voxel is half a voxel in front.
     const int floor = features.levels.floor, ceiling = std::min(features.levels.ceiling, spec.ny - 1);
     rule.conflict_depths = {-voxel, 0.0f, voxel};
-    rule.cell_at = [&spec, &features, voxel_of, voxel, floor, ceiling](const glm::vec3& p, const Area& a) {
-      const glm::ivec3 v = voxel_of(p + 0.5f * voxel * a.normal);
+    set_cells(rule, [voxel_of, voxel](const glm::vec3& p, const Area& a) { return voxel_of(p + 0.5f * voxel * a.normal); },
+              [&spec, &features, floor, ceiling](const glm::ivec3& v, const Area& a) {
       if (!spec.contains(v.x, v.y, v.z) || v.y < floor || v.y > ceiling) return SurfaceCell::Forbidden;
       const std::size_t col = spec.column(v.x, v.z), i = spec.index(v.x, v.y, v.z);
       if (features.walls[col] || (!features.wall_blocked.empty() && features.wall_blocked[i]))
@@ -57,7 +65,7 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
         return SurfaceCell::Forbidden;
       return glm::dot(detail::normal_bits_direction(features.normals[i]), a.normal) > 0.0f ? SurfaceCell::Usable
                                                                                              : SurfaceCell::Unusable;
-    };
+    });
     return rule;
   }
   rule.cells_read_height = type == 3;  // a top's level; floor and ceiling cells are columns
@@ -68,8 +76,8 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
       rule.conflict_depths.push_back(float(l) * voxel);
     }
   }
-  rule.cell_at = [&spec, &features, voxel_of, voxel, type](const glm::vec3& p, const Area& a) {
-    const glm::ivec3 v = voxel_of(p);
+  set_cells(rule, [voxel_of](const glm::vec3& p, const Area&) { return voxel_of(p); },
+            [&spec, &features, voxel_of, voxel, type](const glm::ivec3& v, const Area& a) {
     if (v.x < 0 || v.z < 0 || v.x >= spec.nx || v.z >= spec.nz) return SurfaceCell::Forbidden;
     const std::size_t col = spec.column(v.x, v.z);
     if (features.walls[col]) return SurfaceCell::Forbidden;
@@ -88,7 +96,7 @@ detail::GrowthRule growth_rule(const GridSpec& spec, const RoomFeatures& feature
       usable = features.furniture[col] == level || features.furniture[col] == level + 1;
     }
     return usable ? SurfaceCell::Usable : SurfaceCell::Unusable;
-  };
+  });
   return rule;
 }
 

@@ -53,6 +53,52 @@ void strip_samples(const Extent& e, int edge, float step, F f) {
   }
 }
 
+// How many of extent e's samples (of area a) are Usable: sample by sample, or, where the rule gives voxels and e
+// lies along the grid's axes, by runs of samples in one voxel. A sample's coordinate c is
+// (origin + u x + v y)[c]: where x[c] is zero it is a function of v alone, where y[c] is, of u alone (adding a zero
+// changes no float but a zero's sign, which gives the same voxel), so each sample's voxel is its column's
+// coordinates and its row's, and a voxel's samples are a run of columns by a run of rows.
+int usable_samples(const Extent& e, float h, const GrowthRule& rule, const Area& a) {
+  const int nu = sample_count(e.u1 - e.u0, h), nv = sample_count(e.v1 - e.v0, h);
+  const auto u_at = [&](int i) { return e.u0 + (float(i) + 0.5f) * h; };
+  const auto v_at = [&](int j) { return e.v0 + (float(j) + 0.5f) * h; };
+  const bool finite = std::isfinite(e.u0) && std::isfinite(e.u1) && std::isfinite(e.v0) && std::isfinite(e.v1) &&
+                      std::isfinite(e.origin.x) && std::isfinite(e.origin.y) && std::isfinite(e.origin.z);
+  bool separable = rule.voxel_at && rule.cell_of && nu > 0 && nv > 0 && finite;
+  std::array<bool, 3> from_v{};  // per coordinate: from the row (v) rather than the column (u)
+  for (std::size_t c = 0; c < 3 && separable; ++c) {
+    from_v[c] = e.x[int(c)] == 0.0f;
+    separable = from_v[c] || e.y[int(c)] == 0.0f;
+  }
+  int count = 0;
+  if (!separable) {
+    for (int i = 0; i < nu; ++i)
+      for (int j = 0; j < nv; ++j) count += rule.cell_at(e.at(u_at(i), v_at(j)), a) == SurfaceCell::Usable ? 1 : 0;
+    return count;
+  }
+  struct Run {
+    glm::ivec3 voxel;  // its side's coordinates, the others 0
+    int length;
+  };
+  const auto runs = [&](int n, const auto& point, bool v_side) {
+    std::vector<Run> out;
+    for (int i = 0; i < n; ++i) {
+      glm::ivec3 voxel = rule.voxel_at(point(i), a);
+      for (std::size_t c = 0; c < 3; ++c)
+        if (from_v[c] != v_side) voxel[int(c)] = 0;
+      if (!out.empty() && out.back().voxel == voxel) ++out.back().length;
+      else out.push_back({voxel, 1});
+    }
+    return out;
+  };
+  const std::vector<Run> columns = runs(nu, [&](int i) { return e.at(u_at(i), v_at(0)); }, false);
+  const std::vector<Run> rows = runs(nv, [&](int j) { return e.at(u_at(0), v_at(j)); }, true);
+  for (const Run& column : columns)
+    for (const Run& row : rows)
+      if (rule.cell_of(column.voxel + row.voxel, a) == SurfaceCell::Usable) count += column.length * row.length;
+  return count;
+}
+
 void set_size(Area& a, const AreaParams& params) {
   const float width = 2.0f * a.half_width, height = 2.0f * a.half_height;
   for (std::size_t s = 0; s < kAreaSizes.size() && kAreaSizes[s] < a.size; ++s) {
@@ -338,11 +384,8 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
     // all stop at once).
     int area_usable = 0, area_total = -1;
     const auto count_area = [&] {
-      area_total = 0;
-      for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
-        for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j, ++area_total)
-          area_usable += rule.cell_at(e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h), areas[k]) ==
-                         SurfaceCell::Usable;
+      area_total = sample_count(e.u1 - e.u0, h) * sample_count(e.v1 - e.v0, h);
+      area_usable = usable_samples(e, h, rule, areas[k]);
     };
     // An edge refused for a Forbidden or another area's sample stays refused while its strip starts where it
     // did: the strip's first samples are then computed from the same numbers, cells do not change, and other

@@ -32,6 +32,12 @@ struct GrowthRule {
   // voxel either side of their plane (as packing, reduce.h), furniture tops the levels Eq. 3.49 treats as one.
   std::vector<float> conflict_depths{0.0f};
   std::function<SurfaceCell(const glm::vec3& world, const Area& area)> cell_at;  // a point of the area's plane
+  // Where a point's cell is its voxel's, optionally: the voxel (each coordinate from the point's same coordinate
+  // alone, as floor((p + offset - origin) / voxel) is) and the voxel's cell, cell_at being the two in turn. An
+  // area along the grid's axes then has its samples' voxels as a product of its rows' and its columns', and
+  // growth counts its cells by runs of samples in one voxel rather than sample by sample.
+  std::function<glm::ivec3(const glm::vec3& world, const Area& area)> voxel_at;
+  std::function<SurfaceCell(const glm::ivec3& voxel, const Area& area)> cell_of;
   // Whether cell_at reads a point's height or the area's. Where it reads neither (floor, ceiling), a flat area
   // grows alike at any height at which its samples lie in the same layers of sample cells: a replay takes its
   // growth across a floor or ceiling height that a re-sent chunk refined.

@@ -53,50 +53,84 @@ void strip_samples(const Extent& e, int edge, float step, F f) {
   }
 }
 
+// Where extent e lies along the grid's axes: per coordinate of its samples, whether it comes from the sample's row
+// (v) alone rather than its column (u) alone. A sample's coordinate c is (origin + u x + v y)[c]: where x[c] is
+// zero it is a function of v alone, where y[c] is, of u alone (adding a zero changes no float but a zero's sign,
+// which no floor tells apart). None where e is turned, or not finite.
+std::optional<std::array<bool, 3>> along_axes(const Extent& e) {
+  if (!(std::isfinite(e.u0) && std::isfinite(e.u1) && std::isfinite(e.v0) && std::isfinite(e.v1) &&
+        std::isfinite(e.origin.x) && std::isfinite(e.origin.y) && std::isfinite(e.origin.z)))
+    return std::nullopt;
+  std::array<bool, 3> from_v{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    from_v[c] = e.x[int(c)] == 0.0f;
+    if (!from_v[c] && e.y[int(c)] != 0.0f) return std::nullopt;
+  }
+  return from_v;
+}
+
+// A run of an extent's consecutive columns (or rows) whose samples map to one cell: the cell's coordinates of its
+// side, the others 0.
+struct SideRun {
+  glm::ivec3 cell;
+  int length;
+};
+
+// The runs of extent e's columns (rows: its rows) under `cell_of`, a map of a point to a cell each of whose
+// coordinates is a floor of the point's same coordinate alone (a voxel, a sample cell); along_axes(e) gave from_v.
+// A sample's cell is its column run's cell plus its row run's.
+template <class CellOf>
+std::vector<SideRun> side_runs(const Extent& e, float h, bool rows, const std::array<bool, 3>& from_v, const CellOf& cell_of) {
+  const int n = rows ? sample_count(e.v1 - e.v0, h) : sample_count(e.u1 - e.u0, h);
+  const float u0 = e.u0 + 0.5f * h, v0 = e.v0 + 0.5f * h;  // the first column's and row's, as the samples' loops
+  std::vector<SideRun> out;
+  for (int i = 0; i < n; ++i) {
+    const float along = (rows ? e.v0 : e.u0) + (float(i) + 0.5f) * h;
+    glm::ivec3 cell = cell_of(rows ? e.at(u0, along) : e.at(along, v0));
+    for (std::size_t c = 0; c < 3; ++c)
+      if (from_v[c] != rows) cell[int(c)] = 0;
+    if (!out.empty() && out.back().cell == cell) ++out.back().length;
+    else out.push_back({cell, 1});
+  }
+  return out;
+}
+
 // How many of extent e's samples (of area a) are Usable: sample by sample, or, where the rule gives voxels and e
-// lies along the grid's axes, by runs of samples in one voxel. A sample's coordinate c is
-// (origin + u x + v y)[c]: where x[c] is zero it is a function of v alone, where y[c] is, of u alone (adding a zero
-// changes no float but a zero's sign, which gives the same voxel), so each sample's voxel is its column's
-// coordinates and its row's, and a voxel's samples are a run of columns by a run of rows.
+// lies along the grid's axes, by runs of samples in one voxel (a voxel's samples are a run of columns by a run of
+// rows).
 int usable_samples(const Extent& e, float h, const GrowthRule& rule, const Area& a) {
   const int nu = sample_count(e.u1 - e.u0, h), nv = sample_count(e.v1 - e.v0, h);
-  const auto u_at = [&](int i) { return e.u0 + (float(i) + 0.5f) * h; };
-  const auto v_at = [&](int j) { return e.v0 + (float(j) + 0.5f) * h; };
-  const bool finite = std::isfinite(e.u0) && std::isfinite(e.u1) && std::isfinite(e.v0) && std::isfinite(e.v1) &&
-                      std::isfinite(e.origin.x) && std::isfinite(e.origin.y) && std::isfinite(e.origin.z);
-  bool separable = rule.voxel_at && rule.cell_of && nu > 0 && nv > 0 && finite;
-  std::array<bool, 3> from_v{};  // per coordinate: from the row (v) rather than the column (u)
-  for (std::size_t c = 0; c < 3 && separable; ++c) {
-    from_v[c] = e.x[int(c)] == 0.0f;
-    separable = from_v[c] || e.y[int(c)] == 0.0f;
-  }
+  const std::optional<std::array<bool, 3>> from_v = rule.voxel_at && rule.cell_of ? along_axes(e) : std::nullopt;
   int count = 0;
-  if (!separable) {
+  if (!from_v) {
     for (int i = 0; i < nu; ++i)
-      for (int j = 0; j < nv; ++j) count += rule.cell_at(e.at(u_at(i), v_at(j)), a) == SurfaceCell::Usable ? 1 : 0;
+      for (int j = 0; j < nv; ++j)
+        count += rule.cell_at(e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h), a) == SurfaceCell::Usable;
     return count;
   }
-  struct Run {
-    glm::ivec3 voxel;  // its side's coordinates, the others 0
-    int length;
-  };
-  const auto runs = [&](int n, const auto& point, bool v_side) {
-    std::vector<Run> out;
-    for (int i = 0; i < n; ++i) {
-      glm::ivec3 voxel = rule.voxel_at(point(i), a);
-      for (std::size_t c = 0; c < 3; ++c)
-        if (from_v[c] != v_side) voxel[int(c)] = 0;
-      if (!out.empty() && out.back().voxel == voxel) ++out.back().length;
-      else out.push_back({voxel, 1});
-    }
-    return out;
-  };
-  const std::vector<Run> columns = runs(nu, [&](int i) { return e.at(u_at(i), v_at(0)); }, false);
-  const std::vector<Run> rows = runs(nv, [&](int j) { return e.at(u_at(0), v_at(j)); }, true);
-  for (const Run& column : columns)
-    for (const Run& row : rows)
-      if (rule.cell_of(column.voxel + row.voxel, a) == SurfaceCell::Usable) count += column.length * row.length;
+  const auto voxel = [&](const glm::vec3& p) { return rule.voxel_at(p, a); };
+  const std::vector<SideRun> rows = side_runs(e, h, true, *from_v, voxel);
+  for (const SideRun& column : side_runs(e, h, false, *from_v, voxel))
+    for (const SideRun& row : rows)
+      if (rule.cell_of(column.cell + row.cell, a) == SurfaceCell::Usable) count += column.length * row.length;
   return count;
+}
+
+// Calls f(cell) for the sample cell of each of extent e's samples; where e lies along the grid's axes, once per
+// cell (its samples by runs of columns and rows).
+template <class F>
+void each_sample_cell(const Extent& e, float h, const F& f) {
+  const std::optional<std::array<bool, 3>> from_v = along_axes(e);
+  if (!from_v) {
+    for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
+      for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j)
+        f(sample_cell(e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h), h));
+    return;
+  }
+  const auto cell = [h](const glm::vec3& p) { return sample_cell(p, h); };
+  const std::vector<SideRun> rows = side_runs(e, h, true, *from_v, cell);
+  for (const SideRun& column : side_runs(e, h, false, *from_v, cell))
+    for (const SideRun& row : rows) f(column.cell + row.cell);
 }
 
 void set_size(Area& a, const AreaParams& params) {
@@ -334,10 +368,7 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
   std::optional<LazyMarks> lazy;
   std::optional<SampleOwners> strips;
   const auto mark_area = [&](std::uint32_t k) {
-    const Extent& e = lazy ? own_extents[k] : extents[k];
-    for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
-      for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j)
-        owner.lower(sample_cell(e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h), h), k);
+    each_sample_cell(lazy ? own_extents[k] : extents[k], h, [&](glm::ivec3 cell) { owner.lower(cell, k); });
   };
   const auto mark = [&](std::uint32_t k, const glm::vec3& p) { (strips ? *strips : owner).insert(sample_cell(p, h), k); };
   if (!own_extents.empty()) {

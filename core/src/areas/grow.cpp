@@ -33,6 +33,8 @@ struct Extent {
   glm::vec3 origin, x, y;
   float u0 = 0, u1 = 0, v0 = 0, v1 = 0;
   glm::vec3 at(float u, float v) const { return origin + u * x + v * y; }
+  // Its sample of column i and row j (step h), as every loop over its samples places it.
+  glm::vec3 sample(int i, int j, float h) const { return at(u0 + (float(i) + 0.5f) * h, v0 + (float(j) + 0.5f) * h); }
 };
 
 // How many samples fit in [0, length): those at (i + 1/2) step. Counted, not accumulated, so that far from
@@ -76,17 +78,12 @@ struct SideRun {
   int length;
 };
 
-// The runs of extent e's columns (rows: its rows) under `cell_of`, a map of a point to a cell each of whose
-// coordinates is a floor of the point's same coordinate alone (a voxel, a sample cell); along_axes(e) gave from_v.
-// A sample's cell is its column run's cell plus its row run's.
+// The runs of extent e's columns (rows: its rows) under `cell_of`; along_axes(e) gave from_v.
 template <class CellOf>
 std::vector<SideRun> side_runs(const Extent& e, float h, bool rows, const std::array<bool, 3>& from_v, const CellOf& cell_of) {
-  const int n = rows ? sample_count(e.v1 - e.v0, h) : sample_count(e.u1 - e.u0, h);
-  const float u0 = e.u0 + 0.5f * h, v0 = e.v0 + 0.5f * h;  // the first column's and row's, as the samples' loops
   std::vector<SideRun> out;
-  for (int i = 0; i < n; ++i) {
-    const float along = (rows ? e.v0 : e.u0) + (float(i) + 0.5f) * h;
-    glm::ivec3 cell = cell_of(rows ? e.at(u0, along) : e.at(along, v0));
+  for (int i = 0, n = sample_count(rows ? e.v1 - e.v0 : e.u1 - e.u0, h); i < n; ++i) {
+    glm::ivec3 cell = cell_of(rows ? e.sample(0, i, h) : e.sample(i, 0, h));
     for (std::size_t c = 0; c < 3; ++c)
       if (from_v[c] != rows) cell[int(c)] = 0;
     if (!out.empty() && out.back().cell == cell) ++out.back().length;
@@ -95,42 +92,37 @@ std::vector<SideRun> side_runs(const Extent& e, float h, bool rows, const std::a
   return out;
 }
 
-// How many of extent e's samples (of area a) are Usable: sample by sample, or, where the rule gives voxels and e
-// lies along the grid's axes, by runs of samples in one voxel (a voxel's samples are a run of columns by a run of
-// rows).
-int usable_samples(const Extent& e, float h, const GrowthRule& rule, const Area& a) {
-  const int nu = sample_count(e.u1 - e.u0, h), nv = sample_count(e.v1 - e.v0, h);
-  const std::optional<std::array<bool, 3>> from_v = rule.voxel_at && rule.cell_of ? along_axes(e) : std::nullopt;
-  int count = 0;
-  if (!from_v) {
-    for (int i = 0; i < nu; ++i)
-      for (int j = 0; j < nv; ++j)
-        count += rule.cell_at(e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h), a) == SurfaceCell::Usable;
-    return count;
-  }
-  const auto voxel = [&](const glm::vec3& p) { return rule.voxel_at(p, a); };
-  const std::vector<SideRun> rows = side_runs(e, h, true, *from_v, voxel);
-  for (const SideRun& column : side_runs(e, h, false, *from_v, voxel))
-    for (const SideRun& row : rows)
-      if (rule.cell_of(column.cell + row.cell, a) == SurfaceCell::Usable) count += column.length * row.length;
-  return count;
-}
-
-// Calls f(cell) for the sample cell of each of extent e's samples; where e lies along the grid's axes, once per
-// cell (its samples by runs of columns and rows).
-template <class F>
-void each_sample_cell(const Extent& e, float h, const F& f) {
+// Calls f(cell, samples) for the cells `cell_of` gives extent e's samples, `cell_of` being a map of a point to a
+// cell each of whose coordinates is a floor of the point's same coordinate alone (a voxel, a sample cell): where e
+// lies along the grid's axes once per run of columns by run of rows in one cell (a sample's cell is its column
+// run's plus its row run's), else once per sample.
+template <class CellOf, class F>
+void each_cell(const Extent& e, float h, const CellOf& cell_of, const F& f) {
   const std::optional<std::array<bool, 3>> from_v = along_axes(e);
   if (!from_v) {
     for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
-      for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j)
-        f(sample_cell(e.at(e.u0 + (float(i) + 0.5f) * h, e.v0 + (float(j) + 0.5f) * h), h));
+      for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j) f(cell_of(e.sample(i, j, h)), 1);
     return;
   }
-  const auto cell = [h](const glm::vec3& p) { return sample_cell(p, h); };
-  const std::vector<SideRun> rows = side_runs(e, h, true, *from_v, cell);
-  for (const SideRun& column : side_runs(e, h, false, *from_v, cell))
-    for (const SideRun& row : rows) f(column.cell + row.cell);
+  const std::vector<SideRun> rows = side_runs(e, h, true, *from_v, cell_of);
+  for (const SideRun& column : side_runs(e, h, false, *from_v, cell_of))
+    for (const SideRun& row : rows) f(column.cell + row.cell, column.length * row.length);
+}
+
+// How many of extent e's samples (of area a) are Usable: by runs of samples in one voxel where the rule gives
+// voxels and e lies along the grid's axes, else sample by sample.
+int usable_samples(const Extent& e, float h, const GrowthRule& rule, const Area& a) {
+  int count = 0;
+  if (rule.voxel_at && rule.cell_of && along_axes(e)) {
+    each_cell(e, h, [&](const glm::vec3& p) { return rule.voxel_at(p, a); }, [&](const glm::ivec3& voxel, int samples) {
+      if (rule.cell_of(voxel, a) == SurfaceCell::Usable) count += samples;
+    });
+    return count;
+  }
+  for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
+    for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j)
+      count += rule.cell_at(e.sample(i, j, h), a) == SurfaceCell::Usable;
+  return count;
 }
 
 void set_size(Area& a, const AreaParams& params) {
@@ -235,16 +227,13 @@ class LazyMarks {
   // `cells(k)`: the lowest and highest sample cell (x, z) area k's samples may lie in, or nullopt where unknown.
   template <class Cells>
   LazyMarks(std::size_t areas, const Cells& cells) : marked_(areas, 0) {
-    std::vector<std::optional<std::pair<glm::ivec2, glm::ivec2>>> range(areas);
+    std::vector<std::optional<std::pair<glm::ivec2, glm::ivec2>>> range(areas);  // of buckets; none: marked at once
     glm::ivec2 lo(std::numeric_limits<int>::max()), hi(std::numeric_limits<int>::min());
     for (std::size_t k = 0; k < areas; ++k) {
-      range[k] = cells(k);
-      if (!range[k]) continue;
-      const glm::ivec2 b0 = (range[k]->first - 1) >> kShift, b1 = (range[k]->second + 1) >> kShift;
-      if (std::size_t(b1.x - b0.x + 1) * std::size_t(b1.y - b0.y + 1) > 64) {
-        range[k].reset();  // marked at once: it would be listed in many buckets
-        continue;
-      }
+      const std::optional<std::pair<glm::ivec2, glm::ivec2>> lies_in = cells(k);
+      if (!lies_in) continue;
+      const glm::ivec2 b0 = (lies_in->first - 1) >> kShift, b1 = (lies_in->second + 1) >> kShift;
+      if (std::size_t(b1.x - b0.x + 1) * std::size_t(b1.y - b0.y + 1) > 64) continue;  // in too many buckets
       range[k] = {b0, b1};
       lo = glm::min(lo, b0), hi = glm::max(hi, b1);
     }
@@ -368,7 +357,8 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
   std::optional<LazyMarks> lazy;
   std::optional<SampleOwners> strips;
   const auto mark_area = [&](std::uint32_t k) {
-    each_sample_cell(lazy ? own_extents[k] : extents[k], h, [&](glm::ivec3 cell) { owner.lower(cell, k); });
+    each_cell(lazy ? own_extents[k] : extents[k], h, [h](const glm::vec3& p) { return sample_cell(p, h); },
+              [&](const glm::ivec3& cell, int) { owner.lower(cell, k); });
   };
   const auto mark = [&](std::uint32_t k, const glm::vec3& p) { (strips ? *strips : owner).insert(sample_cell(p, h), k); };
   if (!own_extents.empty()) {

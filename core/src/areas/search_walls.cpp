@@ -121,7 +121,8 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   Candidates out(spec, spec.ny, shapes);
   // The ring in words of 64 dz (bit dz + reach) per dx, in the ring's order (dx ascending, then dz): only the
   // words that hold offsets, each with the ring index of its lowest bit. Offset bit b of a word is ring entry
-  // first + (the word's bits below b).
+  // first + rank[b], its entries before it in the word: a byte per bit, not std::popcount of the bits below b,
+  // which GCC compiles to a libgcc call on the x86-64 baseline (0.75 % of the hall's time).
   int reach = 0;
   for (const RingOffset& o : ring) reach = std::max({reach, o.dx, std::abs(o.dz)});
   // One bit per possible centre of a valid rectangle found so far, indexed by 2 x centre: x1 + x2 in
@@ -141,13 +142,11 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   const auto centre_bit = [&](int sx, int sy, int dz) {
     return ring_row(dz) * row_bits + std::size_t(sx) * std::size_t(y_span) + std::size_t(sy - y_base);
   };
-  // A word's offsets are consecutive in the ring: bit b's ring index is `first` plus rank[b], kept per bit rather
-  // than counted (GCC calls a library function for std::popcount on the x86-64 baseline: 0.75 % of the hall).
   struct RingWord {
     int dx, dz_from;        // dz_from: the dz of bit 0
     std::uint64_t offsets;  // bit dz - dz_from
     std::uint32_t first;    // the ring index of the lowest bit
-    std::array<std::uint8_t, 64> rank;  // per set bit: the set bits below it
+    std::array<std::uint8_t, 64> rank;  // per set bit: the word's ring entries before it
   };
   std::vector<RingWord> ring_words;
   for (std::size_t r = 0; r < ring.size(); ++r) {

@@ -63,17 +63,17 @@ std::vector<int> flood_tops(const VoxelGrid& grid, const FloorCeiling& levels, c
     a = root(a), b = root(b);
     if (a != b) parent[std::max(a, b)] = std::min(a, b);
   };
-  for (std::size_t col = 0; col < s.column_count(); ++col) {
-    const std::size_t x = col % std::size_t(s.nx);
+  const auto join_touching = [&](std::size_t r, std::size_t col) {  // r and the runs of `col` that share a level
+    for (std::size_t q = first[col]; q < first[col + 1]; ++q)
+      if (runs[q].y0 <= runs[r].y1 && runs[r].y0 <= runs[q].y1) join(q, r);
+  };
+  const std::size_t nx = std::size_t(s.nx);
+  for (std::size_t col = 0; col < s.column_count(); ++col)
     for (std::size_t r = first[col]; r < first[col + 1]; ++r) {
       parent[r] = r;
-      for (const std::size_t before : {x > 0 ? col - 1 : col, col >= std::size_t(s.nx) ? col - std::size_t(s.nx) : col}) {
-        if (before == col) continue;
-        for (std::size_t q = first[before]; q < first[before + 1]; ++q)
-          if (runs[q].y0 <= runs[r].y1 && runs[r].y0 <= runs[q].y1) join(q, r);
-      }
+      if (col % nx > 0) join_touching(r, col - 1);
+      if (col >= nx) join_touching(r, col - nx);
     }
-  }
   std::vector<int> part_top(runs.size(), -1);  // per root: its highest level, where the part holds a seed
   std::vector<std::uint8_t> seeded(runs.size(), 0);
   for (std::size_t r = 0; r < runs.size(); ++r) {

@@ -108,8 +108,9 @@ void redo_along_axes(const GridSpec& s, std::span<const std::uint32_t> changed, 
 }
 
 // `step` of every column, as a vector, by slices of columns on up to `threads` threads: detect_features runs three
-// such steps as three tasks on two threads, and a thread whose task has ended takes the others' slices rather
-// than wait (on the hall one thread ran two of them, 8.2 M instructions against 6.6 M shared evenly).
+// such steps as tasks beside the room split on two threads, and a thread whose task has ended takes the others'
+// slices rather than wait (as three whole tasks, one thread ran two of them on the hall: 8.2 M instructions
+// against 6.6 M shared evenly).
 template <class Value, class Step>
 std::vector<Value> every_column(std::size_t columns, const Step& step, unsigned threads = 1) {
   std::vector<Value> out(columns);

@@ -150,6 +150,46 @@ TEST(Packing, DominantDirectionWeighsWallsByLengthAndFoldsRightAngles) {
   EXPECT_EQ(dominant_direction_deg({}), 0.0);
 }
 
+// A replay keeps a square's rank (its contact) unless its contact may read a changed column: contact_may_read.
+// Squares at many rotations around small boxes of non-tiles (an object set down on the floor), ranked over the
+// bare floor and over the floor with the box: where contact_may_read says no, the ranks are equal. The test means
+// something: some ranks differ, and many squares whose changed-region box meets the object's are spared.
+TEST(Packing, ContactReadsNoColumnWhereContactMayReadSaysNone) {
+  const GridSpec spec = make_grid_spec({0, 0, 0}, {4.0f, 0.4f, 4.0f}, 0.1f);
+  const std::vector<std::uint8_t> bare(spec.column_count(), 1);
+  std::vector<Candidates::Shape> shapes;
+  for (const glm::ivec2 d : {glm::ivec2(12, 0), glm::ivec2(9, 5), glm::ivec2(5, 9), glm::ivec2(8, 8), glm::ivec2(11, 2),
+                             glm::ivec2(3, -10), glm::ivec2(6, 0), glm::ivec2(4, 3), glm::ivec2(1, 1)})
+    shapes.push_back({d.x, d.y, PackedCandidate::kSquare});
+  std::mt19937 rng(23);
+  std::uniform_int_distribution<int> place(11, 17), pick(0, int(shapes.size()) - 1), corner(4, 32), width(0, 4);
+  Candidates squares(spec, 2, shapes);
+  for (int i = 0; i < 600; ++i) squares.push_back(glm::ivec3(place(rng), 1, place(rng)), std::uint32_t(pick(rng)));
+  std::vector<std::uint32_t> bare_ranks;
+  SquarePacker(spec, 0, 0.0, TileMap{spec, bare, {}}).pack(squares, nullptr, &bare_ranks);
+  std::size_t differ = 0, spared = 0;
+  for (int k = 0; k < 40; ++k) {
+    const glm::ivec2 lo(corner(rng), corner(rng));
+    const ChangedRegion::Box box{lo, lo + glm::ivec2(width(rng), width(rng))};
+    std::vector<std::uint8_t> floor = bare;
+    for (int z = box.lo.y; z <= box.hi.y; ++z)
+      for (int x = box.lo.x; x <= box.hi.x; ++x) floor[spec.column(x, z)] = 0;
+    std::vector<std::uint32_t> ranks;
+    SquarePacker(spec, 0, 0.0, TileMap{spec, floor, {}}).pack(squares, nullptr, &ranks);
+    ChangedRegion changed({glm::ivec2(0), glm::ivec2(spec.nx - 1, spec.nz - 1)});
+    changed.add(box);
+    for (std::size_t i = 0; i < squares.size(); ++i) {
+      const Candidate c = squares[i].unpack();
+      differ += ranks[i] != bare_ranks[i];
+      if (contact_may_read(c, box)) continue;
+      EXPECT_EQ(ranks[i], bare_ranks[i]) << "square " << i << " around the box from (" << box.lo.x << ", " << box.lo.y << ")";
+      spared += changed.touches(ChangedRegion::around(c));
+    }
+  }
+  EXPECT_GT(differ, 500u);
+  EXPECT_GT(spared, 1000u);
+}
+
 TEST(Packing, AReplaysBoxFromTheShapeIsTheBoxOfTheCorners) {
   std::mt19937 random(19);
   std::uniform_int_distribution<int> offset(-40, 40), place(0, 300), height(0, 60);

@@ -497,6 +497,29 @@ int SquarePacker::contact(const Candidate& c) const {
   return n;
 }
 
+bool contact_may_read(const Candidate& c, const ChangedRegion::Box& columns) {
+  // The box of the columns in continuous coordinates, a voxel wider each way: a sample within 0.75 of an edge
+  // lies in it exactly where the edge passes through it (with room for rounding).
+  const glm::dvec2 lo = glm::dvec2(columns.lo) - 1.0, hi = glm::dvec2(columns.hi) + 2.0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const glm::dvec2 a(c.corners[i].x + 0.5, c.corners[i].z + 0.5);
+    const glm::dvec2 b(c.corners[(i + 1) % 4].x + 0.5, c.corners[(i + 1) % 4].z + 0.5);
+    // The edge clipped to the box axis by axis (Liang-Barsky): what is left of [0, 1] lies in it.
+    double t0 = 0.0, t1 = 1.0;
+    for (int k = 0; k < 2 && t0 <= t1; ++k) {
+      const double d = b[k] - a[k];
+      if (d == 0.0) {
+        if (a[k] < lo[k] || a[k] > hi[k]) t0 = 2.0;
+        continue;
+      }
+      const double u = (lo[k] - a[k]) / d, v = (hi[k] - a[k]) / d;
+      t0 = std::max(t0, std::min(u, v)), t1 = std::min(t1, std::max(u, v));
+    }
+    if (t0 <= t1) return true;
+  }
+  return false;
+}
+
 // A packing rank in 32 bits, as a floor's squares are millions: the step (0 to 9: misalignment is at most 45°)
 // above the contact.
 constexpr int kContactBits = 28;

@@ -93,6 +93,12 @@ class ChangedRegion {
   Blocks marked_{};  // the box of the blocks marked (while not empty_): most tests lie outside it
 };
 
+// Whether SquarePacker's contact of square c may read a column of `columns` (inclusive). Its samples lie 0.75
+// voxels outside the edges between the corners' cell centres (beside an edge along an axis, the next row of
+// cells), so each lies in a column within a voxel of those edges: a test of the edges against the box grown by a
+// voxel. It may say yes where contact reads none of the box, never no where it reads one.
+bool contact_may_read(const Candidate& c, const ChangedRegion::Box& columns);
+
 // Packing, beyond the thesis (issue 14). Eq. 3.45-3.53 keep a rectangle unless one of its corners or edge
 // midpoints lies in a kept one (walls widened by 2 voxels), which both leaves gaps (the widening, strips no
 // test point reaches) and lets rotated squares overlap. Here a rectangle is kept unless it shares any of its

@@ -167,10 +167,17 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
                                                         const Candidates& found, const std::vector<Piece>& pieces) {
   const bool walls = type == 0;
   const std::size_t band_count = bands.searched.size();
-  // The columns whose features the type's searches read that changed, made when first asked for.
+  // The columns whose features the type's searches read that changed, by blocks and as one box, made when first
+  // asked for.
   std::optional<ChangedRegion> changed_region;
+  ChangedRegion::Box changed_box{glm::ivec2(spec_.nx), glm::ivec2(-1)};
   const auto features_changed = [&]() -> const ChangedRegion& {
-    if (!changed_region) changed_region = changed_columns(type);
+    if (!changed_region) {
+      changed_region = changed_columns(type);
+      for (std::size_t z = 0; z < changed_rows_[type].size(); ++z)
+        if (const glm::ivec2 span = changed_rows_[type][z]; span.x <= span.y)
+          changed_box = {glm::min(changed_box.lo, glm::ivec2(span.x, int(z))), glm::max(changed_box.hi, glm::ivec2(span.y, int(z)))};
+    }
     return *changed_region;
   };
   // Each searched slot's new rectangles, [begin, end) of `found`.
@@ -219,10 +226,11 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
           gone.items.push_back(r.items[k]), gone.states.push_back(r.states[k]), gone_ranks.push_back(old_ranks[k]);
           gone_places.push_back(places[k]);
         }
-      // Squares: one found again keeps its packing and rank where no feature changed near it (its contact reads
-      // a column around it; its packing reads other squares alone, which the replay watches). Both lists are in
-      // search order, a centre's squares (one a level) together. Walls are matched so when the list is assembled
-      // (their packing reads other walls alone).
+      // Squares: one found again keeps its packing and rank where its contact reads no changed column (its
+      // packing reads other squares alone, which the replay watches): none changed near it, or none near its
+      // edges (a small object set down inside a large square). Both lists are in search order, a centre's
+      // squares (one a level) together. Walls are matched so when the list is assembled (their packing reads
+      // other walls alone).
       std::vector<std::uint8_t> found_again(gone.items.size(), 0);
       std::size_t g = 0;  // the first gone square not before the fresh one
       const auto add_fresh = [&](std::size_t i, const glm::ivec2& place) {
@@ -230,7 +238,8 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
         if (!walls) {
           while (g < gone.items.size() && before(gone_places[g], place)) ++g;
           const auto changed = [&] {
-            return features_changed().touches(ChangedRegion::around(found.decode(item).unpack()));
+            const Candidate c = found.decode(item).unpack();
+            return features_changed().touches(ChangedRegion::around(c)) && contact_may_read(c, changed_box);
           };
           for (std::size_t k = g; k < gone.items.size() && gone_places[k] == place; ++k)
             if (gone.items[k] == item && !found_again[k] && !changed()) {

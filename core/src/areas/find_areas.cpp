@@ -347,12 +347,11 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   constexpr double kChainBytes = 1 << 20;
   const auto chained = [&](std::size_t type) { return 2.0 * starts[type] * double(Candidates::kBytesEach) > kChainBytes; };
   constexpr std::size_t kDeduplicateWalls = 5;  // the last size's, which gives the main direction
-  std::vector<std::vector<std::size_t>> after = {{}, {}, {}, {0}, {1, 3}, {2, 4}, {0}, {1, 6}, {2, 7}, {kDeduplicateWalls}};
+  std::vector<std::vector<std::size_t>> after = {{}, {}, {}, {0}, {1, 3}, {2, 4}, {0}, {1, 6}, {2, 7}};
   std::vector<std::function<void()>> tasks = {
       [&] { search(0); },            [&] { search(1); },            [&] { search(2); },
       [&] { deduplicate_walls(0); }, [&] { deduplicate_walls(1); }, [&] { deduplicate_walls(2); },
-      [&] { pack_walls(0); },        [&] { pack_walls(1); },        [&] { pack_walls(2); },
-      finish_walls_for_reach};
+      [&] { pack_walls(0); },        [&] { pack_walls(1); },        [&] { pack_walls(2); }};
   // The square rings, which need nothing, after the walls' tasks: a thread waiting for the last wall search makes
   // them (a whole analysis's searches only; a size no square search takes has none).
   for (std::size_t size = 0; size < kAreaSizes.size() && !cache; ++size) {
@@ -391,6 +390,12 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       after.push_back(size == 0 ? std::vector<std::size_t>{found_by}
                                 : std::vector<std::size_t>{found_by, deduplication_task[type][size - 1]});
       tasks.push_back([&deduplicate_squares, type, size] { deduplicate_squares(type, size); });
+    }
+    // V_Wall's areas for reach after the large squares' tasks: nothing in the graph waits for them, and a large
+    // square search begins the longest chain (in an update, a floor's).
+    if (size == 0) {
+      after.push_back({kDeduplicateWalls});
+      tasks.push_back(finish_walls_for_reach);
     }
   }
   // The search time ends with the last search, the reduction's with the graph.

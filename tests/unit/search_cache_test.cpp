@@ -383,7 +383,7 @@ TEST(ReachMemo, EqualsReachSearchedAfreshAsFloorsComeAndGo) {
   }
 
   AreaParams params;
-  ReachMemo memo;
+  ReachMemo memo, by_type;
   std::array<std::size_t, 4> reaches{};
   std::size_t kept_steps = 0, decided_by_height = 0;
   for (int step = 0; step < 30; ++step) {
@@ -423,14 +423,37 @@ TEST(ReachMemo, EqualsReachSearchedAfreshAsFloorsComeAndGo) {
       ++reaches[std::size_t(fresh[i].reach)];
       decided_by_height += fresh[i].reach != at_zero[i].reach;
     }
+    // The area search's way: a list per area type, each assigned on its own against one view, the memo kept once
+    // all are done. Every other step the lists go in another order.
+    {
+      const ReachView view(floors, walls, params, &by_type, step % 2 == 0 ? reach_segments(walls, &by_type) : nullptr);
+      std::array<std::vector<Area>, 4> lists;
+      const auto list_of = [](const Area& a) { return std::size_t(a.type) - 1; };  // kAreaTypes' order
+      for (const Area& a : areas) lists[list_of(a)].push_back(a);
+      std::array<ReachMemo::Seen, 4> seen;
+      for (std::size_t k = 0; k < 4; ++k) {
+        const std::size_t type = step % 2 == 0 ? k : 3 - k;
+        assign_reach(lists[type], view, floor_y, params, 2, type, &seen[type]);
+      }
+      view.keep(by_type, seen);
+      std::array<std::size_t, 4> next{};
+      std::size_t searched = 0;
+      for (std::size_t i = 0; i < areas.size(); ++i) {
+        const Area& a = lists[list_of(areas[i])][next[list_of(areas[i])]++];
+        ASSERT_EQ(a.reach, fresh[i].reach) << "by type: step " << step << ", area " << i;
+        ASSERT_EQ(a.flags, fresh[i].flags) << "by type: step " << step << ", area " << i;
+      }
+      for (const ReachMemo::Seen& list : by_type.lists) searched += list.searched;
+      EXPECT_EQ(searched, memo.lists[0].searched) << "by type: step " << step;
+    }
     if (only_height) {
-      EXPECT_EQ(memo.searched, 0u) << "step " << step;
+      EXPECT_EQ(memo.lists[0].searched, 0u) << "step " << step;
     }
     if (step > 0 && !walls_changed) {
-      EXPECT_LT(memo.searched, areas.size() / 2) << "step " << step;
+      EXPECT_LT(memo.lists[0].searched, areas.size() / 2) << "step " << step;
       ++kept_steps;
     } else {
-      EXPECT_EQ(memo.searched, areas.size()) << "step " << step;
+      EXPECT_EQ(memo.lists[0].searched, areas.size()) << "step " << step;
     }
   }
   EXPECT_GT(kept_steps, 20u);

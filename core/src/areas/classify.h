@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace roomsense::detail {
@@ -57,17 +58,22 @@ class WallSegments;  // reach.cpp: V_Wall's top edges bucketed in X-Z
 struct ReachMemo {
   using AreaKey = std::array<std::uint32_t, 10>;   // the bits of what reach reads of an area in X-Z
   using FloorKey = std::array<std::uint32_t, 3>;   // of a ReachFloor
+  // What the areas were seen against (ReachView::keep).
   std::vector<FloorKey> floors;  // V_Floor
   std::vector<ReachWall> walls;
   std::array<std::uint32_t, 2> scalars{};  // close_distance, wall_view_cone_deg
   std::shared_ptr<const WallSegments> segments;  // of `walls`
-  // Per area of the previous analysis: its key, what it saw (FloorIndex::Visible in reach.cpp) and the floor
-  // that decided it (for None, none).
-  std::vector<AreaKey> areas;
-  std::vector<std::uint8_t> seen;
-  std::vector<FloorKey> witness;
-  std::vector<std::uint32_t> witness_at;  // its index in V_Floor; for None, none
-  std::size_t searched = 0;  // of those areas, the ones whose floors were searched (not taken from the memo)
+  // Per list of areas assigned on its own (the area search: one per area type), per area of the previous analysis:
+  // its key, what it saw (FloorIndex::Visible in reach.cpp) and the floor that decided it (for None, none).
+  struct Seen {
+    std::vector<AreaKey> areas;
+    std::vector<std::uint8_t> seen;
+    std::vector<FloorKey> witness;
+    std::vector<std::uint32_t> witness_at;  // its index in V_Floor; for None, none
+    std::size_t searched = 0;  // of those areas, the ones whose floors were searched (not taken from the memo)
+    bool same = false;  // as assign_reach's result: the list's areas and floors are the memo's, which holds
+  };
+  std::array<Seen, 4> lists;
 };
 
 // V_Wall's top edges bucketed for assign_reach's lines of sight: the memo's where its walls are these, else built.
@@ -75,10 +81,36 @@ struct ReachMemo {
 // searches, rather than after them (on the hall a quarter of a millisecond of one thread).
 std::shared_ptr<const WallSegments> reach_segments(const std::vector<ReachWall>& walls, const ReachMemo* memo);
 
+// What reach reads of V_Floor and V_Wall, found once for all of an analysis's areas, so that each list of them
+// (the area search: each type's, as soon as it has grown) is assigned on its own, beside the others: the walls'
+// segments, the floors' buckets (made by the first search that needs them) and, with a memo, how the floors
+// differ from those its areas were seen against. Holds references to `floors` and `walls`.
+class ReachView {
+ public:
+  // `wall_segments`: reach_segments(walls, memo), where the caller made them; none: made here.
+  ReachView(const std::vector<ReachFloor>& floors, const std::vector<ReachWall>& walls, const AreaParams& params,
+            const ReachMemo* memo = nullptr, std::shared_ptr<const WallSegments> wall_segments = nullptr);
+  ~ReachView();
+  ReachView(const ReachView&) = delete;
+  ReachView& operator=(const ReachView&) = delete;
+  // Once every list is assigned (next[i]: list i's, from assign_reach): what each saw and what they were seen
+  // against, for the next analysis. An analysis that ends before leaves the memo as it was.
+  void keep(ReachMemo& memo, std::span<ReachMemo::Seen> next) const;
+
+ private:
+  friend void assign_reach(std::vector<Area>& areas, const ReachView& view, float floor_y, const AreaParams& params,
+                           unsigned threads, std::size_t list, ReachMemo::Seen* next);
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
 // §3.5.1/3.5.2 for each area of `areas`, against the deduplicated (not overlap-reduced) floor and wall areas
-// (V_Floor, V_Wall). Sets reach and flags. Runs on up to `threads` threads; the result does not depend on it.
-// With a memo, from the previous analysis's reach where it holds (ReachMemo), and keeps this one's there.
-// `wall_segments`: reach_segments(walls, memo), where the caller made them; none: made here.
+// (V_Floor, V_Wall) of `view`. Sets reach and flags. Runs on up to `threads` threads; the result does not depend
+// on it. With the view's memo, from the previous analysis's reach of its list `list` where it holds (ReachMemo),
+// and this one's for the next analysis in `next` (ReachView::keep). `params` are the view's.
+void assign_reach(std::vector<Area>& areas, const ReachView& view, float floor_y, const AreaParams& params,
+                  unsigned threads, std::size_t list = 0, ReachMemo::Seen* next = nullptr);
+// The same for one list against floors and walls of its own: with a memo, its first list, kept.
 void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floors, const std::vector<ReachWall>& walls,
                   float floor_y, const AreaParams& params, unsigned threads, ReachMemo* memo = nullptr,
                   std::shared_ptr<const WallSegments> wall_segments = nullptr);

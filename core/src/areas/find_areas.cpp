@@ -212,10 +212,10 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     }
     wall_segments = reach_segments(wall_areas, cache ? &cache->reach_memo() : nullptr);
   };
-  const auto finish_floors_for_reach = [&] {
+  const auto finish_floors_for_reach = [&](const std::vector<Sized>& for_reach) {
     const auto place = [&](const Sized& s) { return reach_floor(s, context); };
-    if (cache) floor_areas = cache->reach_floors(red[1].for_reach, place);
-    else for (const Sized& s : red[1].for_reach) floor_areas.push_back(place(s));
+    if (cache) floor_areas = cache->reach_floors(for_reach, place);
+    else for (const Sized& s : for_reach) floor_areas.push_back(place(s));
   };
   const auto finish = [&](std::size_t type) {
     std::vector<Area>& areas = kept_areas[type];
@@ -294,7 +294,10 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   std::array<std::unique_ptr<CentreDeduplicator>, 4> deduplicators;
   std::array<std::unique_ptr<SquarePacker>, 4> packers;
   const auto deduplicate_squares = [&](std::size_t type, std::size_t size) {
-    if (reused[type]) return;  // packing's last task takes the whole reduction
+    if (reused[type]) {  // packing's last task takes the whole reduction; V_Floor is the previous analysis's
+      if (type == 1 && size + 1 == kAreaSizes.size()) finish_floors_for_reach(reused[type]->for_reach);
+      return;
+    }
     if (size == 0) deduplicators[type] = std::make_unique<CentreDeduplicator>(spec, stop);
     // V_Floor: kept in voxels only for an IncrementalAnalysis (which may place it again at another floor height);
     // a large floor's are many, so the whole analysis holds them in metres alone.
@@ -306,13 +309,12 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     release(type, size);
     if (size + 1 < kAreaSizes.size()) return;
     deduplicators[type].reset();
-    if (type == 1) finish_floors_for_reach();
+    if (type == 1) finish_floors_for_reach(red[type].for_reach);
   };
   const auto pack_squares = [&](std::size_t type, std::size_t size) {
     if (reused[type]) {
       if (size + 1 < kAreaSizes.size()) return;
       red[type] = *reused[type];
-      if (type == 1) finish_floors_for_reach();
       finish(type);
       return;
     }
@@ -347,6 +349,8 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   constexpr double kChainBytes = 1 << 20;
   const auto chained = [&](std::size_t type) { return 2.0 * starts[type] * double(Candidates::kBytesEach) > kChainBytes; };
   constexpr std::size_t kDeduplicateWalls = 5;  // the last size's, which gives the main direction
+  constexpr std::size_t kPackWalls = 8;          // the last size's, which ends with V_Wall's growth
+  std::size_t finish_walls_task = 0;             // V_Wall's areas for reach (below)
   std::vector<std::vector<std::size_t>> after = {{}, {}, {}, {0}, {1, 3}, {2, 4}, {0}, {1, 6}, {2, 7}};
   std::vector<std::function<void()>> tasks = {
       [&] { search(0); },            [&] { search(1); },            [&] { search(2); },
@@ -394,20 +398,48 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     // V_Wall's areas for reach after the large squares' tasks: nothing in the graph waits for them, and a large
     // square search begins the longest chain (in an update, a floor's).
     if (size == 0) {
+      finish_walls_task = tasks.size();
       after.push_back({kDeduplicateWalls});
       tasks.push_back(finish_walls_for_reach);
     }
   }
-  // The search time ends with the last search, the reduction's with the graph.
+  // §3.5: reach against V_Floor and V_Wall (before packing), once both are final, and per type as soon as the
+  // type has grown, beside the other types' reduction (in an update, beside a floor's chain of packings).
+  std::optional<ReachView> reach_view;
+  std::array<ReachMemo::Seen, 4> reach_seen;  // kept once the graph has ended (ReachView::keep)
+  const std::size_t reach_view_task = tasks.size();
+  after.push_back({finish_walls_task, deduplication_task[1][kAreaSizes.size() - 1]});
+  tasks.push_back([&] {
+    reach_view.emplace(floor_areas, wall_areas, params, cache ? &cache->reach_memo() : nullptr, std::move(wall_segments));
+  });
+  std::vector<std::size_t> reach_tasks;
+  for (std::size_t type = 0; type < 4; ++type) {
+    reach_tasks.push_back(tasks.size());
+    after.push_back({reach_view_task, type == 0 ? kPackWalls : pack_task[type][kAreaSizes.size() - 1]});
+    tasks.push_back([&, type] {
+      assign_reach(kept_areas[type], *reach_view, surfaces.floor_y, params, threads, type, cache ? &reach_seen[type] : nullptr);
+    });
+  }
+  // The search time ends with the last search, the reduction's with the graph; classification's is from its first
+  // reach to its last, beside the reduction.
   std::mutex searches_mutex;
   std::size_t searches_left = square_searches.size();
   auto searches_end = clock;
+  std::optional<std::chrono::steady_clock::time_point> reach_begin;
+  auto reach_end = clock;
   parallel_graph(after, threads, [&](std::size_t i) {
     stop_point(stop);  // a stop ends the graph at the next task, not only inside the searches
+    const bool reach = std::find(reach_tasks.begin(), reach_tasks.end(), i) != reach_tasks.end();
+    if (reach) {
+      const std::lock_guard lock(searches_mutex);
+      if (!reach_begin) reach_begin = std::chrono::steady_clock::now();
+    }
     tasks[i]();
-    if (std::find(square_searches.begin(), square_searches.end(), i) == square_searches.end()) return;
+    const bool search = std::find(square_searches.begin(), square_searches.end(), i) != square_searches.end();
+    if (!search && !reach) return;
     const std::lock_guard lock(searches_mutex);
-    if (--searches_left == 0) searches_end = std::chrono::steady_clock::now();
+    if (search && --searches_left == 0) searches_end = std::chrono::steady_clock::now();
+    if (reach) reach_end = std::chrono::steady_clock::now();
   });
   for (std::size_t t = 0; t < 12; ++t)
     if (red[t / 3].skipped[t % 3])
@@ -415,20 +447,17 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
                                 " areas not searched: too many corner pairs for this room at " +
                                 std::to_string(voxel).substr(0, 5) + " m voxels (a coarser --voxel searches them)");
   stop_point(stop);
-  result.timings.search = std::chrono::duration<double, std::milli>(searches_end - clock).count();  // and overlapping reductions
-  result.timings.reduce = elapsed_ms(searches_end);
-  clock = std::chrono::steady_clock::now();
+  const auto ms = [](auto from, auto to) { return std::chrono::duration<double, std::milli>(to - from).count(); };
+  result.timings.search = ms(clock, searches_end);  // and overlapping reductions
+  result.timings.reduce = elapsed_ms(searches_end);  // and overlapping classification
+  result.timings.classify = reach_begin ? ms(*reach_begin, reach_end) : 0.0;
   for (std::size_t type = 0; type < 4; ++type) {
     result.counts.found[type] = red[type].found;
     result.counts.deduplicated[type] = red[type].deduplicated;
     result.counts.reduced[type] = kept_areas[type].size();  // growth changes extents, not the count
   }
-
-  // §3.5: reach against V_Floor and V_Wall (before packing).
   for (std::vector<Area>& areas : kept_areas) result.areas.insert(result.areas.end(), areas.begin(), areas.end());
-  assign_reach(result.areas, floor_areas, wall_areas, surfaces.floor_y, params, threads,
-               cache ? &cache->reach_memo() : nullptr, std::move(wall_segments));
-  result.timings.classify = elapsed_ms(clock);
+  if (cache) reach_view->keep(cache->reach_memo(), reach_seen);
   for (std::size_t type = 0; type < 4 && cache; ++type)
     if (!reused[type]) cache->keep_type(type, std::move(red[type]), params);
   return result;

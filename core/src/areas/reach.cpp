@@ -285,24 +285,75 @@ std::shared_ptr<const WallSegments> reach_segments(const std::vector<ReachWall>&
   return std::make_shared<const WallSegments>(walls, 1.0);
 }
 
-void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floors, const std::vector<ReachWall>& walls,
-                  float floor_y, const AreaParams& params, unsigned threads, ReachMemo* memo,
-                  std::shared_ptr<const WallSegments> wall_segments) {
+struct ReachView::State {
+  State(const std::vector<ReachFloor>& floors_, const std::vector<ReachWall>& walls_,
+        std::shared_ptr<const WallSegments> segments_, const ReachMemo* memo_, const AreaParams& params)
+      : floors(floors_), walls(walls_), segments(std::move(segments_)), memo(memo_),
+        scalars{bits(params.close_distance), bits(params.wall_view_cone_deg)}, close(params.close_distance),
+        cone_cos(std::cos(double(params.wall_view_cone_deg) * std::numbers::pi / 180.0)) {}
+  const std::vector<ReachFloor>& floors;
+  const std::vector<ReachWall>& walls;
+  std::shared_ptr<const WallSegments> segments;
+  const ReachMemo* memo;
+  std::array<std::uint32_t, 2> scalars;
+  double close, cone_cos;
+  bool known = false;        // the memo's areas were seen against these walls and parameters
+  bool same_floors = false;  // and these floors, in this order
+  std::vector<ReachMemo::FloorKey> keys;  // with a memo: the floors'
+  std::optional<KeyIndex<ReachMemo::FloorKey>> floors_now;  // where known and the floors differ
+  std::vector<std::size_t> added;  // the floors the memo's did not have
   // The floors' buckets, made by the first search: where the memo decides every area (a re-sent chunk), none.
   std::once_flag index_made;
   std::optional<FloorIndex> floor_index;
-  const double close = params.close_distance;
-  const double cone_cos = std::cos(double(params.wall_view_cone_deg) * std::numbers::pi / 180.0);
-  using Visible = FloorIndex::Visible;
+  const FloorIndex& index() {
+    std::call_once(index_made, [&] { floor_index.emplace(floors, 1.0); });
+    return *floor_index;
+  }
+};
 
-  // What the previous analysis's areas saw holds where it read these walls and parameters (ReachMemo).
-  const std::array<std::uint32_t, 2> scalars{bits(params.close_distance), bits(params.wall_view_cone_deg)};
-  // The walls' buckets, the previous analysis's where its walls are these (then reach_segments gave its own).
-  const std::shared_ptr<const WallSegments> kept_segments =
-      wall_segments ? std::move(wall_segments) : reach_segments(walls, memo);
-  const WallSegments& segments = *kept_segments;
-  const bool known = memo != nullptr && memo->segments && kept_segments == memo->segments && memo->scalars == scalars;
-  const std::vector<ReachMemo::FloorKey> keys = memo != nullptr ? floor_keys(floors) : std::vector<ReachMemo::FloorKey>();
+ReachView::ReachView(const std::vector<ReachFloor>& floors, const std::vector<ReachWall>& walls, const AreaParams& params,
+                     const ReachMemo* memo, std::shared_ptr<const WallSegments> wall_segments)
+    // The walls' buckets, the memo's where its walls are these (then reach_segments gave its own).
+    : state_(std::make_unique<State>(floors, walls, wall_segments ? std::move(wall_segments) : reach_segments(walls, memo),
+                                     memo, params)) {
+  State& v = *state_;
+  if (memo == nullptr) return;
+  v.known = memo->segments && v.segments == memo->segments && memo->scalars == v.scalars;
+  v.keys = floor_keys(floors);
+  v.same_floors = v.known && v.keys == memo->floors;
+  if (!v.known || v.same_floors) return;
+  v.floors_now.emplace(v.keys);
+  const KeyIndex floors_before(memo->floors);
+  for (std::size_t i = 0; i < v.keys.size(); ++i)
+    if (floors_before.find(v.keys[i]) == FirstIndex::kAbsent) v.added.push_back(i);
+}
+
+ReachView::~ReachView() = default;
+
+void ReachView::keep(ReachMemo& memo, std::span<ReachMemo::Seen> next) const {
+  const State& v = *state_;
+  for (std::size_t i = 0; i < next.size() && i < memo.lists.size(); ++i) {
+    if (next[i].same) memo.lists[i].searched = next[i].searched;
+    else memo.lists[i] = std::move(next[i]);
+  }
+  if (!v.same_floors) memo.floors = v.keys;
+  if (v.known) return;  // the walls, their segments and the parameters are the memo's
+  memo.walls = v.walls;
+  memo.scalars = v.scalars;
+  memo.segments = v.segments;
+}
+
+void assign_reach(std::vector<Area>& areas, const ReachView& view, float floor_y, const AreaParams& params,
+                  unsigned threads, std::size_t list, ReachMemo::Seen* next) {
+  ReachView::State& v = *view.state_;
+  const ReachMemo::Seen* memo = v.memo != nullptr ? &v.memo->lists[list] : nullptr;
+  const std::vector<ReachFloor>& floors = v.floors;
+  const std::vector<ReachWall>& walls = v.walls;
+  const WallSegments& segments = *v.segments;
+  const double close = v.close;
+  const double cone_cos = v.cone_cos;
+  using Visible = FloorIndex::Visible;
+  const bool known = memo != nullptr && v.known;
   std::vector<ReachMemo::AreaKey> area_keys;
   if (memo != nullptr) {
     area_keys.reserve(areas.size());
@@ -310,17 +361,9 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
   }
   // The same floors and areas in the same order (a re-sent chunk that moved none): each area sees what it saw,
   // through the same floor, and the memo stays as it is.
-  const bool same_lists = known && keys == memo->floors && area_keys == memo->areas;
-  std::optional<KeyIndex<ReachMemo::FloorKey>> floors_now;
+  const bool same_lists = known && v.same_floors && area_keys == memo->areas;
   std::optional<KeyIndex<ReachMemo::AreaKey>> areas_before;
-  std::vector<std::size_t> added;  // the floors the previous analysis did not have
-  if (known && !same_lists) {
-    floors_now.emplace(keys);
-    areas_before.emplace(memo->areas);
-    const KeyIndex floors_before(memo->floors);
-    for (std::size_t i = 0; i < keys.size(); ++i)
-      if (floors_before.find(keys[i]) == FirstIndex::kAbsent) added.push_back(i);
-  }
+  if (known && !same_lists) areas_before.emplace(memo->areas);
   std::vector<FloorIndex::Found> found(memo != nullptr ? areas.size() : 0);
   std::atomic<std::size_t> searched = 0;
 
@@ -331,13 +374,13 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
     if (j != FirstIndex::kAbsent) {
       const auto seen = Visible(memo->seen[j]);
       const std::uint32_t at = seen == Visible::None ? FirstIndex::kAbsent
-                               : same_lists           ? memo->witness_at[j]
-                                                      : floors_now->find(memo->witness[j]);
+                               : v.same_floors        ? memo->witness_at[j]
+                                                      : v.floors_now->find(memo->witness[j]);
       const FloorIndex::Found before{seen, at == FirstIndex::kAbsent ? nullptr : &floors[at]};
       if (seen == Visible::Within && before.floor) return before;
       if (seen == Visible::None || (seen == Visible::Beyond && before.floor)) {
         FloorIndex::Found now = before;
-        for (const std::size_t i : added) {
+        for (const std::size_t i : v.added) {
           const std::optional<double> gap = gap_of(floors[i]);
           if (!gap || (*gap >= close && now.visible != Visible::None)) continue;
           if (visible(floors[i], *gap)) {
@@ -349,8 +392,7 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
       }
     }
     searched.fetch_add(1, std::memory_order_relaxed);
-    std::call_once(index_made, [&] { floor_index.emplace(floors, 1.0); });
-    return floor_index->visible_floor(c, slack, close, gap_of, visible);
+    return v.index().visible_floor(c, slack, close, gap_of, visible);
   };
 
   const auto reach_of = [&](const Area& area, std::uint32_t j, FloorIndex::Found* decided) {
@@ -404,21 +446,29 @@ void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floor
       if (memo != nullptr) found[i] = decided;
     }
   });
-  if (memo == nullptr) return;
+  if (memo == nullptr || next == nullptr) return;
   if (same_lists) {
-    memo->searched = searched.load();  // none
+    *next = {{}, {}, {}, {}, searched.load(), true};  // none searched
     return;
   }
-  ReachMemo next{keys, walls, scalars, kept_segments, std::move(area_keys), {}, {}, {}, searched.load()};
-  next.seen.reserve(found.size());
-  next.witness.reserve(found.size());
-  next.witness_at.reserve(found.size());
+  *next = {std::move(area_keys), {}, {}, {}, searched.load(), false};
+  next->seen.reserve(found.size());
+  next->witness.reserve(found.size());
+  next->witness_at.reserve(found.size());
   for (const FloorIndex::Found& f : found) {
-    next.seen.push_back(std::uint8_t(f.visible));
-    next.witness.push_back(f.floor ? key_of(*f.floor) : ReachMemo::FloorKey{});
-    next.witness_at.push_back(f.floor ? std::uint32_t(f.floor - floors.data()) : FirstIndex::kAbsent);
+    next->seen.push_back(std::uint8_t(f.visible));
+    next->witness.push_back(f.floor ? key_of(*f.floor) : ReachMemo::FloorKey{});
+    next->witness_at.push_back(f.floor ? std::uint32_t(f.floor - floors.data()) : FirstIndex::kAbsent);
   }
-  *memo = std::move(next);
+}
+
+void assign_reach(std::vector<Area>& areas, const std::vector<ReachFloor>& floors, const std::vector<ReachWall>& walls,
+                  float floor_y, const AreaParams& params, unsigned threads, ReachMemo* memo,
+                  std::shared_ptr<const WallSegments> wall_segments) {
+  const ReachView view(floors, walls, params, memo, std::move(wall_segments));
+  std::array<ReachMemo::Seen, 1> next;
+  assign_reach(areas, view, floor_y, params, threads, 0, memo != nullptr ? &next[0] : nullptr);
+  if (memo != nullptr) view.keep(*memo, next);
 }
 
 }  // namespace roomsense::detail

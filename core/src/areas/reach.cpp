@@ -300,8 +300,23 @@ struct ReachView::State {
   bool known = false;        // the memo's areas were seen against these walls and parameters
   bool same_floors = false;  // and these floors, in this order
   std::vector<ReachMemo::FloorKey> keys;  // with a memo: the floors'
-  std::optional<KeyIndex<ReachMemo::FloorKey>> floors_now;  // where known and the floors differ
-  std::vector<std::size_t> added;  // the floors the memo's did not have
+  // Where known and the floors differ: the floors the memo's did not have, and the memo's that are still there. A
+  // change moves the floors near it alone, so the lists share a first and a last part, each in place: the keys
+  // between are compared by a hash (a floor's keys are one each: two floors with one centre are one, Eq. 3.44;
+  // where they were not, a floor would be taken for added or gone, and searched, not misread).
+  std::vector<std::size_t> added;
+  std::size_t same_first = 0, same_last = 0;  // the parts' lengths
+  std::vector<ReachMemo::FloorKey> middle;  // keys[same_first, size - same_last)
+  std::optional<KeyIndex<ReachMemo::FloorKey>> middle_now;
+  // The index in `floors` of the memo's floor `before` (its key `key`), if it is still there.
+  std::uint32_t now_of(std::uint32_t before, const ReachMemo::FloorKey& key) const {
+    const std::size_t n_before = memo->floors.size();
+    std::size_t at = FirstIndex::kAbsent;
+    if (before < same_first) at = before;
+    else if (before < n_before && before >= n_before - same_last) at = before - n_before + keys.size();
+    else if (const std::uint32_t i = middle_now->find(key); i != FirstIndex::kAbsent) at = same_first + i;
+    return at < keys.size() && keys[at] == key ? std::uint32_t(at) : FirstIndex::kAbsent;
+  }
   // The floors' buckets, made by the first search: where the memo decides every area (a re-sent chunk), none.
   std::once_flag index_made;
   std::optional<FloorIndex> floor_index;
@@ -322,10 +337,19 @@ ReachView::ReachView(const std::vector<ReachFloor>& floors, const std::vector<Re
   v.keys = floor_keys(floors);
   v.same_floors = v.known && v.keys == memo->floors;
   if (!v.known || v.same_floors) return;
-  v.floors_now.emplace(v.keys);
-  const KeyIndex floors_before(memo->floors);
-  for (std::size_t i = 0; i < v.keys.size(); ++i)
-    if (floors_before.find(v.keys[i]) == FirstIndex::kAbsent) v.added.push_back(i);
+  const std::vector<ReachMemo::FloorKey>& before = memo->floors;
+  const std::size_t shorter = std::min(before.size(), v.keys.size());
+  while (v.same_first < shorter && before[v.same_first] == v.keys[v.same_first]) ++v.same_first;
+  while (v.same_first + v.same_last < shorter &&
+         before[before.size() - 1 - v.same_last] == v.keys[v.keys.size() - 1 - v.same_last])
+    ++v.same_last;
+  v.middle.assign(v.keys.begin() + std::ptrdiff_t(v.same_first), v.keys.end() - std::ptrdiff_t(v.same_last));
+  v.middle_now.emplace(v.middle);
+  const std::vector<ReachMemo::FloorKey> middle_before(before.begin() + std::ptrdiff_t(v.same_first),
+                                                       before.end() - std::ptrdiff_t(v.same_last));
+  const KeyIndex in_before(middle_before);
+  for (std::size_t i = 0; i < v.middle.size(); ++i)
+    if (in_before.find(v.middle[i]) == FirstIndex::kAbsent) v.added.push_back(v.same_first + i);
 }
 
 ReachView::~ReachView() = default;
@@ -375,7 +399,7 @@ void assign_reach(std::vector<Area>& areas, const ReachView& view, float floor_y
       const auto seen = Visible(memo->seen[j]);
       const std::uint32_t at = seen == Visible::None ? FirstIndex::kAbsent
                                : v.same_floors        ? memo->witness_at[j]
-                                                      : v.floors_now->find(memo->witness[j]);
+                                                      : v.now_of(memo->witness_at[j], memo->witness[j]);
       const FloorIndex::Found before{seen, at == FirstIndex::kAbsent ? nullptr : &floors[at]};
       if (seen == Visible::Within && before.floor) return before;
       if (seen == Visible::None || (seen == Visible::Beyond && before.floor)) {

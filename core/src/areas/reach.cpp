@@ -459,7 +459,9 @@ void assign_reach(std::vector<Area>& areas, const ReachView& view, float floor_y
     return seen.visible == Visible::Within ? Reach::Close : Reach::Distance;
   };
 
-  parallel_for(areas.size(), threads, 16, [&](std::size_t begin, std::size_t end, std::size_t) {
+  // Where the memo holds for the whole list (a re-sent chunk that moved nothing), each area is a lookup: on one
+  // thread, as the list is one task of the area graph beside the others' (a loop's hand-over would cost more).
+  parallel_for(areas.size(), same_lists ? 1 : threads, 16, [&](std::size_t begin, std::size_t end, std::size_t) {
     for (std::size_t i = begin; i < end; ++i) {
       FloorIndex::Found decided;
       const std::uint32_t j = same_lists ? std::uint32_t(i)

@@ -23,8 +23,9 @@
 namespace roomsense {
 namespace {
 
-double elapsed_ms(std::chrono::steady_clock::time_point since) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
+double elapsed_ms(std::chrono::steady_clock::time_point since,
+                  std::chrono::steady_clock::time_point until = std::chrono::steady_clock::now()) {
+  return std::chrono::duration<double, std::milli>(until - since).count();
 }
 
 // A rule's cells as its voxels' (grow.h): voxel_at, cell_of, and cell_at the two in turn.
@@ -447,10 +448,9 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
                                 " areas not searched: too many corner pairs for this room at " +
                                 std::to_string(voxel).substr(0, 5) + " m voxels (a coarser --voxel searches them)");
   stop_point(stop);
-  const auto ms = [](auto from, auto to) { return std::chrono::duration<double, std::milli>(to - from).count(); };
-  result.timings.search = ms(clock, searches_end);  // and overlapping reductions
-  result.timings.reduce = elapsed_ms(searches_end);  // and overlapping classification
-  result.timings.classify = reach_begin ? ms(*reach_begin, reach_end) : 0.0;
+  result.timings.search = elapsed_ms(clock, searches_end);  // and overlapping reductions
+  result.timings.reduce = elapsed_ms(searches_end);          // and overlapping classification
+  result.timings.classify = reach_begin ? elapsed_ms(*reach_begin, reach_end) : 0.0;
   for (std::size_t type = 0; type < 4; ++type) {
     result.counts.found[type] = red[type].found;
     result.counts.deduplicated[type] = red[type].deduplicated;

@@ -302,8 +302,8 @@ struct ReachView::State {
   std::vector<ReachMemo::FloorKey> keys;  // with a memo: the floors'
   // Where known and the floors differ: the floors the memo's did not have, and the memo's that are still there. A
   // change moves the floors near it alone, so the lists share a first and a last part, each in place: the keys
-  // between are compared by a hash (a floor's keys are one each: two floors with one centre are one, Eq. 3.44;
-  // where they were not, a floor would be taken for added or gone, and searched, not misread).
+  // between are compared by a hash. (V_Floor holds a centre once, Eq. 3.44, so a key names one floor; were one
+  // repeated, a floor could be taken for added or gone, and its areas searched again, never misread.)
   std::vector<std::size_t> added;
   std::size_t same_first = 0, same_last = 0;  // the parts' lengths
   std::vector<ReachMemo::FloorKey> middle;  // keys[same_first, size - same_last)
@@ -313,7 +313,7 @@ struct ReachView::State {
     const std::size_t n_before = memo->floors.size();
     std::size_t at = FirstIndex::kAbsent;
     if (before < same_first) at = before;
-    else if (before < n_before && before >= n_before - same_last) at = before - n_before + keys.size();
+    else if (before < n_before && n_before - before <= same_last) at = keys.size() - (n_before - before);
     else if (const std::uint32_t i = middle_now->find(key); i != FirstIndex::kAbsent) at = same_first + i;
     return at < keys.size() && keys[at] == key ? std::uint32_t(at) : FirstIndex::kAbsent;
   }

@@ -280,6 +280,7 @@ ChangedRegion::Blocks ChangedRegion::blocks(const Box& b) const {
 }
 
 void ChangedRegion::add(const Box& b) {
+  added_ = empty_ ? b : Box{glm::min(added_.lo, b.lo), glm::max(added_.hi, b.hi)};
   const Blocks k = blocks(b);
   marked_ = empty_ ? k : Blocks{glm::min(marked_.lo, k.lo), glm::max(marked_.hi, k.hi)};
   empty_ = false;
@@ -498,6 +499,7 @@ int SquarePacker::contact(const Candidate& c) const {
 }
 
 bool contact_may_read(const Candidate& c, const ChangedRegion::Box& columns) {
+  if (columns.lo.x > columns.hi.x || columns.lo.y > columns.hi.y) return false;  // no column
   // The box of the columns in continuous coordinates, a voxel wider each way: a sample within 0.75 of an edge
   // lies in it exactly where the edge passes through it (with room for rounding).
   const glm::dvec2 lo = glm::dvec2(columns.lo) - 1.0, hi = glm::dvec2(columns.hi) + 2.0;

@@ -78,6 +78,8 @@ class ChangedRegion {
   static Box around(const PackedCandidate& c, const Box& shape_box);
   void add(const Box& b);
   bool touches(const Box& b) const;
+  // The box of the boxes added, column by column (lo > hi while none was).
+  const Box& added() const { return added_; }
 
  private:
   static constexpr int kBlock = 4;
@@ -91,6 +93,7 @@ class ChangedRegion {
   std::vector<std::uint64_t> bits_;
   bool empty_ = true;
   Blocks marked_{};  // the box of the blocks marked (while not empty_): most tests lie outside it
+  Box added_{glm::ivec2(1), glm::ivec2(0)};
 };
 
 // Whether SquarePacker's contact of square c may read a column of `columns` (inclusive). Its samples lie 0.75

@@ -167,17 +167,10 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
                                                         const Candidates& found, const std::vector<Piece>& pieces) {
   const bool walls = type == 0;
   const std::size_t band_count = bands.searched.size();
-  // The columns whose features the type's searches read that changed, by blocks and as one box, made when first
-  // asked for.
+  // The columns whose features the type's searches read that changed, made when first asked for.
   std::optional<ChangedRegion> changed_region;
-  ChangedRegion::Box changed_box{glm::ivec2(spec_.nx), glm::ivec2(-1)};
   const auto features_changed = [&]() -> const ChangedRegion& {
-    if (!changed_region) {
-      changed_region = changed_columns(type);
-      for (std::size_t z = 0; z < changed_rows_[type].size(); ++z)
-        if (const glm::ivec2 span = changed_rows_[type][z]; span.x <= span.y)
-          changed_box = {glm::min(changed_box.lo, glm::ivec2(span.x, int(z))), glm::max(changed_box.hi, glm::ivec2(span.y, int(z)))};
-    }
+    if (!changed_region) changed_region = changed_columns(type);
     return *changed_region;
   };
   // Each searched slot's new rectangles, [begin, end) of `found`.
@@ -239,7 +232,8 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
           while (g < gone.items.size() && before(gone_places[g], place)) ++g;
           const auto changed = [&] {
             const Candidate c = found.decode(item).unpack();
-            return features_changed().touches(ChangedRegion::around(c)) && contact_may_read(c, changed_box);
+            const ChangedRegion& columns = features_changed();
+            return columns.touches(ChangedRegion::around(c)) && contact_may_read(c, columns.added());
           };
           for (std::size_t k = g; k < gone.items.size() && gone_places[k] == place; ++k)
             if (gone.items[k] == item && !found_again[k] && !changed()) {

@@ -92,31 +92,39 @@ std::vector<SideRun> side_runs(const Extent& e, float h, bool rows, const std::a
   return out;
 }
 
-// Calls f(cell, samples) for the cells `cell_of` gives extent e's samples, `cell_of` being a map of a point to a
-// cell each of whose coordinates is a floor of the point's same coordinate alone (a voxel, a sample cell): where e
-// lies along the grid's axes once per run of columns by run of rows in one cell (a sample's cell is its column
-// run's plus its row run's), else once per sample.
+// Calls f(cell, samples) once per run of columns by run of rows of extent e in one cell, for e along the grid's
+// axes (along_axes(e) gave from_v), `cell_of` being a map of a point to a cell each of whose coordinates is a floor
+// of the point's same coordinate alone (a voxel, a sample cell): a sample's cell is its column run's plus its row
+// run's.
 template <class CellOf, class F>
-void each_cell(const Extent& e, float h, const CellOf& cell_of, const F& f) {
-  const std::optional<std::array<bool, 3>> from_v = along_axes(e);
-  if (!from_v) {
-    for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
-      for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j) f(cell_of(e.sample(i, j, h)), 1);
-    return;
-  }
-  const std::vector<SideRun> rows = side_runs(e, h, true, *from_v, cell_of);
-  for (const SideRun& column : side_runs(e, h, false, *from_v, cell_of))
+void each_cell_by_runs(const Extent& e, float h, const std::array<bool, 3>& from_v, const CellOf& cell_of, const F& f) {
+  const std::vector<SideRun> rows = side_runs(e, h, true, from_v, cell_of);
+  for (const SideRun& column : side_runs(e, h, false, from_v, cell_of))
     for (const SideRun& row : rows) f(column.cell + row.cell, column.length * row.length);
 }
 
+// Calls f(cell, samples) for the cells `cell_of` gives extent e's samples: by runs where e lies along the grid's
+// axes (each_cell_by_runs), else once per sample.
+template <class CellOf, class F>
+void each_cell(const Extent& e, float h, const CellOf& cell_of, const F& f) {
+  if (const std::optional<std::array<bool, 3>> from_v = along_axes(e)) {
+    each_cell_by_runs(e, h, *from_v, cell_of, f);
+    return;
+  }
+  for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)
+    for (int j = 0, nv = sample_count(e.v1 - e.v0, h); j < nv; ++j) f(cell_of(e.sample(i, j, h)), 1);
+}
+
 // How many of extent e's samples (of area a) are Usable: by runs of samples in one voxel where the rule gives
-// voxels and e lies along the grid's axes, else sample by sample.
+// voxels and e lies along the grid's axes, else sample by sample (a turned area: one cell_at a sample).
 int usable_samples(const Extent& e, float h, const GrowthRule& rule, const Area& a) {
   int count = 0;
-  if (rule.voxel_at && rule.cell_of && along_axes(e)) {
-    each_cell(e, h, [&](const glm::vec3& p) { return rule.voxel_at(p, a); }, [&](const glm::ivec3& voxel, int samples) {
-      if (rule.cell_of(voxel, a) == SurfaceCell::Usable) count += samples;
-    });
+  const std::optional<std::array<bool, 3>> from_v = rule.voxel_at && rule.cell_of ? along_axes(e) : std::nullopt;
+  if (from_v) {
+    each_cell_by_runs(e, h, *from_v, [&](const glm::vec3& p) { return rule.voxel_at(p, a); },
+                      [&](const glm::ivec3& voxel, int samples) {
+                        if (rule.cell_of(voxel, a) == SurfaceCell::Usable) count += samples;
+                      });
     return count;
   }
   for (int i = 0, nu = sample_count(e.u1 - e.u0, h); i < nu; ++i)

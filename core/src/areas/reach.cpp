@@ -377,7 +377,6 @@ void assign_reach(std::vector<Area>& areas, const ReachView& view, float floor_y
   const double close = v.close;
   const double cone_cos = v.cone_cos;
   using Visible = FloorIndex::Visible;
-  const bool known = memo != nullptr && v.known;
   std::vector<ReachMemo::AreaKey> area_keys;
   if (memo != nullptr) {
     area_keys.reserve(areas.size());
@@ -385,9 +384,9 @@ void assign_reach(std::vector<Area>& areas, const ReachView& view, float floor_y
   }
   // The same floors and areas in the same order (a re-sent chunk that moved none): each area sees what it saw,
   // through the same floor, and the memo stays as it is.
-  const bool same_lists = known && v.same_floors && area_keys == memo->areas;
+  const bool same_lists = v.known && v.same_floors && area_keys == memo->areas;
   std::optional<KeyIndex<ReachMemo::AreaKey>> areas_before;
-  if (known && !same_lists) areas_before.emplace(memo->areas);
+  if (v.known && !same_lists) areas_before.emplace(memo->areas);
   std::vector<FloorIndex::Found> found(memo != nullptr ? areas.size() : 0);
   std::atomic<std::size_t> searched = 0;
 
@@ -465,7 +464,7 @@ void assign_reach(std::vector<Area>& areas, const ReachView& view, float floor_y
     for (std::size_t i = begin; i < end; ++i) {
       FloorIndex::Found decided;
       const std::uint32_t j = same_lists ? std::uint32_t(i)
-                              : known    ? areas_before->find(area_keys[i])
+                              : v.known  ? areas_before->find(area_keys[i])
                                          : FirstIndex::kAbsent;
       areas[i].reach = reach_of(areas[i], j, &decided);
       areas[i].flags = category_flags(areas[i].type, areas[i].size, areas[i].reach);

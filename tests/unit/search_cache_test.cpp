@@ -6,6 +6,7 @@
 #include "../../core/src/areas/grow.h"
 #include "../../core/src/key_table.h"
 #include "../../core/src/areas/search_cache.h"
+#include "../../core/src/areas/search.h"
 
 #include <gtest/gtest.h>
 
@@ -459,6 +460,62 @@ TEST(ReachMemo, EqualsReachSearchedAfreshAsFloorsComeAndGo) {
   EXPECT_GT(kept_steps, 20u);
   EXPECT_GE(decided_by_height, 20u);
   for (const Reach r : {Reach::Close, Reach::Distance, Reach::None}) EXPECT_GE(reaches[std::size_t(r)], 30u) << int(r);
+}
+
+// A floor's or a ceiling's square search after objects were only set down (tiles lost, walls added) or only taken
+// away starts each centre from its previous square (search_squares's BandedSearch::previous). Each time, it must
+// find what a search from nothing finds; so must the searches after a mixed change, which search as before.
+TEST(SearchCache, SquaresStartedFromThePreviousSearchEqualSearchingAfresh) {
+  GridSpec s;
+  s.nx = 64, s.ny = 8, s.nz = 56;
+  s.voxel_size = 0.1f;
+  const SizeRange range{9.0, 13.0};
+  for (const Surface surface : {Surface::Floor, Surface::Ceiling}) {
+    const std::size_t type = surface == Surface::Floor ? 1 : 2;
+    RoomFeatures f = empty_features(s);
+    f.free_ceiling.assign(s.column_count(), 1);
+    std::vector<std::uint8_t>& tiles = surface == Surface::Floor ? f.free_floor : f.free_ceiling;
+    // Objects: boxes of non-tiles, some with a wall along one side; a column is a tile where no object covers it.
+    struct Object {
+      glm::ivec2 lo, hi;
+      bool wall;
+    };
+    std::vector<Object> objects;
+    const auto paint = [&] {
+      std::fill(tiles.begin(), tiles.end(), std::uint8_t{1});
+      std::fill(f.walls.begin(), f.walls.end(), std::uint8_t{0});
+      for (const Object& o : objects)
+        for (int z = o.lo.y; z <= o.hi.y; ++z)
+          for (int x = o.lo.x; x <= o.hi.x; ++x) {
+            tiles[s.column(x, z)] = 0;
+            if (o.wall && x == o.lo.x) f.walls[s.column(x, z)] = 1;
+          }
+    };
+    std::mt19937 rng(surface == Surface::Floor ? 5 : 6);
+    const auto random_object = [&] {
+      const glm::ivec2 lo(int(rng() % 58), int(rng() % 50));
+      return Object{lo, lo + glm::ivec2(1 + int(rng() % 5), 1 + int(rng() % 5)), rng() % 3 == 0};
+    };
+    for (int k = 0; k < 6; ++k) objects.push_back(random_object());
+    SearchCache cache;
+    std::array<std::size_t, 3> steps{};  // set down, taken away, both
+    std::size_t squares = 0;
+    for (int step = 0; step < 40; ++step) {
+      const std::size_t kind = step == 0 ? 0 : rng() % 3;
+      if (step > 0 && (kind == 1 || kind == 2) && !objects.empty()) objects.erase(objects.begin() + rng() % objects.size());
+      if (step > 0 && (kind == 0 || kind == 2)) objects.push_back(random_object());
+      paint();
+      ++steps[kind];
+      cache.begin(s, f);
+      const Candidates got = cache.squares(type, 0, s, f, range, 0.95f, 12.0, {});
+      const Candidates want = search_squares(s, f, surface, range, 0.95f, 12.0);
+      ASSERT_EQ(got.size(), want.size()) << "step " << step;
+      for (std::size_t i = 0; i < want.size(); ++i) ASSERT_TRUE(got.item(i) == want.item(i)) << "step " << step << ", square " << i;
+      squares += want.size();
+    }
+    for (const std::size_t n : steps) EXPECT_GE(n, 8u);
+    EXPECT_GE(squares, 40u * 100u);
+  }
 }
 
 }  // namespace

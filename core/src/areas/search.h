@@ -126,10 +126,21 @@ struct Piece {
   std::size_t end = 0;  // one past its last rectangle in the output
 };
 struct RingOffset;
+// How the features a floor's or a ceiling's square search reads changed since its previous search: tiles
+// (first corners) only lost and walls only added (`Lost`, an object set down), the reverse (`Gained`, one taken
+// away), or neither (`Mixed`).
+enum class TileChange : std::uint8_t { Mixed, Lost, Gained };
 struct BandedSearch {
   const RowBands* bands = nullptr;    // nullptr: the whole grid at once, no pieces
   std::vector<Piece>* pieces = nullptr;
   const std::vector<RingOffset>* ring = nullptr;  // the size's ring_offsets, where the caller keeps them
+  // The previous search's squares per slot (layer * bands + band), in search order, over the same grid, levels,
+  // orientations and shapes; the box of every column whose features the search reads that changed since; and
+  // how the tiles changed. A floor's or a ceiling's search (one square a centre) then takes each centre's
+  // previous square where it can (search_squares).
+  const std::vector<std::vector<Candidates::Item>>* previous = nullptr;
+  glm::ivec2 changed_lo{0}, changed_hi{-1};
+  TileChange change = TileChange::Mixed;
 };
 
 // Alg. 2 (Eq. 3.20-3.27). Returns the first valid rectangle for each distinct centre, in search order: a

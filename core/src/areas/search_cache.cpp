@@ -42,6 +42,27 @@ void mark_changed(const std::vector<T>& now, const std::vector<T>& before, std::
   }
 }
 
+// How the tiles `now` (first corners, nonzero) and the walls changed from `before` over the changed rows' spans
+// (TileChange): walls are never tiles, so a column that lost a tile or gained a wall lost, and the reverse gained.
+TileChange tile_change(const std::vector<std::uint8_t>& tiles_now, const std::vector<std::uint8_t>& tiles_before,
+                       const std::vector<std::uint8_t>& walls_now, const std::vector<std::uint8_t>& walls_before,
+                       const GridSpec& spec, const std::vector<glm::ivec2>& rows) {
+  const std::size_t columns = spec.column_count();
+  if (tiles_now.size() != columns || tiles_before.size() != columns || walls_now.size() != columns ||
+      walls_before.size() != columns)
+    return TileChange::Mixed;
+  bool lost = false, gained = false;
+  for (std::size_t z = 0; z < rows.size(); ++z)
+    for (int x = rows[z].x; x <= rows[z].y; ++x) {
+      const std::size_t col = spec.column(x, int(z));
+      const bool tile_now = tiles_now[col] != 0, tile_before = tiles_before[col] != 0;
+      const bool wall_now = walls_now[col] != 0, wall_before = walls_before[col] != 0;
+      lost = lost || (tile_before && !tile_now) || (wall_now && !wall_before);
+      gained = gained || (tile_now && !tile_before) || (wall_before && !wall_now);
+    }
+  return lost == gained ? TileChange::Mixed : lost ? TileChange::Lost : TileChange::Gained;
+}
+
 bool any_changed(const std::vector<glm::ivec2>& rows) {
   return std::any_of(rows.begin(), rows.end(), [](const glm::ivec2& span) { return span.x <= span.y; });
 }
@@ -55,6 +76,7 @@ void SearchCache::begin(const GridSpec& spec, const RoomFeatures& features) {
   for (const CeilingFacet& f : features.facets) facet_levels.push_back(f.level);
   all_changed_ = spec != spec_ || features.levels != levels_ || features.y_end != y_end_ ||
                  facet_levels != facet_levels_;
+  tile_change_.fill(TileChange::Mixed);
   const glm::ivec2 none(spec.nx, -1), all(0, spec.nx - 1);
   for (std::vector<glm::ivec2>& rows : changed_rows_) rows.assign(std::size_t(spec.nz), all_changed_ ? all : none);
   if (!all_changed_) {
@@ -69,6 +91,11 @@ void SearchCache::begin(const GridSpec& spec, const RoomFeatures& features) {
     mark_changed(features.free_ceiling, free_ceiling_, 1, spec, changed_rows_[2]);
     mark_changed(features.ceiling_facet, ceiling_facet_, 1, spec, changed_rows_[2]);
     mark_changed(features.furniture, furniture_, 1, spec, changed_rows_[3]);
+    tile_change_[1] = tile_change(features.free_floor, free_floor_, features.walls, walls_, spec, changed_rows_[1]);
+    // A ceiling's layer is its column's facet.
+    tile_change_[2] = features.ceiling_facet != ceiling_facet_
+                          ? TileChange::Mixed
+                          : tile_change(features.free_ceiling, free_ceiling_, features.walls, walls_, spec, changed_rows_[2]);
   }
   spec_ = spec, levels_ = features.levels, y_end_ = features.y_end, facet_levels_ = std::move(facet_levels);
   walls_ = features.walls, normals_ = features.normals, wall_blocked_ = features.wall_blocked;
@@ -447,8 +474,18 @@ Candidates SearchCache::squares(std::size_t type, std::size_t size, const GridSp
   const RowBands bands = plan(kept, type, layers, range, fill, dominant_deg, reach, reach, reach);
   std::vector<Piece> pieces;
   if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::Square);
-  const Candidates found =
-      search_squares(spec, features, surface, range, fill, dominant_deg, stop, {&bands, &pieces, &kept.ring});
+  // The kept pieces are the previous search's where plan() kept them (the same search over the same levels).
+  BandedSearch banded{&bands, &pieces, &kept.ring};
+  if (!all_changed_ && kept.generation + 1 == generation_) {
+    banded.previous = &kept.pieces, banded.change = tile_change_[type];
+    banded.changed_lo = glm::ivec2(spec_.nx, spec_.nz), banded.changed_hi = glm::ivec2(-1);
+    for (std::size_t z = 0; z < changed_rows_[type].size(); ++z)
+      if (const glm::ivec2 span = changed_rows_[type][z]; span.x <= span.y) {
+        banded.changed_lo = glm::min(banded.changed_lo, glm::ivec2(span.x, int(z)));
+        banded.changed_hi = glm::max(banded.changed_hi, glm::ivec2(span.y, int(z)));
+      }
+  }
+  const Candidates found = search_squares(spec, features, surface, range, fill, dominant_deg, stop, banded);
   return assemble(kept, found, replace(kept, type, bands, found, pieces), false);
 }
 

@@ -157,6 +157,8 @@ class SearchCache {
   bool all_changed_ = true;
   // Per type and row z: the span of columns whose features (the type's searches') changed; empty (x > y) where none.
   std::array<std::vector<glm::ivec2>, 4> changed_rows_;
+  // Per type: how the tiles its squares read changed (types 1 and 2; Mixed for the others, and where unknown).
+  std::array<TileChange, 4> tile_change_{};
   // What the searches read, as the previous analysis had it.
   GridSpec spec_{};
   FloorCeiling levels_{};

@@ -111,6 +111,13 @@ class CentreSet {
   std::optional<BitSet> bits_;
 };
 
+// Bits [from, to] of a word, those of them in [0, 63].
+std::uint64_t bits_between(int from, int to) {
+  from = std::max(from, 0), to = std::min(to, 63);
+  if (from > to) return 0;
+  return (~std::uint64_t{0} >> (63 - to)) & (~std::uint64_t{0} << from);
+}
+
 // A centre is at most d / √2 from each corner, so corner 1 lies in this box around it (in voxels).
 int corner_reach(const SizeRange& size) { return int(std::ceil(size.max_d * 0.7072)) + 1; }
 
@@ -187,21 +194,31 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   const PaddedBits::Size padded_size{spec.nx + 2 * pad, spec.nz + 2 * pad};
   PaddedBits first_bits(padded_size), tile_bits(padded_size);
   // Each orientation's corners relative to the centre's cell (cx / 2, cz / 2), in padded bit coordinates.
+  // Also the box of every cell the square reads (its cells' and corners'), relative to the centre's cell.
   struct CornerCells {
     int x[4], z[4];
+    glm::ivec2 reads_lo, reads_hi;
   };
   std::array<std::vector<CornerCells>, 2> corner_cells;
   for (int p = 0; p < 2; ++p)
     for (const RingOffset* o : by_parity[std::size_t(p)]) {
       const int x1 = (p - o->dx + o->dz) / 2, z1 = (p - o->dx - o->dz) / 2;
+      const glm::ivec2 corners_lo(std::min({0, o->dx, o->dx - o->dz, -o->dz}), std::min({0, o->dz, o->dz + o->dx, o->dx}));
+      const glm::ivec2 corners_hi(std::max({0, o->dx, o->dx - o->dz, -o->dz}), std::max({0, o->dz, o->dz + o->dx, o->dx}));
       corner_cells[std::size_t(p)].push_back({{x1 + pad, x1 + o->dx + pad, x1 + o->dx - o->dz + pad, x1 - o->dz + pad},
-                                              {z1 + pad, z1 + o->dz + pad, z1 + o->dz + o->dx + pad, z1 + o->dx + pad}});
+                                              {z1 + pad, z1 + o->dz + pad, z1 + o->dz + o->dx + pad, z1 + o->dx + pad},
+                                              glm::ivec2(x1, z1) + glm::min(o->box_lo, corners_lo),
+                                              glm::ivec2(x1, z1) + glm::max(o->box_hi, corners_hi)});
     }
   // One row of centres: those still open for a square at this level (here) or one level up (above), and the
   // orientation each found.
   constexpr std::uint32_t kNone = 0xffffffffu;
   std::vector<std::uint64_t> open_here, open_above;
   std::vector<std::uint32_t> found_here, found_above;
+  // From the previous search (BandedSearch::previous): per row, each previous square's (orientation, centre),
+  // and the centres past their previous square, whose every orientation is tested.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> events;
+  std::vector<std::uint64_t> past;
   // Each layer's first corners' box: a centre further than corner_reach from it has no square, and a square
   // around a centre within that reach lies within corner_reach of the centre. So a layer's work, a furniture
   // top's or a facet's, is its box grown by twice the reach, not the grid.
@@ -290,6 +307,20 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     CentreSet& here = centres[std::size_t(layer)];
     CentreSet& above = centres[std::size_t(layer + 1)];
     const bool may_rise = surface == Surface::Furniture;
+    // Beyond the thesis (issue 19), a search after a change, from the previous search's squares (one a centre:
+    // not furniture's, whose centres may hold one a level). A square that reads no changed column is as valid
+    // as it was: the orientations before a centre's previous square are tested only where they read a changed
+    // column, and its previous square, where it reads none, is its square again. Validity (Eq. 3.30-3.38) only
+    // falls as tiles are lost and walls added, and only rises the other way: where tiles were only lost, no
+    // orientation before the previous square is tested, and a centre that had none has none; where they were
+    // only gained, the previous square is valid still.
+    bool from_previous = false;
+    TileChange change = TileChange::Mixed;
+    glm::ivec2 changed_lo(0), changed_hi(-1);
+    if constexpr (kBanded)
+      if (banded.previous && !may_rise)
+        from_previous = true, change = banded.change, changed_lo = banded.changed_lo, changed_hi = banded.changed_hi;
+    std::size_t cursor = 0;  // into the previous squares of the band searched
 
     // Eq. 3.30-3.38 for the square with first corner (x1, z1) and offset o: every cell it reaches into; none a
     // wall, 95 % of (d + 1)² suitable. Where the square's bounding box holds only tiles, all its cells are
@@ -340,6 +371,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
         const int b = banded.bands->band(cz / 2);
         if (!banded.bands->searches(cz / 2)) continue;
         if (b != band && band >= 0) banded.pieces->push_back({layer, band, out.size()});
+        if (b != band) cursor = 0;
         band = b;
       }
       const int p = cz & 1;  // dx - dz and dx + dz share their parity: cx - cz is even
@@ -377,14 +409,58 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       found_here.assign(std::size_t(centres_in_row), kNone);
       found_above.assign(std::size_t(centres_in_row), kNone);
       const int hz = cz / 2;
+      events.clear();
+      past.assign(words, from_previous ? 0 : ~std::uint64_t{0});  // without one, every centre is tested
+      bool row_reads_changed = false;  // whether a square of the row may read a changed column
+      if constexpr (kBanded)
+        if (from_previous) {
+          // The row's previous squares (the slot's are in search order: by cz, then cx), each centre's one.
+          const std::vector<Candidates::Item>& before =
+              (*banded.previous)[std::size_t(layer) * banded.bands->searched.size() + std::size_t(band)];
+          std::vector<std::uint64_t> had(change == TileChange::Lost ? words : 0, 0);
+          for (; cursor < before.size(); ++cursor) {
+            const glm::ivec3 sum = out.decode(before[cursor]).corner_sum();  // (2 cx, ., 2 cz)
+            if (sum.z / 2 > cz) break;
+            const int c = sum.x / 4 - hx_first;  // cx / 2 = hx
+            if (sum.z / 2 != cz || c < 0 || c >= centres_in_row) continue;
+            events.push_back({before[cursor].shape - first_shape[std::size_t(p)], std::uint32_t(c)});
+            if (!had.empty()) had[std::size_t(c / 64)] |= std::uint64_t{1} << (c % 64);
+          }
+          std::sort(events.begin(), events.end());
+          for (std::size_t w = 0; w < had.size(); ++w) open_here[w] &= had[w];
+          for (const CornerCells& k : cells)
+            row_reads_changed = row_reads_changed || (hz + k.reads_lo.y <= changed_hi.y && hz + k.reads_hi.y >= changed_lo.y);
+        }
+      std::size_t next = 0;  // the first event not yet taken
       for (std::size_t i = 0; i < orientations.size(); ++i) {
         const CornerCells& k = cells[i];
-        bool any_open = false;
+        // The centres hx in [reads_from, reads_to] have a square at i that reads a changed column.
+        int reads_from = 1, reads_to = 0;
+        if (row_reads_changed && hz + k.reads_lo.y <= changed_hi.y && hz + k.reads_hi.y >= changed_lo.y)
+          reads_from = changed_lo.x - k.reads_hi.x, reads_to = changed_hi.x - k.reads_lo.x;
+        for (; next < events.size() && events[next].first == i; ++next) {
+          const std::uint32_t c = events[next].second;
+          const std::uint64_t bit = std::uint64_t{1} << (c % 64);
+          if (!(open_here[c / 64] & bit)) continue;
+          const int hx = hx_first + int(c);
+          if (change == TileChange::Gained || hx < reads_from || hx > reads_to) {
+            open_here[c / 64] &= ~bit;
+            found_here[c] = std::uint32_t(i);
+          } else {
+            past[c / 64] |= bit;
+          }
+        }
+        bool any_open = false, any_past = false;
         for (std::size_t w = 0; w < words; ++w) {
           std::uint64_t open = open_here[w] | open_above[w];
           if (open == 0) continue;
           any_open = true;
+          any_past = any_past || past[w] != 0;
           const int x = hx_first + int(64 * w);  // the word's first centre
+          std::uint64_t tested = past[w];
+          if (change != TileChange::Lost) tested |= bits_between(reads_from - x, reads_to - x);
+          open &= tested;
+          if (open == 0) continue;
           open &= first_bits.word(x + k.x[0], hz + k.z[0]) & tile_bits.word(x + k.x[1], hz + k.z[1]) &
                   tile_bits.word(x + k.x[2], hz + k.z[2]) & tile_bits.word(x + k.x[3], hz + k.z[3]);
           for (; open != 0; open &= open - 1) {
@@ -402,6 +478,11 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
           }
         }
         if (!any_open) break;
+        // Nothing is tested before the next previous square's orientation.
+        if (!any_past && (change == TileChange::Lost || !row_reads_changed)) {
+          if (next == events.size()) break;
+          i = events[next].first - 1;
+        }
       }
       for (int i = 0; i < centres_in_row; ++i) {
         const std::uint32_t h = found_here[std::size_t(i)], a = found_above[std::size_t(i)];

@@ -218,7 +218,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   // From the previous search (BandedSearch::previous): per row, each previous square's (orientation, centre),
   // and the centres past their previous square, whose every orientation is tested.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> events;
-  std::vector<std::uint64_t> past;
+  std::vector<std::uint64_t> had, past;
   // Each layer's first corners' box: a centre further than corner_reach from it has no square, and a square
   // around a centre within that reach lies within corner_reach of the centre. So a layer's work, a furniture
   // top's or a facet's, is its box grown by twice the reach, not the grid.
@@ -383,11 +383,42 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       const int centres_in_row = hx_last - hx_first + 1;
       if (centres_in_row <= 0) continue;
       const std::size_t words = (std::size_t(centres_in_row) + 63) / 64;
+      const std::vector<const RingOffset*>& orientations = by_parity[std::size_t(p)];
+      const std::vector<CornerCells>& cells = corner_cells[std::size_t(p)];
+      const int hz = cz / 2;
+      events.clear();
+      had.assign(words, 0);
+      bool row_reads_changed = false;  // whether a square of the row may read a changed column
+      if constexpr (kBanded)
+        if (from_previous) {
+          // The row's previous squares (the slot's are in search order: by cz, then cx), each centre's one.
+          const std::vector<Candidates::Item>& before =
+              (*banded.previous)[std::size_t(layer) * banded.bands->searched.size() + std::size_t(band)];
+          for (; cursor < before.size(); ++cursor) {
+            const glm::ivec3 sum = out.decode(before[cursor]).corner_sum();  // (2 cx, ., 2 cz)
+            if (sum.z / 2 > cz) break;
+            const int c = sum.x / 4 - hx_first;  // cx / 2 = hx
+            if (sum.z / 2 != cz || c < 0 || c >= centres_in_row) continue;
+            events.push_back({before[cursor].shape - first_shape[std::size_t(p)], std::uint32_t(c)});
+            had[std::size_t(c / 64)] |= std::uint64_t{1} << (c % 64);
+          }
+          std::sort(events.begin(), events.end());
+          for (const CornerCells& k : cells)
+            row_reads_changed = row_reads_changed || (hz + k.reads_lo.y <= changed_hi.y && hz + k.reads_hi.y >= changed_lo.y);
+        }
       open_here.assign(words, 0);
       open_above.assign(words, 0);
       for (int i = 0; i < centres_in_row; ++i) {
         const int hx = hx_first + i;
         const int cx = 2 * hx + p;
+        const std::uint64_t bit = std::uint64_t{1} << (i % 64);
+        // From the previous search: a centre that had a square is open, untested (its square is found again
+        // cheaply); one that had none has none, unless tiles may have been gained where its row's squares read.
+        if (from_previous && (had[std::size_t(i / 64)] & bit)) {
+          open_here[std::size_t(i / 64)] |= bit;
+          continue;
+        }
+        if (from_previous && (change == TileChange::Lost || !row_reads_changed)) continue;
         const glm::ivec2 near_lo = glm::max(glm::ivec2(cx / 2 - corner_reach, cz / 2 - corner_reach), glm::ivec2(0));
         const glm::ivec2 near_hi =
             glm::min(glm::ivec2(cx / 2 + corner_reach, cz / 2 + corner_reach), glm::ivec2(spec.nx - 1, spec.nz - 1));
@@ -400,37 +431,12 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
             continue;
         }
         const glm::ivec3 sum(2 * cx, 0, 2 * cz);
-        const std::uint64_t bit = std::uint64_t{1} << (i % 64);
         if (!here.contains(sum)) open_here[std::size_t(i / 64)] |= bit;
         if (may_rise && !above.contains(sum)) open_above[std::size_t(i / 64)] |= bit;
       }
-      const std::vector<const RingOffset*>& orientations = by_parity[std::size_t(p)];
-      const std::vector<CornerCells>& cells = corner_cells[std::size_t(p)];
       found_here.assign(std::size_t(centres_in_row), kNone);
       found_above.assign(std::size_t(centres_in_row), kNone);
-      const int hz = cz / 2;
-      events.clear();
       past.assign(words, from_previous ? 0 : ~std::uint64_t{0});  // without one, every centre is tested
-      bool row_reads_changed = false;  // whether a square of the row may read a changed column
-      if constexpr (kBanded)
-        if (from_previous) {
-          // The row's previous squares (the slot's are in search order: by cz, then cx), each centre's one.
-          const std::vector<Candidates::Item>& before =
-              (*banded.previous)[std::size_t(layer) * banded.bands->searched.size() + std::size_t(band)];
-          std::vector<std::uint64_t> had(change == TileChange::Lost ? words : 0, 0);
-          for (; cursor < before.size(); ++cursor) {
-            const glm::ivec3 sum = out.decode(before[cursor]).corner_sum();  // (2 cx, ., 2 cz)
-            if (sum.z / 2 > cz) break;
-            const int c = sum.x / 4 - hx_first;  // cx / 2 = hx
-            if (sum.z / 2 != cz || c < 0 || c >= centres_in_row) continue;
-            events.push_back({before[cursor].shape - first_shape[std::size_t(p)], std::uint32_t(c)});
-            if (!had.empty()) had[std::size_t(c / 64)] |= std::uint64_t{1} << (c % 64);
-          }
-          std::sort(events.begin(), events.end());
-          for (std::size_t w = 0; w < had.size(); ++w) open_here[w] &= had[w];
-          for (const CornerCells& k : cells)
-            row_reads_changed = row_reads_changed || (hz + k.reads_lo.y <= changed_hi.y && hz + k.reads_hi.y >= changed_lo.y);
-        }
       std::size_t next = 0;  // the first event not yet taken
       for (std::size_t i = 0; i < orientations.size(); ++i) {
         const CornerCells& k = cells[i];

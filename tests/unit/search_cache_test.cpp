@@ -518,4 +518,68 @@ TEST(SearchCache, SquaresStartedFromThePreviousSearchEqualSearchingAfresh) {
   }
 }
 
+// A wall search after its features changed takes a rectangle that reads no changed column from its band's previous
+// rectangles (search_walls's BandedSearch::previous). Each time, its list must equal a fresh cache's, which searches
+// every band anew, and a whole search's.
+TEST(SearchCache, WallsFoundFromThePreviousSearchEqualSearchingAfresh) {
+  GridSpec s;
+  s.nx = 56, s.ny = 12, s.nz = 48;
+  s.voxel_size = 0.1f;
+  RoomFeatures f = empty_features(s);
+  f.levels.ceiling = 10;
+  // Panels of wall normals: vertical rectangles along x or z, some with a gap; a voxel's normals are its panels'.
+  struct Panel {
+    glm::ivec2 from;
+    int length, top;
+    bool along_x, gap;
+  };
+  std::vector<Panel> panels;
+  const auto paint = [&] {
+    std::fill(f.normals.begin(), f.normals.end(), std::uint8_t{0});
+    for (const Panel& p : panels)
+      for (int k = 0; k < p.length; ++k) {
+        if (p.gap && k % 7 == 3) continue;
+        const int x = p.from.x + (p.along_x ? k : 0), z = p.from.y + (p.along_x ? 0 : k);
+        for (int y = 1; y <= p.top; ++y) f.normals[s.index(x, y, z)] |= p.along_x ? kNormalForward : kNormalLeft;
+      }
+  };
+  std::mt19937 rng(11);
+  const auto random_panel = [&] {
+    const bool along_x = rng() % 2 == 0;
+    const int length = 6 + int(rng() % 20);
+    const glm::ivec2 from(int(rng() % std::uint32_t(along_x ? s.nx - length : s.nx)),
+                          int(rng() % std::uint32_t(along_x ? s.nz : s.nz - length)));
+    return Panel{from, length, 3 + int(rng() % 8), along_x, rng() % 3 == 0};
+  };
+  // The room's walls, and panels that come and go.
+  panels = {{{0, 0}, 56, 10, true, false}, {{0, 47}, 56, 10, true, false}, {{0, 0}, 48, 10, false, false},
+            {{55, 0}, 48, 10, false, false}};
+  for (int k = 0; k < 5; ++k) panels.push_back(random_panel());
+  const SizeRange range{8.0, 12.0, 0.5};
+  SearchCache cache;
+  std::size_t rectangles = 0;
+  for (int step = 0; step < 30; ++step) {
+    if (step > 0) {
+      if (rng() % 2 == 0 && panels.size() > 4) panels.erase(panels.begin() + 4 + std::ptrdiff_t(rng() % (panels.size() - 4)));
+      if (rng() % 3 != 0) panels.push_back(random_panel());
+    }
+    paint();
+    const NormalCounts normals = count_normals(s, f);
+    cache.begin(s, f);
+    const Candidates got = cache.walls(0, s, f, normals, range, 0.9f, {});
+    SearchCache fresh;
+    fresh.begin(s, f);
+    const Candidates want = fresh.walls(0, s, f, normals, range, 0.9f, {});
+    const Candidates whole = search_walls(s, f, normals, range, 0.9f);
+    ASSERT_EQ(got.size(), want.size()) << "step " << step;
+    ASSERT_EQ(whole.size(), want.size()) << "step " << step;
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      ASSERT_TRUE(got.item(i) == want.item(i)) << "step " << step << ", rectangle " << i;
+      ASSERT_TRUE(whole.item(i) == want.item(i)) << "step " << step << ", rectangle " << i;
+    }
+    rectangles += want.size();
+  }
+  EXPECT_GE(rectangles, 30u * 50u);
+}
+
 }  // namespace

@@ -134,10 +134,11 @@ struct BandedSearch {
   const RowBands* bands = nullptr;    // nullptr: the whole grid at once, no pieces
   std::vector<Piece>* pieces = nullptr;
   const std::vector<RingOffset>* ring = nullptr;  // the size's ring_offsets, where the caller keeps them
-  // The previous search's squares per slot (layer * bands + band), in search order, over the same grid, levels,
-  // orientations and shapes; the box of every column whose features the search reads that changed since; and
-  // how the tiles changed. A floor's or a ceiling's search (one square a centre) then takes each centre's
-  // previous square where it can (search_squares).
+  // The previous search's rectangles per slot (layer * bands + band), in search order, over the same grid,
+  // levels, offsets and shapes; the box of every column whose features the search reads that changed since; and,
+  // for squares, how the tiles changed. A wall search then takes a rectangle that reads no changed column from
+  // them (search_walls), and a floor's or a ceiling's square search (one square a centre) each centre's previous
+  // square where it can (search_squares).
   const std::vector<std::vector<Candidates::Item>>* previous = nullptr;
   glm::ivec2 changed_lo{0}, changed_hi{-1};
   TileChange change = TileChange::Mixed;

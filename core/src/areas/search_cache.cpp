@@ -349,10 +349,10 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
       for (std::size_t k = 0; k < kept.pieces[slot].size(); ++k) {
         const Candidates::Item& item = kept.pieces[slot][k];
         const std::uint8_t state = previous_state(slot, k);
-        const Candidate c = found.decode(item).unpack();
-        const glm::ivec3 sum = corner_sum(c);
+        const PackedCandidate p = found.decode(item);
+        const glm::ivec3 sum = p.corner_sum();
         if (!centres.insert(pack_key(sum.x, sum.y, sum.z))) {
-          if (state == kPacked) kept.replay.gone.push_back(c);
+          if (state == kPacked) kept.replay.gone.push_back(p.unpack());
           continue;
         }
         out.push_item(item);
@@ -448,6 +448,21 @@ void SearchCache::record_packing(std::size_t type, std::size_t size, std::span<c
   kept.replay = {};
 }
 
+BandedSearch SearchCache::from_previous(const Kept& kept, std::size_t type, const RowBands& bands,
+                                        std::vector<Piece>& pieces) const {
+  BandedSearch banded{&bands, &pieces, &kept.ring};
+  // The kept pieces are the previous search's where plan() kept them (the same search over the same levels).
+  if (all_changed_ || kept.generation + 1 != generation_) return banded;
+  banded.previous = &kept.pieces, banded.change = tile_change_[type];
+  banded.changed_lo = glm::ivec2(spec_.nx, spec_.nz), banded.changed_hi = glm::ivec2(-1);
+  for (std::size_t z = 0; z < changed_rows_[type].size(); ++z)
+    if (const glm::ivec2 span = changed_rows_[type][z]; span.x <= span.y) {
+      banded.changed_lo = glm::min(banded.changed_lo, glm::ivec2(span.x, int(z)));
+      banded.changed_hi = glm::max(banded.changed_hi, glm::ivec2(span.y, int(z)));
+    }
+  return banded;
+}
+
 Candidates SearchCache::walls(std::size_t size, const GridSpec& spec, const RoomFeatures& features,
                               const NormalCounts& normals, const SizeRange& range, float fill,
                               const std::stop_token& stop) {
@@ -460,8 +475,7 @@ Candidates SearchCache::walls(std::size_t size, const GridSpec& spec, const Room
   const RowBands bands = plan(kept, 0, 1, range, fill, 0.0, reach, 2 * reach, reach);
   std::vector<Piece> pieces;
   if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::WallTop);
-  const Candidates found =
-      search_walls(spec, features, normals, range, fill, stop, {&bands, &pieces, &kept.ring});
+  const Candidates found = search_walls(spec, features, normals, range, fill, stop, from_previous(kept, 0, bands, pieces));
   return assemble(kept, found, replace(kept, 0, bands, found, pieces), true);
 }
 
@@ -474,18 +488,8 @@ Candidates SearchCache::squares(std::size_t type, std::size_t size, const GridSp
   const RowBands bands = plan(kept, type, layers, range, fill, dominant_deg, reach, reach, reach);
   std::vector<Piece> pieces;
   if (kept.ring.empty()) kept.ring = ring_offsets(range, Shape::Square);
-  // The kept pieces are the previous search's where plan() kept them (the same search over the same levels).
-  BandedSearch banded{&bands, &pieces, &kept.ring};
-  if (!all_changed_ && kept.generation + 1 == generation_) {
-    banded.previous = &kept.pieces, banded.change = tile_change_[type];
-    banded.changed_lo = glm::ivec2(spec_.nx, spec_.nz), banded.changed_hi = glm::ivec2(-1);
-    for (std::size_t z = 0; z < changed_rows_[type].size(); ++z)
-      if (const glm::ivec2 span = changed_rows_[type][z]; span.x <= span.y) {
-        banded.changed_lo = glm::min(banded.changed_lo, glm::ivec2(span.x, int(z)));
-        banded.changed_hi = glm::max(banded.changed_hi, glm::ivec2(span.y, int(z)));
-      }
-  }
-  const Candidates found = search_squares(spec, features, surface, range, fill, dominant_deg, stop, banded);
+  const Candidates found =
+      search_squares(spec, features, surface, range, fill, dominant_deg, stop, from_previous(kept, type, bands, pieces));
   return assemble(kept, found, replace(kept, type, bands, found, pieces), false);
 }
 

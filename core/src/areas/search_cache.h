@@ -118,6 +118,9 @@ class SearchCache {
   // searched), and returns what they replaced and did not find again.
   std::vector<Replaced> replace(Kept& kept, std::size_t type, const RowBands& bands, const Candidates& found,
                                 const std::vector<Piece>& pieces);
+  // A banded search of `kept` (of search `type`) by `bands`, its pieces to `pieces`, from the kept pieces where
+  // they are the previous analysis's (search.h's BandedSearch::previous).
+  BandedSearch from_previous(const Kept& kept, std::size_t type, const RowBands& bands, std::vector<Piece>& pieces) const;
   // The columns changed_rows_[type] holds.
   ChangedRegion changed_columns(std::size_t type) const;
   // The search's list from the kept pieces, with its packing's replay; drops everything when the cache would

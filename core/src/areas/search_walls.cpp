@@ -1,4 +1,5 @@
 // Alg. 2: wall rectangles between two voxels with compatible normals (Eq. 3.20-3.27).
+#include "../key_table.h"
 #include "cell_cover.h"
 #include "ring_offsets.h"
 #include "search.h"
@@ -10,6 +11,7 @@
 #include <bit>
 #include <cstdlib>
 #include <limits>
+#include <tuple>
 
 namespace roomsense::detail {
 
@@ -158,6 +160,39 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     word.offsets |= std::uint64_t{1} << bit;
     word.rank[std::size_t(bit)] = std::uint8_t(r - word.first);
   }
+  // Beyond the thesis (issue 19), a band searched again after a change, from its previous rectangles
+  // (BandedSearch::previous): every one of them valid, and among them the first valid one of each centre in search
+  // order. A rectangle that reads no changed column is as valid as it was: valid where it is its centre's first
+  // previous rectangle; not valid where its centre had none before it (were it valid, that centre's first valid
+  // one, at it or before it, would be there); tested only where an earlier one had its centre. Each rectangle's
+  // columns (its runs' and corners') relative to corner 1, and the band's previous rectangles by centre.
+  bool from_previous = false;
+  glm::ivec2 changed_lo(0), changed_hi(-1);
+  if constexpr (kBanded)
+    if (banded.previous) from_previous = true, changed_lo = banded.changed_lo, changed_hi = banded.changed_hi;
+  std::vector<std::pair<glm::ivec2, glm::ivec2>> reads(from_previous ? ring.size() : 0);
+  for (std::size_t r = 0; r < reads.size(); ++r)
+    reads[r] = {glm::min(ring[r].box_lo, glm::min(glm::ivec2(0), glm::ivec2(ring[r].dx, ring[r].dz))),
+                glm::max(ring[r].box_hi, glm::max(glm::ivec2(0), glm::ivec2(ring[r].dx, ring[r].dz)))};
+  const auto centre_key = [&](int x1, int y1, int z1, std::size_t r) {
+    return pack_key(2 * x1 + ring[r].dx, 2 * y1 - shapes[r].side, 2 * z1 + ring[r].dz);
+  };
+  KeyTable previous_centres;  // centre -> its first rectangle in `before`
+  const std::vector<Candidates::Item>* before = nullptr;
+  int previous_band = -1;
+  const auto valid_now = [&](int x1, int y1, int z1, std::size_t r) {
+    const RingOffset& o = ring[r];
+    if (from_previous && (x1 + reads[r].second.x < changed_lo.x || x1 + reads[r].first.x > changed_hi.x ||
+                          z1 + reads[r].second.y < changed_lo.y || z1 + reads[r].first.y > changed_hi.y)) {
+      const std::uint32_t j = previous_centres.find(centre_key(x1, y1, z1, r));
+      if (j == KeyTable::kAbsent) return false;
+      const Candidates::Item& item = (*before)[j];
+      const glm::ivec3 c = out.decode(item).corner(0);
+      if (c == glm::ivec3(x1, y1, z1) && item.shape == r) return true;
+      if (std::tie(c.z, c.x, c.y, item.shape) > std::tie(z1, x1, y1, r)) return false;
+    }
+    return valid(x1, z1, o, y1, shapes[r].side);
+  };
   // Where Alg. 2 has a second corner: one with a compatible normal at a ring offset, tried in the ring's order.
   // By bands, each band's centres are its own: the bits it set are cleared when it ends.
   std::vector<std::size_t> band_bits;
@@ -165,7 +200,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     const RingOffset& o = ring[r];
     const int h = shapes[r].side;
     const std::size_t bit = centre_bit(2 * x1 + o.dx, 2 * y1 - h, o.dz);
-    if (centres.test(bit) || !valid(x1, z1, o, y1, h)) return;
+    if (centres.test(bit) || !valid_now(x1, y1, z1, r)) return;
     centres.set(bit);
     if constexpr (kBanded) band_bits.push_back(bit);
     out.push_back(glm::ivec3(x1, y1, z1), std::uint32_t(r));
@@ -183,6 +218,17 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       if (!b.searches(z1)) continue;  // a band searched starts with no centre: the last one's were cleared
       const glm::ivec2 columns = b.columns[std::size_t(b.band(z1))];
       x_first = std::max(columns.x, 0), x_last = std::min(columns.y, spec.nx - 1);
+      if (from_previous && b.band(z1) != previous_band) {
+        previous_band = b.band(z1);
+        before = &(*banded.previous)[std::size_t(previous_band)];
+        previous_centres = KeyTable();
+        previous_centres.reserve(before->size());
+        for (std::size_t j = 0; j < before->size(); ++j) {
+          const Candidates::Item& item = (*before)[j];
+          const glm::ivec3 c = out.decode(item).corner(0);
+          previous_centres.insert(centre_key(c.x, c.y, c.z, item.shape), std::uint32_t(j));
+        }
+      }
     }
     first_row = std::size_t(2 * z1 + int(rows) - reach) % rows;  // 2 z1 - reach, kept non-negative
     for (const int dz : {reach - 1, reach})

@@ -8,8 +8,11 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 
@@ -188,6 +191,46 @@ std::tuple<std::uint32_t, std::uint32_t, std::uint32_t> key_of(const Candidates:
   return {item.cell_hi, item.cell_lo, item.shape};
 }
 
+// The centres of a wall list whose corners 1 come row by row (z1 never falls), as search_walls's bits: twice the
+// centre, (2 x1 + dx, 2 y1 - h, 2 z1 + dz), a bit each, in rows of 2 z1 + dz. A later wall's centre lies within
+// `reach` rows of 2 z1 (|dz| <= reach), so rows from before that are used again: a large floor's list marks a
+// window of rows (what a hash of every centre took, with a cache miss a wall), not the grid's volume.
+class WallCentres {
+ public:
+  WallCentres(const GridSpec& spec, std::span<const Candidates::Shape> shapes) {
+    for (const Candidates::Shape& s : shapes) reach_ = std::max(reach_, std::abs(s.dz)), h_max_ = std::max(h_max_, s.side);
+    x_span_ = 2 * std::size_t(std::max(spec.nx, 1));
+    y_span_ = std::size_t(2 * std::max(spec.ny - 1, 0) + h_max_ + 1);
+    rows_ = 2 * std::size_t(reach_) + 3;
+    row_words_ = (x_span_ * y_span_ + 63) / 64;
+    bits_.assign(rows_ * row_words_, 0);
+    tags_.assign(rows_, std::numeric_limits<int>::min());
+  }
+  // Marks the wall's centre; false where a wall before it had that centre.
+  bool insert(const PackedCandidate& wall) {
+    const glm::ivec3 c = wall.corner(0), sum = wall.corner_sum() / 2;  // (2 x1 + dx, 2 y1 - h, 2 z1 + dz)
+    if (c.z < z1_) throw std::logic_error("a wall list out of search order");
+    z1_ = c.z;
+    const std::size_t row = std::size_t(((sum.z % int(rows_)) + int(rows_)) % int(rows_));
+    if (tags_[row] != sum.z) {
+      std::fill_n(bits_.begin() + std::ptrdiff_t(row * row_words_), row_words_, std::uint64_t{0});
+      tags_[row] = sum.z;
+    }
+    const std::size_t bit = std::size_t(sum.x) * y_span_ + std::size_t(sum.y + h_max_);
+    std::uint64_t& word = bits_[row * row_words_ + bit / 64];
+    const std::uint64_t mask = std::uint64_t{1} << (bit % 64);
+    if (word & mask) return false;
+    word |= mask;
+    return true;
+  }
+
+ private:
+  int reach_ = 0, h_max_ = 0, z1_ = std::numeric_limits<int>::min();
+  std::size_t x_span_ = 0, y_span_ = 0, rows_ = 0, row_words_ = 0;
+  std::vector<std::uint64_t> bits_;
+  std::vector<int> tags_;  // per row: the 2 z1 + dz its bits hold
+};
+
 }  // namespace
 
 std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t type, const RowBands& bands,
@@ -343,15 +386,13 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
       matched[slot][std::size_t(it - before[slot].begin())] = 1;
       return it->second;
     };
-    KeyTable centres;
-    centres.reserve(count);
+    WallCentres centres(spec_, found.shapes());
     for (std::size_t slot = 0; slot < kept.pieces.size(); ++slot)
       for (std::size_t k = 0; k < kept.pieces[slot].size(); ++k) {
         const Candidates::Item& item = kept.pieces[slot][k];
         const std::uint8_t state = previous_state(slot, k);
         const PackedCandidate p = found.decode(item);
-        const glm::ivec3 sum = p.corner_sum();
-        if (!centres.insert(pack_key(sum.x, sum.y, sum.z))) {
+        if (!centres.insert(p)) {
           if (state == kPacked) kept.replay.gone.push_back(p.unpack());
           continue;
         }

@@ -582,4 +582,67 @@ TEST(SearchCache, WallsFoundFromThePreviousSearchEqualSearchingAfresh) {
   EXPECT_GE(rectangles, 30u * 50u);
 }
 
+// A furniture search after tops changed takes a layer's previous squares where its tiles are as they were and the
+// layer below found what it found (search_squares's BandedSearch::levels_changed). Each time, its list must equal
+// a whole search's, on tops that come and go at two levels one apart (squares on both then rise, Eq. 3.41, and
+// A furniture search after tops changed takes a layer's previous squares where its tiles are as they were and the
+// layer below found what it found (search_squares's BandedSearch::levels_changed). Each time, its list must equal
+// a whole search's. Tables with an island one level up and another on that, and tops of the upper levels and the
+// one above coming and going. Squares rise (Eq. 3.41) into the next level, whose own squares then skip their
+// centres, so a level's changes reach the level above without changing its tiles, and a level taken whole still
+// takes centres from the next.
+TEST(SearchCache, FurnitureLayersTakenFromThePreviousSearchEqualSearchingAfresh) {
+  GridSpec s;
+  s.nx = 64, s.ny = 16, s.nz = 56;
+  s.voxel_size = 0.1f;
+  RoomFeatures f = empty_features(s);
+  f.levels.ceiling = 14, f.y_end = 9;
+  f.furniture.assign(s.column_count(), kNoFurniture);
+  struct Top {
+    glm::ivec2 lo, hi;
+    int level;
+  };
+  std::vector<Top> tops;  // later ones over earlier ones
+  const auto paint = [&] {
+    std::fill(f.furniture.begin(), f.furniture.end(), kNoFurniture);
+    for (const Top& t : tops)
+      for (int z = t.lo.y; z <= t.hi.y; ++z)
+        for (int x = t.lo.x; x <= t.hi.x; ++x) f.furniture[s.column(x, z)] = t.level;
+  };
+  std::mt19937 rng(17);
+  const auto random_top = [&](int side_from, int side_to, int level) {
+    const int side = side_from + int(rng() % std::uint32_t(side_to - side_from + 1));
+    const glm::ivec2 lo(int(rng() % std::uint32_t(s.nx - side)), int(rng() % std::uint32_t(s.nz - side)));
+    return Top{lo, lo + glm::ivec2(side - 1, side - 1 - int(rng() % 3)), level};
+  };
+  for (int k = 0; k < 4; ++k) tops.push_back(random_top(20, 28, 4));
+  for (int k = 0; k < 8; ++k) {  // islands one level up, and on them one more
+    const Top& under = tops[std::size_t(k)];
+    tops.push_back({under.lo + 3, under.hi - 3, under.level + 1});
+  }
+  const std::size_t fixed = tops.size();
+  const SizeRange range{5.0, 7.0};
+  SearchCache cache;
+  std::size_t squares = 0, rising = 0;
+  for (int step = 0; step < 60; ++step) {
+    if (step > 0) {
+      if (rng() % 2 == 0 && tops.size() > fixed) tops.erase(tops.begin() + std::ptrdiff_t(fixed + rng() % (tops.size() - fixed)));
+      else tops.push_back(random_top(3, 10, 5 + int(rng() % 3)));
+    }
+    paint();
+    cache.begin(s, f);
+    const Candidates got = cache.squares(3, 0, s, f, range, 0.95f, 12.0, {});
+    const Candidates want = search_squares(s, f, Surface::Furniture, range, 0.95f, 12.0);
+    ASSERT_EQ(got.size(), want.size()) << "step " << step;
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      ASSERT_TRUE(got.item(i) == want.item(i)) << "step " << step << ", square " << i;
+      rising += f.furniture[s.column(want[i].corner(0).x, want[i].corner(0).z)] != want[i].corner(0).y;
+    }
+    squares += want.size();
+  }
+  EXPECT_GE(squares, 60u * 100u);
+  EXPECT_GE(rising, 60u);
+}
+
+
 }  // namespace

@@ -142,6 +142,9 @@ struct BandedSearch {
   const std::vector<std::vector<Candidates::Item>>* previous = nullptr;
   glm::ivec2 changed_lo{0}, changed_hi{-1};
   TileChange change = TileChange::Mixed;
+  // Furniture's: per level y, whether any column's class at y changed (a first corner there, a tile one level up,
+  // or neither; walls: every level), so that a layer whose tiles are as they were finds its previous squares.
+  const std::vector<std::uint8_t>* levels_changed = nullptr;
 };
 
 // Alg. 2 (Eq. 3.20-3.27). Returns the first valid rectangle for each distinct centre, in search order: a

@@ -95,6 +95,20 @@ void SearchCache::begin(const GridSpec& spec, const RoomFeatures& features) {
     mark_changed(features.ceiling_facet, ceiling_facet_, 1, spec, changed_rows_[2]);
     mark_changed(features.furniture, furniture_, 1, spec, changed_rows_[3]);
     tile_change_[1] = tile_change(features.free_floor, free_floor_, features.walls, walls_, spec, changed_rows_[1]);
+    // Furniture's levels at which a column's class changed: a top at f is a first corner at level f and a tile
+    // one level up at f - 1; a wall, at every level.
+    furniture_levels_changed_.assign(std::size_t(std::max(spec.ny, 0)) + 2, any_changed(walls) ? 1 : 0);
+    if (features.furniture.size() == spec.column_count() && furniture_.size() == spec.column_count())
+      for (std::size_t z = 0; z < changed_rows_[3].size(); ++z)
+        for (int x = changed_rows_[3][z].x; x <= changed_rows_[3][z].y; ++x) {
+          const std::size_t col = spec.column(x, int(z));
+          if (features.furniture[col] == furniture_[col]) continue;
+          for (const int level : {furniture_[col], furniture_[col] - 1, features.furniture[col], features.furniture[col] - 1})
+            if (level >= 0 && std::size_t(level) < furniture_levels_changed_.size())
+              furniture_levels_changed_[std::size_t(level)] = 1;
+        }
+    else
+      std::fill(furniture_levels_changed_.begin(), furniture_levels_changed_.end(), std::uint8_t{1});
     // A ceiling's layer is its column's facet.
     tile_change_[2] = features.ceiling_facet != ceiling_facet_
                           ? TileChange::Mixed
@@ -495,6 +509,7 @@ BandedSearch SearchCache::from_previous(const Kept& kept, std::size_t type, cons
   // The kept pieces are the previous search's where plan() kept them (the same search over the same levels).
   if (all_changed_ || kept.generation + 1 != generation_) return banded;
   banded.previous = &kept.pieces, banded.change = tile_change_[type];
+  if (type == 3) banded.levels_changed = &furniture_levels_changed_;
   banded.changed_lo = glm::ivec2(spec_.nx, spec_.nz), banded.changed_hi = glm::ivec2(-1);
   for (std::size_t z = 0; z < changed_rows_[type].size(); ++z)
     if (const glm::ivec2 span = changed_rows_[type][z]; span.x <= span.y) {

@@ -162,6 +162,7 @@ class SearchCache {
   std::array<std::vector<glm::ivec2>, 4> changed_rows_;
   // Per type: how the tiles its squares read changed (types 1 and 2; Mixed for the others, and where unknown).
   std::array<TileChange, 4> tile_change_{};
+  std::vector<std::uint8_t> furniture_levels_changed_;  // per level y (BandedSearch::levels_changed)
   // What the searches read, as the previous analysis had it.
   GridSpec spec_{};
   FloorCeiling levels_{};

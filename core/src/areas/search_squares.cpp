@@ -264,8 +264,53 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     }
   }
   CellBox cleared;  // the rows of the bits set since they were last cleared
+  // Beyond the thesis (issue 19), furniture's search after a change (BandedSearch::previous): a layer finds what it
+  // found where its tiles are as they were (BandedSearch::levels_changed) and the layer below it found what it
+  // found (whose rising squares' centres this layer's own squares skip). Each layer's previous squares in the
+  // columns searched, band by band; whether the layer below found them again; where this layer's began.
+  bool copies_layers = false;
+  if constexpr (kBanded) copies_layers = surface == Surface::Furniture && banded.previous && banded.levels_changed;
+  const auto previous_squares = [&](int layer, const auto& each) {  // each(item, band), in search order
+    if constexpr (kBanded)
+      for (std::size_t b = 0; b < banded.bands->searched.size(); ++b) {
+        if (!banded.bands->searched[b]) continue;
+        const glm::ivec2 columns = banded.bands->columns[b];
+        for (const Candidates::Item& item : (*banded.previous)[std::size_t(layer) * banded.bands->searched.size() + b]) {
+          const int hx = out.decode(item).corner_sum().x / 4;  // the centre's cell: cx / 2
+          if (hx >= columns.x && hx <= columns.y) each(item, int(b));
+        }
+      }
+  };
+  bool below_same = true;
+  std::size_t layer_begin = 0;
   for (int layer = 0; layer < layers; centres[std::size_t(layer++)].release()) {  // later layers never read it
     const int y1 = by_facet ? features.facets[std::size_t(layer)].level : y_from + layer;
+    if (copies_layers) {
+      if (layer > 0) {  // the layer below found its previous squares, in order, and no others
+        std::size_t at = layer_begin;
+        bool same = true;
+        previous_squares(layer - 1, [&](const Candidates::Item& item, int) {
+          same = same && at < out.size() && out.item(at) == item;
+          ++at;
+        });
+        below_same = same && at == out.size();
+      }
+      layer_begin = out.size();
+      const std::vector<std::uint8_t>& changed_levels = *banded.levels_changed;
+      if (below_same && std::size_t(y1) < changed_levels.size() && !changed_levels[std::size_t(y1)]) {
+        int band = -1;
+        previous_squares(layer, [&](const Candidates::Item& item, int b) {
+          if (b != band && band >= 0) banded.pieces->push_back({layer, band, out.size()});
+          band = b;
+          out.push_item(item);
+          const PackedCandidate square = out.decode(item);
+          const glm::ivec3 sum = square.corner_sum();
+          (square.corner(0).y == y1 ? centres[std::size_t(layer)] : centres[std::size_t(layer + 1)]).insert({sum.x, 0, sum.z});
+        });
+        if (band >= 0) banded.pieces->push_back({layer, band, out.size()});
+        continue;
+      }
+    }
     const CellBox& firsts = first_box[std::size_t(layer)];
     if (firsts.empty()) continue;
     CellBox region{glm::max(firsts.lo - 2 * corner_reach - 1, glm::ivec2(0)),

@@ -1,9 +1,10 @@
 // Beyond the thesis (issue 19): what find_areas found for one storey, kept between the analyses of an
 // IncrementalAnalysis: the 12 searches' rectangles by bands of grid rows (search.h's RowBands), so that an
 // analysis searches again only the bands whose rectangles may read a row whose features changed, and in a
-// band only the rectangles within reach of a changed column; each rectangle's packing decision
-// and rank (a square's kept where its centre was not searched again), for packing's replay (reduce.h); each
-// area type's reduction, for a type nothing of which changed; each type's growth, replayed area by area (grow.h);
+// band only the rectangles within reach of a changed column, taking from the band's previous rectangles what
+// one that reads no changed column would find (search.h's BandedSearch::previous); each rectangle's packing
+// decision and rank (a square's kept where its centre was not searched again), for packing's replay (reduce.h);
+// each area type's reduction, for a type nothing of which changed; each type's growth, replayed area by area (grow.h);
 // the reach lists' areas in metres, and what reach found (classify.h's ReachMemo); packing's square sample
 // runs (reduce.h's SquareSampleRuns). Every result equals the whole analysis's exactly
 // (tests/unit/incremental_test.cpp replays rooms chunk by chunk against full analyses; search_cache_test.cpp

@@ -481,7 +481,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       }
       found_here.assign(std::size_t(centres_in_row), kNone);
       found_above.assign(std::size_t(centres_in_row), kNone);
-      past.assign(words, from_previous ? 0 : ~std::uint64_t{0});  // without one, every centre is tested
+      if (from_previous) past.assign(words, 0);
       std::size_t next = 0;  // the first event not yet taken
       for (std::size_t i = 0; i < orientations.size(); ++i) {
         const CornerCells& k = cells[i];
@@ -506,12 +506,14 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
           std::uint64_t open = open_here[w] | open_above[w];
           if (open == 0) continue;
           any_open = true;
-          any_past = any_past || past[w] != 0;
           const int x = hx_first + int(64 * w);  // the word's first centre
-          std::uint64_t tested = past[w];
-          if (change != TileChange::Lost) tested |= bits_between(reads_from - x, reads_to - x);
-          open &= tested;
-          if (open == 0) continue;
+          if (from_previous) {  // without one, every centre is tested
+            any_past = any_past || past[w] != 0;
+            std::uint64_t tested = past[w];
+            if (change != TileChange::Lost) tested |= bits_between(reads_from - x, reads_to - x);
+            open &= tested;
+            if (open == 0) continue;
+          }
           open &= first_bits.word(x + k.x[0], hz + k.z[0]) & tile_bits.word(x + k.x[1], hz + k.z[1]) &
                   tile_bits.word(x + k.x[2], hz + k.z[2]) & tile_bits.word(x + k.x[3], hz + k.z[3]);
           for (; open != 0; open &= open - 1) {
@@ -530,7 +532,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
         }
         if (!any_open) break;
         // Nothing is tested before the next previous square's orientation.
-        if (!any_past && (change == TileChange::Lost || !row_reads_changed)) {
+        if (from_previous && !any_past && (change == TileChange::Lost || !row_reads_changed)) {
           if (next == events.size()) break;
           i = events[next].first - 1;
         }

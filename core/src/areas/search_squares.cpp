@@ -193,22 +193,25 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   const int pad = corner_reach + 1;
   const PaddedBits::Size padded_size{spec.nx + 2 * pad, spec.nz + 2 * pad};
   PaddedBits first_bits(padded_size), tile_bits(padded_size);
-  // Each orientation's corners relative to the centre's cell (cx / 2, cz / 2), in padded bit coordinates.
-  // Also the box of every cell the square reads (its cells' and corners'), relative to the centre's cell.
+  // Each orientation's corners relative to the centre's cell (cx / 2, cz / 2), in padded bit coordinates; and
+  // the box of every cell its square reads (its cells' and corners'), relative to the centre's cell.
   struct CornerCells {
     int x[4], z[4];
-    glm::ivec2 reads_lo, reads_hi;
+  };
+  struct Reads {
+    glm::ivec2 lo, hi;
   };
   std::array<std::vector<CornerCells>, 2> corner_cells;
+  std::array<std::vector<Reads>, 2> reads;
   for (int p = 0; p < 2; ++p)
     for (const RingOffset* o : by_parity[std::size_t(p)]) {
       const int x1 = (p - o->dx + o->dz) / 2, z1 = (p - o->dx - o->dz) / 2;
+      corner_cells[std::size_t(p)].push_back({{x1 + pad, x1 + o->dx + pad, x1 + o->dx - o->dz + pad, x1 - o->dz + pad},
+                                              {z1 + pad, z1 + o->dz + pad, z1 + o->dz + o->dx + pad, z1 + o->dx + pad}});
       const glm::ivec2 corners_lo(std::min({0, o->dx, o->dx - o->dz, -o->dz}), std::min({0, o->dz, o->dz + o->dx, o->dx}));
       const glm::ivec2 corners_hi(std::max({0, o->dx, o->dx - o->dz, -o->dz}), std::max({0, o->dz, o->dz + o->dx, o->dx}));
-      corner_cells[std::size_t(p)].push_back({{x1 + pad, x1 + o->dx + pad, x1 + o->dx - o->dz + pad, x1 - o->dz + pad},
-                                              {z1 + pad, z1 + o->dz + pad, z1 + o->dz + o->dx + pad, z1 + o->dx + pad},
-                                              glm::ivec2(x1, z1) + glm::min(o->box_lo, corners_lo),
-                                              glm::ivec2(x1, z1) + glm::max(o->box_hi, corners_hi)});
+      reads[std::size_t(p)].push_back({glm::ivec2(x1, z1) + glm::min(o->box_lo, corners_lo),
+                                       glm::ivec2(x1, z1) + glm::max(o->box_hi, corners_hi)});
     }
   // One row of centres: those still open for a square at this level (here) or one level up (above), and the
   // orientation each found.
@@ -430,6 +433,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       const std::size_t words = (std::size_t(centres_in_row) + 63) / 64;
       const std::vector<const RingOffset*>& orientations = by_parity[std::size_t(p)];
       const std::vector<CornerCells>& cells = corner_cells[std::size_t(p)];
+      const std::vector<Reads>& row_reads = reads[std::size_t(p)];
       const int hz = cz / 2;
       events.clear();
       had.assign(words, 0);
@@ -448,8 +452,8 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
             had[std::size_t(c / 64)] |= std::uint64_t{1} << (c % 64);
           }
           std::sort(events.begin(), events.end());
-          for (const CornerCells& k : cells)
-            row_reads_changed = row_reads_changed || (hz + k.reads_lo.y <= changed_hi.y && hz + k.reads_hi.y >= changed_lo.y);
+          for (const Reads& r : row_reads)
+            row_reads_changed = row_reads_changed || (hz + r.lo.y <= changed_hi.y && hz + r.hi.y >= changed_lo.y);
         }
       open_here.assign(words, 0);
       open_above.assign(words, 0);
@@ -487,8 +491,8 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
         const CornerCells& k = cells[i];
         // The centres hx in [reads_from, reads_to] have a square at i that reads a changed column.
         int reads_from = 1, reads_to = 0;
-        if (row_reads_changed && hz + k.reads_lo.y <= changed_hi.y && hz + k.reads_hi.y >= changed_lo.y)
-          reads_from = changed_lo.x - k.reads_hi.x, reads_to = changed_hi.x - k.reads_lo.x;
+        if (row_reads_changed && hz + row_reads[i].lo.y <= changed_hi.y && hz + row_reads[i].hi.y >= changed_lo.y)
+          reads_from = changed_lo.x - row_reads[i].hi.x, reads_to = changed_hi.x - row_reads[i].lo.x;
         for (; next < events.size() && events[next].first == i; ++next) {
           const std::uint32_t c = events[next].second;
           const std::uint64_t bit = std::uint64_t{1} << (c % 64);

@@ -288,8 +288,7 @@ void ChangedRegion::add(const Box& b) {
     for (int x = k.lo.x; x <= k.hi.x; ++x) bits_[std::size_t(z) * words_per_row_ + std::size_t(x / 64)] |= std::uint64_t{1} << (x % 64);
 }
 
-bool ChangedRegion::touches(const Box& b) const {
-  if (empty_) return false;
+bool ChangedRegion::touches_blocks(const Box& b) const {
   const Blocks k = blocks(b);
   if (glm::any(glm::lessThan(k.hi, marked_.lo)) || glm::any(glm::greaterThan(k.lo, marked_.hi))) return false;
   for (int z = k.lo.y; z <= k.hi.y; ++z) {

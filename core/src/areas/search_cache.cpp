@@ -20,15 +20,16 @@ namespace roomsense::detail {
 namespace {
 
 // Widens row z's span of changed columns to every column where a per-column (`per_column` 1) or per-voxel (ny)
-// array differs from its previous copy.
+// array differs from its previous copy. Returns the rows that differ (of arrays of one size).
 template <class T>
-void mark_changed(const std::vector<T>& now, const std::vector<T>& before, std::size_t per_column, const GridSpec& spec,
-                  std::vector<glm::ivec2>& rows) {
+std::vector<int> mark_changed(const std::vector<T>& now, const std::vector<T>& before, std::size_t per_column,
+                              const GridSpec& spec, std::vector<glm::ivec2>& rows) {
+  std::vector<int> differing;
   if (now.size() != before.size()) {  // one of them empty (wall_blocked): every column
     std::fill(rows.begin(), rows.end(), glm::ivec2(0, spec.nx - 1));
-    return;
+    return differing;
   }
-  if (now.empty()) return;
+  if (now.empty()) return differing;
   const std::size_t row = std::size_t(spec.nx) * per_column;
   const auto differs = [&](std::size_t z, int x) {
     const std::size_t at = z * row + std::size_t(x) * per_column;
@@ -37,11 +38,29 @@ void mark_changed(const std::vector<T>& now, const std::vector<T>& before, std::
   for (int z = 0; z < spec.nz; ++z) {
     const std::size_t at = std::size_t(z) * row;
     if (std::memcmp(now.data() + at, before.data() + at, row * sizeof(T)) == 0) continue;
+    differing.push_back(z);
     glm::ivec2& span = rows[std::size_t(z)];
     int first = 0, last = spec.nx - 1;
     while (!differs(std::size_t(z), first)) ++first;
     while (!differs(std::size_t(z), last)) --last;
     span = glm::ivec2(std::min(span.x, first), std::max(span.y, last));
+  }
+  return differing;
+}
+
+// `before` made equal to `now`, of which only `rows` differ where both have one size (mark_changed's): a change
+// copies the rows it reached, not a room's every feature.
+template <class T>
+void copy_rows(const std::vector<T>& now, std::vector<T>& before, std::size_t per_column, const GridSpec& spec,
+               const std::vector<int>& rows) {
+  if (now.size() != before.size()) {
+    before = now;
+    return;
+  }
+  const std::size_t row = std::size_t(spec.nx) * per_column;
+  for (const int z : rows) {
+    const auto at = std::ptrdiff_t(std::size_t(z) * row);
+    std::copy_n(now.begin() + at, row, before.begin() + at);
   }
 }
 
@@ -85,15 +104,17 @@ void SearchCache::begin(const GridSpec& spec, const RoomFeatures& features) {
   if (!all_changed_) {
     const auto ny = std::size_t(spec.ny);
     std::vector<glm::ivec2> walls(std::size_t(spec.nz), none);
-    mark_changed(features.walls, walls_, 1, spec, walls);
+    const std::vector<int> wall_rows = mark_changed(features.walls, walls_, 1, spec, walls);
     for (std::vector<glm::ivec2>& rows : changed_rows_) rows = walls;  // no type's rectangle covers a wall
-    mark_changed(features.normals, normals_, ny, spec, changed_rows_[0]);
-    mark_changed(features.wall_blocked, wall_blocked_, ny, spec, changed_rows_[0]);
-    mark_changed(features.ceiling, ceiling_, 1, spec, changed_rows_[0]);  // where walls grow up to
-    mark_changed(features.free_floor, free_floor_, 1, spec, changed_rows_[1]);
-    mark_changed(features.free_ceiling, free_ceiling_, 1, spec, changed_rows_[2]);
-    mark_changed(features.ceiling_facet, ceiling_facet_, 1, spec, changed_rows_[2]);
-    mark_changed(features.furniture, furniture_, 1, spec, changed_rows_[3]);
+    std::vector<glm::ivec2>& wall_type = changed_rows_[0];
+    const std::vector<int> normal_rows = mark_changed(features.normals, normals_, ny, spec, wall_type);
+    const std::vector<int> blocked_rows = mark_changed(features.wall_blocked, wall_blocked_, ny, spec, wall_type);
+    const std::vector<int> ceiling_rows = mark_changed(features.ceiling, ceiling_, 1, spec, wall_type);  // walls grow to it
+    const std::vector<int> floor_rows = mark_changed(features.free_floor, free_floor_, 1, spec, changed_rows_[1]);
+    const std::vector<int> free_ceiling_rows =
+        mark_changed(features.free_ceiling, free_ceiling_, 1, spec, changed_rows_[2]);
+    const std::vector<int> facet_rows = mark_changed(features.ceiling_facet, ceiling_facet_, 1, spec, changed_rows_[2]);
+    const std::vector<int> furniture_rows = mark_changed(features.furniture, furniture_, 1, spec, changed_rows_[3]);
     tile_change_[1] = tile_change(features.free_floor, free_floor_, features.walls, walls_, spec, changed_rows_[1]);
     // Furniture's levels at which a column's class changed: a top at f is a first corner at level f and a tile
     // one level up at f - 1; a wall, at every level.
@@ -110,14 +131,24 @@ void SearchCache::begin(const GridSpec& spec, const RoomFeatures& features) {
     else
       std::fill(furniture_levels_changed_.begin(), furniture_levels_changed_.end(), std::uint8_t{1});
     // A ceiling's layer is its column's facet.
-    tile_change_[2] = features.ceiling_facet != ceiling_facet_
+    tile_change_[2] = !facet_rows.empty() || features.ceiling_facet.size() != ceiling_facet_.size()
                           ? TileChange::Mixed
                           : tile_change(features.free_ceiling, free_ceiling_, features.walls, walls_, spec, changed_rows_[2]);
+    // The copies kept for the next analysis: the rows that changed.
+    copy_rows(features.walls, walls_, 1, spec, wall_rows);
+    copy_rows(features.normals, normals_, ny, spec, normal_rows);
+    copy_rows(features.wall_blocked, wall_blocked_, ny, spec, blocked_rows);
+    copy_rows(features.ceiling, ceiling_, 1, spec, ceiling_rows);
+    copy_rows(features.free_floor, free_floor_, 1, spec, floor_rows);
+    copy_rows(features.free_ceiling, free_ceiling_, 1, spec, free_ceiling_rows);
+    copy_rows(features.ceiling_facet, ceiling_facet_, 1, spec, facet_rows);
+    copy_rows(features.furniture, furniture_, 1, spec, furniture_rows);
+  } else {
+    walls_ = features.walls, normals_ = features.normals, wall_blocked_ = features.wall_blocked;
+    free_floor_ = features.free_floor, free_ceiling_ = features.free_ceiling;
+    furniture_ = features.furniture, ceiling_facet_ = features.ceiling_facet, ceiling_ = features.ceiling;
   }
   spec_ = spec, levels_ = features.levels, y_end_ = features.y_end, facet_levels_ = std::move(facet_levels);
-  walls_ = features.walls, normals_ = features.normals, wall_blocked_ = features.wall_blocked;
-  free_floor_ = features.free_floor, free_ceiling_ = features.free_ceiling;
-  furniture_ = features.furniture, ceiling_facet_ = features.ceiling_facet, ceiling_ = features.ceiling;
 }
 
 const SearchCache::TypeReduction* SearchCache::unchanged_type(std::size_t type, const AreaParams& params,

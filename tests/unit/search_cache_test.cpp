@@ -22,11 +22,19 @@ namespace {
 using namespace roomsense;
 using namespace roomsense::detail;
 
-GridSpec grid() {
+GridSpec grid(int nx = 48, int ny = 8, int nz = 48) {
   GridSpec s;
-  s.nx = 48, s.ny = 8, s.nz = 48;
+  s.nx = nx, s.ny = ny, s.nz = nz;
   s.voxel_size = 0.1f;
   return s;
+}
+
+// The same rectangles in the same order: a replayed search's list against a search from nothing.
+::testing::AssertionResult same_items(const Candidates& got, const Candidates& want) {
+  if (got.size() != want.size()) return ::testing::AssertionFailure() << got.size() << " rectangles, not " << want.size();
+  for (std::size_t i = 0; i < want.size(); ++i)
+    if (!(got.item(i) == want.item(i))) return ::testing::AssertionFailure() << "rectangle " << i << " differs";
+  return ::testing::AssertionSuccess();
 }
 
 RoomFeatures empty_features(const GridSpec& s) {
@@ -466,9 +474,7 @@ TEST(ReachMemo, EqualsReachSearchedAfreshAsFloorsComeAndGo) {
 // away starts each centre from its previous square (search_squares's BandedSearch::previous). Each time, it must
 // find what a search from nothing finds; so must the searches after a mixed change, which search as before.
 TEST(SearchCache, SquaresStartedFromThePreviousSearchEqualSearchingAfresh) {
-  GridSpec s;
-  s.nx = 64, s.ny = 8, s.nz = 56;
-  s.voxel_size = 0.1f;
+  const GridSpec s = grid(64, 8, 56);
   const SizeRange range{9.0, 13.0};
   for (const Surface surface : {Surface::Floor, Surface::Ceiling}) {
     const std::size_t type = surface == Surface::Floor ? 1 : 2;
@@ -509,8 +515,7 @@ TEST(SearchCache, SquaresStartedFromThePreviousSearchEqualSearchingAfresh) {
       cache.begin(s, f);
       const Candidates got = cache.squares(type, 0, s, f, range, 0.95f, 12.0, {});
       const Candidates want = search_squares(s, f, surface, range, 0.95f, 12.0);
-      ASSERT_EQ(got.size(), want.size()) << "step " << step;
-      for (std::size_t i = 0; i < want.size(); ++i) ASSERT_TRUE(got.item(i) == want.item(i)) << "step " << step << ", square " << i;
+      ASSERT_TRUE(same_items(got, want)) << "step " << step;
       squares += want.size();
     }
     for (const std::size_t n : steps) EXPECT_GE(n, 8u);
@@ -522,9 +527,7 @@ TEST(SearchCache, SquaresStartedFromThePreviousSearchEqualSearchingAfresh) {
 // rectangles (search_walls's BandedSearch::previous). Each time, its list must equal a fresh cache's, which searches
 // every band anew, and a whole search's.
 TEST(SearchCache, WallsFoundFromThePreviousSearchEqualSearchingAfresh) {
-  GridSpec s;
-  s.nx = 56, s.ny = 12, s.nz = 48;
-  s.voxel_size = 0.1f;
+  const GridSpec s = grid(56, 12, 48);
   RoomFeatures f = empty_features(s);
   f.levels.ceiling = 10;
   // Panels of wall normals: vertical rectangles along x or z, some with a gap; a voxel's normals are its panels'.
@@ -571,12 +574,8 @@ TEST(SearchCache, WallsFoundFromThePreviousSearchEqualSearchingAfresh) {
     fresh.begin(s, f);
     const Candidates want = fresh.walls(0, s, f, normals, range, 0.9f, {});
     const Candidates whole = search_walls(s, f, normals, range, 0.9f);
-    ASSERT_EQ(got.size(), want.size()) << "step " << step;
-    ASSERT_EQ(whole.size(), want.size()) << "step " << step;
-    for (std::size_t i = 0; i < want.size(); ++i) {
-      ASSERT_TRUE(got.item(i) == want.item(i)) << "step " << step << ", rectangle " << i;
-      ASSERT_TRUE(whole.item(i) == want.item(i)) << "step " << step << ", rectangle " << i;
-    }
+    ASSERT_TRUE(same_items(got, want)) << "step " << step;
+    ASSERT_TRUE(same_items(whole, want)) << "step " << step;
     rectangles += want.size();
   }
   EXPECT_GE(rectangles, 30u * 50u);
@@ -584,17 +583,12 @@ TEST(SearchCache, WallsFoundFromThePreviousSearchEqualSearchingAfresh) {
 
 // A furniture search after tops changed takes a layer's previous squares where its tiles are as they were and the
 // layer below found what it found (search_squares's BandedSearch::levels_changed). Each time, its list must equal
-// a whole search's, on tops that come and go at two levels one apart (squares on both then rise, Eq. 3.41, and
-// A furniture search after tops changed takes a layer's previous squares where its tiles are as they were and the
-// layer below found what it found (search_squares's BandedSearch::levels_changed). Each time, its list must equal
 // a whole search's. Tables with an island one level up and another on that, and tops of the upper levels and the
 // one above coming and going. Squares rise (Eq. 3.41) into the next level, whose own squares then skip their
 // centres, so a level's changes reach the level above without changing its tiles, and a level taken whole still
 // takes centres from the next.
 TEST(SearchCache, FurnitureLayersTakenFromThePreviousSearchEqualSearchingAfresh) {
-  GridSpec s;
-  s.nx = 64, s.ny = 16, s.nz = 56;
-  s.voxel_size = 0.1f;
+  const GridSpec s = grid(64, 16, 56);
   RoomFeatures f = empty_features(s);
   f.levels.ceiling = 14, f.y_end = 9;
   f.furniture.assign(s.column_count(), kNoFurniture);
@@ -633,11 +627,9 @@ TEST(SearchCache, FurnitureLayersTakenFromThePreviousSearchEqualSearchingAfresh)
     cache.begin(s, f);
     const Candidates got = cache.squares(3, 0, s, f, range, 0.95f, 12.0, {});
     const Candidates want = search_squares(s, f, Surface::Furniture, range, 0.95f, 12.0);
-    ASSERT_EQ(got.size(), want.size()) << "step " << step;
-    for (std::size_t i = 0; i < want.size(); ++i) {
-      ASSERT_TRUE(got.item(i) == want.item(i)) << "step " << step << ", square " << i;
+    ASSERT_TRUE(same_items(got, want)) << "step " << step;
+    for (std::size_t i = 0; i < want.size(); ++i)
       rising += f.furniture[s.column(want[i].corner(0).x, want[i].corner(0).z)] != want[i].corner(0).y;
-    }
     squares += want.size();
   }
   EXPECT_GE(squares, 60u * 100u);

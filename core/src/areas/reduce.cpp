@@ -282,7 +282,6 @@ ChangedRegion::Blocks ChangedRegion::blocks(const Box& b) const {
 void ChangedRegion::add(const Box& b) {
   added_ = empty_ ? b : Box{glm::min(added_.lo, b.lo), glm::max(added_.hi, b.hi)};
   const Blocks k = blocks(b);
-  marked_ = empty_ ? k : Blocks{glm::min(marked_.lo, k.lo), glm::max(marked_.hi, k.hi)};
   empty_ = false;
   for (int z = k.lo.y; z <= k.hi.y; ++z)
     for (int x = k.lo.x; x <= k.hi.x; ++x) bits_[std::size_t(z) * words_per_row_ + std::size_t(x / 64)] |= std::uint64_t{1} << (x % 64);
@@ -290,7 +289,6 @@ void ChangedRegion::add(const Box& b) {
 
 bool ChangedRegion::touches_blocks(const Box& b) const {
   const Blocks k = blocks(b);
-  if (glm::any(glm::lessThan(k.hi, marked_.lo)) || glm::any(glm::greaterThan(k.lo, marked_.hi))) return false;
   for (int z = k.lo.y; z <= k.hi.y; ++z) {
     const std::uint64_t* row = bits_.data() + std::size_t(z) * words_per_row_;
     for (int x = k.lo.x; x <= k.hi.x; x = (x / 64 + 1) * 64) {

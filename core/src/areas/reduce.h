@@ -98,8 +98,7 @@ class ChangedRegion {
   std::size_t words_per_row_;
   std::vector<std::uint64_t> bits_;
   bool empty_ = true;
-  Blocks marked_{};  // the box of the blocks marked (while not empty_): most tests lie outside it
-  Box added_{glm::ivec2(1), glm::ivec2(0)};
+  Box added_{glm::ivec2(1), glm::ivec2(0)};  // touches() tests it first: most tests lie outside it
 };
 
 // Whether SquarePacker's contact of square c may read a column of `columns` (inclusive). Its samples lie 0.75

@@ -20,7 +20,9 @@ struct RingOffset {
   double d = 0;                // Eq. 3.20's distance, in voxels
   std::vector<CellRun> runs;   // the covered cells, one run per column
   int cells = 0;               // how many
-  glm::ivec2 box_lo{0}, box_hi{0};  // their bounding box (x, z), relative to the first corner
+  // Their bounding box (x, z) with the corners' cells, relative to the first corner: every cell a rectangle of
+  // this offset reads (a search after a change tests whether it meets the changed columns).
+  glm::ivec2 box_lo{0}, box_hi{0};
   // A box of covered cells (the largest over runs of whole columns), relative to the first corner; empty
   // (core_lo.x > core_hi.x) for a wall top.
   glm::ivec2 core_lo{1, 0}, core_hi{0, 0};
@@ -53,6 +55,8 @@ inline std::vector<RingOffset> ring_offsets(const SizeRange& size, Shape shape) 
       o.box_lo = {o.runs.front().dx, o.runs.front().dz_lo};
       o.box_hi = {o.runs.back().dx, o.runs.front().dz_hi};
       for (const CellRun& r : o.runs) o.box_lo.y = std::min(o.box_lo.y, r.dz_lo), o.box_hi.y = std::max(o.box_hi.y, r.dz_hi);
+      for (const glm::dvec2& corner : polygon)
+        o.box_lo = glm::min(o.box_lo, glm::ivec2(corner)), o.box_hi = glm::max(o.box_hi, glm::ivec2(corner));
       if (shape == Shape::Square) {
         long best = 0;
         for (std::size_t i = 0; i < o.runs.size(); ++i) {

@@ -243,11 +243,12 @@ std::tuple<std::uint32_t, std::uint32_t, std::uint32_t> key_of(const Candidates:
 class WallCentres {
  public:
   WallCentres(const GridSpec& spec, std::span<const Candidates::Shape> shapes) {
-    for (const Candidates::Shape& s : shapes) reach_ = std::max(reach_, std::abs(s.dz)), h_max_ = std::max(h_max_, s.side);
-    x_span_ = 2 * std::size_t(std::max(spec.nx, 1));
+    int reach = 0;
+    for (const Candidates::Shape& s : shapes) reach = std::max(reach, std::abs(s.dz)), h_max_ = std::max(h_max_, s.side);
+    const std::size_t x_span = 2 * std::size_t(std::max(spec.nx, 1));
     y_span_ = std::size_t(2 * std::max(spec.ny - 1, 0) + h_max_ + 1);
-    rows_ = 2 * std::size_t(reach_) + 3;
-    row_words_ = (x_span_ * y_span_ + 63) / 64;
+    rows_ = 2 * std::size_t(reach) + 3;
+    row_words_ = (x_span * y_span_ + 63) / 64;
     bits_.assign(rows_ * row_words_, 0);
     tags_.assign(rows_, std::numeric_limits<int>::min());
   }
@@ -270,8 +271,8 @@ class WallCentres {
   }
 
  private:
-  int reach_ = 0, h_max_ = 0, z1_ = std::numeric_limits<int>::min();
-  std::size_t x_span_ = 0, y_span_ = 0, rows_ = 0, row_words_ = 0;
+  int h_max_ = 0, z1_ = std::numeric_limits<int>::min();
+  std::size_t y_span_ = 0, rows_ = 0, row_words_ = 0;
   std::vector<std::uint64_t> bits_;
   std::vector<int> tags_;  // per row: the 2 z1 + dz its bits hold
 };

@@ -194,7 +194,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   const PaddedBits::Size padded_size{spec.nx + 2 * pad, spec.nz + 2 * pad};
   PaddedBits first_bits(padded_size), tile_bits(padded_size);
   // Each orientation's corners relative to the centre's cell (cx / 2, cz / 2), in padded bit coordinates; and
-  // the box of every cell its square reads (its cells' and corners'), relative to the centre's cell.
+  // the box of every cell its square reads (RingOffset::box_lo), relative to the centre's cell.
   struct CornerCells {
     int x[4], z[4];
   };
@@ -208,10 +208,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       const int x1 = (p - o->dx + o->dz) / 2, z1 = (p - o->dx - o->dz) / 2;
       corner_cells[std::size_t(p)].push_back({{x1 + pad, x1 + o->dx + pad, x1 + o->dx - o->dz + pad, x1 - o->dz + pad},
                                               {z1 + pad, z1 + o->dz + pad, z1 + o->dz + o->dx + pad, z1 + o->dx + pad}});
-      const glm::ivec2 corners_lo(std::min({0, o->dx, o->dx - o->dz, -o->dz}), std::min({0, o->dz, o->dz + o->dx, o->dx}));
-      const glm::ivec2 corners_hi(std::max({0, o->dx, o->dx - o->dz, -o->dz}), std::max({0, o->dz, o->dz + o->dx, o->dx}));
-      reads[std::size_t(p)].push_back({glm::ivec2(x1, z1) + glm::min(o->box_lo, corners_lo),
-                                       glm::ivec2(x1, z1) + glm::max(o->box_hi, corners_hi)});
+      reads[std::size_t(p)].push_back({glm::ivec2(x1, z1) + o->box_lo, glm::ivec2(x1, z1) + o->box_hi});
     }
   // One row of centres: those still open for a square at this level (here) or one level up (above), and the
   // orientation each found.

@@ -164,16 +164,12 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   // (BandedSearch::previous): every one of them valid, and among them the first valid one of each centre in search
   // order. A rectangle that reads no changed column is as valid as it was: valid where it is its centre's first
   // previous rectangle; not valid where its centre had none before it (were it valid, that centre's first valid
-  // one, at it or before it, would be there); tested only where an earlier one had its centre. Each rectangle's
-  // columns (its runs' and corners') relative to corner 1, and the band's previous rectangles by centre.
+  // one, at it or before it, would be there); tested only where an earlier one had its centre (a rectangle reads
+  // its offset's box, RingOffset::box_lo). The band's previous rectangles by centre.
   bool from_previous = false;
   glm::ivec2 changed_lo(0), changed_hi(-1);
   if constexpr (kBanded)
     if (banded.previous) from_previous = true, changed_lo = banded.changed_lo, changed_hi = banded.changed_hi;
-  std::vector<std::pair<glm::ivec2, glm::ivec2>> reads(from_previous ? ring.size() : 0);
-  for (std::size_t r = 0; r < reads.size(); ++r)
-    reads[r] = {glm::min(ring[r].box_lo, glm::min(glm::ivec2(0), glm::ivec2(ring[r].dx, ring[r].dz))),
-                glm::max(ring[r].box_hi, glm::max(glm::ivec2(0), glm::ivec2(ring[r].dx, ring[r].dz)))};
   const auto centre_key = [&](int x1, int y1, int z1, std::size_t r) {
     return pack_key(2 * x1 + ring[r].dx, 2 * y1 - shapes[r].side, 2 * z1 + ring[r].dz);
   };
@@ -182,8 +178,8 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   int previous_band = -1;
   const auto valid_now = [&](int x1, int y1, int z1, std::size_t r) {
     const RingOffset& o = ring[r];
-    if (from_previous && (x1 + reads[r].second.x < changed_lo.x || x1 + reads[r].first.x > changed_hi.x ||
-                          z1 + reads[r].second.y < changed_lo.y || z1 + reads[r].first.y > changed_hi.y)) {
+    if (from_previous && (x1 + o.box_hi.x < changed_lo.x || x1 + o.box_lo.x > changed_hi.x ||
+                          z1 + o.box_hi.y < changed_lo.y || z1 + o.box_lo.y > changed_hi.y)) {
       const std::uint32_t j = previous_centres.find(centre_key(x1, y1, z1, r));
       if (j == KeyTable::kAbsent) return false;
       const Candidates::Item& item = (*before)[j];

@@ -1,9 +1,9 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Triangle mode: every voxel of a triangle's bounding box that passes triangle_overlaps_voxel. This is a
-// line-by-line port of voxelize_cpu.cpp: the same operations in the same order, all `precise` (no fused
-// multiply-add, no reassociation), and Vulkan rounds OpFAdd/OpFSub/OpFMul correctly, so every comparison
-// comes out as on the CPU. No division anywhere.
+// Triangle mode: the cells of a triangle's corners, and every voxel of its bounding box that passes
+// triangle_overlaps_voxel. This is a line-by-line port of voxelize_cpu.cpp: the same operations in the same
+// order, all `precise` (no fused multiply-add, no reassociation), and Vulkan rounds OpFAdd/OpFSub/OpFMul
+// correctly, so every comparison comes out as on the CPU. No division anywhere.
 #include "common.glsl"
 
 const float kHalf = 0.5;                      // h: half extent of the test cube [i - eps, i + 1 - eps]
@@ -66,7 +66,8 @@ bool triangle_overlaps_voxel(vec3 a, vec3 b, vec3 c, int x, int y, int z) {
 // the triangles whose boxes pass kChunkVoxels after it. From that list the host writes the further chunks'
 // items (triangle_work.h) to `out_words` at pc.work_offset, and a second dispatch runs them (items from
 // `triangles` on). So a big triangle is spread over many invocations, no invocation loops more than
-// kChunkVoxels times, and the host does no work per triangle. A box of one voxel is marked without a test.
+// kChunkVoxels times, and the host does no work per triangle. A box of one voxel is marked without a test,
+// and so are the corners' cells of any box.
 // kChunkVoxels must match triangle_work.h.
 const uint kChunkVoxels = 512u;
 
@@ -121,12 +122,18 @@ void main() {
     mark_voxel(voxel_index(x0, y0, z0));
     return;
   }
+  // The corners' cells are marked untested, as on the CPU: a corner lies in its cell's test cube.
+  const ivec3 ca = ivec3(box_index(a.x, pc.nx), box_index(a.y, pc.ny), box_index(a.z, pc.nz));
+  const ivec3 cb = ivec3(box_index(b.x, pc.nx), box_index(b.y, pc.ny), box_index(b.z, pc.nz));
+  const ivec3 cc = ivec3(box_index(c.x, pc.nx), box_index(c.y, pc.ny), box_index(c.z, pc.nz));
   const uint end = min(volume, (chunk + 1u) * kChunkVoxels);
   for (uint v = chunk * kChunkVoxels; v < end; ++v) {
     const int y = y0 + int(v % sy);
     const int x = x0 + int((v / sy) % sx);
     const int z = z0 + int(v / (sy * sx));
     const uint index = voxel_index(x, y, z);
-    if (!voxel_marked(index) && triangle_overlaps_voxel(a, b, c, x, y, z)) mark_voxel(index);
+    const ivec3 here = ivec3(x, y, z);
+    if (!voxel_marked(index) && (here == ca || here == cb || here == cc || triangle_overlaps_voxel(a, b, c, x, y, z)))
+      mark_voxel(index);
   }
 }

@@ -21,7 +21,8 @@
 namespace roomsense {
 namespace {
 
-// The reference for triangle mode: every voxel of each triangle's box, tested (what the Vulkan shader does).
+// The reference for triangle mode: the corners' cells, and every voxel of each triangle's box, tested (what the
+// Vulkan shader does).
 VoxelGrid voxelize_whole_boxes(const GridSpec& s, const std::vector<glm::vec3>& g, const std::vector<std::uint32_t>& idx) {
   VoxelGrid grid(s);
   for (std::size_t t = 0; t + 2 < idx.size(); t += 3) {
@@ -29,7 +30,7 @@ VoxelGrid voxelize_whole_boxes(const GridSpec& s, const std::vector<glm::vec3>& 
     const glm::vec3 lo = glm::min(glm::min(a, b), c), hi = glm::max(glm::max(a, b), c);
     const int x0 = box_index(lo.x, s.nx), x1 = box_index(hi.x, s.nx), y0 = box_index(lo.y, s.ny),
               y1 = box_index(hi.y, s.ny), z0 = box_index(lo.z, s.nz), z1 = box_index(hi.z, s.nz);
-    if (x0 == x1 && y0 == y1 && z0 == z1) grid.set(x0, y0, z0);
+    for (const glm::vec3* v : {&a, &b, &c}) grid.set(box_index(v->x, s.nx), box_index(v->y, s.ny), box_index(v->z, s.nz));
     for (int z = z0; z <= z1; ++z)
       for (int x = x0; x <= x1; ++x)
         for (int y = y0; y <= y1; ++y)

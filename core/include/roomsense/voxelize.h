@@ -30,6 +30,8 @@ std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const Gri
 // tested as the closed cube [i - eps, i + 1 - eps] (per axis, eps = kVoxelTestEpsilon): neighbours touch,
 // so no face can slip between them, and a face lying exactly on a voxel boundary lands in the upper voxel,
 // as a vertex does under Eq. 3.6. A triangle's voxel range per axis is box_index(min) .. box_index(max).
+// Triangle mode marks a triangle's corners' cells (box_index per axis) without the test, as a corner lies in
+// its cell's cube, and tests the other voxels of its range.
 // Only +, -, * and comparisons, in a fixed order: IEEE single precision gives every backend the same answer.
 inline constexpr float kVoxelTestEpsilon = 1.0f / 1024.0f;
 // floor(v) clamped to [0, n - 1], for any v (NaN gives 0): Eq. 3.6 per axis. Without std::floor, a libm

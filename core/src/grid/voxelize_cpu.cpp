@@ -55,7 +55,6 @@ class TestCounter {
 // The voxel whose test cube holds a point: box_index per axis.
 struct BoxCell {
   int at[3];
-  bool operator==(const BoxCell&) const = default;
 };
 BoxCell box_cell(const glm::vec3& v, const GridSpec& s) {
   return {{box_index(v.x, s.nx), box_index(v.y, s.ny), box_index(v.z, s.nz)}};
@@ -114,6 +113,16 @@ struct TriangleScan {
   }
 };
 
+// Marks the cells of the triangle's corners, untested: a corner lies in its cell's test cube, so the triangle
+// touches that cube. Shared by some six triangles, a corner's cell is mostly marked already; in a box of two
+// voxels both are corners' cells, so most of a fine scan's triangles need no test at all.
+inline void mark_corners(const BoxCell& ca, const BoxCell& cb, const BoxCell& cc, const GridSpec& s, VoxelGrid& grid) {
+  const auto mark_cell = [&](const BoxCell& c) {
+    if (std::uint8_t& voxel = grid.cells[s.index(c.at[0], c.at[1], c.at[2])]; !marked(voxel)) mark(voxel);
+  };
+  mark_cell(ca), mark_cell(cb), mark_cell(cc);
+}
+
 // Marks each voxel of a box of a few whose test cube the triangle touches, testing each (TriangleScan::small).
 inline void test_small_box(const TriangleScan& scan, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
                            const GridSpec& s, VoxelGrid& grid, std::uint64_t& tests) {
@@ -126,19 +135,11 @@ inline void test_small_box(const TriangleScan& scan, const glm::vec3& a, const g
   tests += scan.box_volume();
 }
 
-// Marks every voxel of the triangle's box whose test cube the triangle touches (see TriangleScan).
+// Marks every voxel of a box larger than small() whose test cube the triangle touches (see TriangleScan).
 void scan_triangle(const TriangleScan& scan, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
                    const GridSpec& s, VoxelGrid& grid, std::uint64_t& tests, TestCounter& counter) {
   const int(&first)[3] = scan.first;
   const int(&last)[3] = scan.last;
-  if (scan.one_voxel()) {  // inside one test cube: no test
-    mark(grid.cells[s.index(first[0], first[1], first[2])]);
-    return;
-  }
-  if (scan.small()) {  // every voxel of a box of a few: the plane's bounds would save no test
-    test_small_box(scan, a, b, c, s, grid, tests);
-    return;
-  }
   const int d = scan.d, u = scan.u, v = scan.v;
   // The plane as d = a[d] - su (u - a[u]) - sv (v - a[v]): over a column's unit square its extremes are at the
   // corners, base + min/max(0, -su) + min/max(0, -sv). One division per triangle, not four per column.
@@ -252,8 +253,8 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
     });
   }
   const auto cell_of = [&](std::uint32_t i) { return cells.empty() ? box_cell(p[i], s) : cells[i]; };
-  // One pass over the triangles does those in one voxel and those whose box has at most 2 x 2 x 2 voxels (each
-  // tested): most of a room's, at most 8 tests each. The others wait in a list, with their boxes summed. Hopeless
+  // One pass over the triangles does those whose box has at most 2 x 2 x 2 voxels: most of a room's, their
+  // corners' cells marked and the other voxels tested, at most 8 tests each. The others wait in a list, with their boxes summed. Hopeless
   // input is then refused before any of them is scanned: where their boxes (at most the tests a scan does) could
   // exceed the budget, the sum of TriangleScan's lower bounds decides, a room's few large triangles each
   // costing a plane in double.
@@ -270,11 +271,11 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
     for (std::size_t t = begin; t < end; ++t) {
       const auto [i, j, k] = corners_of(t);
       const BoxCell ca = cell_of(i), cb = cell_of(j), cc = cell_of(k);
-      if (ca == cb && ca == cc) {  // one voxel: no test
-        mark(grid.cells[s.index(ca.at[0], ca.at[1], ca.at[2])]);
-        ++boxes;
-      } else if (const TriangleScan box(ca, cb, cc); box.small()) {
-        test_small_box(box, p[i], p[j], p[k], s, grid, tests);
+      if (const TriangleScan box(ca, cb, cc); box.small()) {
+        mark_corners(ca, cb, cc, s, grid);
+        // The work counted stays a box's voxels (but one voxel's): the budget does not depend on what was marked.
+        if (box.box_volume() > 2) test_small_box(box, p[i], p[j], p[k], s, grid, tests);
+        else if (!box.one_voxel()) tests += box.box_volume();
         boxes += box.box_volume();
       } else {
         large[slice].push_back(t);
@@ -310,6 +311,7 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
     std::uint64_t tests = 0;
     for (std::size_t n = begin; n < end; ++n) {
       const auto [i, j, k] = corners_of(listed[n]);
+      mark_corners(cell_of(i), cell_of(j), cell_of(k), s, grid);
       scan_triangle(scan_of(listed[n]), p[i], p[j], p[k], s, grid, tests, counter);
       if (tests >= TestCounter::kFlushEvery || (n & 0xff) == 0) counter.flush(tests);
     }

@@ -24,7 +24,8 @@ enum class VoxelMode {
 
 // Vertex positions in grid units: (v - origin) / voxel_size, computed once on the CPU so that every backend
 // starts from the same floats. Voxel (x,y,z) is the cube [x, x+1) x [y, y+1) x [z, z+1) in these units.
-std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const GridSpec& spec);
+// Each vertex alone: the same on any number of `threads`.
+std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const GridSpec& spec, unsigned threads = 1);
 
 // The triangle/voxel test used by triangle mode (separating axis theorem, Akenine-Möller 2001). Voxel i is
 // tested as the closed cube [i - eps, i + 1 - eps] (per axis, eps = kVoxelTestEpsilon): neighbours touch,

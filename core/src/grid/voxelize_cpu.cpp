@@ -13,6 +13,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 namespace roomsense {
@@ -176,9 +177,11 @@ void scan_triangle(const TriangleScan& scan, const glm::vec3& a, const glm::vec3
 
 }  // namespace
 
-std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const GridSpec& spec) {
+std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const GridSpec& spec, unsigned threads) {
   std::vector<glm::vec3> out(world.size());
-  for (std::size_t i = 0; i < world.size(); ++i) out[i] = (world[i] - spec.origin) / spec.voxel_size;
+  detail::parallel_for(world.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
+    for (std::size_t i = begin; i < end; ++i) out[i] = (world[i] - spec.origin) / spec.voxel_size;
+  });
   return out;
 }
 
@@ -242,9 +245,9 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
   // A whole scan's corners are its vertices, each shared by some six triangles: their cells are found once
   // each, and most triangles, inside one voxel, cost three lookups and a compare. A few triangles of a large
   // scan (a chunk re-sent) find their corners' cells as they go.
-  std::vector<BoxCell> cells;
+  std::unique_ptr<BoxCell[]> cells;  // not zeroed first: every one is written
   if (request.indices.size() >= 2 * p.size()) {
-    cells.resize(p.size());
+    cells = std::make_unique_for_overwrite<BoxCell[]>(p.size());
     detail::parallel_for(p.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
       for (std::size_t i = begin; i < end; ++i) {
         if ((i & 0xffff) == 0) stop_point(request.stop);
@@ -252,7 +255,7 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
       }
     });
   }
-  const auto cell_of = [&](std::uint32_t i) { return cells.empty() ? box_cell(p[i], s) : cells[i]; };
+  const auto cell_of = [&](std::uint32_t i) { return cells ? cells[i] : box_cell(p[i], s); };
   // One pass over the triangles does those whose box has at most 2 x 2 x 2 voxels: most of a room's, their
   // corners' cells marked and the other voxels tested, at most 8 tests each. The others wait in a list, with their boxes summed. Hopeless
   // input is then refused before any of them is scanned: where their boxes (at most the tests a scan does) could

@@ -177,7 +177,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   // nothing: the whole scan's vertices are not mapped for each change.
   const bool stage_maps_chunks = chunks != nullptr && &stage == caches->chunk_stage && r.mode == VoxelMode::Triangles &&
                                  in.vertices.data() == scan.vertices.data() && in.indices.data() == scan.indices.data();
-  const std::vector<glm::vec3> grid_vertices = stage_maps_chunks ? std::vector<glm::vec3>() : to_grid_units(in.vertices, spec);
+  const std::vector<glm::vec3> grid_vertices = stage_maps_chunks ? std::vector<glm::vec3>() : to_grid_units(in.vertices, spec, options.threads);
   const int min_separation = voxels_for(options.features.min_floor_ceiling, spec.voxel_size);
   r.timings.prepare = clock.lap();
 

@@ -13,6 +13,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numeric>
 
@@ -53,12 +54,25 @@ class TestCounter {
   std::atomic<std::uint64_t> total_{0};
 };
 
-// The voxel whose test cube holds a point: box_index per axis.
-struct BoxCell {
-  int at[3];
-};
-BoxCell box_cell(const glm::vec3& v, const GridSpec& s) {
-  return {{box_index(v.x, s.nx), box_index(v.y, s.ny), box_index(v.z, s.nz)}};
+// The voxel whose test cube holds a point, box_index per axis, in lanes 0-2, and in lane 3 the voxel's index in
+// the grid (of use where the grid's voxels fit 32 bits). A triangle's box is its corners' lanes compared four at
+// a time (GCC's vector extensions), and a corner's voxel is marked without its index computed again.
+typedef std::int32_t CornerCell __attribute__((vector_size(16)));
+CornerCell corner_cell(const glm::vec3& v, const GridSpec& s) {
+  const int x = box_index(v.x, s.nx), y = box_index(v.y, s.ny), z = box_index(v.z, s.nz);
+  return CornerCell{x, y, z, std::int32_t(std::uint32_t(s.index(x, y, z)))};
+}
+CornerCell lowest(const CornerCell& a, const CornerCell& b, const CornerCell& c) {
+  const CornerCell ab = a < b ? a : b;
+  return ab < c ? ab : c;
+}
+CornerCell highest(const CornerCell& a, const CornerCell& b, const CornerCell& c) {
+  const CornerCell ab = a > b ? a : b;
+  return ab > c ? ab : c;
+}
+// Where a corner lies: lane 3, or its lanes 0-2 where the index does not fit 32 bits.
+std::size_t voxel_of(const CornerCell& c, const GridSpec& s, bool index_fits) {
+  return index_fits ? std::size_t(std::uint32_t(c[3])) : s.index(c[0], c[1], c[2]);
 }
 
 // How triangle mode visits one triangle: its box, and the axis d along which its columns run. Only the
@@ -81,16 +95,11 @@ struct TriangleScan {
 
   // The box alone, from the corners' cells: box_index is monotone, so the box of the corners' cells is the
   // cells of the corners' box.
-  TriangleScan(const BoxCell& ca, const BoxCell& cb, const BoxCell& cc) {
-    for (int k = 0; k < 3; ++k) {
-      first[k] = std::min(std::min(ca.at[k], cb.at[k]), cc.at[k]);
-      last[k] = std::max(std::max(ca.at[k], cb.at[k]), cc.at[k]);
-    }
-  }
+  TriangleScan(const CornerCell& lo, const CornerCell& hi) : first{lo[0], lo[1], lo[2]}, last{hi[0], hi[1], hi[2]} {}
   // The box and, beyond a few voxels, the plane.
-  TriangleScan(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const BoxCell& ca, const BoxCell& cb,
-               const BoxCell& cc)
-      : TriangleScan(ca, cb, cc) {
+  TriangleScan(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const CornerCell& ca, const CornerCell& cb,
+               const CornerCell& cc)
+      : TriangleScan(lowest(ca, cb, cc), highest(ca, cb, cc)) {
     if (small()) return;  // no plane needed: most of a fine scan's triangles
     normal = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
     const glm::dvec3 m = glm::abs(normal);
@@ -117,11 +126,10 @@ struct TriangleScan {
 // Marks the cells of the triangle's corners, untested: a corner lies in its cell's test cube, so the triangle
 // touches that cube. Shared by some six triangles, a corner's cell is mostly marked already; in a box of two
 // voxels both are corners' cells, so most of a fine scan's triangles need no test at all.
-inline void mark_corners(const BoxCell& ca, const BoxCell& cb, const BoxCell& cc, const GridSpec& s, VoxelGrid& grid) {
-  const auto mark_cell = [&](const BoxCell& c) {
-    if (std::uint8_t& voxel = grid.cells[s.index(c.at[0], c.at[1], c.at[2])]; !marked(voxel)) mark(voxel);
-  };
-  mark_cell(ca), mark_cell(cb), mark_cell(cc);
+inline void mark_corners(const CornerCell& ca, const CornerCell& cb, const CornerCell& cc, const GridSpec& s,
+                         bool index_fits, VoxelGrid& grid) {
+  for (const CornerCell* c : {&ca, &cb, &cc})
+    if (std::uint8_t& voxel = grid.cells[voxel_of(*c, s, index_fits)]; !marked(voxel)) mark(voxel);
 }
 
 // Marks each voxel of a box of a few whose test cube the triangle touches, testing each (TriangleScan::small).
@@ -245,17 +253,18 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
   // A whole scan's corners are its vertices, each shared by some six triangles: their cells are found once
   // each, and most triangles, inside one voxel, cost three lookups and a compare. A few triangles of a large
   // scan (a chunk re-sent) find their corners' cells as they go.
-  std::unique_ptr<BoxCell[]> cells;  // not zeroed first: every one is written
+  std::unique_ptr<CornerCell[]> cells;  // not zeroed first: every one is written
   if (request.indices.size() >= 2 * p.size()) {
-    cells = std::make_unique_for_overwrite<BoxCell[]>(p.size());
+    cells = std::make_unique_for_overwrite<CornerCell[]>(p.size());
     detail::parallel_for(p.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
       for (std::size_t i = begin; i < end; ++i) {
         if ((i & 0xffff) == 0) stop_point(request.stop);
-        cells[i] = box_cell(p[i], s);
+        cells[i] = corner_cell(p[i], s);
       }
     });
   }
-  const auto cell_of = [&](std::uint32_t i) { return cells ? cells[i] : box_cell(p[i], s); };
+  const auto cell_of = [&](std::uint32_t i) { return cells ? cells[i] : corner_cell(p[i], s); };
+  const bool index_fits = s.voxel_count() <= std::numeric_limits<std::uint32_t>::max();
   // One pass over the triangles does those whose box has at most 2 x 2 x 2 voxels: most of a room's, their
   // corners' cells marked and the other voxels tested, at most 8 tests each. The others wait in a list, with their boxes summed. Hopeless
   // input is then refused before any of them is scanned: where their boxes (at most the tests a scan does) could
@@ -273,16 +282,18 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
     std::uint64_t tests = 0, boxes = 0, large_box = 0;
     for (std::size_t t = begin; t < end; ++t) {
       const auto [i, j, k] = corners_of(t);
-      const BoxCell ca = cell_of(i), cb = cell_of(j), cc = cell_of(k);
-      if (const TriangleScan box(ca, cb, cc); box.small()) {
-        mark_corners(ca, cb, cc, s, grid);
+      const CornerCell ca = cell_of(i), cb = cell_of(j), cc = cell_of(k);
+      const CornerCell lo = lowest(ca, cb, cc), hi = highest(ca, cb, cc), extent = hi - lo;
+      if ((extent[0] | extent[1] | extent[2]) < 2) {  // TriangleScan::small
+        mark_corners(ca, cb, cc, s, index_fits, grid);
+        const std::uint64_t volume = std::uint64_t(extent[0] + 1) * std::uint64_t(extent[1] + 1) * std::uint64_t(extent[2] + 1);
         // The work counted stays a box's voxels (but one voxel's): the budget does not depend on what was marked.
-        if (box.box_volume() > 2) test_small_box(box, p[i], p[j], p[k], s, grid, tests);
-        else if (!box.one_voxel()) tests += box.box_volume();
-        boxes += box.box_volume();
+        if (volume > 2) test_small_box(TriangleScan(lo, hi), p[i], p[j], p[k], s, grid, tests);
+        else if (volume == 2) tests += volume;
+        boxes += volume;
       } else {
         large[slice].push_back(t);
-        large_box += box.box_volume();
+        large_box += TriangleScan(lo, hi).box_volume();
       }
       if (tests >= TestCounter::kFlushEvery || (t & 0xff) == 0) counter.flush(tests);
     }
@@ -314,7 +325,7 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
     std::uint64_t tests = 0;
     for (std::size_t n = begin; n < end; ++n) {
       const auto [i, j, k] = corners_of(listed[n]);
-      mark_corners(cell_of(i), cell_of(j), cell_of(k), s, grid);
+      mark_corners(cell_of(i), cell_of(j), cell_of(k), s, index_fits, grid);
       scan_triangle(scan_of(listed[n]), p[i], p[j], p[k], s, grid, tests, counter);
       if (tests >= TestCounter::kFlushEvery || (n & 0xff) == 0) counter.flush(tests);
     }

@@ -22,6 +22,27 @@ VoxelGrid voxelize(const GridSpec& spec, const std::vector<glm::vec3>& world, co
   return voxelize_cpu({spec, g, indices, mode, 15, kDefaultVoxelTestBudget, {}}, threads);
 }
 
+// Triangle mode's reference: each triangle's corners' cells untested, every other voxel of its box (box_index per
+// axis) tested; by_size counts boxes of one voxel, of at most 2 x 2 x 2, and larger.
+VoxelGrid whole_boxes(const GridSpec& spec, const std::vector<glm::vec3>& g, const std::vector<std::uint32_t>& indices,
+                      std::size_t (&by_size)[3]) {
+  VoxelGrid want(spec);
+  const auto cell = [&](const glm::vec3& v) {
+    return glm::ivec3(box_index(v.x, spec.nx), box_index(v.y, spec.ny), box_index(v.z, spec.nz));
+  };
+  for (std::size_t t = 0; t < indices.size() / 3; ++t) {
+    const glm::vec3 &a = g[indices[3 * t]], &b = g[indices[3 * t + 1]], &c = g[indices[3 * t + 2]];
+    const glm::ivec3 first = glm::min(glm::min(cell(a), cell(b)), cell(c)), last = glm::max(glm::max(cell(a), cell(b)), cell(c));
+    ++by_size[first == last ? 0 : glm::all(glm::lessThan(last - first, glm::ivec3(2))) ? 1 : 2];
+    for (const glm::vec3* corner : {&a, &b, &c}) want.set(cell(*corner).x, cell(*corner).y, cell(*corner).z);
+    for (int z = first.z; z <= last.z; ++z)
+      for (int x = first.x; x <= last.x; ++x)
+        for (int y = first.y; y <= last.y; ++y)
+          if (triangle_overlaps_voxel(a, b, c, x, y, z)) want.set(x, y, z);
+  }
+  return want;
+}
+
 TEST(Voxelize, VertexModeFollowsEq36) {
   const GridSpec spec = make_grid_spec({0, 0, 0}, {1, 1, 1}, 0.25f);
   EXPECT_EQ(spec.nx, 5);  // Eq. 3.4: floor(1 / 0.25) + 1
@@ -110,31 +131,43 @@ TEST(Voxelize, AMeshOfSharedVerticesMarksExactlyWhatTheTestAcceptsInEachBox) {
   indices.insert(indices.end(), {0, kSide * kSide - 1, kSide - 1});  // one triangle across the whole grid
   ASSERT_GE(indices.size(), 2 * world.size());
   const std::vector<glm::vec3> g = to_grid_units(world, spec);
-  VoxelGrid want(spec);
   std::size_t by_size[3] = {0, 0, 0};  // one voxel, at most 2 x 2 x 2, more
-  for (std::size_t t = 0; t < indices.size() / 3; ++t) {
-    const glm::vec3 &a = g[indices[3 * t]], &b = g[indices[3 * t + 1]], &c = g[indices[3 * t + 2]];
-    const glm::vec3 lo = glm::min(glm::min(a, b), c), hi = glm::max(glm::max(a, b), c);
-    const glm::ivec3 first(box_index(lo.x, spec.nx), box_index(lo.y, spec.ny), box_index(lo.z, spec.nz));
-    const glm::ivec3 last(box_index(hi.x, spec.nx), box_index(hi.y, spec.ny), box_index(hi.z, spec.nz));
-    const glm::ivec3 extent = last - first;
-    ++by_size[first == last ? 0 : glm::all(glm::lessThan(extent, glm::ivec3(2))) ? 1 : 2];
-    // The corners' cells untested, every other voxel of the box tested.
-    const auto cell = [&](const glm::vec3& v) {
-      return glm::ivec3(box_index(v.x, spec.nx), box_index(v.y, spec.ny), box_index(v.z, spec.nz));
-    };
-    for (const glm::vec3* corner : {&a, &b, &c}) want.set(cell(*corner).x, cell(*corner).y, cell(*corner).z);
-    for (int z = first.z; z <= last.z; ++z)
-      for (int x = first.x; x <= last.x; ++x)
-        for (int y = first.y; y <= last.y; ++y)
-          if (triangle_overlaps_voxel(a, b, c, x, y, z)) want.set(x, y, z);
-  }
+  const VoxelGrid want = whole_boxes(spec, g, indices, by_size);
   for (const std::size_t n : by_size) EXPECT_GT(n, 0u);
   EXPECT_EQ(voxelize(spec, world, indices, VoxelMode::Triangles, 2).cells, want.cells);
   VoxelGrid alone(spec);
   for (std::size_t t = 0; t < indices.size() / 3; ++t)
     voxelize_cpu_into({spec, g, std::span(indices).subspan(3 * t, 3), VoxelMode::Triangles, 15,
                        kDefaultVoxelTestBudget, {}},
+                      alone, 1);
+  EXPECT_EQ(alone.cells, want.cells);
+}
+
+// Corners past the grid's edges, on them, and a test epsilon off them land where box_index puts them (the edge
+// voxel past an edge), as one scan's vertices shared by many triangles and as a few triangles' own.
+TEST(Voxelize, CornersPastTheGridLandWhereBoxIndexPutsThem) {
+  const GridSpec spec = make_grid_spec({0, 0, 0}, {2, 1.5f, 2.5f}, 0.25f);
+  std::mt19937 rng(17);
+  const auto coordinate = [&](int n) {
+    const float e = kVoxelTestEpsilon;
+    const float picks[] = {-3.0f, -1e9f, -e, -0.5f * e, 0.0f, float(n - 1) - e, float(n - 1) - 0.5f * e, float(n - 1),
+                           float(n - 1) + 0.4f, float(n) + 2.0f, 1e9f, float(n / 2) - e};
+    const float near = std::uniform_real_distribution<float>(-1.5f, float(n) + 0.5f)(rng);
+    return rng() % 3 == 0 ? near : picks[rng() % std::size(picks)];
+  };
+  std::vector<glm::vec3> g;
+  for (int i = 0; i < 60; ++i) g.push_back({coordinate(spec.nx), coordinate(spec.ny), coordinate(spec.nz)});
+  std::vector<std::uint32_t> indices;
+  for (int t = 0; t < 150; ++t)
+    for (int k = 0; k < 3; ++k) indices.push_back(std::uint32_t(rng() % g.size()));
+  std::size_t by_size[3] = {0, 0, 0};
+  const VoxelGrid want = whole_boxes(spec, g, indices, by_size);
+  for (const std::size_t n : by_size) EXPECT_GT(n, 0u);
+  // Every vertex's cell found first (triangles >= 2 x vertices), and each triangle's own (a chunk of a few).
+  EXPECT_EQ(voxelize_cpu({spec, g, indices, VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}, 2).cells, want.cells);
+  VoxelGrid alone(spec);
+  for (std::size_t t = 0; t < indices.size() / 3; ++t)
+    voxelize_cpu_into({spec, g, std::span(indices).subspan(3 * t, 3), VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}},
                       alone, 1);
   EXPECT_EQ(alone.cells, want.cells);
 }

@@ -58,10 +58,29 @@ class TestCounter {
 // the grid (of use where the grid's voxels fit 32 bits). A triangle's box is its corners' lanes compared four at
 // a time (GCC's vector extensions), and a corner's voxel is marked without its index computed again.
 typedef std::int32_t CornerCell __attribute__((vector_size(16)));
-CornerCell corner_cell(const glm::vec3& v, const GridSpec& s) {
-  const int x = box_index(v.x, s.nx), y = box_index(v.y, s.ny), z = box_index(v.z, s.nz);
-  return CornerCell{x, y, z, std::int32_t(std::uint32_t(s.index(x, y, z)))};
-}
+typedef float CornerPoint __attribute__((vector_size(16)));
+// box_index on the lanes at once, as clamp_index does it per axis: 0 below 0 (and for NaN), n - 1 from n - 1
+// on, else truncated.
+class CornerCells {
+ public:
+  explicit CornerCells(const GridSpec& s)
+      : s_(s), last_{s.nx - 1, s.ny - 1, s.nz - 1, 0}, last_at_{float(s.nx - 1), float(s.ny - 1), float(s.nz - 1), 0.0f} {}
+  CornerCell operator()(const glm::vec3& v) const {
+    const CornerPoint zero{0.0f, 0.0f, 0.0f, 0.0f};
+    const CornerPoint at = CornerPoint{v.x, v.y, v.z, 0.0f} + kVoxelTestEpsilon;
+    const CornerPoint inside = at >= zero ? at : zero;
+    CornerCell cell = at >= last_at_ ? last_ : __builtin_convertvector(inside < last_at_ ? inside : last_at_, CornerCell);
+    // s.index modulo 2^32: exact where the grid's voxels fit 32 bits.
+    const auto u = [&](int lane) { return std::uint32_t(cell[lane]); };
+    cell[3] = std::int32_t((u(2) * std::uint32_t(s_.nx) + u(0)) * std::uint32_t(s_.ny) + u(1));
+    return cell;
+  }
+
+ private:
+  const GridSpec& s_;
+  const CornerCell last_;
+  const CornerPoint last_at_;
+};
 CornerCell lowest(const CornerCell& a, const CornerCell& b, const CornerCell& c) {
   const CornerCell ab = a < b ? a : b;
   return ab < c ? ab : c;
@@ -253,17 +272,18 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
   // A whole scan's corners are its vertices, each shared by some six triangles: their cells are found once
   // each, and most triangles, inside one voxel, cost three lookups and a compare. A few triangles of a large
   // scan (a chunk re-sent) find their corners' cells as they go.
+  const CornerCells corner_cell(s);
   std::unique_ptr<CornerCell[]> cells;  // not zeroed first: every one is written
   if (request.indices.size() >= 2 * p.size()) {
     cells = std::make_unique_for_overwrite<CornerCell[]>(p.size());
     detail::parallel_for(p.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
       for (std::size_t i = begin; i < end; ++i) {
         if ((i & 0xffff) == 0) stop_point(request.stop);
-        cells[i] = corner_cell(p[i], s);
+        cells[i] = corner_cell(p[i]);
       }
     });
   }
-  const auto cell_of = [&](std::uint32_t i) { return cells ? cells[i] : corner_cell(p[i], s); };
+  const auto cell_of = [&](std::uint32_t i) { return cells ? cells[i] : corner_cell(p[i]); };
   const bool index_fits = s.voxel_count() <= std::numeric_limits<std::uint32_t>::max();
   // One pass over the triangles does those whose box has at most 2 x 2 x 2 voxels: most of a room's, their
   // corners' cells marked and the other voxels tested, at most 8 tests each. The others wait in a list, with their boxes summed. Hopeless

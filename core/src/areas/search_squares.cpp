@@ -246,6 +246,19 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
                             : CellBox{glm::max(searched.lo - corner_reach, glm::ivec2(0)),
                                       glm::min(searched.hi + corner_reach, glm::ivec2(spec.nx - 1, spec.nz - 1))};
   }
+  // Per layer of several, its first corners, and past the last layer the tiles one level above it, all counted by
+  // the scan below (a search by bands scans part of the grid).
+  std::vector<std::size_t> layer_tiles(std::size_t(std::max(layers, 0)) + 1, 0);
+  // Whether no centre anywhere can pass the inner box's test below: the layer's tiles (its first corners and,
+  // for furniture, the level above's) are fewer than an inner box of at least floor(2 inner_half) cells a side
+  // needs. Most furniture tops hold no large square.
+  const auto no_square = [&](int layer) {
+    if (kBanded || layers == 1 || inner_half < 0.0) return false;
+    const double side = std::floor(2.0 * inner_half);
+    const std::size_t tiles = layer_tiles[std::size_t(layer)] +
+                              (surface == Surface::Furniture ? layer_tiles[std::size_t(layer) + 1] : 0);
+    return side * side - double(tiles) > most_missing;
+  };
   for (int z = scan.lo.y; z <= scan.hi.y; ++z) {
     if (layers == 1) {  // a floor's, a flat ceiling's: the row's first and last first corner alone
       int first = scan.lo.x, last = scan.hi.x;
@@ -257,8 +270,11 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       continue;
     }
     for (int x = scan.lo.x; x <= scan.hi.x; ++x) {
-      const int layer = layer_of(spec.column(x, z));
+      const std::size_t col = spec.column(x, z);
+      const int layer = layer_of(col);
+      if (surface == Surface::Furniture && features.furniture[col] == y_to + 1) ++layer_tiles.back();
       if (layer < 0 || layer >= layers) continue;
+      ++layer_tiles[std::size_t(layer)];
       CellBox& b = first_box[std::size_t(layer)];
       b.lo = glm::min(b.lo, glm::ivec2(x, z)), b.hi = glm::max(b.hi, glm::ivec2(x, z));
     }
@@ -312,7 +328,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       }
     }
     const CellBox& firsts = first_box[std::size_t(layer)];
-    if (firsts.empty()) continue;
+    if (firsts.empty() || no_square(layer)) continue;
     CellBox region{glm::max(firsts.lo - 2 * corner_reach - 1, glm::ivec2(0)),
                    glm::min(firsts.hi + 2 * corner_reach + 1, glm::ivec2(spec.nx - 1, spec.nz - 1))};
     // Centres whose cell (cx / 2, cz / 2) lies within corner_reach of the first corners' box; in a row, centre

@@ -15,10 +15,13 @@
 
 namespace roomsense::detail {
 
+// 0: one per hardware thread. std::thread::hardware_concurrency reads /sys on every call (glibc's get_nprocs:
+// three system calls, 6 us on this project's VM), and every loop below resolves its count, dozens an analysis:
+// read once per process, a constant of the machine, not state.
 inline unsigned resolve_threads(unsigned requested) {
   if (requested != 0) return requested;
-  const unsigned hw = std::thread::hardware_concurrency();
-  return hw == 0 ? 1 : hw;
+  static const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  return hardware;
 }
 
 // Runs work(w) for every w in [0, workers): w = 0 on this thread, the others on the current pool or on threads

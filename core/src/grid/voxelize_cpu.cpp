@@ -108,7 +108,7 @@ struct TriangleScan {
     return std::uint64_t(last[0] - first[0] + 1) * std::uint64_t(last[1] - first[1] + 1) *
            std::uint64_t(last[2] - first[2] + 1);
   }
-  // A box of at most 2 x 2 x 2 voxels, each tested: columns of the plane would spare none.
+  // A box of at most 2 x 2 x 2 voxels, each tested but its corners' cells: columns of the plane would spare none.
   bool small() const { return last[0] - first[0] < 2 && last[1] - first[1] < 2 && last[2] - first[2] < 2; }
   bool planar() const { return normal[d] != 0.0; }
 
@@ -151,7 +151,8 @@ inline void mark_corners(const CornerCell& ca, const CornerCell& cb, const Corne
     if (std::uint8_t& voxel = grid.cells[voxel_of(*c, s, index_fits)]; !marked(voxel)) mark(voxel);
 }
 
-// Marks each voxel of a box of a few whose test cube the triangle touches, testing each (TriangleScan::small).
+// Marks each voxel of a box of a few whose test cube the triangle touches, testing each not yet marked (its
+// corners' cells are, by mark_corners).
 inline void test_small_box(const TriangleScan& scan, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
                            const GridSpec& s, VoxelGrid& grid, std::uint64_t& tests) {
   for (int z = scan.first[2]; z <= scan.last[2]; ++z)
@@ -270,8 +271,8 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
   // triangle uses adds nothing, as it has no surface.
   const std::size_t triangles = request.indices.size() / 3;
   // A whole scan's corners are its vertices, each shared by some six triangles: their cells are found once
-  // each, and most triangles, inside one voxel, cost three lookups and a compare. A few triangles of a large
-  // scan (a chunk re-sent) find their corners' cells as they go.
+  // each, and most triangles then cost three lookups, a box of vector minima and maxima, and their corners'
+  // marks. A few triangles of a large scan (a chunk re-sent) find their corners' cells as they go.
   const CornerCells corner_cell(s);
   std::unique_ptr<CornerCell[]> cells;  // not zeroed first: every one is written
   if (request.indices.size() >= 2 * p.size()) {
@@ -286,10 +287,10 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
   const auto cell_of = [&](std::uint32_t i) { return cells ? cells[i] : corner_cell(p[i]); };
   const bool index_fits = s.voxel_count() <= std::numeric_limits<std::uint32_t>::max();
   // One pass over the triangles does those whose box has at most 2 x 2 x 2 voxels: most of a room's, their
-  // corners' cells marked and the other voxels tested, at most 8 tests each. The others wait in a list, with their boxes summed. Hopeless
-  // input is then refused before any of them is scanned: where their boxes (at most the tests a scan does) could
-  // exceed the budget, the sum of TriangleScan's lower bounds decides, a room's few large triangles each
-  // costing a plane in double.
+  // corners' cells marked and the other voxels tested, at most 6 tests each. The others wait in a list, with
+  // their boxes summed. Hopeless input is then refused before any of them is scanned: where their boxes (at most
+  // the tests a scan does) could exceed the budget, the sum of TriangleScan's lower bounds decides, a room's few
+  // large triangles each costing a plane in double.
   TestCounter counter(request);
   const std::size_t slices = detail::parallel_slices(triangles, threads, 1 << 12);
   std::vector<std::vector<std::size_t>> large(slices);

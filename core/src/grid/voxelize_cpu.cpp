@@ -146,19 +146,21 @@ struct TriangleScan {
 // touches that cube. Shared by some six triangles, a corner's cell is mostly marked already; in a box of two
 // voxels both are corners' cells, so most of a fine scan's triangles need no test at all.
 inline void mark_corners(const CornerCell& ca, const CornerCell& cb, const CornerCell& cc, const GridSpec& s,
-                         bool index_fits, VoxelGrid& grid) {
-  for (const CornerCell* c : {&ca, &cb, &cc})
-    if (std::uint8_t& voxel = grid.cells[voxel_of(*c, s, index_fits)]; !marked(voxel)) mark(voxel);
+                         bool index_fits, std::uint8_t* cells) {
+  const auto mark_cell = [&](const CornerCell& c) {
+    if (std::uint8_t& voxel = cells[voxel_of(c, s, index_fits)]; !marked(voxel)) mark(voxel);
+  };
+  mark_cell(ca), mark_cell(cb), mark_cell(cc);
 }
 
 // Marks each voxel of a box of a few whose test cube the triangle touches, testing each not yet marked (its
 // corners' cells are, by mark_corners).
 inline void test_small_box(const TriangleScan& scan, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
-                           const GridSpec& s, VoxelGrid& grid, std::uint64_t& tests) {
+                           const GridSpec& s, std::uint8_t* cells, std::uint64_t& tests) {
   for (int z = scan.first[2]; z <= scan.last[2]; ++z)
     for (int x = scan.first[0]; x <= scan.last[0]; ++x)
       for (int y = scan.first[1]; y <= scan.last[1]; ++y) {
-        std::uint8_t& voxel = grid.cells[s.index(x, y, z)];
+        std::uint8_t& voxel = cells[s.index(x, y, z)];
         if (!marked(voxel) && triangle_overlaps_voxel(a, b, c, x, y, z)) mark(voxel);
       }
   tests += scan.box_volume();
@@ -166,7 +168,7 @@ inline void test_small_box(const TriangleScan& scan, const glm::vec3& a, const g
 
 // Marks every voxel of a box larger than small() whose test cube the triangle touches (see TriangleScan).
 void scan_triangle(const TriangleScan& scan, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
-                   const GridSpec& s, VoxelGrid& grid, std::uint64_t& tests, TestCounter& counter) {
+                   const GridSpec& s, std::uint8_t* cells, std::uint64_t& tests, TestCounter& counter) {
   const int(&first)[3] = scan.first;
   const int(&last)[3] = scan.last;
   const int d = scan.d, u = scan.u, v = scan.v;
@@ -194,7 +196,7 @@ void scan_triangle(const TriangleScan& scan, const glm::vec3& a, const glm::vec3
         else if (hi < double(to) - 1.0) to = detail::floor_int(hi) + 1;
       }
       for (cell[d] = from; cell[d] <= to; ++cell[d]) {
-        std::uint8_t& voxel = grid.cells[s.index(cell[0], cell[1], cell[2])];
+        std::uint8_t& voxel = cells[s.index(cell[0], cell[1], cell[2])];
         if (!marked(voxel) && triangle_overlaps_voxel(a, b, c, cell[0], cell[1], cell[2])) mark(voxel);
       }
       if (to >= from) tests += std::uint64_t(to - from + 1);
@@ -255,8 +257,11 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
     throw Error(ErrorCode::BadParameter, "voxelize_cpu_into: the grid is not the request's");
   const GridSpec& s = request.spec;
   const auto& p = request.grid_vertices;
+  // The workers mark bytes side by side with relaxed atomics; through the vector, GCC would load its data
+  // pointer again at every mark.
+  std::uint8_t* const voxels = grid.cells.data();
   const auto voxel_of = [&](const glm::vec3& v) -> std::uint8_t& {
-    return grid.cells[s.index(clamp_index(v.x, s.nx), clamp_index(v.y, s.ny), clamp_index(v.z, s.nz))];
+    return voxels[s.index(clamp_index(v.x, s.nx), clamp_index(v.y, s.ny), clamp_index(v.z, s.nz))];
   };
   if (request.mode == VoxelMode::Vertices) {  // Eq. 3.6
     detail::parallel_for(p.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
@@ -284,7 +289,9 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
       }
     });
   }
-  const auto cell_of = [&](std::uint32_t i) { return cells ? cells[i] : corner_cell(p[i]); };
+  // By value, as the cells themselves: the marks' atomics would have GCC load them again at every triangle.
+  const CornerCell* const cell_table = cells.get();
+  const auto cell_of = [cell_table, &corner_cell, &p](std::uint32_t i) { return cell_table ? cell_table[i] : corner_cell(p[i]); };
   const bool index_fits = s.voxel_count() <= std::numeric_limits<std::uint32_t>::max();
   // One pass over the triangles does those whose box has at most 2 x 2 x 2 voxels: most of a room's, their
   // corners' cells marked and the other voxels tested, at most 6 tests each. The others wait in a list, with
@@ -295,8 +302,8 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
   const std::size_t slices = detail::parallel_slices(triangles, threads, 1 << 12);
   std::vector<std::vector<std::size_t>> large(slices);
   std::vector<std::uint64_t> small_boxes(slices, 0), large_boxes(slices, 0);  // box voxels: one-voxel ones count 1
-  const auto corners_of = [&](std::size_t t) {
-    const std::uint32_t* corner = &request.indices[3 * t];
+  const auto corners_of = [indices = request.indices.data()](std::size_t t) {
+    const std::uint32_t* corner = indices + 3 * t;
     return std::array<std::uint32_t, 3>{corner[0], corner[1], corner[2]};
   };
   detail::parallel_for(triangles, threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t slice) {
@@ -306,12 +313,12 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
       const CornerCell ca = cell_of(i), cb = cell_of(j), cc = cell_of(k);
       const CornerCell lo = lowest(ca, cb, cc), hi = highest(ca, cb, cc), extent = hi - lo;
       if ((extent[0] | extent[1] | extent[2]) < 2) {  // TriangleScan::small
-        mark_corners(ca, cb, cc, s, index_fits, grid);
-        const std::uint64_t volume = std::uint64_t(extent[0] + 1) * std::uint64_t(extent[1] + 1) * std::uint64_t(extent[2] + 1);
+        mark_corners(ca, cb, cc, s, index_fits, voxels);
+        const int axes = extent[0] + extent[1] + extent[2];  // of two voxels; the box holds 2^axes
         // The work counted stays a box's voxels (but one voxel's): the budget does not depend on what was marked.
-        if (volume > 2) test_small_box(TriangleScan(lo, hi), p[i], p[j], p[k], s, grid, tests);
-        else if (volume == 2) tests += volume;
-        boxes += volume;
+        if (axes > 1) test_small_box(TriangleScan(lo, hi), p[i], p[j], p[k], s, voxels, tests);
+        else if (axes == 1) tests += 2;
+        boxes += std::uint64_t{1} << axes;
       } else {
         large[slice].push_back(t);
         large_box += TriangleScan(lo, hi).box_volume();
@@ -346,8 +353,8 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
     std::uint64_t tests = 0;
     for (std::size_t n = begin; n < end; ++n) {
       const auto [i, j, k] = corners_of(listed[n]);
-      mark_corners(cell_of(i), cell_of(j), cell_of(k), s, index_fits, grid);
-      scan_triangle(scan_of(listed[n]), p[i], p[j], p[k], s, grid, tests, counter);
+      mark_corners(cell_of(i), cell_of(j), cell_of(k), s, index_fits, voxels);
+      scan_triangle(scan_of(listed[n]), p[i], p[j], p[k], s, voxels, tests, counter);
       if (tests >= TestCounter::kFlushEvery || (n & 0xff) == 0) counter.flush(tests);
     }
     counter.flush(tests);

@@ -180,6 +180,7 @@ int main(int argc, char** argv) {
       "room bounds 18-37 ms. Targets here (2 cores): bounds <= 5 ms and understanding <= 20 ms on a ~78k-vertex room.\n"
       "Stages: voxelize = voxel stage (V, |V_y|, levels, |V_xz|); features = A-F; areas = search + reduce + classify\n"
       "(§3.3-3.5); understanding = prepare + voxelize + features + areas (what StartRoomUnderstanding runs);\n"
+      "understanding_kept = the same on worker threads kept from one analysis to the next (an analyzer handle's);\n"
       "bounds = I + its mesh; bounds_pipeline = prepare + voxelize + A/B + bounds (StartRoomBounds); analyze = all.\n\n");
   static const std::vector<BenchRoom> rooms = load_rooms();
   for (const BenchRoom& room : rooms) {
@@ -201,6 +202,16 @@ int main(int argc, char** argv) {
     register_case("understanding/" + room.name, [&room](benchmark::State& state) {
       AnalysisOptions o;
       o.build_bounds = false;
+      for (auto _ : state) benchmark::DoNotOptimize(analyze(room.scan, o));
+      counters(state, room);
+    });
+    // The same with the worker threads kept from one analysis to the next (KeptThreads), as an engine holding an
+    // analyzer handle of the C API runs it: analyze() alone starts and joins its threads each time.
+    register_case("understanding_kept/" + room.name, [&room](benchmark::State& state) {
+      KeptThreads kept;
+      AnalysisOptions o;
+      o.build_bounds = false;
+      o.kept_threads = &kept;
       for (auto _ : state) benchmark::DoNotOptimize(analyze(room.scan, o));
       counters(state, room);
     });

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -233,6 +234,8 @@ struct Chunks {
 }  // namespace roomsense::capi
 
 struct rs_analyzer {
+  // The analyses' worker threads, kept from one compute to the next (options.kept_threads points here).
+  std::optional<roomsense::KeptThreads> kept_threads;
   roomsense::AnalysisOptions options;
   roomsense::SourceFrame frame;
   roomsense::capi::Chunks chunks;
@@ -468,9 +471,10 @@ rs_result rs_analyzer_create(const rs_analyzer_options* options, rs_analyzer** o
   if ((o.compute_flags & ~all) != 0) return RS_ERROR_INVALID_ARGUMENT;
   const std::uint32_t flags = o.compute_flags == 0 ? all : o.compute_flags;
   return guarded([&] {
-    auto* a = new rs_analyzer;
+    auto a = std::make_unique<rs_analyzer>();  // freed if the threads cannot start
     a->options.voxel_size = voxel;
     a->options.threads = o.thread_count;
+    a->options.kept_threads = &a->kept_threads.emplace(o.thread_count);
     a->options.find_areas = (flags & RS_COMPUTE_AREAS) != 0;
     a->options.build_bounds = (flags & RS_COMPUTE_BOUNDS) != 0;
     a->frame.up = o.up_axis == RS_UP_AXIS_Z ? roomsense::UpAxis::Z : roomsense::UpAxis::Y;
@@ -478,7 +482,7 @@ rs_result rs_analyzer_create(const rs_analyzer_options* options, rs_analyzer** o
                      : o.units == RS_UNITS_MILLIMETRES ? roomsense::Units::Millimetres
                                                        : roomsense::Units::Metres;
     a->frame.left_handed = o.left_handed != 0;
-    *out = a;
+    *out = a.release();
     return RS_SUCCESS;
   });
 }

@@ -5,6 +5,7 @@
 #include "roomsense/features.h"
 #include "roomsense/grid.h"
 #include "roomsense/input.h"
+#include "roomsense/kept_threads.h"
 #include "roomsense/scan.h"
 #include "roomsense/voxelize.h"
 
@@ -28,6 +29,7 @@ struct AnalysisOptions {
   bool find_areas = true;     // §3.3-3.5; off for a bounds-only run (thesis StartRoomBounds)
   bool build_bounds = true;   // §3.6; off for an areas-only run (thesis StartRoomUnderstanding)
   VoxelStage* voxel_stage = nullptr;  // not owned; nullptr: the CPU stage
+  KeptThreads* kept_threads = nullptr;  // not owned; nullptr: threads started for the analysis
   std::stop_token stop;               // a stop request ends analyze() with Error(Cancelled) within ~100 ms
 };
 

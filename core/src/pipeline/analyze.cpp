@@ -144,7 +144,10 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   Stopwatch clock, total_clock;
   // The threads of every parallel loop below: started once per analysis, or kept by an IncrementalAnalysis.
   std::unique_ptr<detail::WorkerPool> own_workers;
-  const detail::PoolScope scope(detail::pool_for(caches ? caches->workers : own_workers, options.threads));
+  const bool kept = caches == nullptr && options.kept_threads != nullptr &&
+                    options.kept_threads->threads() == detail::resolve_threads(options.threads);
+  const detail::PoolScope scope(kept ? options.kept_threads->pool()
+                                     : detail::pool_for(caches ? caches->workers : own_workers, options.threads));
   AnalysisResult r;
   // This analysis among its IncrementalAnalysis's: caches->previous, where there is one, is the one before.
   const std::uint64_t serial = caches ? ++caches->serial : 0;

@@ -90,7 +90,7 @@ CornerCell highest(const CornerCell& a, const CornerCell& b, const CornerCell& c
   return ab > c ? ab : c;
 }
 // Where a corner lies: lane 3, or its lanes 0-2 where the index does not fit 32 bits.
-std::size_t voxel_of(const CornerCell& c, const GridSpec& s, bool index_fits) {
+std::size_t corner_voxel(const CornerCell& c, const GridSpec& s, bool index_fits) {
   return index_fits ? std::size_t(std::uint32_t(c[3])) : s.index(c[0], c[1], c[2]);
 }
 
@@ -146,9 +146,9 @@ struct TriangleScan {
 // touches that cube. Shared by some six triangles, a corner's cell is mostly marked already; in a box of two
 // voxels both are corners' cells, so most of a fine scan's triangles need no test at all.
 inline void mark_corners(const CornerCell& ca, const CornerCell& cb, const CornerCell& cc, const GridSpec& s,
-                         bool index_fits, std::uint8_t* cells) {
+                         bool index_fits, std::uint8_t* voxels) {
   const auto mark_cell = [&](const CornerCell& c) {
-    if (std::uint8_t& voxel = cells[voxel_of(c, s, index_fits)]; !marked(voxel)) mark(voxel);
+    if (std::uint8_t& voxel = voxels[corner_voxel(c, s, index_fits)]; !marked(voxel)) mark(voxel);
   };
   mark_cell(ca), mark_cell(cb), mark_cell(cc);
 }
@@ -156,11 +156,11 @@ inline void mark_corners(const CornerCell& ca, const CornerCell& cb, const Corne
 // Marks each voxel of a box of a few whose test cube the triangle touches, testing each not yet marked (its
 // corners' cells are, by mark_corners).
 inline void test_small_box(const TriangleScan& scan, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
-                           const GridSpec& s, std::uint8_t* cells, std::uint64_t& tests) {
+                           const GridSpec& s, std::uint8_t* voxels, std::uint64_t& tests) {
   for (int z = scan.first[2]; z <= scan.last[2]; ++z)
     for (int x = scan.first[0]; x <= scan.last[0]; ++x)
       for (int y = scan.first[1]; y <= scan.last[1]; ++y) {
-        std::uint8_t& voxel = cells[s.index(x, y, z)];
+        std::uint8_t& voxel = voxels[s.index(x, y, z)];
         if (!marked(voxel) && triangle_overlaps_voxel(a, b, c, x, y, z)) mark(voxel);
       }
   tests += scan.box_volume();
@@ -168,7 +168,7 @@ inline void test_small_box(const TriangleScan& scan, const glm::vec3& a, const g
 
 // Marks every voxel of a box larger than small() whose test cube the triangle touches (see TriangleScan).
 void scan_triangle(const TriangleScan& scan, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
-                   const GridSpec& s, std::uint8_t* cells, std::uint64_t& tests, TestCounter& counter) {
+                   const GridSpec& s, std::uint8_t* voxels, std::uint64_t& tests, TestCounter& counter) {
   const int(&first)[3] = scan.first;
   const int(&last)[3] = scan.last;
   const int d = scan.d, u = scan.u, v = scan.v;
@@ -196,7 +196,7 @@ void scan_triangle(const TriangleScan& scan, const glm::vec3& a, const glm::vec3
         else if (hi < double(to) - 1.0) to = detail::floor_int(hi) + 1;
       }
       for (cell[d] = from; cell[d] <= to; ++cell[d]) {
-        std::uint8_t& voxel = cells[s.index(cell[0], cell[1], cell[2])];
+        std::uint8_t& voxel = voxels[s.index(cell[0], cell[1], cell[2])];
         if (!marked(voxel) && triangle_overlaps_voxel(a, b, c, cell[0], cell[1], cell[2])) mark(voxel);
       }
       if (to >= from) tests += std::uint64_t(to - from + 1);
@@ -289,7 +289,8 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
       }
     });
   }
-  // By value, as the cells themselves: the marks' atomics would have GCC load them again at every triangle.
+  // The table's pointer held by value: through the unique_ptr, the marks' atomics would have GCC load it again
+  // at every triangle.
   const CornerCell* const cell_table = cells.get();
   const auto cell_of = [cell_table, &corner_cell, &p](std::uint32_t i) { return cell_table ? cell_table[i] : corner_cell(p[i]); };
   const bool index_fits = s.voxel_count() <= std::numeric_limits<std::uint32_t>::max();

@@ -465,16 +465,19 @@ std::vector<float> flat_xyz(const Scan& scan) {
   return xyz;
 }
 
-// Destroying an analyzer stops its compute: the default room at 2 cm voxels takes seconds (most of it in
-// the area search), and the destroy must not wait for them. The bound is a hang detector; the promise is
+// Destroying an analyzer stops its compute, and the destroy does not wait for the compute to end. The default
+// room at 1.25 cm voxels (28 M voxels, near the default budget) on one thread takes some 0.45 s on this
+// project's VM (2 cm on two threads took 0.2 s once issue 19 sped voxelization up, and ended before the last
+// destroy under Wine); the destroys come 0, 30 and 150 ms into it. The bound is a hang detector; the promise is
 // 100 ms (measured in the issue-18 note).
 TEST(CapiCancellation, DestroyDuringAComputeReturnsPromptly) {
   const Scan scan = synth::generate(synth::default_room());
   const std::vector<float> xyz = flat_xyz(scan);
-  for (const int delay_ms : {0, 30, 300}) {
+  for (const int delay_ms : {0, 30, 150}) {
     rs_analyzer_options options;
     rs_analyzer_options_init(&options);
-    options.voxel_size = 0.02f;
+    options.voxel_size = 0.0125f;
+    options.thread_count = 1;
     rs_analyzer* analyzer = nullptr;
     ASSERT_EQ(rs_analyzer_create(&options, &analyzer), RS_SUCCESS);
     ASSERT_EQ(rs_analyzer_compute(analyzer, xyz.data(), std::uint32_t(scan.vertices.size()), scan.indices.data(),

@@ -246,8 +246,8 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
                             : CellBox{glm::max(searched.lo - corner_reach, glm::ivec2(0)),
                                       glm::min(searched.hi + corner_reach, glm::ivec2(spec.nx - 1, spec.nz - 1))};
   }
-  // Per layer of several, its first corners, and past the last layer the tiles one level above it, all counted by
-  // the scan below (a search by bands scans part of the grid).
+  // Per layer of several, its first corners, and past the last layer the tiles one level above it, counted by a
+  // whole search's scan below (a search by bands scans part of the grid, and skips no layer).
   std::vector<std::size_t> layer_tiles(std::size_t(std::max(layers, 0)) + 1, 0);
   // Whether no centre anywhere can pass the inner box's test below: the layer's tiles (its first corners and,
   // for furniture, the level above's) are fewer than an inner box of at least floor(2 inner_half) cells a side
@@ -272,9 +272,9 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     for (int x = scan.lo.x; x <= scan.hi.x; ++x) {
       const std::size_t col = spec.column(x, z);
       const int layer = layer_of(col);
-      if (surface == Surface::Furniture && features.furniture[col] == y_to + 1) ++layer_tiles.back();
+      if (!kBanded && surface == Surface::Furniture && features.furniture[col] == y_to + 1) ++layer_tiles.back();
       if (layer < 0 || layer >= layers) continue;
-      ++layer_tiles[std::size_t(layer)];
+      if (!kBanded) ++layer_tiles[std::size_t(layer)];
       CellBox& b = first_box[std::size_t(layer)];
       b.lo = glm::min(b.lo, glm::ivec2(x, z)), b.hi = glm::max(b.hi, glm::ivec2(x, z));
     }

@@ -61,9 +61,9 @@ typedef std::int32_t CornerCell __attribute__((vector_size(16)));
 typedef float CornerPoint __attribute__((vector_size(16)));
 // box_index on the lanes at once, as clamp_index does it per axis: 0 below 0 (and for NaN), n - 1 from n - 1
 // on, else truncated.
-class CornerCells {
+class CornerCellOf {
  public:
-  explicit CornerCells(const GridSpec& s)
+  explicit CornerCellOf(const GridSpec& s)
       : s_(s), last_{s.nx - 1, s.ny - 1, s.nz - 1, 0}, last_at_{float(s.nx - 1), float(s.ny - 1), float(s.nz - 1), 0.0f} {}
   CornerCell operator()(const glm::vec3& v) const {
     const CornerPoint zero{0.0f, 0.0f, 0.0f, 0.0f};
@@ -278,7 +278,7 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
   // A whole scan's corners are its vertices, each shared by some six triangles: their cells are found once
   // each, and most triangles then cost three lookups, a box of vector minima and maxima, and their corners'
   // marks. A few triangles of a large scan (a chunk re-sent) find their corners' cells as they go.
-  const CornerCells corner_cell(s);
+  const CornerCellOf corner_cell(s);
   std::unique_ptr<CornerCell[]> cells;  // not zeroed first: every one is written
   if (request.indices.size() >= 2 * p.size()) {
     cells = std::make_unique_for_overwrite<CornerCell[]>(p.size());

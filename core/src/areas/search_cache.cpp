@@ -231,11 +231,6 @@ void SearchCache::drop(Kept& kept) {
 
 namespace {
 
-// A rectangle's identity within a search: corner 1's cell and its shape.
-std::tuple<std::uint32_t, std::uint32_t, std::uint32_t> key_of(const Candidates::Item& item) {
-  return {item.cell_hi, item.cell_lo, item.shape};
-}
-
 // The centres of a wall list whose corners 1 come row by row (z1 never falls), as search_walls's bits: twice the
 // centre, (2 x1 + dx, 2 y1 - h, 2 z1 + dz), a bit each, in rows of 2 z1 + dz. A later wall's centre lies within
 // `reach` rows of 2 z1 (|dz| <= reach), so rows from before that are used again: a large floor's list marks a
@@ -413,27 +408,35 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
     // Walls: a replaced slot's rectangles found again keep their packing (a wall's order is the search's, which
     // keeps it among the others); the bands in order, each rectangle unless an earlier one has its centre (as
     // the whole search skips it: an earlier band's, or in a band searched in part, one kept outside its columns).
-    using Keyed = std::pair<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, std::uint8_t>;
-    std::vector<std::vector<Keyed>> before(kept.pieces.size());
+    // A replaced slot's rectangles and those it replaced (replace()) are both in search order: corner 1's z1, x1
+    // and y1, then the ring's order (search_walls's loops). So the two lists are matched in one pass, side by side.
+    std::vector<const Replaced*> replaced_of(kept.pieces.size(), nullptr);
     std::vector<std::vector<std::uint8_t>> matched(kept.pieces.size());
-    for (Replaced& r : replaced) {
+    for (const Replaced& r : replaced) {
       if (!known) continue;
-      for (std::size_t k = 0; k < r.items.size(); ++k) before[r.slot].push_back({key_of(r.items[k]), r.states[k]});
-      std::sort(before[r.slot].begin(), before[r.slot].end());
+      replaced_of[r.slot] = &r;
       matched[r.slot].assign(r.items.size(), 0);
     }
+    const auto search_order = [&](const Candidates::Item& item) {
+      const glm::ivec3 c = found.decode(item).corner(0);
+      return std::tuple(c.z, c.x, c.y, item.shape);
+    };
+    std::size_t next = 0;  // the slot's first replaced rectangle not before the current one
     const auto previous_state = [&](std::size_t slot, std::size_t k) -> std::uint8_t {
       if (!known) return kAbsent;
       // A rectangle kept outside the columns searched has its own; one found anew, that of its match.
-      if (matched[slot].empty() || kept.states[slot][k] != kAbsent) return kept.states[slot][k];
-      const auto key = key_of(kept.pieces[slot][k]);
-      const auto it = std::lower_bound(before[slot].begin(), before[slot].end(), Keyed{key, 0});
-      if (it == before[slot].end() || it->first != key) return kAbsent;
-      matched[slot][std::size_t(it - before[slot].begin())] = 1;
-      return it->second;
+      const Replaced* r = replaced_of[slot];
+      if (r == nullptr || kept.states[slot][k] != kAbsent) return kept.states[slot][k];
+      const Candidates::Item& item = kept.pieces[slot][k];
+      const auto at = search_order(item);
+      while (next < r->items.size() && search_order(r->items[next]) < at) ++next;
+      if (next == r->items.size() || !(r->items[next] == item)) return kAbsent;
+      matched[slot][next] = 1;
+      return r->states[next];
     };
     WallCentres centres(spec_, found.shapes());
-    for (std::size_t slot = 0; slot < kept.pieces.size(); ++slot)
+    for (std::size_t slot = 0; slot < kept.pieces.size(); ++slot) {
+      next = 0;
       for (std::size_t k = 0; k < kept.pieces[slot].size(); ++k) {
         const Candidates::Item& item = kept.pieces[slot][k];
         const std::uint8_t state = previous_state(slot, k);
@@ -446,13 +449,11 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
         kept.source.push_back({std::uint32_t(slot), std::uint32_t(k)});
         kept.replay.previous.push_back(previous_of(state));
       }
+    }
     // Packed before, not found again.
-    for (std::size_t slot = 0; slot < before.size(); ++slot)
-      for (std::size_t k = 0; k < before[slot].size(); ++k)
-        if (!matched[slot][k] && before[slot][k].second == kPacked) {
-          const auto [hi, lo, shape] = before[slot][k].first;
-          kept.replay.gone.push_back(found.decode({lo, hi, shape}).unpack());
-        }
+    for (const Replaced& r : replaced)
+      for (std::size_t k = 0; known && k < r.items.size(); ++k)
+        if (!matched[r.slot][k] && r.states[k] == kPacked) kept.replay.gone.push_back(found.decode(r.items[k]).unpack());
   }
   kept.replay_known = known;
   // The kept rectangles stay within twice the grid's bytes and 16 MB; past that a search keeps nothing.

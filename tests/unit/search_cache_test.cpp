@@ -14,7 +14,9 @@
 #include <array>
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <random>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -525,7 +527,9 @@ TEST(SearchCache, SquaresStartedFromThePreviousSearchEqualSearchingAfresh) {
 
 // A wall search after its features changed takes a rectangle that reads no changed column from its band's previous
 // rectangles (search_walls's BandedSearch::previous). Each time, its list must equal a fresh cache's, which searches
-// every band anew, and a whole search's.
+// every band anew, and a whole search's. Packing's replay of the list (SearchCache::replay) must know the decision
+// recorded for every rectangle the previous list held, and none other, and list as gone each packed rectangle the
+// list lost: a replaced band's rectangles are matched to those they replaced.
 TEST(SearchCache, WallsFoundFromThePreviousSearchEqualSearchingAfresh) {
   const GridSpec s = grid(56, 12, 48);
   RoomFeatures f = empty_features(s);
@@ -560,7 +564,16 @@ TEST(SearchCache, WallsFoundFromThePreviousSearchEqualSearchingAfresh) {
   for (int k = 0; k < 5; ++k) panels.push_back(random_panel());
   const SizeRange range{8.0, 12.0, 0.5};
   SearchCache cache;
-  std::size_t rectangles = 0;
+  std::size_t rectangles = 0, matched = 0;
+  using Key = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;
+  const auto key = [](const Candidates::Item& item) { return Key{item.cell_lo, item.cell_hi, item.shape}; };
+  std::map<Key, std::int8_t> decided;  // the previous list's rectangles, each with the decision recorded for it
+  const auto corners = [](const Candidate& c) {
+    std::array<int, 12> out{};
+    for (std::size_t k = 0; k < 4; ++k)
+      for (int a = 0; a < 3; ++a) out[3 * k + std::size_t(a)] = c.corners[k][a];
+    return out;
+  };
   for (int step = 0; step < 30; ++step) {
     if (step > 0) {
       if (rng() % 2 == 0 && panels.size() > 4) panels.erase(panels.begin() + 4 + std::ptrdiff_t(rng() % (panels.size() - 4)));
@@ -577,8 +590,35 @@ TEST(SearchCache, WallsFoundFromThePreviousSearchEqualSearchingAfresh) {
     ASSERT_TRUE(same_items(got, want)) << "step " << step;
     ASSERT_TRUE(same_items(whole, want)) << "step " << step;
     rectangles += want.size();
+    const PackReplay* replay = cache.replay(0, 0);
+    ASSERT_TRUE(replay != nullptr || step == 0) << "step " << step;
+    if (replay != nullptr) {  // before the first packing, no rectangle has a decision
+      ASSERT_EQ(replay->previous.size(), got.size());
+      std::map<Key, std::int8_t> lost = decided;
+      for (std::size_t i = 0; i < got.size(); ++i) {
+        const auto it = decided.find(key(got.item(i)));
+        EXPECT_EQ(replay->previous[i], it == decided.end() ? -1 : it->second) << "step " << step << ", rectangle " << i;
+        if (it != decided.end()) lost.erase(key(got.item(i))), ++matched;
+      }
+      std::vector<std::array<int, 12>> want_gone, gone;
+      for (const auto& [k, state] : lost)
+        if (state == 1) want_gone.push_back(corners(got.decode({std::get<0>(k), std::get<1>(k), std::get<2>(k)}).unpack()));
+      for (const Candidate& c : replay->gone) gone.push_back(corners(c));
+      std::sort(want_gone.begin(), want_gone.end());
+      std::sort(gone.begin(), gone.end());
+      EXPECT_EQ(gone, want_gone) << "step " << step;
+    }
+    // This step's packing, recorded for the next: every third rectangle packed.
+    std::vector<std::size_t> packed;
+    decided.clear();
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      if (i % 3 == 0) packed.push_back(i);
+      decided[key(got.item(i))] = i % 3 == 0 ? 1 : 0;
+    }
+    cache.record_packing(0, 0, packed);
   }
   EXPECT_GE(rectangles, 30u * 50u);
+  EXPECT_GE(matched, 29u * 30u);  // most of each list was the previous one's
 }
 
 // A furniture search after tops changed takes a layer's previous squares where its tiles are as they were and the

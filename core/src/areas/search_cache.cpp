@@ -430,7 +430,7 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
       const Candidates::Item& item = kept.pieces[slot][k];
       const auto at = search_order(item);
       while (next < r->items.size() && search_order(r->items[next]) < at) ++next;
-      if (next == r->items.size() || !(r->items[next] == item)) return kAbsent;
+      if (next >= r->items.size() || !(r->items[next] == item)) return kAbsent;
       matched[slot][next] = 1;
       return r->states[next];
     };

@@ -135,7 +135,8 @@ void replay(const Scan& scan, unsigned seed, bool keeps_voxels = true) {
 }
 
 TEST(Incremental, SyntheticRoomsReplayedChunkByChunkEqualTheFullAnalysis) {
-  for (const char* name : {"synthetic:default", "synthetic:thesis-room1", "synthetic:flat", "synthetic:house", "synthetic:loft"}) {
+  for (const char* name : {"synthetic:default", "synthetic:thesis-room1", "synthetic:flat", "synthetic:house", "synthetic:loft",
+                           "synthetic:rotated"}) {
     SCOPED_TRACE(name);
     replay(synth::generate_builtin_source(name), 19);
   }

@@ -7,6 +7,8 @@
 #include "../../core/src/key_table.h"
 #include "../../core/src/areas/search_cache.h"
 #include "../../core/src/areas/search.h"
+#include "roomsense/analysis.h"
+#include "roomsense/synthetic.h"
 
 #include <gtest/gtest.h>
 
@@ -676,5 +678,41 @@ TEST(SearchCache, FurnitureLayersTakenFromThePreviousSearchEqualSearchingAfresh)
   EXPECT_GE(rising, 60u);
 }
 
+
+// A square type's reduction is taken from the previous analysis only where that analysis searched it in the room's
+// main direction as it is now (unchanged_type). Walls that turn the direction, over the same wall columns and the
+// same tiles, leave every square type's features as they were: each must still be searched again, in the new
+// direction, as a search without the cache does.
+TEST(SearchCache, SquareTypesAreSearchedAgainWhereTheWallsTurnTheMainDirection) {
+  AnalysisOptions options;
+  options.find_areas = false;
+  options.build_bounds = false;
+  const AnalysisResult room = analyze(synth::generate_builtin_source("synthetic:rotated"), options);
+  ASSERT_TRUE(room.ok());
+  const SurfaceLevels surfaces{room.storeys[0].floor_y, room.storeys[0].ceiling_y, {}};
+  // The room's walls, turned 30 degrees, give about 30; without wall normals there is no wall rectangle, and 0.
+  RoomFeatures turned = *room.features;
+  std::fill(turned.normals.begin(), turned.normals.end(), std::uint8_t{0});
+  const auto same_areas = [](const AreaResult& got, const AreaResult& want) {
+    if (got.areas.size() != want.areas.size())
+      return ::testing::AssertionFailure() << got.areas.size() << " areas, not " << want.areas.size();
+    for (std::size_t i = 0; i < want.areas.size(); ++i)
+      if (!same_bits(got.areas[i], want.areas[i])) return ::testing::AssertionFailure() << "area " << i << " differs";
+    return ::testing::AssertionSuccess();
+  };
+  const AreaResult walls_at_30 = find_areas(room.voxels.grid, *room.features, surfaces, {}, {}, 2);
+  const AreaResult walls_gone = find_areas(room.voxels.grid, turned, surfaces, {}, {}, 2);
+  ASSERT_FALSE(same_areas(walls_gone, walls_at_30));
+  // The squares differ too, not only the walls: the direction changes what the square searches find.
+  const auto squares = [](AreaResult r) {
+    std::erase_if(r.areas, [](const Area& a) { return a.type == AreaType::Wall; });
+    return r;
+  };
+  ASSERT_FALSE(same_areas(squares(walls_gone), squares(walls_at_30)));
+  SearchCache cache;
+  EXPECT_TRUE(same_areas(detail::find_areas(room.voxels.grid, *room.features, surfaces, {}, {}, 2, {}, &cache), walls_at_30));
+  EXPECT_TRUE(same_areas(detail::find_areas(room.voxels.grid, turned, surfaces, {}, {}, 2, {}, &cache), walls_gone));
+  EXPECT_TRUE(same_areas(detail::find_areas(room.voxels.grid, *room.features, surfaces, {}, {}, 2, {}, &cache), walls_at_30));
+}
 
 }  // namespace

@@ -320,6 +320,9 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       return;
     }
     if (size == 0) {
+      // The direction this type is searched and packed in: an update takes the type's reduction only where the
+      // walls give the same one again (SearchCache::unchanged_type).
+      red[type].dominant_deg = dominant_deg;
       const TileMap is_tile{spec, type == 1 ? std::span<const std::uint8_t>(features.free_floor)
                                   : type == 2 ? std::span<const std::uint8_t>(features.free_ceiling)
                                               : std::span<const std::uint8_t>(),

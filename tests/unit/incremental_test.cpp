@@ -209,6 +209,28 @@ TEST(Incremental, BadChunksAreRefusedAndNothingIsLost) {
   EXPECT_EQ(inc.revoxelized_chunks(), 0u);
 }
 
+// A chunk refused for its indices among others (not the last by id: chunks after it are placed again) leaves
+// nothing behind: the next result, with the chunk mended or gone, equals the full analysis. Refused first, the
+// combined scan lost its place list while keeping every array, and the next result kept the old triangles too.
+TEST(Incremental, AChunkRefusedAmongOthersLeavesTheNextResultEqualToTheFullAnalysis) {
+  const std::map<std::uint64_t, Scan> tiles = split_into_blocks(synth::generate_builtin_source("synthetic:thesis-room1"));
+  ASSERT_GE(tiles.size(), 4u);
+  IncrementalAnalysis inc;
+  for (const auto& [id, chunk] : tiles) inc.set_chunk(id, chunk);
+  inc.result();
+  Scan bad = tiles.begin()->second;
+  bad.indices.back() = std::uint32_t(bad.vertices.size());
+  for (const auto& [id, mend] : {std::pair{std::next(tiles.begin(), 2)->first, "restored"},
+                                 std::pair{tiles.begin()->first, "removed"}}) {
+    SCOPED_TRACE(mend);
+    inc.set_chunk(id, bad);
+    EXPECT_THROW(inc.result(), Error);
+    if (std::string(mend) == "restored") inc.set_chunk(id, tiles.at(id));
+    else inc.remove_chunk(id);
+    expect_same(inc.result(), analyze(inc.combined_scan()), "after the refused chunk");
+  }
+}
+
 // Chunks with NaN vertices and with outliers (a vertex a kilometre away) among clean ones: the input checks,
 // which an IncrementalAnalysis runs chunk by chunk, skip and reject exactly what analyze() does on the
 // combined scan, whether they arrive, are replaced or leave.

@@ -318,14 +318,8 @@ void IncrementalAnalysis::update_combined() {
   // were checked when they were placed).
   std::vector<std::pair<detail::CombinedScan::Placed, detail::VertexRun>> later;
   for (std::size_t k = same; k < c.placed.size(); ++k) later.push_back({c.placed[k], c.known.runs[k]});
-  // Where the chunks placed again begin: after the kept ones.
-  detail::CombinedScan::Placed start{0, 0, c.scan.vertices.size(), c.scan.indices.size(), c.scan.labels.vertices.size(),
-                                     c.scan.labels.indices.size(), c.scan.labels.labels.size()};
-  if (same < c.placed.size()) {
-    start = c.placed[same];
-    c.placed.resize(same);
-    c.known.runs.resize(same);
-  }
+  // The chunks placed again, each changed one's indices checked before anything moves: a chunk refused here leaves
+  // the combined scan as the last result had it.
   std::vector<std::pair<std::uint64_t, const Scan*>> rest;
   std::vector<std::uint64_t> hashes;
   std::vector<std::optional<detail::VertexRun>> runs;  // kept, or summarized below
@@ -337,6 +331,14 @@ void IncrementalAnalysis::update_combined() {
     rest.push_back({it->first, &it->second.scan});
     hashes.push_back(it->second.hash);
     runs.push_back(unchanged ? std::optional(was->second) : std::nullopt);
+  }
+  // Where the chunks placed again begin: after the kept ones.
+  detail::CombinedScan::Placed start{0, 0, c.scan.vertices.size(), c.scan.indices.size(), c.scan.labels.vertices.size(),
+                                     c.scan.labels.indices.size(), c.scan.labels.labels.size()};
+  if (same < c.placed.size()) {
+    start = c.placed[same];
+    c.placed.resize(same);
+    c.known.runs.resize(same);
   }
   try {
     const std::vector<detail::CombinedScan::Placed> placed = place_from(start, rest, hashes);

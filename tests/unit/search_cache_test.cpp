@@ -678,7 +678,6 @@ TEST(SearchCache, FurnitureLayersTakenFromThePreviousSearchEqualSearchingAfresh)
   EXPECT_GE(rising, 60u);
 }
 
-
 // A square type's reduction is taken from the previous analysis only where that analysis searched it in the room's
 // main direction as it is now (unchanged_type). Walls that turn the direction, over the same wall columns and the
 // same tiles, leave every square type's features as they were: each must still be searched again, in the new

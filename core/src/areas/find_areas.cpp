@@ -410,7 +410,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   // Types of large lists one after another (the walls, then the square types by cost): a type's first search waits
   // for the whole reduction of the one before it (its last size's packing ends with its growth), so that one type's
   // list, packer and growth are held at a time whatever the threads do. Side by side, as the two threads' timing
-  // fell, they took a 50 x 50 m floor's search from 2.6 to 4.5 times the grid's bytes, a 90 x 90 m floor's to 4.2.
+  // fell, they took a 50 x 50 m floor's search from 3.3 to 4.5 times the grid's bytes, a 90 x 90 m floor's to 4.2.
   std::optional<std::size_t> last_chained_pack, last_chained_deduplication;
   if (chained(0)) last_chained_pack = kPackWalls, last_chained_deduplication = kDeduplicateWalls;
   for (const std::size_t type : square_types) {

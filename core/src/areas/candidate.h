@@ -84,6 +84,8 @@ class Candidates {
   Candidates(const GridSpec& spec, int levels, std::vector<Shape> shapes)
       : y_bits_(std::bit_width(unsigned(std::max(levels, 1)))),
         z_bits_(std::bit_width(unsigned(std::max(spec.nz, 1)))),
+        y_mask_((std::uint64_t{1} << y_bits_) - 1),
+        z_mask_((std::uint64_t{1} << z_bits_) - 1),
         limit_(std::max(spec.nx, 1), std::max(levels, 1), std::max(spec.nz, 1)),
         shapes_(std::move(shapes)) {
     if (y_bits_ + z_bits_ + std::bit_width(unsigned(limit_.x)) > 64)
@@ -126,15 +128,15 @@ class Candidates {
   // The same grid, levels and shapes, without rectangles.
   Candidates empty_like() const {
     Candidates c;
-    c.y_bits_ = y_bits_, c.z_bits_ = z_bits_, c.limit_ = limit_, c.shapes_ = shapes_;
+    c.y_bits_ = y_bits_, c.z_bits_ = z_bits_, c.y_mask_ = y_mask_, c.z_mask_ = z_mask_, c.limit_ = limit_;
+    c.shapes_ = shapes_;
     return c;
   }
   PackedCandidate operator[](std::size_t i) const { return decode(item(i)); }
   PackedCandidate decode(const Item& item) const {
     const std::uint64_t cell = (std::uint64_t(item.cell_hi) << 32) | item.cell_lo;
     const Shape& s = shapes_[item.shape];
-    const auto field = [](std::uint64_t v, int bits) { return int(v & ((std::uint64_t{1} << bits) - 1)); };
-    return {glm::ivec3(int(cell >> (y_bits_ + z_bits_)), field(cell, y_bits_), field(cell >> y_bits_, z_bits_)), s.dx,
+    return {glm::ivec3(int(cell >> (y_bits_ + z_bits_)), int(cell & y_mask_), int((cell >> y_bits_) & z_mask_)), s.dx,
             s.dz, s.side};
   }
   PackedCandidate at(std::size_t i) const {
@@ -144,6 +146,7 @@ class Candidates {
 
  private:
   int y_bits_ = 0, z_bits_ = 0;  // a cell is x, z, y in bit fields
+  std::uint64_t y_mask_ = 0, z_mask_ = 0;  // their low bits: decode's most frequent work, found once
   glm::ivec3 limit_{0};
   static_assert(sizeof(Item) == kBytesEach);
   static constexpr std::size_t kBlock = 4096;

@@ -430,15 +430,27 @@ std::map<std::uint64_t, Scan> split_into_blocks(const Scan& scan, float tile) {
 
 std::size_t IncrementalAnalysis::revoxelized_chunks() const { return reused_ ? 0 : stage_->revoxelized(); }
 
+namespace {
+
+// The area searches' caches of the latest result's storeys: one of a storey that result no longer has keeps the
+// counts of the result before. None where it failed.
+std::span<const std::unique_ptr<detail::SearchCache>> searched_storeys(const detail::AnalysisCaches& caches,
+                                                                        const std::optional<AnalysisResult>& result) {
+  const std::size_t storeys = result ? std::min(result->storeys.size(), caches.storeys.size()) : 0;
+  return std::span(caches.storeys).first(storeys);
+}
+
+}  // namespace
+
 std::size_t IncrementalAnalysis::area_bands_searched() const {
   std::size_t n = 0;
-  for (const auto& cache : caches_->storeys) n += reused_ ? 0 : cache->bands_searched();
+  for (const auto& cache : searched_storeys(*caches_, result_)) n += reused_ ? 0 : cache->bands_searched();
   return n;
 }
 
 std::size_t IncrementalAnalysis::area_bands_total() const {
   std::size_t n = 0;
-  for (const auto& cache : caches_->storeys) n += cache->bands_total();
+  for (const auto& cache : searched_storeys(*caches_, result_)) n += cache->bands_total();
   return n;
 }
 

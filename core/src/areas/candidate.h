@@ -82,13 +82,8 @@ class Candidates {
   Candidates() = default;
   // Corner 1 lies in the grid's columns, at a level in [0, levels).
   Candidates(const GridSpec& spec, int levels, std::vector<Shape> shapes)
-      : y_bits_(std::bit_width(unsigned(std::max(levels, 1)))),
-        z_bits_(std::bit_width(unsigned(std::max(spec.nz, 1)))),
-        y_mask_((std::uint64_t{1} << y_bits_) - 1),
-        z_mask_((std::uint64_t{1} << z_bits_) - 1),
-        limit_(std::max(spec.nx, 1), std::max(levels, 1), std::max(spec.nz, 1)),
-        shapes_(std::move(shapes)) {
-    if (y_bits_ + z_bits_ + std::bit_width(unsigned(limit_.x)) > 64)
+      : layout_(spec, levels), shapes_(std::move(shapes)) {
+    if (layout_.y_bits + layout_.z_bits + std::bit_width(unsigned(layout_.limit.x)) > 64)
       throw std::logic_error("a grid too large for the candidates' cells");
   }
 
@@ -96,9 +91,10 @@ class Candidates {
   // through the stack, and that load stalled on the two stores before it (perf put 8-10 % of the searches'
   // samples on the next instruction).
   [[gnu::always_inline]] void push_back(glm::ivec3 first, std::uint32_t shape) {
-    if (glm::any(glm::lessThan(first, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(first, limit_)))
+    if (glm::any(glm::lessThan(first, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(first, layout_.limit)))
       throw std::logic_error("a candidate outside its search's grid");
-    const std::uint64_t cell = (((std::uint64_t(first.x) << z_bits_) | std::uint64_t(first.z)) << y_bits_) | std::uint64_t(first.y);
+    const std::uint64_t cell =
+        (((std::uint64_t(first.x) << layout_.z_bits) | std::uint64_t(first.z)) << layout_.y_bits) | std::uint64_t(first.y);
     push_item({std::uint32_t(cell), std::uint32_t(cell >> 32), shape});
   }
   // An item of a Candidates made with the same grid, levels and shapes (SearchCache's kept pieces).
@@ -128,16 +124,16 @@ class Candidates {
   // The same grid, levels and shapes, without rectangles.
   Candidates empty_like() const {
     Candidates c;
-    c.y_bits_ = y_bits_, c.z_bits_ = z_bits_, c.y_mask_ = y_mask_, c.z_mask_ = z_mask_, c.limit_ = limit_;
-    c.shapes_ = shapes_;
+    c.layout_ = layout_, c.shapes_ = shapes_;
     return c;
   }
   PackedCandidate operator[](std::size_t i) const { return decode(item(i)); }
   PackedCandidate decode(const Item& item) const {
     const std::uint64_t cell = (std::uint64_t(item.cell_hi) << 32) | item.cell_lo;
     const Shape& s = shapes_[item.shape];
-    return {glm::ivec3(int(cell >> (y_bits_ + z_bits_)), int(cell & y_mask_), int((cell >> y_bits_) & z_mask_)), s.dx,
-            s.dz, s.side};
+    const Layout& l = layout_;
+    return {glm::ivec3(int(cell >> (l.y_bits + l.z_bits)), int(cell & l.y_mask), int((cell >> l.y_bits) & l.z_mask)),
+            s.dx, s.dz, s.side};
   }
   PackedCandidate at(std::size_t i) const {
     if (i >= size()) throw std::out_of_range("Candidates::at");
@@ -145,9 +141,17 @@ class Candidates {
   }
 
  private:
-  int y_bits_ = 0, z_bits_ = 0;  // a cell is x, z, y in bit fields
-  std::uint64_t y_mask_ = 0, z_mask_ = 0;  // their low bits: decode's most frequent work, found once
-  glm::ivec3 limit_{0};
+  // A cell is x, z, y in bit fields; corner 1 lies below `limit` on each axis.
+  struct Layout {
+    Layout() = default;
+    Layout(const GridSpec& spec, int levels)
+        : y_bits(std::bit_width(unsigned(std::max(levels, 1)))), z_bits(std::bit_width(unsigned(std::max(spec.nz, 1)))),
+          y_mask((std::uint64_t{1} << y_bits) - 1), z_mask((std::uint64_t{1} << z_bits) - 1),
+          limit(std::max(spec.nx, 1), std::max(levels, 1), std::max(spec.nz, 1)) {}
+    int y_bits = 0, z_bits = 0;
+    std::uint64_t y_mask = 0, z_mask = 0;  // the fields' low bits: decode's most frequent work, found once
+    glm::ivec3 limit{0};
+  } layout_;
   static_assert(sizeof(Item) == kBytesEach);
   static constexpr std::size_t kBlock = 4096;
   std::vector<Shape> shapes_;

@@ -411,15 +411,13 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   // for the whole reduction of the one before it (its last size's packing ends with its growth), so that one type's
   // list, packer and growth are held at a time whatever the threads do. Side by side, as the two threads' timing
   // fell, they took a 50 x 50 m floor's search from 3.3 to 4.5 times the grid's bytes, a 90 x 90 m floor's to 4.2.
-  std::optional<std::size_t> last_chained_pack, last_chained_deduplication;
-  if (chained(0)) last_chained_pack = kPackWalls, last_chained_deduplication = kDeduplicateWalls;
+  std::vector<std::size_t> previous_reduction;  // the last tasks of the large type before, none at first
+  if (chained(0)) previous_reduction = {kPackWalls, kDeduplicateWalls};
   for (const std::size_t type : square_types) {
     if (!chained(type)) continue;
     std::vector<std::size_t>& first_search = after[search_task[type][0]];
-    for (const auto& task : {last_chained_pack, last_chained_deduplication})
-      if (task) first_search.push_back(*task);
-    last_chained_pack = pack_task[type][kAreaSizes.size() - 1];
-    last_chained_deduplication = deduplication_task[type][kAreaSizes.size() - 1];
+    first_search.insert(first_search.end(), previous_reduction.begin(), previous_reduction.end());
+    previous_reduction = {pack_task[type][kAreaSizes.size() - 1], deduplication_task[type][kAreaSizes.size() - 1]};
   }
   // §3.5: reach against V_Floor and V_Wall (before packing), once both are final, and per type as soon as the
   // type has grown, beside the other types' reduction (in an update, beside a floor's chain of packings).

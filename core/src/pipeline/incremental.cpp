@@ -443,8 +443,9 @@ std::span<const std::unique_ptr<detail::SearchCache>> searched_storeys(const det
 }  // namespace
 
 std::size_t IncrementalAnalysis::area_bands_searched() const {
+  if (reused_) return 0;
   std::size_t n = 0;
-  for (const auto& cache : searched_storeys(*caches_, result_)) n += reused_ ? 0 : cache->bands_searched();
+  for (const auto& cache : searched_storeys(*caches_, result_)) n += cache->bands_searched();
   return n;
 }
 

@@ -25,11 +25,15 @@ std::vector<int> flood_tops(const VoxelGrid& grid, const FloorCeiling& levels, c
   const GridSpec& s = grid.spec;
   std::vector<int> highest(s.column_count(), -1);
   const int lo = std::max(levels.floor + 1, 0), hi = std::min(top, s.ny) - 1;
-  if (hi < lo) return highest;
+  if (hi < lo || hi < reach) return highest;  // no run rises to `reach`
+  // A column empty over every level, [lo, hi], is one run that is seeded and rises to `reach`: its part counts,
+  // and so does every run it touches. Most of a room's free columns are such a column (`open`, their highest
+  // level found at once); the runs of the others (under a table, over furniture, beside a wall) are listed.
   struct Run {
     int y0, y1;
   };
   std::vector<Run> runs;
+  std::vector<std::uint8_t> open(s.column_count(), 0);
   std::vector<std::size_t> first(s.column_count() + 1, 0);  // runs of column c: [first[c], first[c + 1])
   for (std::size_t col = 0; col < s.column_count(); ++col) {
     first[col] = runs.size();
@@ -47,14 +51,20 @@ std::vector<int> flood_tops(const VoxelGrid& grid, const FloorCeiling& levels, c
         if (word != 0) break;
       }
       while (y <= hi && !v[y]) ++y;
+      if (y0 == lo && y > hi) {
+        open[col] = 1, highest[col] = hi;
+        break;
+      }
       runs.push_back({y0, y - 1});
     }
   }
   first[s.column_count()] = runs.size();
-  // The parts, as union-find over the runs in column order: each run joins the runs it touches in the columns
-  // before it along x and z. Every part is then what a flood from any of its runs reaches; a part holds a seed
-  // where one of its runs starts just above the floor. One sequential pass, not a flood's stack.
+  // The listed runs' parts, as union-find in column order: each run joins the runs it touches in the columns
+  // before it along x and z, and is marked where it touches an open column. Every part is then what a flood from
+  // any of its runs reaches; a part holds a seed where one of its runs starts just above the floor. One
+  // sequential pass, not a flood's stack.
   std::vector<std::size_t> parent(runs.size());
+  std::vector<std::uint8_t> counts(runs.size(), 0);  // per run, then per root: it touches an open column
   const auto root = [&](std::size_t r) {
     while (parent[r] != r) r = parent[r] = parent[parent[r]];
     return r;
@@ -63,28 +73,32 @@ std::vector<int> flood_tops(const VoxelGrid& grid, const FloorCeiling& levels, c
     a = root(a), b = root(b);
     if (a != b) parent[std::max(a, b)] = std::min(a, b);
   };
-  const auto join_touching = [&](std::size_t r, std::size_t col) {  // r and the runs of `col` that share a level
-    for (std::size_t q = first[col]; q < first[col + 1]; ++q)
-      if (runs[q].y0 <= runs[r].y1 && runs[r].y0 <= runs[q].y1) join(q, r);
+  const std::size_t nx = std::size_t(s.nx), columns = s.column_count();
+  const auto touches = [&](std::size_t r, std::size_t col, bool before) {  // run r and the column `col` beside it
+    if (open[col]) counts[r] = 1;
+    for (std::size_t q = first[col]; before && q < first[col + 1]; ++q)
+      if (runs[q].y0 <= runs[r].y1 && runs[r].y0 <= runs[q].y1) join(q, r);  // runs after r join it in turn
   };
-  const std::size_t nx = std::size_t(s.nx);
-  for (std::size_t col = 0; col < s.column_count(); ++col)
+  for (std::size_t col = 0; col < columns; ++col)
     for (std::size_t r = first[col]; r < first[col + 1]; ++r) {
       parent[r] = r;
-      if (col % nx > 0) join_touching(r, col - 1);
-      if (col >= nx) join_touching(r, col - nx);
+      if (col % nx > 0) touches(r, col - 1, true);
+      if (col % nx + 1 < nx) touches(r, col + 1, false);
+      if (col >= nx) touches(r, col - nx, true);
+      if (col + nx < columns) touches(r, col + nx, false);
     }
-  std::vector<int> part_top(runs.size(), -1);  // per root: its highest level, where the part holds a seed
+  std::vector<int> part_top(runs.size(), -1);  // per root: its highest level
   std::vector<std::uint8_t> seeded(runs.size(), 0);
   for (std::size_t r = 0; r < runs.size(); ++r) {
     const std::size_t p = root(r);
     part_top[p] = std::max(part_top[p], runs[r].y1);
     if (runs[r].y0 == lo) seeded[p] = 1;
+    if (counts[r]) counts[p] = 1;
   }
-  for (std::size_t col = 0; col < s.column_count(); ++col)
+  for (std::size_t col = 0; col < columns; ++col)
     for (std::size_t r = first[col]; r < first[col + 1]; ++r) {
       const std::size_t p = root(r);
-      if (seeded[p] && part_top[p] >= reach) highest[col] = std::max(highest[col], runs[r].y1);
+      if (counts[p] || (seeded[p] && part_top[p] >= reach)) highest[col] = std::max(highest[col], runs[r].y1);
     }
   return highest;
 }

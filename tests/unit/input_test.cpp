@@ -5,6 +5,7 @@
 #include "roomsense/input.h"
 #include "roomsense/scan.h"
 #include "roomsense/synthetic.h"
+#include "../../core/src/input/input_view.h"
 
 #include <gtest/gtest.h>
 
@@ -149,6 +150,52 @@ TEST(PrepareInput, OutlierRangesAreTheExactQuantiles) {
     EXPECT_EQ(in.lo, lo) << seed;
     EXPECT_EQ(in.hi, hi) << seed;
     EXPECT_EQ(in.lo.x, x.first) << seed;  // the vertices at the range's end are kept
+  }
+}
+
+// An IncrementalAnalysis's input checks try the previous analysis's quantile bounds first (input_view.h): a guess
+// that serves leaves the ranges those of a search afresh, and one that does not (past every value, inside the
+// data, the wrong way round, from another scan) is replaced by the bounds sampled afresh, with the same ranges.
+TEST(PrepareInput, QuantileGuessesChangeTheWorkNotTheRanges) {
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> uniform(0.0f, 10.0f);
+    std::uniform_int_distribution<int> step(0, 20);
+    Scan scan;
+    for (std::size_t i = 0; i < 16000; ++i) {  // x continuous, y tied at the floor, z tied at the top
+      const float y = i % 3 == 0 ? 0.0f : 0.5f * float(step(random));
+      scan.vertices.push_back({uniform(random), y, i % 4 == 0 ? 10.0f : uniform(random)});
+    }
+    for (int i = 0; i < 3; ++i) scan.vertices.push_back({-100.0f, 300.0f, 1.0f});
+    const PreparedInput expected = prepare_input(scan);
+    ASSERT_EQ(expected.outlier_vertices, 3u);
+    const auto same = [&](detail::QuantileGuess& guess) {
+      const detail::InputView view = detail::view_input(scan, true, nullptr, 2, &guess);
+      EXPECT_EQ(view.checked.outlier_vertices, expected.outlier_vertices) << seed;
+      EXPECT_EQ(view.checked.lo, expected.lo) << seed;
+      EXPECT_EQ(view.checked.hi, expected.hi) << seed;
+    };
+    detail::QuantileGuess sampled;
+    same(sampled);
+    for (const detail::QuantileBounds& axis : sampled.axes) ASSERT_TRUE(axis.has_value()) << seed;
+    // On the continuous axis, bounds a little inside the sampled ones still leave few values past them: they
+    // serve, and stay.
+    detail::QuantileGuess near = sampled;
+    near.axes[0] = std::pair(std::nextafter(near.axes[0]->first, INFINITY), std::nextafter(near.axes[0]->second, -INFINITY));
+    const detail::QuantileGuess near_before = near;
+    same(near);
+    EXPECT_EQ(near.axes, near_before.axes) << seed;
+    EXPECT_NE(near.axes, sampled.axes) << seed;
+    // Guesses that cannot serve: each is replaced by the sampled bounds.
+    const std::array<std::pair<float, float>, 5> bad = {std::pair(-1e30f, 1e30f), std::pair(4.0f, 6.0f),
+                                                         std::pair(6.0f, 4.0f), std::pair(0.0f, 0.0f),
+                                                         std::pair(9.9f, 10.0f)};
+    for (const auto& bounds : bad) {
+      detail::QuantileGuess guess;
+      guess.axes.fill(bounds);
+      same(guess);
+      EXPECT_EQ(guess.axes, sampled.axes) << seed << " " << bounds.first << " " << bounds.second;
+    }
   }
 }
 

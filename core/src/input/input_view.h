@@ -3,7 +3,10 @@
 #pragma once
 #include "roomsense/input.h"
 
+#include <array>
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <span>
 #include <vector>
 
@@ -36,8 +39,19 @@ struct KnownInput {
   bool indices_in_range = false;
 };
 
+// Where the outlier quantiles of each axis were found last: bounds with a few sampled values below the first and
+// above the second. An IncrementalAnalysis keeps them for its next analysis, whose scan changed by a chunk or
+// two: the selection tries them before it samples bounds afresh. The values' counts decide whether they serve,
+// so a guess changes the work, never the ranges.
+using QuantileBounds = std::optional<std::pair<float, float>>;
+struct QuantileGuess {
+  std::array<QuantileBounds, 3> axes;
+};
+
 // prepare_input's checks and errors; the views are valid while `scan` and the result live. `known`, where not
-// null, must describe `scan` (runs that do not cover its vertices exactly are ignored).
-InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* known = nullptr, unsigned threads = 1);
+// null, must describe `scan` (runs that do not cover its vertices exactly are ignored). `guess`, where not null,
+// is tried and updated (above).
+InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* known = nullptr, unsigned threads = 1,
+                     QuantileGuess* guess = nullptr);
 
 }  // namespace roomsense::detail

@@ -24,20 +24,15 @@ bool finite(const glm::vec3& v) { return int(finite(v.x)) + int(finite(v.y)) + i
 // vectorizes), and a second gathers the few past a bound where more than k are. Where more than k values lie
 // past a bound, the k-th is among those few; where the bound's own ties reach past k, it is the bound (a scan's
 // floor or walls: many equal values); else nth_element over all of `v`.
-std::pair<float, float> both_tails(std::vector<float>& v, std::size_t k) {
+// `guess`, where it holds bounds, is tried first (an IncrementalAnalysis's previous bounds: its scan changed by a
+// chunk); the counts decide whether they serve, so a guess changes the work, never the values. It receives the
+// bounds that served.
+std::pair<float, float> both_tails(std::vector<float>& v, std::size_t k, detail::QuantileBounds* guess) {
   constexpr std::size_t kStride = 8;
   const std::size_t n = v.size(), sample_rank = 2 * (k / kStride) + 8;  // about twice k's share of the sample
   std::optional<float> lo, hi;
-  if (n >= 64 * kStride && 4 * sample_rank < n / kStride && n <= std::numeric_limits<std::uint32_t>::max()) {
-    std::vector<float> sample;
-    sample.reserve(n / kStride + 1);
-    for (std::size_t i = 0; i < n; i += kStride) sample.push_back(v[i]);
-    const auto at = [&](std::size_t rank) {
-      std::nth_element(sample.begin(), sample.begin() + std::ptrdiff_t(rank), sample.end());
-      return sample[rank];
-    };
-    // The low bound is at most the high one (ranks well apart), so no value lies past both.
-    const float low_bound = at(sample_rank), high_bound = at(sample.size() - 1 - sample_rank);
+  // lo and hi from bounds low <= high: those of them that `most` or fewer values past a bound give.
+  const auto from_bounds = [&](float low_bound, float high_bound, std::size_t most) {
     std::uint32_t below = 0, above = 0, low_ties = 0, high_ties = 0;  // 32 bits: four lanes to a register
     for (const float x : v) {
       below += x < low_bound;
@@ -45,11 +40,13 @@ std::pair<float, float> both_tails(std::vector<float>& v, std::size_t k) {
       low_ties += x == low_bound;
       high_ties += x == high_bound;
     }
+    const bool gather_below = below > k && below <= most, gather_above = above > k && above <= most;
     // The values past either bound, where more than k lie past one: by blocks of 16, most of which hold none of
-    // them, a test of the block (it vectorizes), then its values.
+    // them, a test of the block (it vectorizes), then its values without a branch (each written, then kept by
+    // moving on: where they lie in a block is not predictable), into one slot more than there are.
     std::vector<float> lower, upper;
-    if (below > k || above > k) {
-      lower.resize(below), upper.resize(above);
+    if (gather_below || gather_above) {
+      lower.resize(std::size_t(below) + 1), upper.resize(std::size_t(above) + 1);
       constexpr std::size_t kBlock = 16;
       float* l = lower.data();
       float* u = upper.data();
@@ -57,23 +54,46 @@ std::pair<float, float> both_tails(std::vector<float>& v, std::size_t k) {
         const std::size_t end = std::min(n, begin + kBlock);
         std::uint32_t past = 0;
         for (std::size_t i = begin; i < end; ++i) past |= std::uint32_t(v[i] < low_bound) | std::uint32_t(v[i] > high_bound);
-        for (std::size_t i = begin; past != 0 && i < end; ++i) {
-          if (v[i] < low_bound) *l++ = v[i];
-          if (v[i] > high_bound) *u++ = v[i];
+        if (past == 0) continue;
+        for (std::size_t i = begin; i < end; ++i) {
+          const float x = v[i];
+          *l = x, l += x < low_bound;
+          *u = x, u += x > high_bound;
         }
       }
     }
-    if (below > k) {
-      std::nth_element(lower.begin(), lower.begin() + std::ptrdiff_t(k), lower.end());
+    if (gather_below) {
+      std::nth_element(lower.begin(), lower.begin() + std::ptrdiff_t(k), lower.begin() + std::ptrdiff_t(below));
       lo = lower[k];
-    } else if (below + low_ties > k) {
+    } else if (below <= k && below + low_ties > k) {
       lo = low_bound;
     }
-    if (above > k) {
-      std::nth_element(upper.begin(), upper.begin() + std::ptrdiff_t(k), upper.end(), std::greater<float>());
+    if (gather_above) {
+      std::nth_element(upper.begin(), upper.begin() + std::ptrdiff_t(k), upper.begin() + std::ptrdiff_t(above),
+                       std::greater<float>());
       hi = upper[k];
-    } else if (above + high_ties > k) {
+    } else if (above <= k && above + high_ties > k) {
       hi = high_bound;
+    }
+  };
+  if (n >= 64 * kStride && 4 * sample_rank < n / kStride && n <= std::numeric_limits<std::uint32_t>::max()) {
+    // A guess serves where each tail has at most about twice the values past it that the sample's bounds leave.
+    if (guess && *guess && (*guess)->first <= (*guess)->second) {
+      from_bounds((*guess)->first, (*guess)->second, 2 * (sample_rank + 1) * kStride);
+      if (!lo || !hi) lo.reset(), hi.reset();
+    }
+    if (!lo) {
+      std::vector<float> sample;
+      sample.reserve(n / kStride + 1);
+      for (std::size_t i = 0; i < n; i += kStride) sample.push_back(v[i]);
+      const auto at = [&](std::size_t rank) {
+        std::nth_element(sample.begin(), sample.begin() + std::ptrdiff_t(rank), sample.end());
+        return sample[rank];
+      };
+      // The low bound is at most the high one (ranks well apart), so no value lies past both.
+      const float low_bound = at(sample_rank), high_bound = at(sample.size() - 1 - sample_rank);
+      from_bounds(low_bound, high_bound, n);
+      if (guess) *guess = lo && hi ? detail::QuantileBounds(std::pair(low_bound, high_bound)) : std::nullopt;
     }
   }
   if (!lo) {
@@ -89,21 +109,30 @@ std::pair<float, float> both_tails(std::vector<float>& v, std::size_t k) {
 
 // The [q, 1-q] quantiles of each axis over the kept vertices (`keep` empty: all), widened by the outlier margin.
 // Quantiles of an evenly strided sample of at most kQuantileSample vertices are as good for this and keep large
-// scans cheap. The sample is gathered in one pass (a strided read touches every cache line of the vertices);
-// the axes' selections run side by side.
+// scans cheap. The sample is gathered in one pass (a strided read touches every cache line of the vertices), by
+// slices side by side where every vertex is kept; the axes' selections run side by side.
 constexpr std::size_t kQuantileSample = 16384;
 std::array<std::pair<float, float>, 3> robust_ranges(const std::vector<glm::vec3>& vertices,
-                                                     const std::vector<std::uint8_t>& keep, unsigned threads) {
+                                                     const std::vector<std::uint8_t>& keep, unsigned threads,
+                                                     detail::QuantileGuess* guess) {
   std::array<std::vector<float>, 3> values;
   const std::size_t stride = std::max<std::size_t>(1, vertices.size() / kQuantileSample);
-  for (std::vector<float>& axis : values) axis.resize((vertices.size() + stride - 1) / stride);
-  std::size_t taken = 0;
-  for (std::size_t i = 0; i < vertices.size(); i += stride)
-    if (keep.empty() || keep[i]) {
-      for (int axis = 0; axis < 3; ++axis) values[std::size_t(axis)][taken] = vertices[i][axis];
-      ++taken;
-    }
-  for (std::vector<float>& axis : values) axis.resize(taken);
+  const std::size_t sampled = (vertices.size() + stride - 1) / stride;
+  for (std::vector<float>& axis : values) axis.resize(sampled);
+  if (keep.empty()) {  // every vertex kept (the usual scan): sample j is vertex j * stride, gathered side by side
+    detail::parallel_for(sampled, threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
+      for (std::size_t j = begin; j < end; ++j)
+        for (int axis = 0; axis < 3; ++axis) values[std::size_t(axis)][j] = vertices[j * stride][axis];
+    });
+  } else {
+    std::size_t taken = 0;
+    for (std::size_t i = 0; i < vertices.size(); i += stride)
+      if (keep[i]) {
+        for (int axis = 0; axis < 3; ++axis) values[std::size_t(axis)][taken] = vertices[i][axis];
+        ++taken;
+      }
+    for (std::vector<float>& axis : values) axis.resize(taken);
+  }
   std::array<std::pair<float, float>, 3> ranges;
   detail::parallel_tasks(3, threads, [&](std::size_t axis) {
     std::vector<float>& v = values[axis];
@@ -113,7 +142,7 @@ std::array<std::pair<float, float>, 3> robust_ranges(const std::vector<glm::vec3
     }
     // The k-th smallest and the k-th largest.
     const std::size_t k = std::size_t(double(v.size() - 1) * kOutlierQuantile);
-    const auto [lo, hi] = both_tails(v, k);
+    const auto [lo, hi] = both_tails(v, k, guess ? &guess->axes[axis] : nullptr);
     const float margin = std::max(kOutlierMinMargin, hi - lo);
     ranges[axis] = {lo - margin, hi + margin};
   });
@@ -160,9 +189,10 @@ bool covers(std::span<const detail::VertexRun> runs, std::size_t vertices) {
 
 // prepare_input but for copying the scan's arrays where nothing was removed: returns whether it renumbered
 // (then `out` holds the kept vertices and triangles). The bounds are those of the kept vertices either way.
-// The three axes' outlier ranges are sampled on up to `threads` threads (the same ranges on any number).
+// The three axes' outlier ranges are sampled on up to `threads` threads (the same ranges on any number), from
+// `guess` where it serves (view_input).
 bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, const detail::KnownInput* known,
-                 unsigned threads) {
+                 unsigned threads, detail::QuantileGuess* guess) {
   if (scan.vertices.empty()) throw Error(ErrorCode::EmptyInput, "the scan has no vertices");
   if (scan.vertices.size() > std::numeric_limits<std::uint32_t>::max())
     throw Error(ErrorCode::BadIndices, "the scan has more vertices than 32-bit indices can address");
@@ -230,7 +260,7 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
   if (out.skipped_vertices != 0) make_keep();
 
   if (reject_outliers && finite_count >= kOutlierMinVertices) {
-    const std::array<std::pair<float, float>, 3> range = robust_ranges(scan.vertices, keep, threads);
+    const std::array<std::pair<float, float>, 3> range = robust_ranges(scan.vertices, keep, threads, guess);
     std::size_t first = 0;
     for (const detail::VertexRun& run : runs) {
       // A run whose finite vertices' bounds lie within the ranges has no outlier.
@@ -272,7 +302,7 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
 
 PreparedInput prepare_input(const Scan& scan, bool reject_outliers) {
   PreparedInput out;
-  if (!check_input(scan, reject_outliers, out, nullptr, 1)) {
+  if (!check_input(scan, reject_outliers, out, nullptr, 1, nullptr)) {
     out.vertices = scan.vertices;
     out.indices = scan.indices;
   }
@@ -304,9 +334,10 @@ VertexRun summarize_vertices(std::span<const glm::vec3> vertices) {
   return run;
 }
 
-InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* known, unsigned threads) {
+InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* known, unsigned threads,
+                     QuantileGuess* guess) {
   InputView view;
-  const bool renumbered = check_input(scan, reject_outliers, view.checked, known, threads);
+  const bool renumbered = check_input(scan, reject_outliers, view.checked, known, threads, guess);
   view.vertices = renumbered ? std::span<const glm::vec3>(view.checked.vertices) : std::span<const glm::vec3>(scan.vertices);
   view.indices = renumbered ? std::span<const std::uint32_t>(view.checked.indices) : std::span<const std::uint32_t>(scan.indices);
   return view;

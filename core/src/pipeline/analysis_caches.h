@@ -67,6 +67,7 @@ struct AnalysisCaches {
   std::uint64_t horizontal_serial = 0;
   CombinedScan combined;
   ChunkBandSums band_sums;  // of `combined`
+  QuantileGuess quantiles;  // where the latest analysis's input checks found the outlier quantiles
   std::vector<MeshMemo> bounds;  // the home's bounds mesh, then each room's (AnalysisResult::room_bounds)
   // The IncrementalAnalysis's voxel stage. analyze() gives it `combined` as it is in triangle mode with
   // VoxelizeRequest::grid_vertices left empty, and nothing else so: it maps the chunks it voxelizes again itself.

@@ -157,7 +157,8 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   // An IncrementalAnalysis's combined scan: what it knows of each chunk.
   const CombinedScan* chunks = caches != nullptr && &scan == &caches->combined.scan ? &caches->combined : nullptr;
   const detail::InputView in =
-      detail::view_input(scan, options.reject_outliers, chunks ? &chunks->known : nullptr, options.threads);
+      detail::view_input(scan, options.reject_outliers, chunks ? &chunks->known : nullptr, options.threads,
+                         caches ? &caches->quantiles : nullptr);
   const PreparedInput& checked = in.checked;
   r.input = {checked.input_vertices, checked.input_triangles, checked.skipped_vertices, checked.outlier_vertices,
              checked.dropped_triangles};

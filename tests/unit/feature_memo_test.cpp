@@ -1,7 +1,7 @@
 // FeatureMemo (core/src/features/feature_memo.h, internal): detect_features through an IncrementalAnalysis's
 // memo of its whole-storey steps, column steps, wall normals and openings equals detect_features on its own,
-// over a run of grids that add and take away furniture, a window and a wall, and with a memo whose grid is not
-// the one before; a local change derives no whole-storey step again, and few columns.
+// over a run of grids that add and take away furniture, a window, a wall and a door, and with a memo whose grid
+// is not the one before; a local change derives no whole-storey step again, and few columns.
 #include "../../core/src/features/feature_memo.h"
 #include "roomsense/synthetic.h"
 #include "same_features.h"

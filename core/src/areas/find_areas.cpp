@@ -206,7 +206,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   const auto finish_walls_for_reach = [&] {
     const auto place = [&](const Sized& s) { return ReachWall(to_area(s, AreaType::Wall, context)); };
     if (cache) {
-      wall_areas = cache->reach_walls(red[0].for_reach, place);
+      wall_areas = cache->reach_walls(reused[0] ? reused[0]->for_reach : red[0].for_reach, place);
     } else {
       for (const Sized& s : red[0].for_reach) wall_areas.push_back(place(s));
       red[0].for_reach = {};
@@ -259,8 +259,10 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     if (size + 1 < kAreaSizes.size()) return;
     wall_deduplicator.reset();
     normals = NormalCounts();  // the last wall search has ended
-    if (reused[0]) red[0].for_reach = reused[0]->for_reach, red[0].deduplicated = reused[0]->deduplicated;
-    dominant_deg = red[0].dominant_deg = dominant_direction_deg(red[0].for_reach);
+    // Walls taken whole give the main direction they gave (their V_Wall is read where it is kept, not copied):
+    // every square search waits for this task.
+    if (reused[0]) red[0].deduplicated = reused[0]->deduplicated, dominant_deg = reused[0]->dominant_deg;
+    else dominant_deg = red[0].dominant_deg = dominant_direction_deg(red[0].for_reach);
     reuse_squares();
   };
   // A wall's corners lie at levels from the normals' first less its height (Eq. 3.20, one more for rounding)

@@ -165,9 +165,9 @@ void detail::update_wall_openings(const VoxelGrid& grid, const FloorCeiling& lev
                                   std::span<const std::uint32_t> changed, std::vector<std::uint8_t>& blocked) {
   if (changed.empty()) return;
   const GridSpec& s = grid.spec;
-  // The columns done again lie within the depth of a changed one along an axis; block() reads the doors of the
-  // columns beside them: those of the lines a column further out.
-  const int reach = std::max(Openings::depth(recess_voxels), 1) + 1;
+  // The columns done again lie within the depth (at least 1) of a changed one along an axis; block() reads the
+  // doors of the columns beside them: those of the lines a column further out.
+  const int reach = Openings::depth(recess_voxels) + 1;
   Openings::Lines lines{s.nz, -1, s.nx, -1};
   for (const std::uint32_t c : changed) {
     const int x = int(c % std::uint32_t(s.nx)), z = int(c / std::uint32_t(s.nx));

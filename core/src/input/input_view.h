@@ -6,8 +6,8 @@
 #include <array>
 #include <cmath>
 #include <optional>
-#include <utility>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace roomsense::detail {

@@ -144,6 +144,43 @@ TEST(SearchCache, AFloorsReachPlaceIsKeptWhileTheGridIs) {
   EXPECT_EQ(third.calls, 2u);
 }
 
+TEST(SearchCache, AReachListAsItWasIsTheCachesOwnAndCanChangeAgain) {
+  const GridSpec s = grid();
+  SearchCache cache;
+  RoomFeatures features = empty_features(s);
+  const std::vector<Sized> walls = {wall_at(4, 4), wall_at(30, 30)};
+  cache.begin(s, features);
+  Marked<ReachWall> first{1.0f};
+  const std::vector<ReachWall>* before = &cache.reach_walls(walls, std::ref(first));
+
+  // Nothing changed, the same list: the list kept, neither placed nor copied again.
+  cache.begin(s, features);
+  Marked<ReachWall> second{2.0f};
+  const std::vector<ReachWall>& same = cache.reach_walls(walls, std::ref(second));
+  EXPECT_EQ(&same, before);
+  EXPECT_EQ(second.calls, 0u);
+  ASSERT_EQ(same.size(), 2u);
+  EXPECT_EQ(same[1].center.x, 1.0f);
+
+  // The next analysis after that one still knows the list: a wall added is the only one placed.
+  cache.begin(s, features);
+  Marked<ReachWall> third{3.0f};
+  const std::vector<ReachWall> grown = cache.reach_walls({walls[0], walls[1], wall_at(40, 10)}, std::ref(third));
+  EXPECT_EQ(third.calls, 1u);
+  ASSERT_EQ(grown.size(), 3u);
+  EXPECT_EQ(grown[0].center.x, 1.0f);
+  EXPECT_EQ(grown[2].center.x, 3.0f);
+
+  // A wall normal changes next to the first wall: that wall is placed again though the list is the same.
+  features.normals[s.index(5, 4, 4)] = kNormalForward;
+  cache.begin(s, features);
+  Marked<ReachWall> fourth{4.0f};
+  const std::vector<ReachWall> near = cache.reach_walls({walls[0], walls[1], wall_at(40, 10)}, std::ref(fourth));
+  EXPECT_EQ(fourth.calls, 1u);
+  EXPECT_EQ(near[0].center.x, 4.0f);
+  EXPECT_EQ(near[1].center.x, 1.0f);
+}
+
 // Floor squares on a free-floor mask (a column's cell Usable where its mask is set, Forbidden off the grid).
 GrowthRule rule_over(const GridSpec& s, const std::vector<std::uint8_t>& free, std::size_t* reads) {
   GrowthRule rule;

@@ -197,26 +197,29 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   // packing left free (grow.h), per type in the task of its last packing, so that no type waits for the others'.
   // Reach reads the deduplicated walls and floors; of ceilings and furniture only the count is kept.
   const PlacementContext context{spec, features, surfaces, feature_params};
-  std::vector<ReachWall> wall_areas;
+  // V_Wall's and V_Floor's areas: made here, or the cache's lists read in place.
+  std::vector<ReachWall> own_wall_areas;
+  const std::vector<ReachWall>* wall_areas = &own_wall_areas;
   std::shared_ptr<const WallSegments> wall_segments;  // of wall_areas, for reach
-  std::vector<ReachFloor> floor_areas;
+  std::vector<ReachFloor> own_floor_areas;
+  const std::vector<ReachFloor>* floor_areas = &own_floor_areas;
   std::array<std::vector<Area>, 4> kept_areas;
   // The areas in metres of what the reduction keeps; each type's grown (grow.h).
   // Without a cache the lists in voxels go once in metres (a large floor's are many).
   const auto finish_walls_for_reach = [&] {
     const auto place = [&](const Sized& s) { return ReachWall(to_area(s, AreaType::Wall, context)); };
     if (cache) {
-      wall_areas = cache->reach_walls(reused[0] ? reused[0]->for_reach : red[0].for_reach, place);
+      wall_areas = &cache->reach_walls(reused[0] ? reused[0]->for_reach : red[0].for_reach, place);
     } else {
-      for (const Sized& s : red[0].for_reach) wall_areas.push_back(place(s));
+      for (const Sized& s : red[0].for_reach) own_wall_areas.push_back(place(s));
       red[0].for_reach = {};
     }
-    wall_segments = reach_segments(wall_areas, cache ? &cache->reach_memo() : nullptr);
+    wall_segments = reach_segments(*wall_areas, cache ? &cache->reach_memo() : nullptr);
   };
   const auto finish_floors_for_reach = [&](const std::vector<Sized>& for_reach) {
     const auto place = [&](const Sized& s) { return reach_floor(s, context); };
-    if (cache) floor_areas = cache->reach_floors(for_reach, place);
-    else for (const Sized& s : for_reach) floor_areas.push_back(place(s));
+    if (cache) floor_areas = &cache->reach_floors(for_reach, place);
+    else for (const Sized& s : for_reach) own_floor_areas.push_back(place(s));
   };
   const auto finish = [&](std::size_t type) {
     std::vector<Area>& areas = kept_areas[type];
@@ -307,7 +310,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     red[type].deduplicated += deduplicators[type]->add(found[type][size], kAreaSizes[size], [&](const Sized& s) {
       if (type != 1) return;
       if (cache) red[type].for_reach.push_back(s);
-      else floor_areas.push_back(reach_floor(s, context));
+      else own_floor_areas.push_back(reach_floor(s, context));
     });
     release(type, size);
     if (size + 1 < kAreaSizes.size()) return;
@@ -428,7 +431,7 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   const std::size_t reach_view_task = tasks.size();
   after.push_back({finish_walls_task, deduplication_task[1][kAreaSizes.size() - 1]});
   tasks.push_back([&] {
-    reach_view.emplace(floor_areas, wall_areas, params, cache ? &cache->reach_memo() : nullptr, std::move(wall_segments));
+    reach_view.emplace(*floor_areas, *wall_areas, params, cache ? &cache->reach_memo() : nullptr, std::move(wall_segments));
   });
   std::vector<std::size_t> reach_tasks;
   for (std::size_t type = 0; type < 4; ++type) {

@@ -470,13 +470,20 @@ ChangedRegion SearchCache::changed_columns(std::size_t type) const {
 }
 
 template <class Reach>
-std::vector<Reach> SearchCache::place_for_reach(Placed<Reach>& kept, const std::vector<Sized>& for_reach, bool walls,
-                                                const std::function<Reach(const Sized&)>& place) {
+const std::vector<Reach>& SearchCache::place_for_reach(Placed<Reach>& kept, const std::vector<Sized>& for_reach,
+                                                       bool walls, const std::function<Reach(const Sized&)>& place) {
   const bool known = !all_changed_ && kept.generation + 1 == generation_;
   const auto same = [](const Sized& a, const Sized& b) { return a.packed == b.packed && a.size == b.size; };
   // A wall's place reads the features within two columns of its corners (ChangedRegion::around).
   std::optional<ChangedRegion> changed;
   if (known && walls && any_changed(changed_rows_[0])) changed = changed_columns(0);
+  // The same list, each rectangle's place reading nothing changed (an update away from the walls): the areas as
+  // they were, neither placed nor copied again.
+  if (known && !changed &&
+      std::equal(for_reach.begin(), for_reach.end(), kept.rectangles.begin(), kept.rectangles.end(), same)) {
+    kept.generation = generation_;
+    return kept.areas;
+  }
   // The previous rectangles by their numbers, made at the first that is not where it was (the lists mostly
   // keep their order).
   FirstIndex where;
@@ -501,17 +508,17 @@ std::vector<Reach> SearchCache::place_for_reach(Placed<Reach>& kept, const std::
     const bool reuse = j != FirstIndex::kAbsent && (!changed || !changed->touches(ChangedRegion::around(s.c())));
     out.push_back(reuse ? kept.areas[j] : place(s));
   }
-  kept = {generation_, for_reach, out};
-  return out;
+  kept = {generation_, for_reach, std::move(out)};
+  return kept.areas;
 }
 
-std::vector<ReachFloor> SearchCache::reach_floors(const std::vector<Sized>& for_reach,
-                                                  const std::function<ReachFloor(const Sized&)>& place) {
+const std::vector<ReachFloor>& SearchCache::reach_floors(const std::vector<Sized>& for_reach,
+                                                         const std::function<ReachFloor(const Sized&)>& place) {
   return place_for_reach(floors_for_reach_, for_reach, false, place);
 }
 
-std::vector<ReachWall> SearchCache::reach_walls(const std::vector<Sized>& for_reach,
-                                                const std::function<ReachWall(const Sized&)>& place) {
+const std::vector<ReachWall>& SearchCache::reach_walls(const std::vector<Sized>& for_reach,
+                                                       const std::function<ReachWall(const Sized&)>& place) {
   return place_for_reach(walls_for_reach_, for_reach, true, place);
 }
 

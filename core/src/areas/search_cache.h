@@ -62,11 +62,12 @@ class SearchCache {
   // V_Wall's (type 0) and V_Floor's (type 1) areas for reach: `for_reach` in metres by `place` (to_area), a
   // rectangle the previous analysis placed taken from it where its place reads nothing changed. A floor's reads
   // its rectangle and the grid alone (not the floor's height: reach reads X-Z); a wall's also the wall normals
-  // and wall columns around it (to_area's wall_normal). Calls for the two may run side by side.
-  std::vector<ReachFloor> reach_floors(const std::vector<Sized>& for_reach,
-                                       const std::function<ReachFloor(const Sized&)>& place);
-  std::vector<ReachWall> reach_walls(const std::vector<Sized>& for_reach,
-                                     const std::function<ReachWall(const Sized&)>& place);
+  // and wall columns around it (to_area's wall_normal). Calls for the two may run side by side. The list is the
+  // cache's, valid until the next call for the same type.
+  const std::vector<ReachFloor>& reach_floors(const std::vector<Sized>& for_reach,
+                                              const std::function<ReachFloor(const Sized&)>& place);
+  const std::vector<ReachWall>& reach_walls(const std::vector<Sized>& for_reach,
+                                            const std::function<ReachWall(const Sized&)>& place);
   // Packing (reduce.h) of the list walls() or squares() returned for (type, size) in this analysis: its replay
   // against the previous analysis's packing, or nullptr where that is not known; and what it packed (indices
   // into the list) and, for squares, each one's rank, recorded for the next analysis.
@@ -150,7 +151,7 @@ class SearchCache {
     std::vector<Reach> areas;
   };
   template <class Reach>
-  std::vector<Reach> place_for_reach(Placed<Reach>& kept, const std::vector<Sized>& for_reach, bool walls,
+  const std::vector<Reach>& place_for_reach(Placed<Reach>& kept, const std::vector<Sized>& for_reach, bool walls,
                                      const std::function<Reach(const Sized&)>& place);
   Placed<ReachFloor> floors_for_reach_;
   Placed<ReachWall> walls_for_reach_;

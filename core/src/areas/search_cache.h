@@ -152,7 +152,7 @@ class SearchCache {
   };
   template <class Reach>
   const std::vector<Reach>& place_for_reach(Placed<Reach>& kept, const std::vector<Sized>& for_reach, bool walls,
-                                     const std::function<Reach(const Sized&)>& place);
+                                            const std::function<Reach(const Sized&)>& place);
   Placed<ReachFloor> floors_for_reach_;
   Placed<ReachWall> walls_for_reach_;
   ReachMemo reach_memo_;

@@ -2,16 +2,21 @@
 // (pack_fresh: a square whose middle sample is taken when its alignment step begins is refused without a
 // contact). An IncrementalAnalysis packs through the ranked path, which ranks them all. Both must keep the same
 // squares, size after size, on rooms off the grid's axes too, at any main direction. A replay finds each
-// rectangle's changed-region box from its shape's, exactly the box of its corners.
+// rectangle's changed-region box from its shape's, exactly the box of its corners. A rotated square's contact
+// samples, found once for its shape, fall in the cells its own samples fall in wherever it lies.
 #include "../../core/src/areas/reduce.h"
 #include "../../core/src/areas/search.h"
 #include "synthetic_fixture.h"
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <iterator>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -188,6 +193,50 @@ TEST(Packing, ContactReadsNoColumnWhereContactMayReadSaysNone) {
   }
   EXPECT_GT(differ, 500u);
   EXPECT_GT(spared, 1000u);
+}
+
+// SquarePacker::contact samples every half voxel along a rotated square's edges, 0.75 voxels outside. The cells
+// SquareSampleRuns keeps for a shape, moved to where a square lies, are the cells those samples fall in there,
+// each as often, at coordinates up to a million voxels; a shape with a sample on a cell's border has none (there
+// rounding at the square's own coordinates decides). Some shapes have (edges of 3-4-5 triangles), most do not.
+TEST(Packing, AShapesContactCellsAreTheCellsItsSamplesFallInWhereverItLies) {
+  const auto samples_at = [](const Candidate& c) {  // contact's samples, computed where c lies
+    std::map<std::pair<int, int>, int> cells;
+    const glm::dvec2 mid = glm::dvec2(corner_sum(c).x, corner_sum(c).z) * 0.25 + 0.5;
+    for (std::size_t i = 0; i < 4; ++i) {
+      const glm::dvec2 a(c.corners[i].x + 0.5, c.corners[i].z + 0.5);
+      const glm::dvec2 b(c.corners[(i + 1) % 4].x + 0.5, c.corners[(i + 1) % 4].z + 0.5);
+      const double length = glm::distance(a, b);
+      const glm::dvec2 dir = (b - a) / length;
+      glm::dvec2 out(-dir.y, dir.x);
+      if (glm::dot(out, 0.5 * (a + b) - mid) < 0.0) out = -out;
+      for (double t = 0.0; t <= length; t += 0.5) {
+        const glm::dvec2 p = a + t * dir + 0.75 * out;
+        ++cells[{int(std::floor(p.x)), int(std::floor(p.y))}];
+      }
+    }
+    return cells;
+  };
+  std::mt19937 rng(41);
+  std::uniform_int_distribution<int> edge(1, 30), sign(0, 1), coordinate(-1000000, 1000000);
+  SquareSampleRuns runs;
+  std::size_t with_cells = 0, without = 0;
+  for (int k = 0; k < 400; ++k) {
+    const int dx = edge(rng), dz = (sign(rng) ? 1 : -1) * edge(rng);
+    const glm::ivec2 shape = k % 8 == 0 ? glm::ivec2(4 * (k % 5 + 1), 3 * (k % 5 + 1)) : glm::ivec2(dx, dz);
+    for (int n = 0; n < 6; ++n) {
+      const glm::ivec3 corner(coordinate(rng), 2, coordinate(rng));
+      const Candidate c = PackedCandidate(corner, shape.x, shape.y, PackedCandidate::kSquare).unpack();
+      const auto cells = runs.contact_cells(c);
+      if (n == 0) ++(cells ? with_cells : without);
+      if (!cells) continue;
+      std::map<std::pair<int, int>, int> moved;
+      for (const SquareSampleRuns::ContactCell& cell : *cells) moved[{corner.x + cell.dx, corner.z + cell.dz}] += cell.samples;
+      EXPECT_EQ(moved, samples_at(c)) << "shape (" << shape.x << ", " << shape.y << ") at (" << corner.x << ", " << corner.z << ")";
+    }
+  }
+  EXPECT_GT(with_cells, 300u);
+  EXPECT_GT(without, 10u);
 }
 
 TEST(Packing, AReplaysBoxFromTheShapeIsTheBoxOfTheCorners) {

@@ -8,6 +8,7 @@
 #include "sample_raster.h"
 #include "roomsense/cancel.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -138,6 +139,22 @@ bool square_samples(const Candidate& c, F f) {
     if (s0 <= s1 && !f(sz, s0, s1)) return false;
   }
   return true;
+}
+
+// Contact's samples along edge i of square c (corner i to corner i + 1) where the edge runs off the grid's
+// axes: every half voxel from corner i's voxel centre, 0.75 voxels outside the square. Calls f(p) for each, in
+// voxels.
+template <class F>
+void off_axis_contact_samples(const Candidate& c, std::size_t i, F f) {
+  const glm::ivec3 sum = corner_sum(c);  // 4 x the middle
+  const glm::dvec2 mid = glm::dvec2(sum.x, sum.z) * 0.25 + 0.5;
+  const glm::dvec2 a(c.corners[i].x + 0.5, c.corners[i].z + 0.5);
+  const glm::dvec2 b(c.corners[(i + 1) % 4].x + 0.5, c.corners[(i + 1) % 4].z + 0.5);
+  const double length = glm::distance(a, b);
+  const glm::dvec2 dir = (b - a) / length;
+  glm::dvec2 out(-dir.y, dir.x);
+  if (glm::dot(out, 0.5 * (a + b) - mid) < 0.0) out = -out;
+  for (double t = 0.0; t <= length; t += kSample) f(a + t * dir + 0.75 * out);
 }
 
 // The sample cell holding a square's middle, where it is one of the square's samples. Off the grid's axes it
@@ -399,25 +416,53 @@ class SquarePacker::NonTileCounts {
   std::vector<int> along_x_, along_z_;
 };
 
-std::optional<std::span<const SquareSampleRuns::Run>> SquareSampleRuns::of(const Candidate& c) {
+const SquareSampleRuns::Shape* SquareSampleRuns::shape_of(const Candidate& c) {
   const glm::ivec3 e1 = c.corners[1] - c.corners[0], e3 = c.corners[3] - c.corners[0];
   const std::uint64_t key = pack_key(e1.x, e1.z, e3.x);  // edges lie in the grid: far below 2^20 voxels
   std::uint32_t at = index_.find(key);
   if (at == KeyTable::kAbsent) {
-    if (runs_.size() > kMaxRuns) *this = {};  // shapes of many sizes and grids: start again
+    if (runs_.size() > kMaxRuns || contacts_.size() > kMaxRuns) *this = {};  // shapes of many sizes and grids
     at = std::uint32_t(shapes_.size());
     index_.insert(key, at);
-    const std::size_t begin = runs_.size();
+    Shape shape{e1, e3, runs_.size(), 0, contacts_.size(), 0, true};
     const long x0 = 2L * c.corners[0].x, z0 = 2L * c.corners[0].z;
     square_samples(c, [&](long z, long first, long last) {
       runs_.push_back({int(z - z0), int(first - x0), int(last - x0)});
       return true;
     });
-    shapes_.push_back({e1, e3, begin, runs_.size()});
+    // The contact samples of the same square with corner 1 at (0, 0): moved by whole voxels, a sample at least
+    // kBorder from a cell's border stays in the same cell moved alike (rounding at coordinates below 2^21 moves
+    // it less than 1e-9).
+    constexpr double kBorder = 1e-6;
+    Candidate origin = c;
+    for (glm::ivec3& corner : origin.corners) corner -= c.corners[0];
+    for (std::size_t i = 0; i < 4 && e1.x != 0 && e1.z != 0; ++i)  // a square's edges: all off the axes or none
+      off_axis_contact_samples(origin, i, [&](const glm::dvec2& p) {
+        const glm::dvec2 cell = glm::floor(p), from_border = glm::min(p - cell, cell + 1.0 - p);
+        shape.contact_exact = shape.contact_exact && from_border.x >= kBorder && from_border.y >= kBorder;
+        const int dx = int(cell.x), dz = int(cell.y);
+        if (contacts_.size() > shape.contact_begin && contacts_.back().dx == dx && contacts_.back().dz == dz)
+          ++contacts_.back().samples;
+        else
+          contacts_.push_back({dx, dz, 1});
+      });
+    shape.end = runs_.size(), shape.contact_end = contacts_.size();
+    shapes_.push_back(shape);
   }
   const Shape& shape = shapes_[at];
-  if (shape.e1 != e1 || shape.e3 != e3) return std::nullopt;
-  return std::span<const Run>(runs_).subspan(shape.begin, shape.end - shape.begin);
+  return shape.e1 == e1 && shape.e3 == e3 ? &shape : nullptr;
+}
+
+std::optional<std::span<const SquareSampleRuns::Run>> SquareSampleRuns::of(const Candidate& c) {
+  const Shape* shape = shape_of(c);
+  if (!shape) return std::nullopt;
+  return std::span<const Run>(runs_).subspan(shape->begin, shape->end - shape->begin);
+}
+
+std::optional<std::span<const SquareSampleRuns::ContactCell>> SquareSampleRuns::contact_cells(const Candidate& c) {
+  const Shape* shape = shape_of(c);
+  if (!shape || !shape->contact_exact) return std::nullopt;
+  return std::span<const ContactCell>(contacts_).subspan(shape->contact_begin, shape->contact_end - shape->contact_begin);
 }
 
 // The runs of square_samples(c), in its order, until f returns false; returns whether every run was visited.
@@ -449,8 +494,16 @@ SquarePacker::SquarePacker(const GridSpec& spec, int level_tolerance, double dom
 SquarePacker::~SquarePacker() = default;
 
 // Contact: unusable cells just outside the square's edges, sampled every half voxel.
-int SquarePacker::contact(const Candidate& c) const {
+int SquarePacker::contact(const Candidate& c) {
   int n = 0;
+  const glm::ivec3 e1 = c.corners[1] - c.corners[0];
+  if (e1.x != 0 && e1.z != 0)
+    if (const std::optional<std::span<const SquareSampleRuns::ContactCell>> cells = samples_->contact_cells(c)) {
+      const int x = c.corners[0].x, z = c.corners[0].z, level = c.corners[0].y;
+      for (const SquareSampleRuns::ContactCell& cell : *cells)
+        n += is_tile_(x + cell.dx, z + cell.dz, level) ? 0 : cell.samples;
+      return n;
+    }
   const glm::ivec3 sum = corner_sum(c);  // 4 x the middle
   for (std::size_t i = 0; i < 4; ++i) {
     const glm::ivec3 e = c.corners[(i + 1) % 4] - c.corners[i];
@@ -480,17 +533,9 @@ int SquarePacker::contact(const Candidate& c) const {
                  : (j == once ? 1 : 2);
       continue;
     }
-    const glm::dvec2 mid = glm::dvec2(sum.x, sum.z) * 0.25 + 0.5;
-    const glm::dvec2 a(c.corners[i].x + 0.5, c.corners[i].z + 0.5);
-    const glm::dvec2 b(c.corners[(i + 1) % 4].x + 0.5, c.corners[(i + 1) % 4].z + 0.5);
-    const double length = glm::distance(a, b);
-    const glm::dvec2 dir = (b - a) / length;
-    glm::dvec2 out(-dir.y, dir.x);
-    if (glm::dot(out, 0.5 * (a + b) - mid) < 0.0) out = -out;
-    for (double t = 0.0; t <= length; t += kSample) {
-      const glm::dvec2 p = a + t * dir + 0.75 * out;
+    off_axis_contact_samples(c, i, [&](const glm::dvec2& p) {
       n += is_tile_(floor_int(p.x), floor_int(p.y), c.corners[0].y) ? 0 : 1;
-    }
+    });
   }
   return n;
 }

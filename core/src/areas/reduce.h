@@ -148,25 +148,37 @@ struct TileMap {
 
 // Each rotated square shape's sample runs relative to corner 1, found once: packing decides every sample with
 // exact arithmetic (corners and sample centres are multiples of 1/4), so a square moved by whole voxels has the
-// same samples moved by two cells each way. A size's squares have a few hundred shapes; an IncrementalAnalysis
-// keeps them from one analysis to the next (search_cache.h).
+// same samples moved by two cells each way. Beside them the cells its contact samples (SquarePacker::contact)
+// fall in, where they fall in the same cells wherever the square lies. A size's squares have a few hundred
+// shapes; an IncrementalAnalysis keeps them from one analysis to the next (search_cache.h).
 class SquareSampleRuns {
  public:
   struct Run {
     int dz, dx0, dx1;  // sample row and cells from 2 x corner 1's (x, z)
   };
+  struct ContactCell {
+    int dx, dz;  // from corner 1's column
+    int samples;  // contact's samples in it, one after another along an edge
+  };
   // None where c's edges are not those of the shape kept under its key (not a square's: e3 not fixed by e1).
   std::optional<std::span<const Run>> of(const Candidate& c);
+  // None there too, and where a contact sample lies so near a cell's border that rounding at c's own
+  // coordinates may move it (contact then samples c itself).
+  std::optional<std::span<const ContactCell>> contact_cells(const Candidate& c);
 
  private:
-  static constexpr std::size_t kMaxRuns = std::size_t{1} << 20;  // 12 MB
+  static constexpr std::size_t kMaxRuns = std::size_t{1} << 20;  // 12 MB, and as many contact cells
   struct Shape {
     glm::ivec3 e1, e3;
     std::size_t begin, end;  // into runs_
+    std::size_t contact_begin, contact_end;  // into contacts_
+    bool contact_exact;  // every contact sample at least kBorder from a cell's border
   };
+  const Shape* shape_of(const Candidate& c);
   KeyTable index_;
   std::vector<Shape> shapes_;
   std::vector<Run> runs_;
+  std::vector<ContactCell> contacts_;
 };
 
 // Within a size and alignment, squares pressed against more unusable cells (not tiles: walls, clutter, the
@@ -188,7 +200,7 @@ class SquarePacker {
 
  private:
   class NonTileCounts;
-  int contact(const Candidate& c) const;
+  int contact(const Candidate& c);
   int misalignment_step(const Candidate& c);
   bool free(const Candidate& c);
   // square_samples (reduce.cpp) of c by its shape's runs.

@@ -537,8 +537,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
             const int b = std::countr_zero(open);
             const std::uint64_t bit = std::uint64_t{1} << b;
             const RingOffset& o = *orientations[i];
-            const int cx = 2 * (x + b) + p;
-            const int x1 = (cx - (o.dx - o.dz)) / 2, z1 = (cz - (o.dx + o.dz)) / 2;
+            const int x1 = x + b + k.x[0] - pad, z1 = hz + k.z[0] - pad;  // corner 1 from the centre's cell
             bool rises = false;
             if (!valid(x1, z1, o, rises)) continue;
             std::uint64_t& needed = rises ? open_above[w] : open_here[w];

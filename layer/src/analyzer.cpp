@@ -5,7 +5,10 @@
 #include "capture.h"
 #include "sources/source_support.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <stdexcept>
 #include <unordered_set>
 #if ROOMSENSE_HAVE_COMPUTE
 #include "roomsense/voxel_stage_choice.h"
@@ -88,8 +91,11 @@ AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const
 }
 
 AnalysisResult analyze_pieces(IncrementalAnalysis& incremental, const std::vector<const MeshPiece*>& pieces,
-                              const std::vector<const LabelledTriangles*>& labels, float voxel_size, Backend backend,
-                              std::unique_ptr<VoxelStage>& kept_stage, std::stop_token stop) {
+                              const std::vector<const LabelledTriangles*>& labels, const std::vector<std::uint64_t>& ids,
+                              float voxel_size, Backend backend, std::unique_ptr<VoxelStage>& kept_stage,
+                              std::stop_token stop) {
+  if (ids.size() != pieces.size() || !std::is_sorted(ids.begin(), ids.end()))
+    throw std::logic_error("analyze_pieces: one ascending chunk id per piece");
   Scan merged = merge(pieces);
   if (VoxelStage* const stage = chosen_stage(merged, voxel_size, backend, kept_stage)) {  // the scan whole
     for (const LabelledTriangles* l : labels)
@@ -100,8 +106,9 @@ AnalysisResult analyze_pieces(IncrementalAnalysis& incremental, const std::vecto
     options.voxel_stage = stage;
     return analyze(merged, options);
   }
-  // Piece i is chunk i: the chunks combined in id order are merge(pieces), their labels in the same order, so
-  // the result is analyze_pieces()'s; a piece unchanged since the last analysis keeps its voxels.
+  // Piece i is chunk ids[i]: the ids ascend, so the chunks combined in id order are merge(pieces), their labels in
+  // the same order, and the result is analyze_pieces()'s; a piece unchanged since the last analysis keeps its
+  // voxels.
   std::uint32_t next_vertex = 0, next_index = 0;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     Scan chunk;
@@ -114,9 +121,11 @@ AnalysisResult analyze_pieces(IncrementalAnalysis& incremental, const std::vecto
     if (i < labels.size() && labels[i] != nullptr) chunk.labels = *labels[i];
     next_vertex += vertices;
     next_index += std::uint32_t(index_count);
-    incremental.set_chunk(i, std::move(chunk));
+    incremental.set_chunk(ids[i], std::move(chunk));
   }
-  for (std::size_t i = pieces.size(); incremental.chunk_count() > pieces.size(); ++i) incremental.remove_chunk(i);
+  // The chunks of meshes no longer served (or of a call that failed half way).
+  for (const std::uint64_t id : incremental.chunk_ids())
+    if (!std::binary_search(ids.begin(), ids.end(), id)) incremental.remove_chunk(id);
   incremental.set_stop(std::move(stop));
   const AnalysisResult& result = incremental.result();
   log_debug([&] {
@@ -212,6 +221,7 @@ void Analyzer::run(std::stop_token stop, Job job) {
   try {
     std::vector<SourceChunk> runtime;
     std::vector<MeshPiece> app_read;
+    std::vector<std::string> app_read_ids;  // the source's id of each
     if (job.include_runtime) {
       runtime = query_best_source(instance, *session_, settings_.base_space, job.time, stop, sources);
       if (stop.stop_requested()) return;
@@ -238,15 +248,30 @@ void Analyzer::run(std::stop_token stop, Job job) {
             transform_in_place(piece.vertices, capture_to_base);
             if (hashes.count(content_hash(piece)) > 0) continue;
             app_read.push_back(std::move(piece));
+            app_read_ids.push_back(c->chunk.id);
           }
           if (sources.source.empty() && !app_read.empty()) sources.source = captured.front()->source->name;
         }
       }
     }
+    // Each piece's chunk (ChunkIds), by the source's id of a runtime or application-read mesh and by the order of
+    // submission of a submitted one; the pieces are analysed in chunk order.
+    std::vector<std::string> keys;
+    for (const SourceChunk& m : runtime) keys.push_back("runtime:" + m.id);
+    for (const std::string& id : app_read_ids) keys.push_back("read:" + id);
+    for (std::size_t i = 0; i < job.submitted.size(); ++i) keys.push_back("submitted:" + std::to_string(i));
+    const std::vector<std::uint64_t> chunk_of = chunk_ids_.assign(keys);
+    std::vector<std::size_t> order(keys.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return chunk_of[a] < chunk_of[b]; });
     std::vector<const MeshPiece*> pieces;
-    for (const SourceChunk& m : runtime) pieces.push_back(&m.mesh);
-    for (const MeshPiece& m : app_read) pieces.push_back(&m);
-    for (const auto& m : job.submitted) pieces.push_back(m.get());
+    std::vector<std::uint64_t> ids;
+    for (const std::size_t i : order) {
+      pieces.push_back(i < runtime.size()                     ? &runtime[i].mesh
+                       : i < runtime.size() + app_read.size() ? &app_read[i - runtime.size()]
+                                                              : job.submitted[i - runtime.size() - app_read.size()].get());
+      ids.push_back(chunk_of[i]);
+    }
     sources.runtime_meshes = runtime.size();
     sources.app_read_meshes = app_read.size();
     sources.submitted_meshes = job.submitted.size();
@@ -270,18 +295,16 @@ void Analyzer::run(std::stop_token stop, Job job) {
     }
     // The runtime's semantics, where its source gives any: each runtime chunk's own (pieces start with them).
     std::vector<LabelledTriangles> runtime_labels(runtime.size());
+    for (std::size_t i = 0; i < runtime.size(); ++i) add_labelled(runtime_labels[i], runtime[i].mesh, runtime[i].labels);
     std::vector<const LabelledTriangles*> labels;
-    for (std::size_t i = 0; i < runtime.size(); ++i) {
-      add_labelled(runtime_labels[i], runtime[i].mesh, runtime[i].labels);
-      labels.push_back(&runtime_labels[i]);
-    }
+    for (const std::size_t i : order) labels.push_back(i < runtime.size() ? &runtime_labels[i] : nullptr);
     if (!incremental_) {
       AnalysisOptions options;
       options.voxel_size = settings_.voxel_size;
       incremental_.emplace(options);
     }
     const AnalysisResult analysis =
-        analyze_pieces(*incremental_, pieces, labels, settings_.voxel_size, settings_.backend, stage_, stop);
+        analyze_pieces(*incremental_, pieces, labels, ids, settings_.voxel_size, settings_.backend, stage_, stop);
     if (!analysis.ok()) throw std::runtime_error(analysis.status_message);
     if (stop.stop_requested()) return;
     const auto elapsed = std::chrono::steady_clock::now() - job.started;

@@ -2,6 +2,7 @@
 // the worker thread that runs each compute (the runtime query, then the core pipeline). Getters never wait
 // for the worker: they read the latest result, which the worker swaps in whole.
 #pragma once
+#include "chunk_ids.h"
 #include "config.h"
 #include "results.h"
 #include "state.h"
@@ -74,9 +75,10 @@ class Analyzer {
   XrRoomComputeStateEXTX state_ = XR_ROOM_COMPUTE_STATE_NONE_EXTX;
   std::vector<std::shared_ptr<const MeshPiece>> submitted_;
   std::shared_ptr<const RoomResult> latest_;
-  // The analyses' chunks (the pieces of each compute by position), touched only by the worker: one runs at a
-  // time, and start() joins the previous one first.
+  // The analyses' chunks and each mesh's chunk id, touched only by the worker: one runs at a time, and start()
+  // joins the previous one first.
   std::optional<IncrementalAnalysis> incremental_;
+  ChunkIds chunk_ids_;
   std::unique_ptr<VoxelStage> stage_;  // a Vulkan stage, kept for the next analyses (worker only, as above)
   std::jthread worker_;
 };
@@ -89,10 +91,12 @@ std::shared_ptr<Analyzer> find_analyzer(XrRoomAnalyzerEXTX handle);
 AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const LabelledTriangles& labels,
                               float voxel_size, Backend backend, std::stop_token stop = {});
 // The same analysis (labels[i]: piece i's, or null), on the CPU backend through `incremental`, whose chunks
-// become the pieces: a piece unchanged since its last call keeps its voxels. Other backends analyse whole, on
-// the stage in `kept_stage` where it is still the choice; a stage started here is left there for the next call.
+// become the pieces: piece i is chunk ids[i] (ascending: ChunkIds), and a chunk of another id is removed. A piece
+// unchanged since its chunk's last call keeps its voxels. Other backends analyse whole, on the stage in
+// `kept_stage` where it is still the choice; a stage started here is left there for the next call.
 AnalysisResult analyze_pieces(IncrementalAnalysis& incremental, const std::vector<const MeshPiece*>& pieces,
-                              const std::vector<const LabelledTriangles*>& labels, float voxel_size, Backend backend,
-                              std::unique_ptr<VoxelStage>& kept_stage, std::stop_token stop = {});
+                              const std::vector<const LabelledTriangles*>& labels, const std::vector<std::uint64_t>& ids,
+                              float voxel_size, Backend backend, std::unique_ptr<VoxelStage>& kept_stage,
+                              std::stop_token stop = {});
 
 }  // namespace roomsense::layer

@@ -59,6 +59,8 @@ class IncrementalAnalysis {
   // Returns false when there is no chunk of that id.
   bool remove_chunk(std::uint64_t id);
   std::size_t chunk_count() const { return chunks_.size(); }
+  // The chunks' ids, ascending.
+  std::vector<std::uint64_t> chunk_ids() const;
   // The stop token of the next result() (AnalysisOptions::stop): a stop request cancels it, and changes nothing
   // but the result, which the next call computes again.
   void set_stop(std::stop_token stop) { options_.stop = std::move(stop); }

@@ -293,6 +293,13 @@ void resize_to(Scan& out, const detail::CombinedScan::Placed& start, const detai
 
 }  // namespace
 
+std::vector<std::uint64_t> IncrementalAnalysis::chunk_ids() const {
+  std::vector<std::uint64_t> ids;
+  ids.reserve(chunks_.size());
+  for (const auto& [id, chunk] : chunks_) ids.push_back(id);
+  return ids;
+}
+
 Scan IncrementalAnalysis::combined_scan() const {
   std::vector<std::pair<std::uint64_t, const Scan*>> chunks;
   for (const auto& [id, chunk] : chunks_) {

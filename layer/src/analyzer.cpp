@@ -293,7 +293,7 @@ void Analyzer::run(std::stop_token stop, Job job) {
       done_.notify_all();
       return;
     }
-    // The runtime's semantics, where its source gives any: each runtime chunk's own (pieces start with them).
+    // The runtime's semantics, where its source gives any: each runtime chunk's own, in the pieces' order.
     std::vector<LabelledTriangles> runtime_labels(runtime.size());
     for (std::size_t i = 0; i < runtime.size(); ++i) add_labelled(runtime_labels[i], runtime[i].mesh, runtime[i].labels);
     std::vector<const LabelledTriangles*> labels;

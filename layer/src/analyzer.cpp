@@ -257,21 +257,18 @@ void Analyzer::run(std::stop_token stop, Job job) {
     // Each piece's chunk (ChunkIds), by the source's id of a runtime or application-read mesh and by the order of
     // submission of a submitted one; the pieces are analysed in chunk order.
     std::vector<std::string> keys;
-    for (const SourceChunk& m : runtime) keys.push_back("runtime:" + m.id);
-    for (const std::string& id : app_read_ids) keys.push_back("read:" + id);
-    for (std::size_t i = 0; i < job.submitted.size(); ++i) keys.push_back("submitted:" + std::to_string(i));
+    std::vector<const MeshPiece*> listed;  // as `keys`
+    for (const SourceChunk& m : runtime) keys.push_back("runtime:" + m.id), listed.push_back(&m.mesh);
+    for (std::size_t i = 0; i < app_read.size(); ++i) keys.push_back("read:" + app_read_ids[i]), listed.push_back(&app_read[i]);
+    for (std::size_t i = 0; i < job.submitted.size(); ++i)
+      keys.push_back("submitted:" + std::to_string(i)), listed.push_back(job.submitted[i].get());
     const std::vector<std::uint64_t> chunk_of = chunk_ids_.assign(keys);
     std::vector<std::size_t> order(keys.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return chunk_of[a] < chunk_of[b]; });
     std::vector<const MeshPiece*> pieces;
     std::vector<std::uint64_t> ids;
-    for (const std::size_t i : order) {
-      pieces.push_back(i < runtime.size()                     ? &runtime[i].mesh
-                       : i < runtime.size() + app_read.size() ? &app_read[i - runtime.size()]
-                                                              : job.submitted[i - runtime.size() - app_read.size()].get());
-      ids.push_back(chunk_of[i]);
-    }
+    for (const std::size_t i : order) pieces.push_back(listed[i]), ids.push_back(chunk_of[i]);
     sources.runtime_meshes = runtime.size();
     sources.app_read_meshes = app_read.size();
     sources.submitted_meshes = job.submitted.size();

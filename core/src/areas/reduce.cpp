@@ -436,16 +436,17 @@ const SquareSampleRuns::Shape* SquareSampleRuns::shape_of(const Candidate& c) {
     constexpr double kBorder = 1e-6;
     Candidate origin = c;
     for (glm::ivec3& corner : origin.corners) corner -= c.corners[0];
-    for (std::size_t i = 0; i < 4 && e1.x != 0 && e1.z != 0; ++i)  // a square's edges: all off the axes or none
-      off_axis_contact_samples(origin, i, [&](const glm::dvec2& p) {
-        const glm::dvec2 cell = glm::floor(p), from_border = glm::min(p - cell, cell + 1.0 - p);
-        shape.contact_exact = shape.contact_exact && from_border.x >= kBorder && from_border.y >= kBorder;
-        const int dx = int(cell.x), dz = int(cell.y);
-        if (contacts_.size() > shape.contact_begin && contacts_.back().dx == dx && contacts_.back().dz == dz)
-          ++contacts_.back().samples;
-        else
-          contacts_.push_back({dx, dz, 1});
-      });
+    if (e1.x != 0 && e1.z != 0)  // a square's edges: all off the axes or none
+      for (std::size_t i = 0; i < 4; ++i)
+        off_axis_contact_samples(origin, i, [&](const glm::dvec2& p) {
+          const glm::dvec2 cell = glm::floor(p), from_border = glm::min(p - cell, cell + 1.0 - p);
+          shape.contact_exact = shape.contact_exact && from_border.x >= kBorder && from_border.y >= kBorder;
+          const int dx = int(cell.x), dz = int(cell.y);
+          if (contacts_.size() > shape.contact_begin && contacts_.back().dx == dx && contacts_.back().dz == dz)
+            ++contacts_.back().samples;
+          else
+            contacts_.push_back({dx, dz, 1});
+        });
     shape.end = runs_.size(), shape.contact_end = contacts_.size();
     shapes_.push_back(shape);
   }

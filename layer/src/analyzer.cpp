@@ -57,9 +57,8 @@ namespace {
 // The voxel stage `backend` asks for on this scan, with its line in the log; null for the CPU stage. A Vulkan
 // stage is kept in `kept` for later analyses where the choice stands: one costs 310-370 ms to start on an
 // H100 (compute/README.md), more than a room's whole analysis.
-VoxelStage* chosen_stage(const Scan& scan, float voxel_size, Backend backend, std::unique_ptr<VoxelStage>& kept) {
+VoxelStage* chosen_stage(const VoxelWorkload& workload, Backend backend, std::unique_ptr<VoxelStage>& kept) {
 #if ROOMSENSE_HAVE_COMPUTE
-  const VoxelWorkload workload = estimate_voxel_workload(scan, voxel_size);
   if (kept && (backend == Backend::Vulkan || (backend == Backend::Auto && auto_may_pick_vulkan(workload))))
     return kept.get();
   std::string note;
@@ -70,7 +69,7 @@ VoxelStage* chosen_stage(const Scan& scan, float voxel_size, Backend backend, st
   kept = std::move(stage);
   return kept.get();
 #else
-  (void)scan, (void)voxel_size, (void)kept;
+  (void)workload, (void)kept;
   if (backend == Backend::Vulkan) log_warn("backend: this build has no Vulkan backend; cpu used");
   return nullptr;
 #endif
@@ -86,51 +85,36 @@ AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const
   options.voxel_size = voxel_size;
   options.stop = std::move(stop);
   std::unique_ptr<VoxelStage> stage;  // one analysis: nothing to keep it for
-  options.voxel_stage = chosen_stage(scan, voxel_size, backend, stage);
+  options.voxel_stage = chosen_stage(estimate_voxel_workload(scan, voxel_size), backend, stage);
   return analyze(scan, options);
 }
 
-AnalysisResult analyze_pieces(IncrementalAnalysis& incremental, const std::vector<const MeshPiece*>& pieces,
-                              const std::vector<const LabelledTriangles*>& labels, const std::vector<std::uint64_t>& ids,
-                              float voxel_size, Backend backend, std::unique_ptr<VoxelStage>& kept_stage,
-                              std::stop_token stop) {
+AnalysisResult analyze_pieces(IncrementalAnalysis& incremental, ChunkFeed& feed, std::span<const FedPiece> pieces,
+                              std::span<const std::uint64_t> ids, float voxel_size, Backend backend,
+                              std::unique_ptr<VoxelStage>& kept_stage, std::stop_token stop) {
   if (ids.size() != pieces.size() || !std::is_sorted(ids.begin(), ids.end()))
     throw std::logic_error("analyze_pieces: one ascending chunk id per piece");
-  Scan merged = merge(pieces);
-  if (VoxelStage* const stage = chosen_stage(merged, voxel_size, backend, kept_stage)) {  // the scan whole
-    for (const LabelledTriangles* l : labels)
-      if (l != nullptr) merged.labels.add(l->vertices, l->indices, l->labels);
+  if (VoxelStage* const stage = chosen_stage(feed.workload(pieces, ids, voxel_size), backend, kept_stage)) {
+    std::vector<const MeshPiece*> meshes;  // the scan whole
+    for (const FedPiece& p : pieces) meshes.push_back(p.mesh);
+    Scan merged = merge(meshes);
+    for (const FedPiece& p : pieces)
+      if (p.labels != nullptr) add_labelled(merged.labels, *p.mesh, *p.labels);
     AnalysisOptions options;
     options.voxel_size = voxel_size;
     options.stop = std::move(stop);
     options.voxel_stage = stage;
     return analyze(merged, options);
   }
-  // Piece i is chunk ids[i]: the ids ascend, so the chunks combined in id order are merge(pieces), their labels in
-  // the same order, and the result is analyze_pieces()'s; a piece unchanged since the last analysis keeps its
-  // voxels.
-  std::uint32_t next_vertex = 0, next_index = 0;
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
-    Scan chunk;
-    const std::uint32_t vertices = std::uint32_t(pieces[i]->vertices.size());
-    chunk.vertices.assign(merged.vertices.begin() + next_vertex, merged.vertices.begin() + next_vertex + vertices);
-    const std::size_t index_count = merged.indices.empty() ? 0
-                                    : pieces[i]->indices.empty() ? 3 * std::size_t(vertices)
-                                                                 : pieces[i]->indices.size();
-    for (std::size_t k = 0; k < index_count; ++k) chunk.indices.push_back(merged.indices[next_index + k] - next_vertex);
-    if (i < labels.size() && labels[i] != nullptr) chunk.labels = *labels[i];
-    next_vertex += vertices;
-    next_index += std::uint32_t(index_count);
-    incremental.set_chunk(ids[i], std::move(chunk));
-  }
-  // The chunks of meshes no longer served (or of a call that failed half way).
-  for (const std::uint64_t id : incremental.chunk_ids())
-    if (!std::binary_search(ids.begin(), ids.end(), id)) incremental.remove_chunk(id);
+  // Piece i is chunk ids[i]: the ids ascend, so the chunks combined in id order are merge() of the pieces, their
+  // labels in the same order, and the result is analyze_pieces()'s; a piece unchanged since the last analysis is
+  // not given again, and keeps its voxels.
+  feed.feed(incremental, pieces, ids);
   incremental.set_stop(std::move(stop));
   const AnalysisResult& result = incremental.result();
   log_debug([&] {
-    return std::to_string(incremental.revoxelized_chunks()) + " of " + std::to_string(pieces.size()) +
-           " meshes voxelized again; the others' voxels kept";
+    return std::to_string(feed.fed()) + " of " + std::to_string(pieces.size()) + " meshes changed; " +
+           std::to_string(incremental.revoxelized_chunks()) + " voxelized again, the others' voxels kept";
   });
   return result;
 }
@@ -266,23 +250,23 @@ void Analyzer::run(std::stop_token stop, Job job) {
     std::vector<std::size_t> order(keys.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return chunk_of[a] < chunk_of[b]; });
-    std::vector<const MeshPiece*> pieces;
+    // Each piece with the runtime's labels of its triangles, where its source gives any, and its key.
+    std::vector<FedPiece> pieces;
     std::vector<std::uint64_t> ids;
-    for (const std::size_t i : order) pieces.push_back(listed[i]), ids.push_back(chunk_of[i]);
+    for (const std::size_t i : order) {
+      const std::vector<SurfaceLabel>* labels = i < runtime.size() && !runtime[i].labels.empty() ? &runtime[i].labels : nullptr;
+      pieces.push_back({listed[i], labels, piece_key(*listed[i], labels)});
+      ids.push_back(chunk_of[i]);
+    }
     sources.runtime_meshes = runtime.size();
     sources.app_read_meshes = app_read.size();
     sources.submitted_meshes = job.submitted.size();
     if (pieces.empty())
       throw std::runtime_error(job.include_runtime ? "no meshes to analyse: the runtime served none and none were submitted"
                                                    : "no meshes to analyse: none were submitted");
-    // FNV-1a over the pieces' content hashes and the runtime's labels, in the order the analysis reads them.
+    // FNV-1a over the pieces' keys (their content and the runtime's labels), in the order the analysis reads them.
     std::uint64_t input_hash = 0xcbf29ce484222325ull;
-    const auto mix = [&](std::uint64_t v) { input_hash = (input_hash ^ v) * 0x100000001b3ull; };
-    for (const MeshPiece* piece : pieces) mix(content_hash(*piece));
-    for (const SourceChunk& m : runtime) {
-      mix(m.labels.size());
-      for (const SurfaceLabel label : m.labels) mix(std::uint64_t(label));
-    }
+    for (const FedPiece& piece : pieces) input_hash = (input_hash ^ piece.key) * 0x100000001b3ull;
     if (job.skip_hash == input_hash) {
       log_debug([] { return std::string("the meshes and labels are unchanged: the latest result stands"); });
       std::lock_guard lock(mutex_);
@@ -290,18 +274,13 @@ void Analyzer::run(std::stop_token stop, Job job) {
       done_.notify_all();
       return;
     }
-    // The runtime's semantics, where its source gives any: each runtime chunk's own, in the pieces' order.
-    std::vector<LabelledTriangles> runtime_labels(runtime.size());
-    for (std::size_t i = 0; i < runtime.size(); ++i) add_labelled(runtime_labels[i], runtime[i].mesh, runtime[i].labels);
-    std::vector<const LabelledTriangles*> labels;
-    for (const std::size_t i : order) labels.push_back(i < runtime.size() ? &runtime_labels[i] : nullptr);
     if (!incremental_) {
       AnalysisOptions options;
       options.voxel_size = settings_.voxel_size;
       incremental_.emplace(options);
     }
     const AnalysisResult analysis =
-        analyze_pieces(*incremental_, pieces, labels, ids, settings_.voxel_size, settings_.backend, stage_, stop);
+        analyze_pieces(*incremental_, feed_, pieces, ids, settings_.voxel_size, settings_.backend, stage_, stop);
     if (!analysis.ok()) throw std::runtime_error(analysis.status_message);
     if (stop.stop_requested()) return;
     const auto elapsed = std::chrono::steady_clock::now() - job.started;

@@ -2,6 +2,7 @@
 // the worker thread that runs each compute (the runtime query, then the core pipeline). Getters never wait
 // for the worker: they read the latest result, which the worker swaps in whole.
 #pragma once
+#include "chunk_feed.h"
 #include "chunk_ids.h"
 #include "config.h"
 #include "results.h"
@@ -15,6 +16,7 @@
 #include <condition_variable>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <stop_token>
 #include <thread>
 #include <vector>
@@ -79,6 +81,7 @@ class Analyzer {
   // joins the previous one first.
   std::optional<IncrementalAnalysis> incremental_;
   ChunkIds chunk_ids_;
+  ChunkFeed feed_;  // what incremental_ was given under each chunk id
   std::unique_ptr<VoxelStage> stage_;  // a Vulkan stage, kept for the next analyses (worker only, as above)
   std::jthread worker_;
 };
@@ -90,13 +93,13 @@ std::shared_ptr<Analyzer> find_analyzer(XrRoomAnalyzerEXTX handle);
 // (which backend) goes to the log. A stop request ends it with Error(Cancelled) within about 100 ms.
 AnalysisResult analyze_pieces(const std::vector<const MeshPiece*>& pieces, const LabelledTriangles& labels,
                               float voxel_size, Backend backend, std::stop_token stop = {});
-// The same analysis (labels[i]: piece i's, or null), on the CPU backend through `incremental`, whose chunks
-// become the pieces: piece i is chunk ids[i] (ascending: ChunkIds), and a chunk of another id is removed. A piece
-// unchanged since its chunk's last call keeps its voxels. Other backends analyse whole, on the stage in
-// `kept_stage` where it is still the choice; a stage started here is left there for the next call.
-AnalysisResult analyze_pieces(IncrementalAnalysis& incremental, const std::vector<const MeshPiece*>& pieces,
-                              const std::vector<const LabelledTriangles*>& labels, const std::vector<std::uint64_t>& ids,
-                              float voxel_size, Backend backend, std::unique_ptr<VoxelStage>& kept_stage,
-                              std::stop_token stop = {});
+// The same analysis (with each piece's runtime labels), on the CPU backend through `incremental`, whose chunks
+// become the pieces: piece i is chunk ids[i] (ascending: ChunkIds), and a chunk of another id is removed. `feed`
+// gives it only the pieces that changed since its last call (chunk_feed.h); the others keep their voxels. Other
+// backends analyse whole, on the stage in `kept_stage` where it is still the choice; a stage started here is
+// left there for the next call.
+AnalysisResult analyze_pieces(IncrementalAnalysis& incremental, ChunkFeed& feed, std::span<const FedPiece> pieces,
+                              std::span<const std::uint64_t> ids, float voxel_size, Backend backend,
+                              std::unique_ptr<VoxelStage>& kept_stage, std::stop_token stop = {});
 
 }  // namespace roomsense::layer

@@ -11,6 +11,9 @@
 #include "roomsense/synthetic.h"
 
 #include <benchmark/benchmark.h>
+#if ROOMSENSE_BENCH_LAYER_FEED
+#include "../layer/src/chunk_feed.h"
+#endif
 
 #include <algorithm>
 #include <array>
@@ -79,6 +82,16 @@ const AnalysisResult& first_result(benchmark::State& state, IncrementalAnalysis&
   const AnalysisResult& r = inc.result();
   state.counters["first_ms"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return r;
+}
+
+// The object of update_object/ for turn `turn`: added on even turns, at one of 24 places spread over the room's
+// floor (each place twice in a row: added, then removed).
+Scan object_at(const GridSpec& grid, float floor_y, std::size_t turn) {
+  const std::size_t place = (turn / 2) % 24;
+  const float fx = 0.2f + 0.6f * float(place % 6) / 5.0f, fz = 0.2f + 0.6f * float(place / 6) / 3.0f;
+  return box_chunk(glm::vec3(grid.origin.x + fx * float(grid.nx) * grid.voxel_size, floor_y,
+                             grid.origin.z + fz * float(grid.nz) * grid.voxel_size),
+                   0.4f, 14);
 }
 
 // Each iteration: `change` (one chunk set or removed), then the new result; the percentiles of those times,
@@ -275,17 +288,50 @@ int main(int argc, char** argv) {
       constexpr std::uint64_t kObject = std::uint64_t{1} << 62;
       std::size_t turn = 0;
       time_updates(state, inc, [&] {
-        const std::size_t place = (turn / 2) % 24;
-        const float fx = 0.2f + 0.6f * float(place % 6) / 5.0f, fz = 0.2f + 0.6f * float(place / 6) / 3.0f;
-        const glm::vec3 corner(grid.origin.x + fx * float(grid.nx) * grid.voxel_size, floor_y,
-                               grid.origin.z + fz * float(grid.nz) * grid.voxel_size);
-        if (turn % 2 == 0) inc.set_chunk(kObject, box_chunk(corner, 0.4f, 14));
+        if (turn % 2 == 0) inc.set_chunk(kObject, object_at(grid, floor_y, turn));
         else inc.remove_chunk(kObject);
         ++turn;
       });
       state.counters["object_triangles"] = double(box_chunk({}, 0.4f, 14).indices.size() / 3);
       counters(state, room);
     })->Iterations(48);
+#if ROOMSENSE_BENCH_LAYER_FEED
+    // The same object through the layer's way in: each compute keys every mesh of the room (the runtime serves
+    // them all again), its ChunkFeed measures the workload and gives the analysis the changed meshes alone, with
+    // the object's id sorting last, as ChunkIds gives a new mesh.
+    register_case("update_object_layer/" + room.name, [&room, versions](benchmark::State& state) {
+      std::vector<layer::MeshPiece> meshes;
+      std::vector<std::uint64_t> block_ids;
+      for (const auto& [id, two] : *versions) meshes.push_back({two[1].vertices, two[1].indices}), block_ids.push_back(id);
+      IncrementalAnalysis inc;
+      layer::ChunkFeed feed;
+      const auto compute = [&](const layer::MeshPiece* object) {
+        std::vector<layer::FedPiece> pieces;
+        std::vector<std::uint64_t> ids = block_ids;
+        for (const layer::MeshPiece& m : meshes) pieces.push_back({&m, nullptr, layer::piece_key(m, nullptr)});
+        if (object) pieces.push_back({object, nullptr, layer::piece_key(*object, nullptr)}), ids.push_back(~std::uint64_t{0});
+        benchmark::DoNotOptimize(feed.workload(pieces, ids, 0.1f));
+        feed.feed(inc, pieces, ids);
+      };
+      compute(nullptr);
+      const AnalysisResult& first = inc.result();
+      if (!first.ok()) {
+        state.SkipWithError(first.status_message.c_str());
+        return;
+      }
+      const GridSpec grid = first.voxels.grid.spec;
+      const float floor_y = first.floor_y;
+      std::size_t turn = 0;
+      layer::MeshPiece object;
+      time_updates(state, inc, [&] {
+        const Scan box = object_at(grid, floor_y, turn);
+        object = {box.vertices, box.indices};
+        compute(turn % 2 == 0 ? &object : nullptr);
+        ++turn;
+      });
+      counters(state, room);
+    })->Iterations(48);
+#endif
   }
   // How the area search grows with room size: empty-ish halls of increasing floor area.
   for (const float scale : {0.25f, 0.5f, 1.0f, 1.5f}) {

@@ -10,3 +10,10 @@ if(TARGET XrApiLayer_roomsense)
     ROOMSENSE_BENCH_LAYER_SEARCH_DIR="${PROJECT_BINARY_DIR}/share")
   add_dependencies(roomsense_bench_layer XrApiLayer_roomsense roomsense_simruntime)
 endif()
+
+# The layer's way into the analysis (layer/src/chunk_feed.h), timed in roomsense_bench's update_object_layer/ cases.
+if(TARGET XrApiLayer_roomsense)
+  target_sources(roomsense_bench PRIVATE ${PROJECT_SOURCE_DIR}/layer/src/chunk_feed.cpp ${PROJECT_SOURCE_DIR}/layer/src/mesh.cpp)
+  target_link_libraries(roomsense_bench PRIVATE roomsense_xrsupport OpenXR::headers)
+  target_compile_definitions(roomsense_bench PRIVATE ROOMSENSE_BENCH_LAYER_FEED=1)
+endif()

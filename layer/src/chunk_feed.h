@@ -7,6 +7,7 @@
 #include "roomsense/backend.h"
 #include "roomsense/incremental.h"
 
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <span>

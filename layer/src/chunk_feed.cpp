@@ -42,39 +42,35 @@ ChunkFeed::Fed ChunkFeed::facts(const FedPiece& p, bool triangle_mode) const {
   return f;
 }
 
+ChunkFeed::Fed& ChunkFeed::known(std::uint64_t id, const FedPiece& p, bool triangle_mode) {
+  Fed& f = chunks_[id];
+  if (f.key != p.key || f.triangle_mode != triangle_mode) f = facts(p, triangle_mode);  // not fed as it is
+  return f;
+}
+
 VoxelWorkload ChunkFeed::workload(std::span<const FedPiece> pieces, std::span<const std::uint64_t> ids, float voxel_size) {
   const bool mode = triangle_mode(pieces);
-  VoxelWorkload w;
+  std::size_t triangles = 0;
   glm::vec3 lo(INFINITY), hi(-INFINITY);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
-    Fed& known = chunks_[ids[i]];
-    if (known.key != pieces[i].key || known.triangle_mode != mode) known = facts(pieces[i], mode);
-    w.triangles += known.triangles;
-    lo = glm::min(lo, known.lo), hi = glm::max(hi, known.hi);
+    const Fed& f = known(ids[i], pieces[i], mode);
+    triangles += f.triangles;
+    lo = glm::min(lo, f.lo), hi = glm::max(hi, f.hi);
   }
-  // As estimate_voxel_workload does over the merged scan.
-  if (!(lo.x <= hi.x) || !(voxel_size > 0.0f)) return w;
-  const glm::dvec3 n = glm::dvec3(hi - lo) / double(voxel_size) + 1.0;
-  w.voxels = std::size_t(std::min(n.x * n.y * n.z, 1e18));
-  return w;
+  return voxel_workload(lo, hi, triangles, voxel_size);
 }
 
 void ChunkFeed::feed(IncrementalAnalysis& incremental, std::span<const FedPiece> pieces, std::span<const std::uint64_t> ids) {
   const bool mode = triangle_mode(pieces);
   fed_count_ = kept_count_ = 0;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
-    const auto at = chunks_.find(ids[i]);
-    if (at != chunks_.end() && at->second.fed && at->second.key == pieces[i].key && at->second.triangle_mode == mode) {
+    Fed& f = known(ids[i], pieces[i], mode);
+    if (f.fed) {
       ++kept_count_;
       continue;
     }
-    Fed known = at != chunks_.end() && at->second.key == pieces[i].key && at->second.triangle_mode == mode
-                    ? at->second
-                    : facts(pieces[i], mode);
-    known.fed = false;  // until the analysis holds it
-    chunks_[ids[i]] = known;
     incremental.set_chunk(ids[i], chunk_of(pieces[i], mode));
-    chunks_[ids[i]].fed = true;
+    f.fed = true;  // only once the analysis holds it
     ++fed_count_;
   }
   // The chunks of meshes no longer served (or of a call that failed half way).

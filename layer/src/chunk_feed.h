@@ -49,6 +49,9 @@ class ChunkFeed {
   };
   static bool triangle_mode(std::span<const FedPiece> pieces);
   Fed facts(const FedPiece& p, bool triangle_mode) const;
+  // The entry of chunk `id` for piece `p`: as it stands where it has p's key and triangle mode, else p's facts,
+  // not fed.
+  Fed& known(std::uint64_t id, const FedPiece& p, bool triangle_mode);
   std::map<std::uint64_t, Fed> chunks_;  // by chunk id
   std::size_t fed_count_ = 0, kept_count_ = 0;
 };

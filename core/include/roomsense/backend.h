@@ -43,5 +43,8 @@ inline bool auto_may_pick_vulkan(const VoxelWorkload& w) {
 // The workload of analysing `scan` at `voxel_size` in triangle mode: the voxel count of the grid its finite
 // extents need, before outlier rejection (0 for a scan without finite vertices), and its triangles.
 VoxelWorkload estimate_voxel_workload(const Scan& scan, float voxel_size);
+// The same from the finite vertices' bounds (lo > hi: none) and the triangle count, as a caller that keeps them
+// per mesh has them.
+VoxelWorkload voxel_workload(const glm::vec3& lo, const glm::vec3& hi, std::size_t triangles, float voxel_size);
 
 }  // namespace roomsense

@@ -42,14 +42,18 @@ Backend backend_from_environment(Backend fallback, std::string* note) {
 }
 
 VoxelWorkload estimate_voxel_workload(const Scan& scan, float voxel_size) {
-  VoxelWorkload w;
-  w.triangles = scan.indices.size() / 3;
   glm::vec3 lo(INFINITY), hi(-INFINITY);
   for (const glm::vec3& v : scan.vertices)
     if (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) {
       lo = glm::min(lo, v);
       hi = glm::max(hi, v);
     }
+  return voxel_workload(lo, hi, scan.indices.size() / 3, voxel_size);
+}
+
+VoxelWorkload voxel_workload(const glm::vec3& lo, const glm::vec3& hi, std::size_t triangles, float voxel_size) {
+  VoxelWorkload w;
+  w.triangles = triangles;
   if (!(lo.x <= hi.x) || !(voxel_size > 0.0f)) return w;
   const glm::dvec3 n = glm::dvec3(hi - lo) / double(voxel_size) + 1.0;
   w.voxels = std::size_t(std::min(n.x * n.y * n.z, 1e18));

@@ -58,6 +58,24 @@ void expect_same(const AnalysisResult& got, const AnalysisResult& want, const st
   for (std::size_t i = 0; i < got.room_bounds.size(); ++i) EXPECT_EQ(got.room_bounds[i].indices, want.room_bounds[i].indices);
 }
 
+// `scan` with a runtime's label on every triangle, by its normal and height: floor, ceiling, wall, table top.
+Scan labelled_by_normals(Scan scan) {
+  float low = INFINITY;
+  for (const glm::vec3& v : scan.vertices) low = std::min(low, v.y);
+  scan.labels.vertices = scan.vertices;
+  scan.labels.indices = scan.indices;
+  for (std::size_t t = 0; t + 2 < scan.indices.size(); t += 3) {
+    const glm::vec3 a = scan.vertices[scan.indices[t]], b = scan.vertices[scan.indices[t + 1]], c = scan.vertices[scan.indices[t + 2]];
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    const float up = n.y / std::max(glm::length(n), 1e-12f);
+    const float y = (a.y + b.y + c.y) / 3.0f;
+    scan.labels.labels.push_back(up > 0.9f ? (y < low + 0.2f ? SurfaceLabel::Floor : SurfaceLabel::Table)
+                                 : up < -0.9f ? SurfaceLabel::Ceiling
+                                              : SurfaceLabel::Wall);
+  }
+  return scan;
+}
+
 // Adds the tiles in a random order; after a third of them, and then every few steps, replaces one with its
 // refined version or removes one (and adds it back later). Compares with analyze() after every step.
 void replay(const Scan& scan, unsigned seed, bool keeps_voxels = true) {
@@ -149,6 +167,11 @@ TEST(Incremental, SyntheticRoomsReplayedChunkByChunkEqualTheFullAnalysis) {
     SCOPED_TRACE("20 km up");
     replay(high, 23);
   }
+  // Every triangle labelled, as Android XR labels its submeshes: each chunk's labelled voxels are kept.
+  {
+    SCOPED_TRACE("labelled");
+    replay(labelled_by_normals(synth::generate_builtin_source("synthetic:thesis-room1")), 29);
+  }
   // A point cloud (vertex mode, Eq. 3.6): blocks of vertices; the voxel stage runs whole, the result is equal.
   Scan cloud = synth::generate_builtin_source("synthetic:default");
   cloud.indices.clear();
@@ -182,6 +205,54 @@ INSTANTIATE_TEST_SUITE_P(
       std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
       return name;
     });
+
+// Labels past the triangle-voxel test budget are dropped with the full analysis's warning, chunk by chunk too: as
+// chunks come and go across the budget, every result (warnings included) equals the full analysis.
+TEST(Incremental, LabelsPastTheTestBudgetGiveTheFullAnalysisWarnings) {
+  // Each tile's labels also hold one large triangle across the tile's box (as a runtime's plane outline may be):
+  // the labels then take many more triangle-voxel tests than the tile's own small triangles, so a budget can
+  // hold the voxelization and drop the labels.
+  std::map<std::uint64_t, Scan> tiles = split_into_blocks(labelled_by_normals(synth::generate_builtin_source("synthetic:default")), 2.0f);
+  ASSERT_GE(tiles.size(), 4u);
+  IncrementalAnalysis whole;
+  for (auto& [id, tile] : tiles) {
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& v : tile.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    for (int copy = 0; copy < 8; ++copy) {
+      const auto first = static_cast<std::uint32_t>(tile.labels.vertices.size());
+      tile.labels.vertices.insert(tile.labels.vertices.end(), {lo, {hi.x, lo.y, lo.z}, hi});
+      tile.labels.indices.insert(tile.labels.indices.end(), {first, first + 1, first + 2});
+      tile.labels.labels.push_back(SurfaceLabel::Other);
+    }
+    whole.set_chunk(id, tile);
+  }
+  const Scan room = whole.combined_scan();
+  AnalysisOptions options;
+  // The room's voxelization fits the budget; its labels, taking about eight times as many tests, do not.
+  options.voxel_test_budget = analyze(room).voxels.voxel_tests;
+  IncrementalAnalysis inc(options);
+  std::size_t over = 0, under = 0;
+  const auto check = [&](const std::string& step) {
+    const AnalysisResult want = analyze(inc.combined_scan(), options);
+    const AnalysisResult& got = inc.result();
+    EXPECT_EQ(got.warnings, want.warnings) << step;
+    expect_same(got, want, step);
+    const bool dropped = std::any_of(want.warnings.begin(), want.warnings.end(),
+                                     [](const std::string& s) { return s.find("runtime labels ignored") != std::string::npos; });
+    (dropped ? over : under) += 1;
+  };
+  for (const auto& [id, tile] : tiles) {
+    inc.set_chunk(id, tile);
+    check("add " + std::to_string(id));
+  }
+  for (const auto& [id, tile] : tiles) {
+    if (!inc.remove_chunk(id)) continue;
+    if (inc.chunk_count() == 0) break;
+    check("remove " + std::to_string(id));
+  }
+  EXPECT_GT(over, 0u) << "no step past the budget";
+  EXPECT_GT(under, 0u) << "no step within the budget";
+}
 
 // Bad chunks: an index past the chunk's own vertices is refused even where the combined scan would have a
 // vertex there; removing what is not there says so; an empty analyzer is EmptyInput.

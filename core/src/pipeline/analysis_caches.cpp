@@ -1,5 +1,8 @@
-// ChunkBandSums (analysis_caches.h): the surface heights' sums kept chunk by chunk.
+// ChunkBandSums and ChunkLabelVoxels (analysis_caches.h): the surface heights' sums and the labels' voxels kept
+// chunk by chunk.
 #include "analysis_caches.h"
+
+#include "../semantics/label_voxels.h"
 
 #include "../parallel.h"
 
@@ -32,6 +35,62 @@ std::vector<BandSum> ChunkBandSums::sums(const CombinedScan& c, std::span<const 
   std::vector<BandSum> out(bands.size());
   for (const auto& [id, kept] : chunks_)
     for (std::size_t b = 0; b < out.size(); ++b) out[b] += kept.sums[b];
+  return out;
+}
+
+
+namespace {
+
+bool same_spec(const GridSpec& a, const GridSpec& b) {
+  return a.origin == b.origin && a.voxel_size == b.voxel_size && a.nx == b.nx && a.ny == b.ny && a.nz == b.nz;
+}
+
+}  // namespace
+
+LabelGrid ChunkLabelVoxels::grid(const CombinedScan& c, const GridSpec& spec, std::uint64_t test_budget,
+                                 std::vector<std::string>& warnings) {
+  LabelGrid out;
+  const LabelledTriangles& labels = c.scan.labels;
+  if (!labels_usable(labels, warnings)) return out;
+  // Chunk k's labelled triangles: its indices (into the scan's label vertices) and labels, one per triangle (the
+  // scan has one label per triangle, and no chunk fewer: IncrementalAnalysis refuses those).
+  const auto label_end = [&](std::size_t k) { return k + 1 < c.placed.size() ? c.placed[k + 1].label : labels.labels.size(); };
+  std::map<std::uint64_t, Kept> now;
+  std::vector<std::pair<std::size_t, LabelBoxes>> fresh;  // chunk, its boxes
+  std::uint64_t tests = 0;
+  for (std::size_t k = 0; k < c.placed.size(); ++k) {
+    const CombinedScan::Placed& p = c.placed[k];
+    const auto it = chunks_.find(p.id);
+    if (it != chunks_.end() && it->second.hash == p.hash && same_spec(it->second.spec, spec)) {
+      tests += it->second.tests;
+      now.emplace(p.id, std::move(it->second));
+      continue;
+    }
+    const std::size_t count = label_end(k) - p.label;
+    fresh.emplace_back(k, label_boxes(spec, labels.vertices, std::span(labels.indices).subspan(p.label_index, 3 * count),
+                                      std::span(labels.labels).subspan(p.label, count)));
+    tests += fresh.back().second.tests;
+  }
+  chunks_ = std::move(now);  // the fresh ones join below, within the budget
+  if (tests > test_budget) {
+    warnings.push_back(over_budget_warning(test_budget));
+    return out;
+  }
+  for (auto& [k, boxes] : fresh) {
+    Kept kept{c.placed[k].hash, spec, boxes.tests, boxes.dropped, 0, !boxes.boxes.empty(), touched_voxels(spec, boxes)};
+    for (const LabelBoxes::Box& b : boxes.boxes) kept.present = LabelMask(kept.present | label_bit(b.label));
+    chunks_[c.placed[k].id] = std::move(kept);
+  }
+  std::size_t dropped = 0;
+  bool any_box = false;
+  for (const auto& [id, kept] : chunks_) dropped += kept.dropped, any_box = any_box || kept.any_box;
+  add_dropped_warning(dropped, warnings);
+  if (!any_box) return out;
+  out.masks.assign(spec.voxel_count(), 0);
+  for (const auto& [id, kept] : chunks_) {
+    out.present = LabelMask(out.present | kept.present);
+    for (const auto& [voxel, mask] : kept.voxels) out.masks[voxel] |= mask;
+  }
   return out;
 }
 

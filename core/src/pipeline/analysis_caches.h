@@ -12,6 +12,8 @@
 #include "surface_heights.h"
 
 #include <map>
+#include <string>
+#include <utility>
 #include <memory>
 #include <vector>
 
@@ -52,6 +54,29 @@ class ChunkBandSums {
   std::map<std::uint64_t, Kept> chunks_;  // by chunk id
 };
 
+// The labels' voxels (voxelize_labels) of a combined scan, chunk by chunk: a chunk's labelled voxels are kept
+// while the chunk and the grid are as before, and the grid is the union of every chunk's, so an analysis tests the
+// labelled triangles of the chunks that changed against the voxels, not all of them (a headset that labels every
+// triangle, as Android XR does, labels the whole room).
+class ChunkLabelVoxels {
+ public:
+  // voxelize_labels(spec, c.scan.labels, test_budget, warnings), equal in result and warnings. Keeps each chunk's
+  // voxels for the next analysis, and no others.
+  LabelGrid grid(const CombinedScan& c, const GridSpec& spec, std::uint64_t test_budget, std::vector<std::string>& warnings);
+
+ private:
+  struct Kept {
+    std::uint64_t hash = 0;
+    GridSpec spec;
+    std::uint64_t tests = 0;
+    std::size_t dropped = 0;
+    LabelMask present = 0;  // the labels of its boxes
+    bool any_box = false;
+    std::vector<std::pair<std::uint64_t, LabelMask>> voxels;  // touched_voxels
+  };
+  std::map<std::uint64_t, Kept> chunks_;  // by chunk id
+};
+
 // For one AnalysisOptions: an IncrementalAnalysis's own.
 struct AnalysisCaches {
   std::vector<std::unique_ptr<SearchCache>> storeys;  // storey i of the latest analysis
@@ -67,6 +92,7 @@ struct AnalysisCaches {
   std::uint64_t horizontal_serial = 0;
   CombinedScan combined;
   ChunkBandSums band_sums;  // of `combined`
+  ChunkLabelVoxels label_voxels;  // of `combined`
   QuantileGuess quantiles;  // where the latest analysis's input checks found the outlier quantiles
   std::vector<MeshMemo> bounds;  // the home's bounds mesh, then each room's (AnalysisResult::room_bounds)
   // The IncrementalAnalysis's voxel stage. analyze() gives it `combined` as it is in triangle mode with

@@ -263,7 +263,8 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   // heights decide (no room, which storeys are rooms) waits for all; a storey the heights drop is rare. The
   // labels' warnings come after that decision, as the features do.
   std::vector<std::string> label_warnings;
-  LabelGrid labels = voxelize_labels(spec, scan.labels, options.voxel_test_budget, label_warnings);
+  LabelGrid labels = chunks != nullptr ? caches->label_voxels.grid(*chunks, spec, options.voxel_test_budget, label_warnings)
+                                        : voxelize_labels(spec, scan.labels, options.voxel_test_budget, label_warnings);
   // An IncrementalAnalysis whose chunks changed within their voxels: the features of a storey on the levels of one
   // of the previous analysis's (and below, the bounds, where every storey is) are that analysis's.
   const detail::GridChange change{serial - 1, serial, changed.empty() ? nullptr : &changed};

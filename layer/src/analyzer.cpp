@@ -19,7 +19,7 @@ namespace {
 
 
 // The active query of the first source that delivers, best first; each failure is one line in the log.
-std::vector<SourceChunk> query_best_source(const InstanceState& instance, const SessionState& session, XrSpace base,
+std::vector<ServedChunk> query_best_source(const InstanceState& instance, const SessionState& session, XrSpace base,
                                            XrTime time, std::stop_token stop, MeshSources& report) {
   const QueryContext context{instance.handle, session.system, session.handle, base, time};
   std::string skipped;
@@ -27,14 +27,16 @@ std::vector<SourceChunk> query_best_source(const InstanceState& instance, const 
     if (stop.stop_requested()) return {};
     const auto start = std::chrono::steady_clock::now();
     try {
-      std::vector<SourceChunk> chunks = s.source->query(context, stop);
+      MeshSource::Answer answer = s.source->query(context, stop);
+      std::vector<ServedChunk>& chunks = answer.chunks;
       if (!chunks.empty()) {
         report.source = s.info->name;
         report.source_reason = skipped.empty() ? "the runtime's best mesh source (" + std::string(s.info->gives) + ")"
                                                : "the best that delivered (" + skipped + ")";
         report.query_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        log_info(std::string("runtime meshes from ") + s.info->name + ": " + std::to_string(chunks.size()) + " chunks in " +
-                 std::to_string(report.query_ms) + " ms; " + report.source_reason);
+        log_info(std::string("runtime meshes from ") + s.info->name + ": " + std::to_string(chunks.size()) + " chunks (" +
+                 std::to_string(answer.read) + " read, the others as served before) in " + std::to_string(report.query_ms) +
+                 " ms; " + report.source_reason);
         return chunks;
       }
       skipped += std::string(skipped.empty() ? "" : "; ") + s.info->name + " served nothing";
@@ -203,7 +205,7 @@ void Analyzer::run(std::stop_token stop, Job job) {
   std::shared_ptr<RoomResult> result;
   std::string problem;
   try {
-    std::vector<SourceChunk> runtime;
+    std::vector<ServedChunk> runtime;
     std::vector<MeshPiece> app_read;
     std::vector<std::string> app_read_ids;  // the source's id of each
     if (job.include_runtime) {
@@ -219,7 +221,7 @@ void Analyzer::run(std::stop_token stop, Job job) {
       } else if (!captured.empty()) {
         std::unordered_set<std::uint64_t> hashes;
         std::unordered_set<std::string> ids;
-        for (const SourceChunk& m : runtime) hashes.insert(content_hash(m.mesh)), ids.insert(m.id);
+        for (const ServedChunk& m : runtime) hashes.insert(content_hash(m->mesh)), ids.insert(m->id);
         auto where = xr_struct<XrSpaceLocation>(XR_TYPE_SPACE_LOCATION);
         const XrResult result = instance.next.xrLocateSpace(job.capture_space, settings_.base_space, job.time, &where);
         if (XR_FAILED(result) || !located(where.locationFlags)) {
@@ -242,7 +244,7 @@ void Analyzer::run(std::stop_token stop, Job job) {
     // submission of a submitted one; the pieces are analysed in chunk order.
     std::vector<std::string> keys;
     std::vector<const MeshPiece*> listed;  // as `keys`
-    for (const SourceChunk& m : runtime) keys.push_back("runtime:" + m.id), listed.push_back(&m.mesh);
+    for (const ServedChunk& m : runtime) keys.push_back("runtime:" + m->id), listed.push_back(&m->mesh);
     for (std::size_t i = 0; i < app_read.size(); ++i) keys.push_back("read:" + app_read_ids[i]), listed.push_back(&app_read[i]);
     for (std::size_t i = 0; i < job.submitted.size(); ++i)
       keys.push_back("submitted:" + std::to_string(i)), listed.push_back(job.submitted[i].get());
@@ -254,8 +256,11 @@ void Analyzer::run(std::stop_token stop, Job job) {
     std::vector<FedPiece> pieces;
     std::vector<std::uint64_t> ids;
     for (const std::size_t i : order) {
-      const std::vector<SurfaceLabel>* labels = i < runtime.size() && !runtime[i].labels.empty() ? &runtime[i].labels : nullptr;
-      pieces.push_back({listed[i], labels, piece_key(*listed[i], labels)});
+      if (i < runtime.size()) {  // keyed when it was served (checked_chunks)
+        pieces.push_back({listed[i], runtime[i]->labels.empty() ? nullptr : &runtime[i]->labels, runtime[i]->key});
+      } else {
+        pieces.push_back({listed[i], nullptr, piece_key(*listed[i], nullptr)});
+      }
       ids.push_back(chunk_of[i]);
     }
     sources.runtime_meshes = runtime.size();
@@ -279,9 +284,9 @@ void Analyzer::run(std::stop_token stop, Job job) {
       options.voxel_size = settings_.voxel_size;
       incremental_.emplace(options);
     }
-    const AnalysisResult analysis =
-        analyze_pieces(*incremental_, feed_, pieces, ids, settings_.voxel_size, settings_.backend, stage_, stop);
-    if (!analysis.ok()) throw std::runtime_error(analysis.status_message);
+    const auto analysis = std::make_shared<const AnalysisResult>(
+        analyze_pieces(*incremental_, feed_, pieces, ids, settings_.voxel_size, settings_.backend, stage_, stop));
+    if (!analysis->ok()) throw std::runtime_error(analysis->status_message);
     if (stop.stop_requested()) return;
     const auto elapsed = std::chrono::steady_clock::now() - job.started;
     result = std::make_shared<RoomResult>(
@@ -289,9 +294,9 @@ void Analyzer::run(std::stop_token stop, Job job) {
     result->input_hash = input_hash;
     log_info("analysis completed: " + std::to_string(sources.runtime_meshes) + " runtime, " +
              std::to_string(sources.app_read_meshes) + " app-read and " + std::to_string(sources.submitted_meshes) +
-             " submitted meshes; " + std::to_string(analysis.areas.size()) + " areas; pipeline " +
-             std::to_string(analysis.timings.total) + " ms, compute " + std::to_string(double(result->duration) / 1e6) + " ms");
-    if (!instance.config.export_dir.empty()) export_files(instance.config.export_dir, *result, analysis.bounds);
+             " submitted meshes; " + std::to_string(analysis->areas.size()) + " areas; pipeline " +
+             std::to_string(analysis->timings.total) + " ms, compute " + std::to_string(double(result->duration) / 1e6) + " ms");
+    if (!instance.config.export_dir.empty()) export_files(instance.config.export_dir, *result, analysis->bounds);
   } catch (const std::exception& e) {
     if (stop.stop_requested()) return;  // the analyzer is being destroyed: nothing failed
     problem = e.what();

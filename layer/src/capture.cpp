@@ -110,17 +110,17 @@ void export_captured(SessionState& session, std::stop_token stop) {
       pieces.push_back(&c->chunk.mesh);
       add_labelled(labels, c->chunk.mesh, c->chunk.labels);
     }
-    const AnalysisResult analysis =
-        analyze_pieces(pieces, labels, kDefaultVoxelSize, session.instance->config.env_backend, stop);
-    if (!analysis.ok()) {
-      log_warn("export: the scene meshes the application read hold no room yet: " + analysis.status_message);
+    const auto analysis = std::make_shared<const AnalysisResult>(
+        analyze_pieces(pieces, labels, kDefaultVoxelSize, session.instance->config.env_backend, stop));
+    if (!analysis->ok()) {
+      log_warn("export: the scene meshes the application read hold no room yet: " + analysis->status_message);
     } else {
       MeshSources sources;
       sources.base_space = "LOCAL";
       sources.app_read_meshes = pieces.size();
       const auto elapsed = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - start);
       const RoomResult result = make_room_result(analysis, sources, elapsed.count());
-      export_files(session.instance->config.export_dir, result, analysis.bounds);
+      export_files(session.instance->config.export_dir, result, analysis->bounds);
     }
   } catch (const std::exception& e) {
     if (stop.stop_requested()) return;  // cancelled, not exported: the session's end exports it

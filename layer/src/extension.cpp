@@ -167,11 +167,11 @@ XrResult XRAPI_CALL xrGetRoomLayoutEXTX(XrRoomAnalyzerEXTX analyzer, XrRoomLayou
       if (home->roomCapacityInput > 0) std::copy(result->rooms.begin(), result->rooms.end(), home->rooms);
     }
     if (json != nullptr) {
-      const auto needed = static_cast<uint32_t>(result->json.size() + 1);
+      const auto needed = static_cast<uint32_t>(result->json().size() + 1);
       json->jsonCountOutput = needed;
       if (json->jsonCapacityInput > 0) {
         if (json->jsonCapacityInput < needed) return XR_ERROR_SIZE_INSUFFICIENT;
-        std::memcpy(json->json, result->json.c_str(), needed);
+        std::memcpy(json->json, result->json().c_str(), needed);
       }
     }
     layout->floorHeight = result->floor_y;

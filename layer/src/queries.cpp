@@ -75,7 +75,7 @@ XrResult XRAPI_CALL xrFindRoomPlacementsEXTX(XrRoomAnalyzerEXTX analyzer, const 
     q.seed = query->seed;
     return validated([&]() -> XrResult {
       // Checked before the call order, so an invalid query fails the same way with or without a result.
-      const PlacementResult found = (result ? result->queries : RoomQueries()).find_placements(q);
+      const PlacementResult found = (result ? result->queries() : RoomQueries()).find_placements(q);
       if (!result) return XR_ERROR_CALL_ORDER_INVALID;
       const auto count = static_cast<uint32_t>(found.placements.size());
       placements->placementCountOutput = count;
@@ -111,7 +111,7 @@ XrResult XRAPI_CALL xrRaycastRoomEXTX(XrRoomAnalyzerEXTX analyzer, const XrRoomR
     const float max_distance = info->maxDistance == 0.0f ? INFINITY : info->maxDistance;
     return validated([&]() -> XrResult {
       const std::optional<RayHit> h =
-          (result ? result->queries : RoomQueries()).raycast(vec3_of(info->origin), vec3_of(info->direction), max_distance);
+          (result ? result->queries() : RoomQueries()).raycast(vec3_of(info->origin), vec3_of(info->direction), max_distance);
       if (!result) return XR_ERROR_CALL_ORDER_INVALID;
       hit->hit = h ? XR_TRUE : XR_FALSE;
       const RayHit none{};
@@ -135,7 +135,7 @@ XrResult XRAPI_CALL xrGetRoomRandomPointEXTX(XrRoomAnalyzerEXTX analyzer, const 
       return XR_ERROR_VALIDATION_FAILURE;
     if ((info->surfaces & ~kAllSurfaces) != 0) return XR_ERROR_VALIDATION_FAILURE;
     return validated([&]() -> XrResult {
-      const RoomQueries& queries = result ? result->queries : RoomQueries();
+      const RoomQueries& queries = result ? result->queries() : RoomQueries();
       std::optional<SurfacePoint> found;
       if (info->surfaces != 0) {
         found = queries.random_point_on_surface(static_cast<std::uint32_t>(info->surfaces), info->distance, info->seed);
@@ -160,7 +160,7 @@ XrResult XRAPI_CALL xrLocateRoomPointEXTX(XrRoomAnalyzerEXTX analyzer, const XrV
     if (point == nullptr || !finite(*point) || !has_type(location, XR_TYPE_ROOM_POINT_LOCATION_EXTX))
       return XR_ERROR_VALIDATION_FAILURE;
     if (!result) return XR_ERROR_CALL_ORDER_INVALID;
-    const RoomLocation where = result->queries.locate(vec3_of(*point));
+    const RoomLocation where = result->queries().locate(vec3_of(*point));
     location->insideRoom = where.inside ? XR_TRUE : XR_FALSE;
     location->inFreeSpace = where.free ? XR_TRUE : XR_FALSE;
     location->storeyIndex = where.storey;

@@ -45,8 +45,30 @@ const char* space_name(XrReferenceSpaceType type) {
   }
 }
 
-RoomResult make_room_result(const AnalysisResult& r, const MeshSources& sources, XrDuration duration,
-                            const std::stop_token& stop) {
+const RoomQueries& LazyResultParts::queries() const {
+  std::call_once(queries_once_, [&] { queries_ = RoomQueries(*analysis_); });
+  return queries_;
+}
+
+const std::string& LazyResultParts::json() const {
+  std::call_once(json_once_, [&] {
+    nlohmann::json doc = nlohmann::json::parse(analysis_json(*analysis_, {kJsonSourceName, 0.0}));
+    doc["openxr"] = {{"base_space", sources_.base_space},
+                     {"mesh_source", sources_.source},
+                     {"mesh_source_reason", sources_.source_reason},
+                     {"mesh_query_ms", sources_.query_ms},
+                     {"runtime_meshes", sources_.runtime_meshes},
+                     {"app_read_meshes", sources_.app_read_meshes},
+                     {"submitted_meshes", sources_.submitted_meshes},
+                     {"compute_ms", double(duration_) / 1e6}};
+    json_ = doc.dump(2);
+  });
+  return json_;
+}
+
+RoomResult make_room_result(std::shared_ptr<const AnalysisResult> analysis, const MeshSources& sources,
+                            XrDuration duration, const std::stop_token& stop) {
+  const AnalysisResult& r = *analysis;
   RoomResult out;
   out.floor_y = r.floor_y;
   out.ceiling_y = r.ceiling_y;
@@ -82,18 +104,7 @@ RoomResult make_room_result(const AnalysisResult& r, const MeshSources& sources,
   out.input_triangles = clamp32(r.input.triangles);
   out.duration = duration;
   out.surfaces = extract_surfaces(r, {}, stop);
-  out.queries = RoomQueries(r, out.surfaces);
-
-  nlohmann::json doc = nlohmann::json::parse(analysis_json(r, {kJsonSourceName, 0.0}));
-  doc["openxr"] = {{"base_space", sources.base_space},
-                   {"mesh_source", sources.source},
-                   {"mesh_source_reason", sources.source_reason},
-                   {"mesh_query_ms", sources.query_ms},
-                   {"runtime_meshes", sources.runtime_meshes},
-                   {"app_read_meshes", sources.app_read_meshes},
-                   {"submitted_meshes", sources.submitted_meshes},
-                   {"compute_ms", double(duration) / 1e6}};
-  out.json = doc.dump(2);
+  out.lazy = std::make_shared<const LazyResultParts>(std::move(analysis), sources, duration);
   return out;
 }
 
@@ -103,7 +114,7 @@ void export_files(const std::string& dir, const RoomResult& result, const Bounds
     const std::filesystem::path json_path = std::filesystem::path(dir) / "analysis.json";
     {
       std::ofstream out(json_path);
-      if (!out || !(out << result.json << '\n')) throw std::runtime_error("cannot write " + json_path.string());
+      if (!out || !(out << result.json() << '\n')) throw std::runtime_error("cannot write " + json_path.string());
     }
     write_obj(bounds, (std::filesystem::path(dir) / "bounds.obj").string());
     log_info("exported analysis.json and bounds.obj to " + dir);

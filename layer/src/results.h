@@ -10,6 +10,8 @@
 #include <openxr/XR_EXTX_room_understanding.h>
 
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <stop_token>
 #include <string>
 #include <vector>
@@ -18,6 +20,36 @@ namespace roomsense::layer {
 
 // The JSON's input.file for an analysis made inside an OpenXR app.
 inline constexpr const char* kJsonSourceName = "openxr:XR_APILAYER_ROOMSENSE_room_understanding";
+
+// Where the meshes of one analysis came from, for the JSON's "openxr" member and the log.
+struct MeshSources {
+  std::string source;               // the extension the runtime's meshes came through (empty: none)
+  std::string source_reason;        // why that one (or why none)
+  double query_ms = 0.0;            // the layer's own query through it
+  std::size_t runtime_meshes = 0;   // the layer's own query
+  std::size_t app_read_meshes = 0;  // scene meshes the application read (passive capture)
+  std::size_t submitted_meshes = 0; // xrSubmitRoomMeshEXTX
+  std::string base_space;           // "LOCAL", "STAGE", ...
+};
+
+// What only some applications ask of a result, built at the first ask (on the asking thread; concurrent asks wait
+// for the one build): the placement queries' index and the JSON. Built at every compute, they took about two
+// thirds of a compute after an update of thesis-room1 (bench/README.md, stop 63).
+class LazyResultParts {
+ public:
+  LazyResultParts(std::shared_ptr<const AnalysisResult> analysis, MeshSources sources, XrDuration duration)
+      : analysis_(std::move(analysis)), sources_(std::move(sources)), duration_(duration) {}
+  const RoomQueries& queries() const;
+  const std::string& json() const;
+
+ private:
+  std::shared_ptr<const AnalysisResult> analysis_;
+  MeshSources sources_;
+  XrDuration duration_ = 0;
+  mutable std::once_flag queries_once_, json_once_;
+  mutable RoomQueries queries_;
+  mutable std::string json_;
+};
 
 struct RoomResult {
   float floor_y = 0.0f, ceiling_y = 0.0f;
@@ -36,25 +68,18 @@ struct RoomResult {
   std::uint32_t input_vertices = 0, input_triangles = 0;
   XrDuration duration = 0;
   std::vector<Surface> surfaces;  // the planes the standard spatial-entity API serves (spatial/)
-  RoomQueries queries;            // placement queries, raycasts, random points (queries.cpp)
   std::uint64_t input_hash = 0;   // of the meshes and labels analysed (Analyzer::compute)
-  std::string json;  // roomsense.analysis/1, with an "openxr" member saying where the meshes came from
+  std::shared_ptr<const LazyResultParts> lazy;
+  // Placement queries, raycasts, random points (queries.cpp).
+  const RoomQueries& queries() const { return lazy->queries(); }
+  // roomsense.analysis/1, with an "openxr" member saying where the meshes came from.
+  const std::string& json() const { return lazy->json(); }
 };
 
-// Where the meshes of one analysis came from, for the JSON's "openxr" member and the log.
-struct MeshSources {
-  std::string source;               // the extension the runtime's meshes came through (empty: none)
-  std::string source_reason;        // why that one (or why none)
-  double query_ms = 0.0;            // the layer's own query through it
-  std::size_t runtime_meshes = 0;   // the layer's own query
-  std::size_t app_read_meshes = 0;  // scene meshes the application read (passive capture)
-  std::size_t submitted_meshes = 0; // xrSubmitRoomMeshEXTX
-  std::string base_space;           // "LOCAL", "STAGE", ...
-};
-
-// A stop request throws Error(Cancelled) (the surfaces are extracted here).
-RoomResult make_room_result(const AnalysisResult& analysis, const MeshSources& sources, XrDuration duration,
-                            const std::stop_token& stop = {});
+// A stop request throws Error(Cancelled) (the surfaces are extracted here). The result keeps `analysis` for the
+// parts built at first use.
+RoomResult make_room_result(std::shared_ptr<const AnalysisResult> analysis, const MeshSources& sources,
+                            XrDuration duration, const std::stop_token& stop = {});
 
 // Writes analysis.json and bounds.obj into `dir` (created when missing). Failures are logged, never thrown.
 void export_files(const std::string& dir, const RoomResult& result, const BoundsMesh& bounds);

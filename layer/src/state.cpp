@@ -50,7 +50,7 @@ void shut_down_session(SessionState& session, const std::vector<std::shared_ptr<
   }
   if (spatial) spatial->shut_down();
   for (const auto& a : analyzers) a->shut_down();
-  for (const EnabledSource& s : session.instance->sources) s.source->forget_session(session.handle);
+  for (const EnabledSource& s : session.instance->sources) s.source->end_session(session.handle);
   std::jthread exporter;
   {
     std::lock_guard lock(session.mutex);

@@ -58,6 +58,7 @@ struct InstanceState {
   std::set<std::string> extensions;  // enabled ones
   Config config;
   std::shared_ptr<const Room> room;  // null when ROOMSENSE_SIM_SCENE is unset
+  std::shared_ptr<MeshChunks> msft_chunks = std::make_shared<MeshChunks>();
   std::deque<SessionEvent> events;
   std::deque<XrEventDataBuffer> extension_events;  // scene extensions' events, after the session events
   std::vector<std::string> paths;  // XrPath n names paths[n - 1]
@@ -92,6 +93,7 @@ struct ComputeJob {
 
 struct ObserverState {
   std::uint64_t session = 0;
+  XrTime first_compute = 0;  // what its components' updateTime says: the room has not changed since
   std::shared_ptr<ComputeJob> job = std::make_shared<ComputeJob>();
   std::jthread worker;  // joined (after a stop request) when the observer goes away
 };

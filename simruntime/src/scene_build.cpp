@@ -61,23 +61,35 @@ std::shared_ptr<const MeshBuffer> quad_mesh(const XrExtent2Df& size) {
 
 }  // namespace
 
+const std::vector<MeshChunks::Piece>& MeshChunks::of(const Scan& mesh, double chunk_size) {
+  std::call_once(once_, [&] {
+    for (Chunk& chunk : split_into_chunks(mesh, chunk_size))
+      pieces_.push_back({chunk.pose, std::make_shared<const MeshBuffer>(std::move(chunk.mesh)), chunk.world_min, chunk.world_max});
+  });
+  return pieces_;
+}
+
 std::shared_ptr<const SceneData> build_scene(const ComputeRequest& request) {
   auto scene = std::make_shared<SceneData>();
   scene->update_time = request.time;
-  std::uint64_t index = 0;
   const Room& room = *request.room;
+  // Each component's UUID is the observer's serial and the component's place in the room (its chunk, its object),
+  // not its place in this scene: the observer's computes correlate it, whatever the bounds leave out.
+  const std::vector<MeshChunks::Piece>& chunks = request.chunks->of(room.mesh, request.chunk_size);
+  const std::uint64_t first_object = 1 + 2 * static_cast<std::uint64_t>(chunks.size());
 
   if (request.visual_mesh || request.collider_mesh) {
-    for (Chunk& chunk : split_into_chunks(room.mesh, request.chunk_size)) {
+    for (std::size_t n = 0; n < chunks.size(); ++n) {
+      const MeshChunks::Piece& chunk = chunks[n];
       if (!box_intersects(request.bounds, chunk.world_min, chunk.world_max)) continue;
-      auto mesh = std::make_shared<const MeshBuffer>(std::move(chunk.mesh));
+      const std::shared_ptr<const MeshBuffer>& mesh = chunk.mesh;
       for (XrSceneComponentTypeMSFT type : {XR_SCENE_COMPONENT_TYPE_VISUAL_MESH_MSFT, XR_SCENE_COMPONENT_TYPE_COLLIDER_MESH_MSFT}) {
         if ((type == XR_SCENE_COMPONENT_TYPE_VISUAL_MESH_MSFT && !request.visual_mesh) ||
             (type == XR_SCENE_COMPONENT_TYPE_COLLIDER_MESH_MSFT && !request.collider_mesh))
           continue;
         SceneComponent c;
         c.type = type;
-        c.id = make_uuid(request.serial, ++index);
+        c.id = make_uuid(request.serial, 1 + 2 * n + (type == XR_SCENE_COMPONENT_TYPE_COLLIDER_MESH_MSFT ? 1 : 0));
         c.pose = chunk.pose;
         c.mesh_buffer_id = next_mesh_buffer_id();
         c.uint16_ok = mesh->fits_uint16();
@@ -88,19 +100,20 @@ std::shared_ptr<const SceneData> build_scene(const ComputeRequest& request) {
   }
 
   if (request.planes || request.plane_meshes) {
-    for (const RoomObject& object : room.objects) {
+    for (std::size_t n = 0; n < room.objects.size(); ++n) {
+      const RoomObject& object = room.objects[n];
       const Rigid pose = to_rigid(object.plane_pose);
       if (!box_intersects(request.bounds, pose.translation, pose.translation)) continue;
       SceneComponent obj;
       obj.type = XR_SCENE_COMPONENT_TYPE_OBJECT_MSFT;
-      obj.id = make_uuid(request.serial, ++index);
+      obj.id = make_uuid(request.serial, first_object + 2 * n);
       obj.pose = pose;
       obj.object_type = object.kind;
       scene->components.push_back(obj);
 
       SceneComponent plane;
       plane.type = XR_SCENE_COMPONENT_TYPE_PLANE_MSFT;
-      plane.id = make_uuid(request.serial, ++index);
+      plane.id = make_uuid(request.serial, first_object + 2 * n + 1);
       plane.parent = obj.id;
       plane.pose = pose;
       plane.object_type = object.kind;

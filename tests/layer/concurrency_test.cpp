@@ -15,6 +15,7 @@
 #include <atomic>
 #include <chrono>
 #include <memory>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -134,6 +135,56 @@ TEST(LayerConcurrency, EightAnalyzersComputeAndAreDestroyedOnEightThreads) {
         }
         if (app.extx.destroy(a) != XR_SUCCESS) ++failures;
       }
+    });
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(failures.load(), 0);
+  EXPECT_EQ(completed.load(), kThreads);
+}
+
+// Analyzers of one session query the runtime from their own workers: they share the source's kept scene observer
+// (one query computes on it at a time) and the chunks it served. Each result's JSON and placement index, built at
+// their first use, are asked for from two threads at once, and both get the same answer.
+TEST(LayerConcurrency, AnalyzersOfOneSessionShareTheRuntimeQueryAndTheResultsLazyParts) {
+  ScopedEnv only("ROOMSENSE_SIM_EXTENSIONS", std::string("XR_MSFT_scene_understanding"));
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  App app;
+  std::atomic<int> failures{0}, completed{0};
+  const auto read_json = [&](XrRoomAnalyzerEXTX a) {
+    XrRoomAnalysisJsonEXTX json{XR_TYPE_ROOM_ANALYSIS_JSON_EXTX, nullptr};
+    XrRoomLayoutEXTX layout{XR_TYPE_ROOM_LAYOUT_EXTX, &json};
+    if (app.extx.layout(a, &layout) != XR_SUCCESS) return std::string();
+    std::vector<char> text(json.jsonCountOutput);
+    json.jsonCapacityInput = json.jsonCountOutput;
+    json.json = text.data();
+    if (app.extx.layout(a, &layout) != XR_SUCCESS || text.empty()) return std::string();
+    return std::string(text.data());
+  };
+  const auto placements = [&](XrRoomAnalyzerEXTX a) {
+    XrRoomPlacementQueryEXTX q{XR_TYPE_ROOM_PLACEMENT_QUERY_EXTX, nullptr};
+    q.objectSize = {0.3f, 0.3f, 0.3f};
+    q.surfaces = XR_ROOM_SURFACE_FLOOR_BIT_EXTX;
+    q.maxPlacements = 3;
+    XrRoomPlacementsEXTX out{XR_TYPE_ROOM_PLACEMENTS_EXTX, nullptr};
+    return app.extx.place(a, &q, &out) == XR_SUCCESS ? int(out.placementCountOutput) : -1;
+  };
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads / 2; ++t)
+    threads.emplace_back([&] {
+      const XrRoomAnalyzerEXTX a = app.analyzer();
+      for (int round = 0; round < 2; ++round) {
+        if (app.compute(a, true) != XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX) {
+          ++failures;
+          continue;
+        }
+        std::string json[2];
+        int found[2] = {-1, -1};
+        std::thread other([&] { json[1] = read_json(a), found[1] = placements(a); });
+        json[0] = read_json(a), found[0] = placements(a);
+        other.join();
+        if (json[0].empty() || json[0] != json[1] || found[0] <= 0 || found[0] != found[1]) ++failures;
+        else ++completed;
+      }
+      if (app.extx.destroy(a) != XR_SUCCESS) ++failures;
     });
   for (auto& t : threads) t.join();
   EXPECT_EQ(failures.load(), 0);

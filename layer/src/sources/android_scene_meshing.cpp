@@ -131,6 +131,12 @@ std::vector<SourceChunk> AndroidSource::run_query(const QueryContext& context, s
       ++unposed;
       continue;
     }
+    if (std::optional<SourceChunk> kept =
+            served_before(context, chunk_id(state.submeshId), static_cast<std::uint64_t>(state.lastUpdatedTime),
+                          state.submeshPoseInBaseSpace)) {
+      out.push_back(std::move(*kept));
+      continue;
+    }
     // Counts first, then the arrays (two-call idiom, one submesh at a time).
     auto data = xr_struct<XrSceneSubmeshDataANDROID>(XR_TYPE_SCENE_SUBMESH_DATA_ANDROID);
     data.submeshId = state.submeshId;
@@ -152,9 +158,11 @@ std::vector<SourceChunk> AndroidSource::run_query(const QueryContext& context, s
       semantics.resize(std::min<std::size_t>(semantics.size(), vertices.size()));
       indices.resize(std::min<std::size_t>(indices.size(), data.indexCountOutput));
     }
-    out.push_back(submesh_chunk(state.submeshId, state.lastUpdatedTime, to_rigid(state.submeshPoseInBaseSpace), vertices.data(),
-                                vertices.size(), labelled && !semantics.empty() ? semantics.data() : nullptr, indices.data(),
-                                indices.size()));
+    SourceChunk chunk = submesh_chunk(state.submeshId, state.lastUpdatedTime, to_rigid(state.submeshPoseInBaseSpace),
+                                      vertices.data(), vertices.size(), labelled && !semantics.empty() ? semantics.data() : nullptr,
+                                      indices.data(), indices.size());
+    chunk.placed = state.submeshPoseInBaseSpace;
+    out.push_back(std::move(chunk));
   }
   if (unposed > 0) log_warn(std::to_string(unposed) + " runtime submesh(es) had no valid pose and were left out");
   if (out.empty() && !tracking)  // initializing or waiting: say so rather than "served nothing"

@@ -320,7 +320,9 @@ std::vector<SourceChunk> ExtPlaneSource::run_query(const QueryContext& context, 
     } else if (has(XR_SPATIAL_COMPONENT_TYPE_BOUNDED_2D_EXT)) {
       mesh = bounds_plane(bounds[i]);
     }
-    out.push_back(plane_chunk(ids[i], std::move(mesh), labels[i]));  // an empty one is dropped by checked_chunks
+    SourceChunk chunk = plane_chunk(ids[i], std::move(mesh), labels[i]);  // in the base space already
+    if (std::optional<SourceChunk> kept = served_before(context, chunk.id, chunk.change, chunk.placed)) chunk = std::move(*kept);
+    out.push_back(std::move(chunk));  // an empty one is dropped by checked_chunks
   }
   return out;
 }

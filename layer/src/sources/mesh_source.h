@@ -4,27 +4,19 @@
 // application's calls it watches (passive capture), and runs an active query of its own on an analyzer's
 // worker thread. What it delivers is chunks with a stable id, a change marker and the runtime's labels.
 #pragma once
-#include "../mesh.h"
-#include "roomsense/surface_label.h"
+#include "served_chunks.h"
 
 #include <openxr/openxr.h>
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <stop_token>
 #include <string>
 #include <vector>
 
 namespace roomsense::layer {
-
-// One chunk of the runtime's scene: a mesh block, a submesh, a plane.
-struct SourceChunk {
-  std::string id;            // stable across queries: the source's prefix and the runtime's uuid or buffer id
-  std::uint64_t change = 0;  // changes when the content does: lastUpdatedTime, a version, or a content hash
-  MeshPiece mesh;            // in the base space (active query) or the session's capture space (passive)
-  std::vector<SurfaceLabel> labels;  // one per triangle, or empty when the runtime gives none
-};
 
 // What an active query is asked: everything the runtime has now, located in `base` at `time`.
 struct QueryContext {
@@ -45,15 +37,34 @@ class MeshSource {
   // triangles (non-finite vertices, indices out of range, a ragged index count) and empty chunks are dropped
   // with one log line. Once a call of the session came back XR_ERROR_SESSION_LOST, it returns nothing without
   // calling the runtime (the loss was logged once already).
-  std::vector<SourceChunk> query(const QueryContext& context, std::stop_token stop);
-  // The session is going away: forget the records of its handles (passive capture). Called without locks.
-  virtual void forget_session(XrSession session) { (void)session; }
+  // A chunk served at the source's last query whose change marker and placement are the same is the same chunk
+  // (served_chunks.h): it is not read, checked or keyed again.
+  struct Answer {
+    std::vector<ServedChunk> chunks;
+    std::size_t read = 0;  // of them, those read from the runtime (the others were served before as they are)
+  };
+  Answer query(const QueryContext& context, std::stop_token stop);
+  // The session is going away: forget the chunks served to it and the records of its handles (passive capture).
+  // Called without locks.
+  void end_session(XrSession session) {
+    served_.forget(session);
+    forget_session(session);
+  }
 
   const char* name = "a mesh source";  // its SourceInfo's, set when it is created
 
  protected:
   // The source's own query, as query() describes it, before the shared checks.
   virtual std::vector<SourceChunk> run_query(const QueryContext& context, std::stop_token stop) = 0;
+  // end_session's: forget the records of the session's handles (passive capture).
+  virtual void forget_session(XrSession session) { (void)session; }
+  // For run_query: the chunk to list for `id` when the last query served it with this change marker and placement
+  // (its same_as set), so that the source skips reading it; nullopt when it must be read.
+  std::optional<SourceChunk> served_before(const QueryContext& context, const std::string& id, std::uint64_t change,
+                                           const XrPosef& placed) const;
+
+ private:
+  ServedChunks served_;
 };
 
 struct HookEntry {

@@ -61,15 +61,16 @@ class MetaSource final : public MeshSource {
   MeshPiece read_mesh(XrSpace space) const;
 };
 
-// Calls `step` until it returns true, every kRuntimePollInterval, for at most runtime_timeout(); false when stopped.
+// Calls `step` until it returns true (PollPause between calls), for at most runtime_timeout(); false when stopped.
 template <typename Step>
 bool poll(const char* what, std::stop_token stop, Step&& step) {
   const auto deadline = std::chrono::steady_clock::now() + runtime_timeout();
+  PollPause pause;
   while (!step()) {
     if (stop.stop_requested()) return false;
     if (std::chrono::steady_clock::now() > deadline)
       throw std::runtime_error(std::string(what) + " did not complete within " + std::to_string(runtime_timeout().count()) + " ms");
-    std::this_thread::sleep_for(kRuntimePollInterval);
+    pause.wait();
   }
   return true;
 }
@@ -174,8 +175,13 @@ std::vector<SourceChunk> MetaSource::run_query(const QueryContext& context, std:
     SourceChunk chunk;
     chunk.id = chunk_id(found.uuid);
     chunk.mesh = read_mesh(found.space);
-    chunk.change = content_hash(chunk.mesh);  // the mesh as served, in its own space
-    transform_in_place(chunk.mesh.vertices, to_rigid(location.pose));
+    chunk.change = content_hash(chunk.mesh);  // the mesh as served, in its own space: it has no version to read first
+    if (std::optional<SourceChunk> kept = served_before(context, chunk.id, chunk.change, location.pose)) {
+      out.push_back(std::move(*kept));  // not moved, checked or keyed again
+      continue;
+    }
+    chunk.placed = location.pose;
+    transform_in_place(chunk.mesh.vertices, to_rigid(chunk.placed));
     out.push_back(std::move(chunk));  // the global mesh has no semantic labels per triangle
   }
   if (unlocated > 0) log_warn(std::to_string(unlocated) + " runtime mesh(es) could not be located and were left out");

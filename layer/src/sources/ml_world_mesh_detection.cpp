@@ -127,24 +127,30 @@ std::vector<SourceChunk> MlSource::run_query(const QueryContext& context, std::s
   std::erase_if(states, [](const XrWorldMeshBlockStateML& s) { return s.status == XR_WORLD_MESH_BLOCK_STATUS_DELETED_ML; });
   if (states.empty() || stop.stop_requested()) return {};
 
-  // 2. A buffer, and every block's mesh.
-  auto size_info = xr_struct<XrWorldMeshBufferRecommendedSizeInfoML>(XR_TYPE_WORLD_MESH_BUFFER_RECOMMENDED_SIZE_INFO_ML);
-  size_info.maxBlockCount = static_cast<std::uint32_t>(states.size());
-  auto size = xr_struct<XrWorldMeshBufferSizeML>(XR_TYPE_WORLD_MESH_BUFFER_SIZE_ML);
-  check(xrGetWorldMeshBufferRecommendSizeML(handles.detector, &size_info, &size), "xrGetWorldMeshBufferRecommendSizeML");
-  auto buffer = xr_struct<XrWorldMeshBufferML>(XR_TYPE_WORLD_MESH_BUFFER_ML);
-  check(xrAllocateWorldMeshBufferML(handles.detector, &size, &buffer), "xrAllocateWorldMeshBufferML");
-  handles.buffer = buffer;
-
+  // 2. The blocks not served before as they are now (the runtime meshes only those), a buffer, and their meshes.
+  std::vector<SourceChunk> out;
   std::vector<XrWorldMeshBlockRequestML> blocks;
   std::map<std::string, const XrWorldMeshBlockStateML*> by_uuid;
   for (const XrWorldMeshBlockStateML& s : states) {
+    if (std::optional<SourceChunk> kept =
+            served_before(context, chunk_id(s.uuid), static_cast<std::uint64_t>(s.lastUpdateTime), s.meshBoundingBoxCenter)) {
+      out.push_back(std::move(*kept));
+      continue;
+    }
     auto b = xr_struct<XrWorldMeshBlockRequestML>(XR_TYPE_WORLD_MESH_BLOCK_REQUEST_ML);
     b.uuid = s.uuid;
     b.lod = XR_WORLD_MESH_DETECTOR_LOD_MAXIMUM_ML;
     blocks.push_back(b);
     by_uuid[key(s.uuid)] = &s;
   }
+  if (blocks.empty()) return out;
+  auto size_info = xr_struct<XrWorldMeshBufferRecommendedSizeInfoML>(XR_TYPE_WORLD_MESH_BUFFER_RECOMMENDED_SIZE_INFO_ML);
+  size_info.maxBlockCount = static_cast<std::uint32_t>(blocks.size());
+  auto size = xr_struct<XrWorldMeshBufferSizeML>(XR_TYPE_WORLD_MESH_BUFFER_SIZE_ML);
+  check(xrGetWorldMeshBufferRecommendSizeML(handles.detector, &size_info, &size), "xrGetWorldMeshBufferRecommendSizeML");
+  auto buffer = xr_struct<XrWorldMeshBufferML>(XR_TYPE_WORLD_MESH_BUFFER_ML);
+  check(xrAllocateWorldMeshBufferML(handles.detector, &size, &buffer), "xrAllocateWorldMeshBufferML");
+  handles.buffer = buffer;
   auto get = xr_struct<XrWorldMeshGetInfoML>(XR_TYPE_WORLD_MESH_GET_INFO_ML);
   get.flags = 0;  // counter-clockwise triangles, no point cloud, no planarizing
   get.blockCount = static_cast<std::uint32_t>(blocks.size());
@@ -163,8 +169,7 @@ std::vector<SourceChunk> MlSource::run_query(const QueryContext& context, std::s
   meshes.resize(std::min<std::size_t>(meshes.size(), done.blockCount));
 
   // 3. Into the base space.
-  std::vector<SourceChunk> out;
-  out.reserve(meshes.size());
+  out.reserve(out.size() + meshes.size());
   std::size_t undelivered = 0;
   for (const XrWorldMeshBlockML& m : meshes) {
     if (stop.stop_requested()) return {};
@@ -185,6 +190,7 @@ std::vector<SourceChunk> MlSource::run_query(const QueryContext& context, std::s
                                std::to_string(handles.buffer.bufferSize) + "-byte buffer");
     std::optional<SourceChunk> chunk = block_chunk(m, state->second->lastUpdateTime, to_rigid(state->second->meshBoundingBoxCenter));
     if (!chunk) throw std::runtime_error("the runtime delivered a world mesh block of " + std::to_string(m.vertexCount) + " vertices");
+    chunk->placed = state->second->meshBoundingBoxCenter;
     out.push_back(std::move(*chunk));
   }
   if (undelivered > 0) {

@@ -25,7 +25,6 @@ using xr::check;
   _(xrGetSceneComponentsMSFT) _(xrLocateSceneComponentsMSFT) _(xrGetSceneMeshBuffersMSFT)
 
 constexpr float kQueryRadius = 100.0f;  // metres around the base space's origin: any room
-constexpr auto kPollInterval = std::chrono::milliseconds(5);
 constexpr std::size_t kMaxComponents = 1u << 20;
 
 std::string chunk_id(const XrUuidMSFT& id) { return uuid_chunk_id("msft", id.bytes); }
@@ -42,21 +41,46 @@ class MsftSource final : public MeshSource {
 
   std::vector<SourceChunk> run_query(const QueryContext& context, std::stop_token stop) override;
   void forget_session(XrSession session) override;
+
+  // The observer of a session's queries, kept from one to the next: the runtime correlates component ids across an
+  // observer's computes (the spec), so a mesh it did not change keeps its id and update time, and is neither read
+  // again (served_before) nor analysed again (the analyzer's ChunkFeed). One query at a time computes on it.
+  struct KeptObserver {
+    std::mutex busy;
+    XrSceneObserverMSFT handle = XR_NULL_HANDLE;
+  };
+  std::shared_ptr<KeptObserver> kept_observer(XrSession session);
+
+ private:
+  std::mutex observers_mutex_;
+  std::unordered_map<XrSession, std::shared_ptr<KeptObserver>> observers_;
 };
 
-// ---- active query: an observer, a new scene of visual meshes around the base space's origin, every mesh
-// read and located in the base space
+// ---- active query: the session's observer, a new scene of visual meshes around the base space's origin, every
+// mesh read and located in the base space
 
-// Destroys what the query created, whatever happens.
+// Destroys the query's scene, whatever happens, and the kept observer unless its compute ended (a failed, stopped
+// or never-ending compute leaves it unusable: the next query makes a new one).
 struct QueryHandles {
   const MsftSource& next;
-  XrSceneObserverMSFT observer = XR_NULL_HANDLE;
+  XrSceneObserverMSFT& observer;
   XrSceneMSFT scene = XR_NULL_HANDLE;
+  bool observer_reusable = false;
   ~QueryHandles() {
     if (scene != XR_NULL_HANDLE) next.xrDestroySceneMSFT(scene);
-    if (observer != XR_NULL_HANDLE) next.xrDestroySceneObserverMSFT(observer);
+    if (!observer_reusable && observer != XR_NULL_HANDLE) {
+      next.xrDestroySceneObserverMSFT(observer);
+      observer = XR_NULL_HANDLE;
+    }
   }
 };
+
+std::shared_ptr<MsftSource::KeptObserver> MsftSource::kept_observer(XrSession session) {
+  std::lock_guard lock(observers_mutex_);
+  std::shared_ptr<KeptObserver>& kept = observers_[session];
+  if (!kept) kept = std::make_shared<KeptObserver>();
+  return kept;
+}
 
 // Vertices and indices of one mesh buffer, each with the two-call idiom.
 MeshPiece read_mesh_buffer(const MsftSource& next, XrSceneMSFT scene, std::uint64_t buffer_id) {
@@ -111,9 +135,13 @@ std::vector<SourceChunk> MsftSource::run_query(const QueryContext& context, std:
     component_type = XR_SCENE_COMPONENT_TYPE_COLLIDER_MESH_MSFT;
   }
 
-  QueryHandles handles{*this};
-  auto observer_info = xr_struct<XrSceneObserverCreateInfoMSFT>(XR_TYPE_SCENE_OBSERVER_CREATE_INFO_MSFT);
-  check(xrCreateSceneObserverMSFT(context.session, &observer_info, &handles.observer), "xrCreateSceneObserverMSFT");
+  const std::shared_ptr<KeptObserver> kept = kept_observer(context.session);
+  std::lock_guard busy(kept->busy);
+  QueryHandles handles{*this, kept->handle};
+  if (handles.observer == XR_NULL_HANDLE) {
+    auto observer_info = xr_struct<XrSceneObserverCreateInfoMSFT>(XR_TYPE_SCENE_OBSERVER_CREATE_INFO_MSFT);
+    check(xrCreateSceneObserverMSFT(context.session, &observer_info, &handles.observer), "xrCreateSceneObserverMSFT");
+  }
 
   const XrSceneSphereBoundMSFT sphere{{0.0f, 0.0f, 0.0f}, kQueryRadius};
   auto compute = xr_struct<XrNewSceneComputeInfoMSFT>(XR_TYPE_NEW_SCENE_COMPUTE_INFO_MSFT);
@@ -127,16 +155,18 @@ std::vector<SourceChunk> MsftSource::run_query(const QueryContext& context, std:
   check(xrComputeNewSceneMSFT(handles.observer, &compute), "xrComputeNewSceneMSFT");
 
   const auto deadline = std::chrono::steady_clock::now() + runtime_timeout();
+  PollPause pause;
   XrSceneComputeStateMSFT state = XR_SCENE_COMPUTE_STATE_UPDATING_MSFT;
   for (;;) {
     check(xrGetSceneComputeStateMSFT(handles.observer, &state), "xrGetSceneComputeStateMSFT");
     if (state != XR_SCENE_COMPUTE_STATE_UPDATING_MSFT) break;
     if (stop.stop_requested()) return {};
     if (std::chrono::steady_clock::now() > deadline) throw std::runtime_error("the runtime's scene compute did not complete within " + std::to_string(runtime_timeout().count()) + " ms");
-    std::this_thread::sleep_for(kPollInterval);
+    pause.wait();
   }
   if (state != XR_SCENE_COMPUTE_STATE_COMPLETED_MSFT)
     throw std::runtime_error("the runtime's scene compute ended in state " + std::to_string(state) + " (failed)");
+  handles.observer_reusable = true;
   if (stop.stop_requested()) return {};
 
   auto scene_info = xr_struct<XrSceneCreateInfoMSFT>(XR_TYPE_SCENE_CREATE_INFO_MSFT);
@@ -184,11 +214,18 @@ std::vector<SourceChunk> MsftSource::run_query(const QueryContext& context, std:
       ++unlocated;
       continue;
     }
+    const std::string id = chunk_id(components[i].id);
+    const auto change = static_cast<std::uint64_t>(components[i].updateTime);
+    if (std::optional<SourceChunk> kept = served_before(context, id, change, locations[i].pose)) {
+      out.push_back(std::move(*kept));
+      continue;
+    }
     SourceChunk chunk;
-    chunk.id = chunk_id(components[i].id);
-    chunk.change = static_cast<std::uint64_t>(components[i].updateTime);
+    chunk.id = id;
+    chunk.change = change;
+    chunk.placed = locations[i].pose;
     chunk.mesh = read_mesh_buffer(*this, handles.scene, meshes[i].meshBufferId);
-    transform_in_place(chunk.mesh.vertices, to_rigid(locations[i].pose));
+    transform_in_place(chunk.mesh.vertices, to_rigid(chunk.placed));
     out.push_back(std::move(chunk));
   }
   if (unlocated > 0) log_warn(std::to_string(unlocated) + " runtime mesh(es) could not be located and were left out");
@@ -233,6 +270,15 @@ Records& records() {
 }
 
 void MsftSource::forget_session(XrSession session) {
+  std::shared_ptr<KeptObserver> kept;
+  {
+    std::lock_guard lock(observers_mutex_);
+    if (const auto it = observers_.find(session); it != observers_.end()) kept = std::move(it->second), observers_.erase(it);
+  }
+  if (kept) {
+    std::lock_guard busy(kept->busy);  // the session's analyses have stopped: no query holds it
+    if (kept->handle != XR_NULL_HANDLE) xrDestroySceneObserverMSFT(kept->handle);
+  }
   Records& r = records();
   std::lock_guard lock(r.mutex);
   std::erase_if(r.observers, [&](const auto& entry) { return entry.second.session->handle == session; });

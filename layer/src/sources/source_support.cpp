@@ -1,9 +1,11 @@
 #include "source_support.h"
 
+#include "../chunk_feed.h"
 #include "../guard.h"
 #include "../log.h"
 #include "../state.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -26,7 +28,7 @@ std::chrono::milliseconds runtime_timeout() { return std::chrono::milliseconds(g
 
 void set_runtime_timeout(std::chrono::milliseconds timeout) { g_timeout_ms.store(timeout.count()); }
 
-std::vector<SourceChunk> MeshSource::query(const QueryContext& context, std::stop_token stop) {
+MeshSource::Answer MeshSource::query(const QueryContext& context, std::stop_token stop) {
   const std::shared_ptr<SessionState> session = registry().session(context.session);
   if (session && session->lost.load()) return {};
   std::vector<SourceChunk> chunks;
@@ -36,15 +38,33 @@ std::vector<SourceChunk> MeshSource::query(const QueryContext& context, std::sto
     if (e.result == XR_ERROR_SESSION_LOST && session) session->lost.store(true);
     throw;
   }
-  return checked_chunks(name, std::move(chunks));
+  Answer answer;
+  answer.read = static_cast<std::size_t>(std::count_if(chunks.begin(), chunks.end(), [](const SourceChunk& c) { return !c.same_as; }));
+  answer.chunks = checked_chunks(name, std::move(chunks));
+  if (!stop.stop_requested()) served_.keep(context.session, answer.chunks);
+  return answer;
 }
 
-std::vector<SourceChunk> checked_chunks(const char* source, std::vector<SourceChunk> chunks) {
+std::optional<SourceChunk> MeshSource::served_before(const QueryContext& context, const std::string& id,
+                                                     std::uint64_t change, const XrPosef& placed) const {
+  ServedChunk kept = served_.find(context.session, id, change, placed);
+  if (!kept) return std::nullopt;
+  SourceChunk listed;
+  listed.id = id;
+  listed.same_as = std::move(kept);
+  return listed;
+}
+
+std::vector<ServedChunk> checked_chunks(const char* source, std::vector<SourceChunk> chunks) {
   const std::size_t served = chunks.size();
   std::size_t ragged = 0, non_finite = 0, out_of_range = 0, dropped = 0, empty = 0;
-  std::vector<SourceChunk> out;
+  std::vector<ServedChunk> out;
   out.reserve(chunks.size());
   for (SourceChunk& chunk : chunks) {
+    if (chunk.same_as) {
+      out.push_back(std::move(chunk.same_as));  // checked when it was served first
+      continue;
+    }
     MeshPiece& m = chunk.mesh;
     if (m.indices.size() % 3 != 0) ++ragged, m.indices.resize(m.indices.size() / 3 * 3);
     const std::size_t triangles = m.indices.size() / 3;
@@ -78,7 +98,8 @@ std::vector<SourceChunk> checked_chunks(const char* source, std::vector<SourceCh
       ++empty;  // nothing left to analyse (vertices no triangle ever used still count: they stay, as a point cloud)
       continue;
     }
-    out.push_back(std::move(chunk));
+    chunk.key = piece_key(m, chunk.labels.empty() ? nullptr : &chunk.labels);
+    out.push_back(std::make_shared<const SourceChunk>(std::move(chunk)));
   }
   std::string problems;
   const auto add = [&](std::size_t n, const std::string& what) {
@@ -115,6 +136,7 @@ bool wait_for_future(PFN_xrPollFutureEXT poll, PFN_xrCancelFutureEXT cancel, XrI
     cancel(instance, &info);
   };
   const auto deadline = std::chrono::steady_clock::now() + runtime_timeout();
+  PollPause pause;
   for (;;) {
     auto poll_info = xr_struct<XrFuturePollInfoEXT>(XR_TYPE_FUTURE_POLL_INFO_EXT);
     poll_info.future = future;
@@ -129,7 +151,7 @@ bool wait_for_future(PFN_xrPollFutureEXT poll, PFN_xrCancelFutureEXT cancel, XrI
       give_up();
       throw std::runtime_error(std::string(what) + ": the runtime's future was not ready within " + timeout_text());
     }
-    std::this_thread::sleep_for(kRuntimePollInterval);
+    pause.wait();
   }
 }
 

@@ -7,14 +7,30 @@
 
 #include "roomsense/xr/ext/XR_EXT_future.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <stop_token>
 #include <string>
+#include <thread>
 
 namespace roomsense::layer {
 
 inline constexpr auto kRuntimePollInterval = std::chrono::milliseconds(2);
+
+// The pauses between polls of the runtime's work: 100 us first, doubling up to kRuntimePollInterval. A runtime
+// whose work is done within a millisecond (a simulated one, or a scene query of a room it holds) is not kept
+// waiting a whole interval: a fixed 5 ms pause was most of such a query.
+class PollPause {
+ public:
+  void wait() {
+    std::this_thread::sleep_for(next_);
+    next_ = std::min<std::chrono::microseconds>(2 * next_, kRuntimePollInterval);
+  }
+
+ private:
+  std::chrono::microseconds next_{100};
+};
 inline constexpr auto kRuntimeTimeout = std::chrono::seconds(10);  // a future or query that never completes
 
 // kRuntimeTimeout, or ROOMSENSE_RUNTIME_TIMEOUT_MS as read at the last xrCreateInstance (config.cpp).
@@ -32,8 +48,10 @@ inline bool located(XrSpaceLocationFlags flags) {
 std::string uuid_chunk_id(const char* prefix, const std::uint8_t (&bytes)[16]);
 
 // The chunks of one query with the runtime's broken triangles dropped, and chunks left without triangles (those
-// that only ever had vertices stay, as points); one warning names what was dropped. Throws std::runtime_error saying why when nothing usable is left of a non-empty list.
-std::vector<SourceChunk> checked_chunks(const char* source, std::vector<SourceChunk> chunks);
+// that only ever had vertices stay, as points), each keyed (SourceChunk::key); a chunk listed as served before
+// (same_as) is that one, as it was checked then. One warning names what was dropped. Throws std::runtime_error
+// saying why when nothing usable is left of a non-empty list.
+std::vector<ServedChunk> checked_chunks(const char* source, std::vector<SourceChunk> chunks);
 
 // Polls `future` until it is ready (true), the stop token is set (cancels it, false) or runtime_timeout() passes
 // (cancels it, throws std::runtime_error naming `what`). A failing poll throws too.

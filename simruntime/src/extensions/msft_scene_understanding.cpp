@@ -67,7 +67,6 @@ void run_compute(std::stop_token stop, std::shared_ptr<ComputeJob> job, ComputeR
     log_error("scene compute failed: ROOMSENSE_SIM_SCENE is not set, so there is no room to serve");
   } else {
     try {
-      request.time = now_time();
       data = build_scene(request);
     } catch (const std::exception& e) {
       log_error(std::string("scene compute failed: ") + e.what());
@@ -159,8 +158,11 @@ XrResult XRAPI_CALL xrComputeNewSceneMSFT(XrSceneObserverMSFT sceneObserver, con
     const InstanceState* instance = session ? Runtime::find(runtime().instances, session->instance) : nullptr;
     if (instance == nullptr) return XR_ERROR_HANDLE_INVALID;
     request.room = instance->room;
+    request.chunks = instance->msft_chunks;
     request.chunk_size = instance->config.chunk_size;
-    request.serial = runtime().new_id();
+    request.serial = id_of(sceneObserver);  // the spec: an observer correlates component ids across its computes
+    if (observer->first_compute == 0) observer->first_compute = now_time();
+    request.time = observer->first_compute;
     // The previous worker has finished (state was not UPDATING); assigning joins it.
     observer->worker = std::jthread(run_compute, observer->job, std::move(request), instance->config.compute_delay_ms);
     return XR_SUCCESS;

@@ -13,6 +13,7 @@
 
 #include <openxr/XR_EXTX_room_understanding.h>
 
+#include "headless_session.h"
 #include "roomsense/xr/loader_interface.h"  // layer/src: the negotiation structures
 
 #include <benchmark/benchmark.h>
@@ -30,10 +31,6 @@
 namespace {
 
 enum class Variant { WithoutLayer, LayerPassThrough, LayerWithExtension };
-
-void check(XrResult r, const char* what) {
-  if (XR_FAILED(r)) throw std::runtime_error(std::string(what) + " returned " + std::to_string(r));
-}
 
 // Whether the layer is in this instance's chain. Debian's loader keeps a layer mapped after its instance is
 // gone, so being mapped is not enough: the layer's own xrGetInstanceProcAddr (reached through its one
@@ -57,38 +54,20 @@ bool layer_in_chain(XrInstance instance) {
 void locate_space(benchmark::State& state, Variant variant) {
   if (variant == Variant::WithoutLayer) setenv("DISABLE_XR_APILAYER_ROOMSENSE", "1", 1);
   else unsetenv("DISABLE_XR_APILAYER_ROOMSENSE");
-  std::vector<const char*> extensions = {XR_MND_HEADLESS_EXTENSION_NAME};
+  std::vector<const char*> extensions;
   if (variant == Variant::LayerWithExtension) extensions.push_back(XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME);
-  XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO, nullptr, 0, {}, 0, nullptr,
-                            static_cast<uint32_t>(extensions.size()), extensions.data()};
-  std::strcpy(info.applicationInfo.applicationName, "roomsense_bench_layer");
-  info.applicationInfo.apiVersion = XR_MAKE_VERSION(1, 0, 0);
-  XrInstance instance = XR_NULL_HANDLE;
-  check(xrCreateInstance(&info, &instance), "xrCreateInstance");
-  if (layer_in_chain(instance) != (variant != Variant::WithoutLayer)) {
-    xrDestroyInstance(instance);
+  const roomsense::bench::HeadlessSession app(extensions);
+  if (layer_in_chain(app.instance) != (variant != Variant::WithoutLayer)) {
     state.SkipWithError("the layer is not (or still) in the chain: check XDG_DATA_HOME and DISABLE_XR_APILAYER_ROOMSENSE");
     return;
   }
-  XrSystemGetInfo system_info{XR_TYPE_SYSTEM_GET_INFO, nullptr, XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY};
-  XrSystemId system = XR_NULL_SYSTEM_ID;
-  check(xrGetSystem(instance, &system_info, &system), "xrGetSystem");
-  XrSessionCreateInfo session_info{XR_TYPE_SESSION_CREATE_INFO, nullptr, 0, system};
-  XrSession session = XR_NULL_HANDLE;
-  check(xrCreateSession(instance, &session_info, &session), "xrCreateSession");
-  XrReferenceSpaceCreateInfo space_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO, nullptr, XR_REFERENCE_SPACE_TYPE_LOCAL,
-                                        {{0, 0, 0, 1}, {0, 0, 0}}};
-  XrSpace local = XR_NULL_HANDLE, view = XR_NULL_HANDLE;
-  check(xrCreateReferenceSpace(session, &space_info, &local), "xrCreateReferenceSpace");
-  space_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
-  check(xrCreateReferenceSpace(session, &space_info, &view), "xrCreateReferenceSpace");
+  const XrSpace view = app.reference_space(XR_REFERENCE_SPACE_TYPE_VIEW);
   const XrTime time = 1'000'000'000;
   for (auto _ : state) {
     XrSpaceLocation location{XR_TYPE_SPACE_LOCATION, nullptr, 0, {}};
-    benchmark::DoNotOptimize(xrLocateSpace(view, local, time, &location));
+    benchmark::DoNotOptimize(xrLocateSpace(view, app.local, time, &location));
     benchmark::DoNotOptimize(location);
   }
-  xrDestroyInstance(instance);
 }
 
 BENCHMARK_CAPTURE(locate_space, without_layer, Variant::WithoutLayer);

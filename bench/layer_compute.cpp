@@ -1,0 +1,95 @@
+// xrComputeRoomEXTX as an application sees it: from the call to COMPLETED, through the Khronos loader, the layer and
+// the simulated runtime (its scene work completing at once), on synthetic:thesis-room1 served in 2 m chunks, for
+// each headset the runtime plays. Two cases per headset:
+//   layer_compute/unchanged/HEADSET: the runtime's meshes and the submitted ones as at the last compute (the layer
+//     queries the runtime and answers with the previous result);
+//   layer_compute/changed/HEADSET: after the application submitted one more small mesh (a 10 cm square, standing,
+//     away from the walls), with the runtime's meshes as they were: the analysis is an update.
+// Each iteration is one compute; p50_ms and p90_ms are over the run's iterations, which are fixed (each changed
+// compute adds a submitted mesh).
+//
+//   build/bench/roomsense_bench_layer --benchmark_filter=layer_compute
+#include <openxr/openxr.h>
+
+#include <openxr/XR_EXTX_room_understanding.h>
+
+#include <benchmark/benchmark.h>
+
+#include "headless_session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using roomsense::bench::check;
+
+XrTime now() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+void layer_compute(benchmark::State& state, const char* extension, bool changed) {
+  unsetenv("DISABLE_XR_APILAYER_ROOMSENSE");
+  setenv("ROOMSENSE_SIM_EXTENSIONS", extension, 1);
+  setenv("ROOMSENSE_SIM_SCENE", "synthetic:thesis-room1", 1);
+  setenv("ROOMSENSE_SIM_COMPUTE_DELAY_MS", "0", 1);
+  const roomsense::bench::HeadlessSession app({XR_EXTX_ROOM_UNDERSTANDING_EXTENSION_NAME});
+  const auto create = app.proc<PFN_xrCreateRoomAnalyzerEXTX>("xrCreateRoomAnalyzerEXTX");
+  const auto compute = app.proc<PFN_xrComputeRoomEXTX>("xrComputeRoomEXTX");
+  const auto get_state = app.proc<PFN_xrGetRoomComputeStateEXTX>("xrGetRoomComputeStateEXTX");
+  const auto submit = app.proc<PFN_xrSubmitRoomMeshEXTX>("xrSubmitRoomMeshEXTX");
+  const XrRoomAnalyzerCreateInfoEXTX analyzer_info{XR_TYPE_ROOM_ANALYZER_CREATE_INFO_EXTX, nullptr, app.local, 0.0f,
+                                                   XR_ROOM_COMPUTE_BACKEND_CPU_EXTX};
+  XrRoomAnalyzerEXTX analyzer = XR_NULL_HANDLE;
+  check(create(app.session, &analyzer_info, &analyzer), "xrCreateRoomAnalyzerEXTX");
+  // One compute, timed from the call to COMPLETED; the state is polled every 50 us (not spun: the analysis has
+  // the machine's two cores).
+  const auto run = [&] {
+    const XrRoomComputeInfoEXTX compute_info{XR_TYPE_ROOM_COMPUTE_INFO_EXTX, nullptr, now(), XR_TRUE};
+    const auto start = std::chrono::steady_clock::now();
+    check(compute(analyzer, &compute_info), "xrComputeRoomEXTX");
+    XrRoomComputeStateEXTX s = XR_ROOM_COMPUTE_STATE_RUNNING_EXTX;
+    for (;;) {
+      check(get_state(analyzer, &s), "xrGetRoomComputeStateEXTX");
+      if (s != XR_ROOM_COMPUTE_STATE_RUNNING_EXTX) break;
+      std::this_thread::sleep_for(std::chrono::microseconds(50));
+    }
+    if (s != XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX) throw std::runtime_error("the compute failed");
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  run();  // the whole room, the first time
+  std::vector<double> seconds;
+  for (auto _ : state) {
+    if (changed) {
+      state.PauseTiming();
+      const float x = -1.0f + 0.1f * float(seconds.size() % 20);
+      const XrVector3f v[] = {{x, 1.0f, 0.0f}, {x + 0.1f, 1.0f, 0.0f}, {x + 0.1f, 1.1f, 0.0f}, {x, 1.1f, 0.0f}};
+      const uint32_t i[] = {0, 2, 1, 0, 3, 2};
+      const XrRoomMeshEXTX mesh{XR_TYPE_ROOM_MESH_EXTX, nullptr, {{0, 0, 0, 1}, {0, 0, 0}}, 4, v, 6, i};
+      check(submit(analyzer, &mesh), "xrSubmitRoomMeshEXTX");
+      state.ResumeTiming();
+    }
+    seconds.push_back(run());
+    state.SetIterationTime(seconds.back());
+  }
+  std::sort(seconds.begin(), seconds.end());
+  state.counters["p50_ms"] = 1e3 * seconds[seconds.size() / 2];
+  state.counters["p90_ms"] = 1e3 * seconds[seconds.size() * 9 / 10];
+}
+
+constexpr int kComputes = 60;
+
+#define LAYER_COMPUTE_CASES(name, extension)                                                                              \
+  BENCHMARK_CAPTURE(layer_compute, unchanged/name, extension, false)->UseManualTime()->Iterations(kComputes)->Unit(benchmark::kMillisecond); \
+  BENCHMARK_CAPTURE(layer_compute, changed/name, extension, true)->UseManualTime()->Iterations(kComputes)->Unit(benchmark::kMillisecond);
+LAYER_COMPUTE_CASES(hololens2, "XR_MSFT_scene_understanding")
+LAYER_COMPUTE_CASES(quest3, "XR_META_spatial_entity_mesh")
+LAYER_COMPUTE_CASES(android_xr, "XR_ANDROID_scene_meshing")
+LAYER_COMPUTE_CASES(magic_leap2, "XR_ML_world_mesh_detection")
+
+}  // namespace

@@ -254,6 +254,48 @@ TEST(Incremental, LabelsPastTheTestBudgetGiveTheFullAnalysisWarnings) {
   EXPECT_GT(under, 0u) << "no step within the budget";
 }
 
+// Labelled triangles that overlap a lot: the chunks' labelled voxels could hold more entries than the grid has
+// voxels, so none are kept and the labels are voxelized whole; as the heavy chunks go, they are kept again. Every
+// result equals the full analysis.
+TEST(Incremental, HeavilyOverlappingLabelsAreVoxelizedWholeAndEqualTheFullAnalysis) {
+  const Scan room = labelled_by_normals(synth::generate_builtin_source("synthetic:default"));
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::vec3& v : room.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+  std::map<std::uint64_t, Scan> tiles = split_into_blocks(room, 2.0f);
+  ASSERT_GE(tiles.size(), 4u);
+  // Three chunks whose labels each hold the room's whole floor plan at 64 heights: each labels about every voxel
+  // of the grid, so together they would hold about three entries per voxel.
+  std::vector<std::uint64_t> heavy;
+  for (auto& [id, tile] : tiles) {
+    if (heavy.size() == 3) break;
+    heavy.push_back(id);
+    for (int level = 0; level < 64; ++level) {
+      const float y = lo.y + (hi.y - lo.y) * (float(level) + 0.5f) / 64.0f;
+      const auto first = static_cast<std::uint32_t>(tile.labels.vertices.size());
+      tile.labels.vertices.insert(tile.labels.vertices.end(), {{lo.x, y, lo.z}, {hi.x, y, lo.z}, {hi.x, y, hi.z}, {lo.x, y, hi.z}});
+      tile.labels.indices.insert(tile.labels.indices.end(), {first, first + 2, first + 1, first, first + 3, first + 2});
+      tile.labels.labels.insert(tile.labels.labels.end(), 2, SurfaceLabel::Table);
+    }
+  }
+  IncrementalAnalysis inc;
+  const auto check = [&](const std::string& step) {
+    const AnalysisResult want = analyze(inc.combined_scan());
+    const AnalysisResult& got = inc.result();
+    EXPECT_EQ(got.warnings, want.warnings) << step;
+    expect_same(got, want, step);
+  };
+  for (const auto& [id, tile] : tiles) inc.set_chunk(id, tile);
+  check("all");
+  for (const std::uint64_t id : heavy) {
+    Scan light = tiles.at(id);
+    light.labels = {};
+    inc.set_chunk(id, light);
+    check("chunk " + std::to_string(id) + " without its labels");
+  }
+  inc.set_chunk(heavy.front(), tiles.at(heavy.front()));
+  check("one heavy chunk back");
+}
+
 // Bad chunks: an index past the chunk's own vertices is refused even where the combined scan would have a
 // vertex there; removing what is not there says so; an empty analyzer is EmptyInput.
 TEST(Incremental, BadChunksAreRefusedAndNothingIsLost) {

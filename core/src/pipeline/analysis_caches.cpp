@@ -2,11 +2,10 @@
 // chunk by chunk.
 #include "analysis_caches.h"
 
-#include "../semantics/label_voxels.h"
-
 #include "../parallel.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace roomsense::detail {
 
@@ -76,10 +75,28 @@ LabelGrid ChunkLabelVoxels::grid(const CombinedScan& c, const GridSpec& spec, st
     warnings.push_back(over_budget_warning(test_budget));
     return out;
   }
-  for (auto& [k, boxes] : fresh) {
-    Kept kept{c.placed[k].hash, spec, boxes.tests, boxes.dropped, 0, !boxes.boxes.empty(), touched_voxels(spec, boxes)};
-    for (const LabelBoxes::Box& b : boxes.boxes) kept.present = LabelMask(kept.present | label_bit(b.label));
-    chunks_[c.placed[k].id] = std::move(kept);
+  // The entries kept (8 bytes each) stay within the grid's voxel count: past it the chunks' labelled triangles
+  // overlap a lot, and the labels are voxelized whole, as a full analysis does, with nothing kept.
+  const auto whole = [&] {
+    chunks_.clear();
+    return voxelize_labels(spec, labels, test_budget, warnings);
+  };
+  if (spec.voxel_count() > std::numeric_limits<std::uint32_t>::max()) return whole();
+  std::uint64_t entries = 0;
+  for (const auto& [id, kept] : chunks_) entries += kept.voxels.size();
+  try {
+    if (!fresh.empty()) scratch_.resize(spec.voxel_count(), 0);  // all zero: touched_voxels leaves it so
+    for (auto& [k, boxes] : fresh) {
+      Kept kept{c.placed[k].hash, spec, boxes.tests, boxes.dropped, 0, !boxes.boxes.empty(), touched_voxels(spec, boxes, scratch_)};
+      entries += kept.voxels.size();
+      if (entries > spec.voxel_count()) return whole();
+      for (const LabelBoxes::Box& b : boxes.boxes) kept.present = LabelMask(kept.present | label_bit(b.label));
+      chunks_[c.placed[k].id] = std::move(kept);
+    }
+  } catch (...) {  // out of memory halfway: nothing kept may be half made, and the scratch must be zero again
+    scratch_ = {};
+    chunks_.clear();
+    throw;
   }
   std::size_t dropped = 0;
   bool any_box = false;

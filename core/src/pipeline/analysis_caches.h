@@ -7,6 +7,7 @@
 #include "../areas/search_cache.h"
 #include "../bounds/mesh_memo.h"
 #include "../features/feature_memo.h"
+#include "../semantics/label_voxels.h"
 #include "../input/input_view.h"
 #include "../worker_pool.h"
 #include "surface_heights.h"
@@ -61,7 +62,8 @@ class ChunkBandSums {
 class ChunkLabelVoxels {
  public:
   // voxelize_labels(spec, c.scan.labels, test_budget, warnings), equal in result and warnings. Keeps each chunk's
-  // voxels for the next analysis, and no others.
+  // voxels for the next analysis, and no others; where they would hold more entries than the grid has voxels (the
+  // chunks' labelled triangles overlap a lot), keeps none and voxelizes the labels whole, as a full analysis does.
   LabelGrid grid(const CombinedScan& c, const GridSpec& spec, std::uint64_t test_budget, std::vector<std::string>& warnings);
 
  private:
@@ -72,9 +74,10 @@ class ChunkLabelVoxels {
     std::size_t dropped = 0;
     LabelMask present = 0;  // the labels of its boxes
     bool any_box = false;
-    std::vector<std::pair<std::uint64_t, LabelMask>> voxels;  // touched_voxels
+    TouchedVoxels voxels;
   };
   std::map<std::uint64_t, Kept> chunks_;  // by chunk id
+  std::vector<LabelMask> scratch_;        // touched_voxels's, all zero between calls
 };
 
 // For one AnalysisOptions: an IncrementalAnalysis's own.

@@ -33,7 +33,9 @@ LabelBoxes label_boxes(const GridSpec& spec, std::span<const glm::vec3> vertices
 // The warning that the labels need more than `test_budget` tests, and that of `dropped` triangles (none for 0).
 std::string over_budget_warning(std::uint64_t test_budget);
 void add_dropped_warning(std::size_t dropped, std::vector<std::string>& warnings);
-// Each voxel a box's triangle touches, with the labels of all boxes that touch it: ascending voxel indices.
-std::vector<std::pair<std::uint64_t, LabelMask>> touched_voxels(const GridSpec& spec, const LabelBoxes& boxes);
+// Each voxel a box's triangle touches, with the labels of all boxes that touch it (in no order), one entry per
+// voxel. `scratch` is all zero and `spec.voxel_count()` long, and is left so; the grid has at most 2^32 voxels.
+using TouchedVoxels = std::vector<std::pair<std::uint32_t, LabelMask>>;
+TouchedVoxels touched_voxels(const GridSpec& spec, const LabelBoxes& boxes, std::vector<LabelMask>& scratch);
 
 }  // namespace roomsense::detail

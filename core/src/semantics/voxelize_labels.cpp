@@ -73,16 +73,15 @@ void for_each_touched(const GridSpec& spec, const LabelBoxes& boxes, Mark mark) 
   }
 }
 
-std::vector<std::pair<std::uint64_t, LabelMask>> touched_voxels(const GridSpec& spec, const LabelBoxes& boxes) {
-  std::vector<std::pair<std::uint64_t, LabelMask>> touched;
-  for_each_touched(spec, boxes, [&](std::size_t i, LabelMask bit) { touched.emplace_back(i, bit); });
-  std::sort(touched.begin(), touched.end());
-  std::size_t kept = 0;  // one entry per voxel, its labels together
-  for (std::size_t i = 0; i < touched.size(); ++i) {
-    if (kept > 0 && touched[kept - 1].first == touched[i].first) touched[kept - 1].second |= touched[i].second;
-    else touched[kept++] = touched[i];
-  }
-  touched.resize(kept);
+TouchedVoxels touched_voxels(const GridSpec& spec, const LabelBoxes& boxes, std::vector<LabelMask>& scratch) {
+  std::vector<std::uint32_t> order;  // the voxels touched, each once, as first touched
+  for_each_touched(spec, boxes, [&](std::size_t i, LabelMask bit) {
+    if (scratch[i] == 0) order.push_back(static_cast<std::uint32_t>(i));
+    scratch[i] |= bit;
+  });
+  TouchedVoxels touched;
+  touched.reserve(order.size());
+  for (const std::uint32_t i : order) touched.emplace_back(i, scratch[i]), scratch[i] = 0;
   return touched;
 }
 

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <regex>
+#include <string>
 
 namespace {
 
@@ -28,10 +28,13 @@ struct QueryCount {
 std::vector<QueryCount> query_counts(const std::filesystem::path& log) {
   std::ifstream in(log);
   std::vector<QueryCount> counts;
-  const std::regex line(R"(runtime meshes from \S+: (\d+) chunks \((\d+) read)");
-  std::smatch m;
-  for (std::string s; std::getline(in, s);)
-    if (std::regex_search(s, m, line)) counts.push_back({std::stoul(m[1].str()), std::stoul(m[2].str())});
+  for (std::string s; std::getline(in, s);) {
+    const std::size_t from = s.find("runtime meshes from ");
+    const std::size_t colon = from == std::string::npos ? from : s.find(": ", from);
+    const std::size_t open = colon == std::string::npos ? colon : s.find(" chunks (", colon);
+    if (open == std::string::npos) continue;
+    counts.push_back({std::stoul(s.substr(colon + 2)), std::stoul(s.substr(open + 9))});
+  }
   return counts;
 }
 

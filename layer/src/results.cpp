@@ -45,8 +45,10 @@ const char* space_name(XrReferenceSpaceType type) {
   }
 }
 
-const RoomQueries& LazyResultParts::queries() const {
-  std::call_once(queries_once_, [&] { queries_ = RoomQueries(*analysis_); });
+const RoomQueries& LazyResultParts::queries(const std::vector<Surface>& surfaces) const {
+  std::call_once(queries_once_, [&] {
+    queries_ = analysis_->ok() ? RoomQueries(*analysis_, surfaces) : RoomQueries(*analysis_);
+  });
   return queries_;
 }
 

@@ -40,7 +40,8 @@ class LazyResultParts {
  public:
   LazyResultParts(std::shared_ptr<const AnalysisResult> analysis, MeshSources sources, XrDuration duration)
       : analysis_(std::move(analysis)), sources_(std::move(sources)), duration_(duration) {}
-  const RoomQueries& queries() const;
+  // `surfaces`: the result's own (RoomResult::surfaces), already extracted, so the index does not extract them again.
+  const RoomQueries& queries(const std::vector<Surface>& surfaces) const;
   const std::string& json() const;
 
  private:
@@ -72,7 +73,7 @@ struct RoomResult {
   std::uint64_t input_hash = 0;   // of the meshes and labels analysed (Analyzer::compute)
   std::shared_ptr<const LazyResultParts> lazy;
   // Placement queries, raycasts, random points (queries.cpp).
-  const RoomQueries& queries() const { return lazy->queries(); }
+  const RoomQueries& queries() const { return lazy->queries(surfaces); }
   // roomsense.analysis/1, with an "openxr" member saying where the meshes came from.
   const std::string& json() const { return lazy->json(); }
 };

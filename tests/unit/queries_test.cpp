@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace roomsense {
@@ -176,6 +177,40 @@ TEST(Placements, WallsOffTheGridAxesHoldWideBoards) {
     for (const Placement& p : r.placements) {
       for (const glm::vec3& c : p.corners()) EXPECT_LT(std::abs(synth::distance_to_walls(spec, xz(c))), 0.15f);
       EXPECT_FALSE(crosses_window(spec, p)) << p.center.x << " " << p.center.y << " " << p.center.z;
+    }
+  }
+}
+
+// A wall placement's depth is clear space before the wall, up to what stands in it: the default room's table top
+// (0.75 m high) lies 1.2 m before its +X wall. An object 1 m deep stands on that wall at the table's height; one
+// 1.5 m deep would run into the top there, and goes higher. The table comes from the room's ground truth.
+TEST(Placements, WallDepthStopsAtWhatStandsBeforeTheWall) {
+  const synth::RoomSpec spec = synth::default_room();
+  ASSERT_FALSE(spec.tables.empty());
+  const synth::Table& table = spec.tables.front();
+  const float wall_x = 2.5f, top = spec.floor_y + table.height;
+  const float gap = wall_x - (table.centre.x + 0.5f * table.size.x);
+  ASSERT_NEAR(gap, 1.2f, 1e-4f);
+  const glm::vec3 before_the_table(wall_x, top, table.centre.y);
+  for (const float depth : {1.0f, 1.5f}) {
+    SCOPED_TRACE(depth);
+    PlacementQuery q;
+    q.size = {0.3f, 0.3f, depth};
+    q.surfaces = kOnWall;
+    q.near = before_the_table;
+    const PlacementResult r = queries_of(spec).find_placements(q);
+    ASSERT_EQ(r.placements.size(), 1u) << r.reason;
+    const Placement& p = r.placements.front();
+    const float y0 = p.center.y - 0.5f * p.footprint.y, y1 = p.center.y + 0.5f * p.footprint.y;
+    const float z0 = p.center.z - 0.5f * p.footprint.x, z1 = p.center.z + 0.5f * p.footprint.x;
+    const bool before_the_top = z1 > table.centre.y - 0.5f * table.size.y + 1.5f * kVoxel &&
+                                z0 < table.centre.y + 0.5f * table.size.y - 1.5f * kVoxel;
+    const bool across_the_top = y0 < top - kVoxel && y1 > top + kVoxel;
+    if (depth < gap) {
+      EXPECT_LT(glm::distance(p.center, before_the_table), 0.2f) << p.center.x << " " << p.center.y << " " << p.center.z;
+    } else {
+      EXPECT_FALSE(before_the_top && (across_the_top || std::abs(p.center.y - top) < kVoxel))
+          << p.center.x << " " << p.center.y << " " << p.center.z;
     }
   }
 }

@@ -54,16 +54,15 @@ const RoomQueries& LazyResultParts::queries(const std::vector<Surface>& surfaces
 
 const std::string& LazyResultParts::json() const {
   std::call_once(json_once_, [&] {
-    nlohmann::json doc = nlohmann::json::parse(analysis_json(*analysis_, {kJsonSourceName, 0.0}));
-    doc["openxr"] = {{"base_space", sources_.base_space},
-                     {"mesh_source", sources_.source},
-                     {"mesh_source_reason", sources_.source_reason},
-                     {"mesh_query_ms", sources_.query_ms},
-                     {"runtime_meshes", sources_.runtime_meshes},
-                     {"app_read_meshes", sources_.app_read_meshes},
-                     {"submitted_meshes", sources_.submitted_meshes},
-                     {"compute_ms", double(duration_) / 1e6}};
-    json_ = doc.dump(2);
+    const nlohmann::json openxr = {{"base_space", sources_.base_space},
+                                   {"mesh_source", sources_.source},
+                                   {"mesh_source_reason", sources_.source_reason},
+                                   {"mesh_query_ms", sources_.query_ms},
+                                   {"runtime_meshes", sources_.runtime_meshes},
+                                   {"app_read_meshes", sources_.app_read_meshes},
+                                   {"submitted_meshes", sources_.submitted_meshes},
+                                   {"compute_ms", double(duration_) / 1e6}};
+    json_ = analysis_json(*analysis_, {kJsonSourceName, 0.0}, {{"openxr", openxr.dump()}});
   });
   return json_;
 }

@@ -84,6 +84,17 @@ TEST(Export, GlbHasAValidContainerAndAccessors) {
   EXPECT_THROW(write_bounds(m, testing::TempDir() + "/bounds.stl"), Error);
 }
 
+// Members added in the one pass print exactly as the document parsed, the member added and printed again (the
+// layer's "openxr" was added so), and a value that is not JSON is refused.
+TEST(Export, AnalysisJsonMembersPrintAsTheDocumentWithThemAdded) {
+  const test::AnalysedRoom& room = test::analysed(synth::default_room());
+  const std::string extra = R"({"mesh_source": "XR_MSFT_scene_understanding", "runtime_meshes": 16, "compute_ms": 1.25})";
+  nlohmann::json want = nlohmann::json::parse(analysis_json(room.result, {"synthetic:default", 1.5}));
+  want["openxr"] = nlohmann::json::parse(extra);
+  EXPECT_EQ(analysis_json(room.result, {"synthetic:default", 1.5}, {{"openxr", extra}}), want.dump(2));
+  EXPECT_THROW(analysis_json(room.result, {}, {{"openxr", "{not json"}}), Error);
+}
+
 TEST(Export, AnalysisJsonFollowsTheContract) {
   const test::AnalysedRoom& room = test::analysed(synth::default_room());
   const auto doc = nlohmann::json::parse(analysis_json(room.result, {"synthetic:default", 1.5}));

@@ -5,6 +5,8 @@
 // storeys[].room_m2 (B, Eq. 3.12) and area_counts (per type: wall, floor, ceiling, furniture).
 #include "roomsense/export.h"
 
+#include "roomsense/error.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -47,7 +49,8 @@ nlohmann::json areas_json(const std::vector<Area>& areas) {
 
 }  // namespace
 
-std::string analysis_json(const AnalysisResult& r, const JsonSource& source) {
+std::string analysis_json(const AnalysisResult& r, const JsonSource& source,
+                          const std::vector<std::pair<std::string, std::string>>& members) {
   using nlohmann::json;
   const GridSpec& g = r.voxels.grid.spec;
   json storeys = json::array();
@@ -114,6 +117,11 @@ std::string analysis_json(const AnalysisResult& r, const JsonSource& source) {
         {"bounds", t.bounds},
         {"total_compute", t.total}}},
   };
+  for (const auto& [name, value] : members) {
+    nlohmann::json parsed = json::parse(value, nullptr, false);
+    if (parsed.is_discarded()) throw Error(ErrorCode::BadParameter, "the JSON member " + name + " is not JSON");
+    doc[name] = std::move(parsed);
+  }
   return doc.dump(2);
 }
 

@@ -4,7 +4,9 @@
 //   layer_compute/unchanged/HEADSET: the runtime's meshes and the submitted ones as at the last compute (the layer
 //     queries the runtime and answers with the previous result);
 //   layer_compute/changed/HEADSET: after the application submitted one more small mesh (a 10 cm square, standing,
-//     away from the walls), with the runtime's meshes as they were: the analysis is an update.
+//     away from the walls), with the runtime's meshes as they were: the analysis is an update. After each such
+//     compute, one placement query (a 0.3 m object on a wall or the floor) is timed apart: the first use of a new
+//     result, which builds its placement index (place_p50_ms, place_p90_ms).
 // Each iteration is one compute; p50_ms and p90_ms are over the run's iterations, which are fixed (each changed
 // compute adds a submitted mesh).
 //
@@ -43,6 +45,7 @@ void layer_compute(benchmark::State& state, const char* extension, bool changed)
   const auto compute = app.proc<PFN_xrComputeRoomEXTX>("xrComputeRoomEXTX");
   const auto get_state = app.proc<PFN_xrGetRoomComputeStateEXTX>("xrGetRoomComputeStateEXTX");
   const auto submit = app.proc<PFN_xrSubmitRoomMeshEXTX>("xrSubmitRoomMeshEXTX");
+  const auto find_placements = app.proc<PFN_xrFindRoomPlacementsEXTX>("xrFindRoomPlacementsEXTX");
   const XrRoomAnalyzerCreateInfoEXTX analyzer_info{XR_TYPE_ROOM_ANALYZER_CREATE_INFO_EXTX, nullptr, app.local, 0.0f,
                                                    XR_ROOM_COMPUTE_BACKEND_CPU_EXTX};
   XrRoomAnalyzerEXTX analyzer = XR_NULL_HANDLE;
@@ -63,7 +66,22 @@ void layer_compute(benchmark::State& state, const char* extension, bool changed)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   run();  // the whole room, the first time
-  std::vector<double> seconds;
+  // The first placement query on the compute's result, timed from the call to its return.
+  const auto place = [&] {
+    XrRoomPlacementQueryEXTX query{};
+    query.type = XR_TYPE_ROOM_PLACEMENT_QUERY_EXTX;
+    query.objectSize = {0.3f, 0.3f, 0.3f};
+    query.surfaces = XR_ROOM_SURFACE_WALL_BIT_EXTX | XR_ROOM_SURFACE_FLOOR_BIT_EXTX;
+    query.maxPlacements = 1;
+    XrRoomPlacementEXTX found{};
+    found.type = XR_TYPE_ROOM_PLACEMENT_EXTX;
+    XrRoomPlacementsEXTX placements{XR_TYPE_ROOM_PLACEMENTS_EXTX, nullptr, 1, 0, &found, {}};
+    const auto start = std::chrono::steady_clock::now();
+    check(find_placements(analyzer, &query, &placements), "xrFindRoomPlacementsEXTX");
+    if (placements.placementCountOutput != 1) throw std::runtime_error("no placement found");
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  std::vector<double> seconds, place_seconds;
   for (auto _ : state) {
     if (changed) {
       state.PauseTiming();
@@ -76,10 +94,19 @@ void layer_compute(benchmark::State& state, const char* extension, bool changed)
     }
     seconds.push_back(run());
     state.SetIterationTime(seconds.back());
+    if (changed) {
+      state.PauseTiming();
+      place_seconds.push_back(place());
+      state.ResumeTiming();
+    }
   }
-  std::sort(seconds.begin(), seconds.end());
-  state.counters["p50_ms"] = 1e3 * seconds[seconds.size() / 2];
-  state.counters["p90_ms"] = 1e3 * seconds[seconds.size() * 9 / 10];
+  const auto percentiles = [&](std::vector<double>& values, const std::string& prefix) {
+    std::sort(values.begin(), values.end());
+    state.counters[prefix + "p50_ms"] = 1e3 * values[values.size() / 2];
+    state.counters[prefix + "p90_ms"] = 1e3 * values[values.size() * 9 / 10];
+  };
+  percentiles(seconds, "");
+  if (!place_seconds.empty()) percentiles(place_seconds, "place_");
 }
 
 constexpr int kComputes = 60;

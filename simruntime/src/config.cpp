@@ -49,6 +49,12 @@ Config config_from_environment() {
       throw std::invalid_argument(std::string("ROOMSENSE_SIM_CHUNK_SIZE='") + chunk + "' must be one number in [0.05, 1000] metres");
     config.chunk_size = v[0];
   }
+  if (const char* scan = env("ROOMSENSE_SIM_SCAN_SECONDS")) {
+    const auto v = numbers("ROOMSENSE_SIM_SCAN_SECONDS", scan);
+    if (v.size() != 1 || !(v[0] >= 0.0 && v[0] <= 3600.0))
+      throw std::invalid_argument(std::string("ROOMSENSE_SIM_SCAN_SECONDS='") + scan + "' must be one number in [0, 3600] seconds");
+    config.scan_seconds = v[0];
+  }
   if (const char* head = env("ROOMSENSE_SIM_HEAD_POSE")) {
     const auto v = numbers("ROOMSENSE_SIM_HEAD_POSE", head);
     if (v.size() != 3 && v.size() != 7)

@@ -5,6 +5,7 @@
 #include "actions.h"
 #include "config.h"
 #include "room_source.h"
+#include "scan_progress.h"
 #include "scene_data.h"
 
 #include <openxr/openxr.h>
@@ -58,12 +59,16 @@ struct InstanceState {
   std::set<std::string> extensions;  // enabled ones
   Config config;
   std::shared_ptr<const Room> room;  // null when ROOMSENSE_SIM_SCENE is unset
+  std::shared_ptr<ScanProgress> scan;  // with ROOMSENSE_SIM_SCAN_SECONDS > 0
+  std::shared_ptr<const ScanStep> whole_room;  // without: the room, never changing
   std::shared_ptr<MeshChunks> msft_chunks = std::make_shared<MeshChunks>();
   std::deque<SessionEvent> events;
   std::deque<XrEventDataBuffer> extension_events;  // scene extensions' events, after the session events
   std::vector<std::string> paths;  // XrPath n names paths[n - 1]
   std::unordered_map<std::string, XrPath> path_ids;
   bool has(const char* extension) const { return extensions.count(extension) != 0; }
+  // The room as the live-meshing extensions serve it at `now` (scan_progress.h); null without a room.
+  std::shared_ptr<const ScanStep> room_at(XrTime now) const { return scan ? scan->at(now) : whole_room; }
 };
 
 struct SessionState {

@@ -1,6 +1,7 @@
 // Builds one scene from a room and a compute request: mesh chunks as visual/collider meshes, labelled objects
 // with their planes, all filtered by the requested bounds.
 #include "scene_data.h"
+#include "scan_progress.h"
 
 #include <algorithm>
 #include <atomic>
@@ -61,22 +62,29 @@ std::shared_ptr<const MeshBuffer> quad_mesh(const XrExtent2Df& size) {
 
 }  // namespace
 
-const std::vector<MeshChunks::Piece>& MeshChunks::of(const Scan& mesh, double chunk_size) {
-  std::call_once(once_, [&] {
-    for (Chunk& chunk : split_into_chunks(mesh, chunk_size))
-      pieces_.push_back({chunk.pose, std::make_shared<const MeshBuffer>(std::move(chunk.mesh)), chunk.world_min, chunk.world_max});
-  });
+std::shared_ptr<const std::vector<MeshChunks::Piece>> MeshChunks::of(const std::shared_ptr<const Room>& room,
+                                                                     double chunk_size) {
+  std::lock_guard lock(mutex_);
+  if (room_ != room) {
+    auto pieces = std::make_shared<std::vector<Piece>>();
+    for (Chunk& chunk : split_into_chunks(room->mesh, chunk_size))
+      pieces->push_back({chunk.cell, chunk.pose, std::make_shared<const MeshBuffer>(std::move(chunk.mesh)), chunk.world_min,
+                         chunk.world_max});
+    room_ = room;
+    pieces_ = std::move(pieces);
+  }
   return pieces_;
 }
 
 std::shared_ptr<const SceneData> build_scene(const ComputeRequest& request) {
   auto scene = std::make_shared<SceneData>();
-  scene->update_time = request.time;
-  const Room& room = *request.room;
-  // Each component's UUID is the observer's serial and the component's place in the room (its chunk, its object),
-  // not its place in this scene: the observer's computes correlate it, whatever the bounds leave out.
-  const std::vector<MeshChunks::Piece>& chunks = request.chunks->of(room.mesh, request.chunk_size);
-  const std::uint64_t first_object = 1 + 2 * static_cast<std::uint64_t>(chunks.size());
+  const ScanStep& scanned = *request.scanned;
+  const Room& room = *scanned.room;
+  // Each component's UUID is the observer's serial and the component's place in the room (its chunk's cell, its
+  // object), not its place in this scene: the observer's computes correlate it, whatever the bounds leave out and
+  // whatever else of the room is scanned. The low three bits tell the kinds apart.
+  const std::shared_ptr<const std::vector<MeshChunks::Piece>> pieces = request.chunks->of(scanned.room, request.chunk_size);
+  const std::vector<MeshChunks::Piece>& chunks = *pieces;
 
   if (request.visual_mesh || request.collider_mesh) {
     for (std::size_t n = 0; n < chunks.size(); ++n) {
@@ -89,8 +97,9 @@ std::shared_ptr<const SceneData> build_scene(const ComputeRequest& request) {
           continue;
         SceneComponent c;
         c.type = type;
-        c.id = make_uuid(request.serial, 1 + 2 * n + (type == XR_SCENE_COMPONENT_TYPE_COLLIDER_MESH_MSFT ? 1 : 0));
+        c.id = make_uuid(request.serial, cell_key(chunk.cell) << 3 | (type == XR_SCENE_COMPONENT_TYPE_COLLIDER_MESH_MSFT ? 2 : 1));
         c.pose = chunk.pose;
+        c.update_time = scanned.update_time(chunk.cell, request.time);
         c.mesh_buffer_id = next_mesh_buffer_id();
         c.uint16_ok = mesh->fits_uint16();
         scene->meshes.emplace(c.mesh_buffer_id, mesh);  // both kinds share one buffer, under distinct ids
@@ -106,14 +115,16 @@ std::shared_ptr<const SceneData> build_scene(const ComputeRequest& request) {
       if (!box_intersects(request.bounds, pose.translation, pose.translation)) continue;
       SceneComponent obj;
       obj.type = XR_SCENE_COMPONENT_TYPE_OBJECT_MSFT;
-      obj.id = make_uuid(request.serial, first_object + 2 * n);
+      obj.id = make_uuid(request.serial, std::uint64_t(n) << 3 | 3);
+      obj.update_time = request.time;
       obj.pose = pose;
       obj.object_type = object.kind;
       scene->components.push_back(obj);
 
       SceneComponent plane;
       plane.type = XR_SCENE_COMPONENT_TYPE_PLANE_MSFT;
-      plane.id = make_uuid(request.serial, first_object + 2 * n + 1);
+      plane.id = make_uuid(request.serial, std::uint64_t(n) << 3 | 4);
+      plane.update_time = request.time;
       plane.parent = obj.id;
       plane.pose = pose;
       plane.object_type = object.kind;

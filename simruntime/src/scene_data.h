@@ -15,6 +15,20 @@
 
 namespace roomsense::sim {
 
+struct ScanStep;  // scan_progress.h
+
+// The cube of `chunk_size` a chunk covers: its place in the room, the same whatever else of the room is there (a
+// room being scanned, scan_progress.h), so ids made from it stay.
+struct ChunkCell {
+  long x = 0, y = 0, z = 0;
+  auto operator<=>(const ChunkCell&) const = default;
+};
+// The cell of the triangle whose first index is `first` (its centroid's), or of a point.
+ChunkCell triangle_cell(const Scan& mesh, std::size_t first, double chunk_size);
+ChunkCell point_cell(const glm::dvec3& p, double chunk_size);
+// A key for ids: the cell's coordinates, 21 bits each.
+std::uint64_t cell_key(const ChunkCell& cell);
+
 struct MeshBuffer {
   std::vector<XrVector3f> vertices;  // in the owning component's space
   std::vector<std::uint32_t> indices;
@@ -31,10 +45,10 @@ struct SceneComponent {
   XrExtent2Df size{};
   std::uint64_t mesh_buffer_id = 0;  // 0: none
   bool uint16_ok = false;
+  XrTime update_time = 0;            // its XrSceneComponentMSFT::updateTime
 };
 
 struct SceneData {
-  XrTime update_time = 0;
   std::vector<SceneComponent> components;
   std::unordered_map<std::uint64_t, std::shared_ptr<const MeshBuffer>> meshes;
 };
@@ -48,30 +62,33 @@ struct WorldBounds {
   bool unbounded() const { return spheres.empty() && boxes.empty(); }
 };
 
-// The room's mesh split for XR_MSFT_scene_understanding (split_into_chunks), made once per instance, at its first
-// scene compute: the room never changes, and a split of a 78k-vertex room took about 13 ms of every compute.
+// The room's mesh split for XR_MSFT_scene_understanding (split_into_chunks), made once per room, at the first scene
+// compute that serves it: a split of a 78k-vertex room took about 13 ms of every compute. The room never changes,
+// but while it is being scanned (scan_progress.h) each step of the scan is a room of its own.
 class MeshChunks {
  public:
   struct Piece {
+    ChunkCell cell;
     Rigid pose;
     std::shared_ptr<const MeshBuffer> mesh;  // shared by every scene that serves it
     glm::dvec3 world_min{0.0}, world_max{0.0};
   };
-  const std::vector<Piece>& of(const Scan& mesh, double chunk_size);
+  std::shared_ptr<const std::vector<Piece>> of(const std::shared_ptr<const Room>& room, double chunk_size);
 
  private:
-  std::once_flag once_;
-  std::vector<Piece> pieces_;
+  std::mutex mutex_;
+  std::shared_ptr<const Room> room_;  // of the split kept
+  std::shared_ptr<const std::vector<Piece>> pieces_;
 };
 
 struct ComputeRequest {
-  std::shared_ptr<const Room> room;
-  std::shared_ptr<MeshChunks> chunks;  // the instance's, of `room` at `chunk_size`
+  std::shared_ptr<const ScanStep> scanned;  // the room as scanned when the compute was asked for
+  std::shared_ptr<MeshChunks> chunks;  // the instance's, at `chunk_size`
   double chunk_size = 2.0;
   bool visual_mesh = false, collider_mesh = false, planes = false, plane_meshes = false;
   WorldBounds bounds;
   std::uint64_t serial = 0;  // the observer's: goes into component UUIDs, the same at each of its computes
-  XrTime time = 0;           // every component's updateTime: the observer's first compute (the room never changes)
+  XrTime time = 0;  // components' updateTime: the observer's first compute, or when a chunk being scanned changed
 };
 
 std::shared_ptr<const SceneData> build_scene(const ComputeRequest& request);
@@ -80,6 +97,7 @@ std::shared_ptr<const SceneData> build_scene(const ComputeRequest& request);
 // differs per chunk) and its vertices in that pose's frame. A triangle goes to the chunk of its centroid;
 // vertices shared across chunks are repeated in each. Vertices no triangle uses go to their own position's chunk.
 struct Chunk {
+  ChunkCell cell;
   Rigid pose;
   MeshBuffer mesh;
   glm::dvec3 world_min{0.0}, world_max{0.0};

@@ -4,6 +4,7 @@
 // on kept chunks equals that of an instance whose source read every chunk. ServedChunks itself is tested directly.
 #include "../../layer/src/sources/served_chunks.h"
 #include "compare.h"
+#include "layer_log.h"
 #include "passive_capture.h"
 
 #include <gtest/gtest.h>
@@ -21,23 +22,6 @@ using roomsense::layer::ServedChunk;
 using roomsense::layer::ServedChunks;
 using roomsense::layer::SourceChunk;
 
-// Each active query's "N chunks (K read, ...)" from the layer's info log, in order.
-struct QueryCount {
-  std::size_t chunks = 0, read = 0;
-};
-std::vector<QueryCount> query_counts(const std::filesystem::path& log) {
-  std::ifstream in(log);
-  std::vector<QueryCount> counts;
-  for (std::string s; std::getline(in, s);) {
-    const std::size_t from = s.find("runtime meshes from ");
-    const std::size_t colon = from == std::string::npos ? from : s.find(": ", from);
-    const std::size_t open = colon == std::string::npos ? colon : s.find(" chunks (", colon);
-    if (open == std::string::npos) continue;
-    counts.push_back({std::stoul(s.substr(colon + 2)), std::stoul(s.substr(open + 9))});
-  }
-  return counts;
-}
-
 // A 0.6 m box on the floor of synthetic:default, submitted by the application: the analysis's input changes while
 // the runtime's chunks do not.
 void submit_box(const App& app, XrRoomAnalyzerEXTX a) {
@@ -53,14 +37,9 @@ class LayerServedChunks : public testing::TestWithParam<Headset> {};
 
 TEST_P(LayerServedChunks, UnchangedChunksAreNotReadAgainAndGiveTheSameRoom) {
   const Headset& headset = GetParam();
-  const std::filesystem::path dir = temp_dir(std::string("served-") + headset.name);
-  std::filesystem::create_directories(dir);
-  const std::filesystem::path log = dir / "layer.log";
-  std::filesystem::remove(log);
+  const LayerLog log(std::string("served-") + headset.name);
   ScopedEnv only("ROOMSENSE_SIM_EXTENSIONS", headset.extensions);
   ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
-  ScopedEnv file("ROOMSENSE_LOG_FILE", log.string());
-  ScopedEnv level("ROOMSENSE_LOG", std::string("info"));
   std::string kept_json;
   {
     App app;
@@ -73,8 +52,8 @@ TEST_P(LayerServedChunks, UnchangedChunksAreNotReadAgainAndGiveTheSameRoom) {
     const XrRoomAnalyzerEXTX moved = app.analyzer(app.reference_space(XR_REFERENCE_SPACE_TYPE_LOCAL, {{0, 0, 0, 1}, {0.25f, 0, 0}}));
     ASSERT_EQ(app.compute(moved, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
   }
-  const std::vector<QueryCount> counts = query_counts(log);
-  ASSERT_EQ(counts.size(), 3u) << "one log line per query in " << log;
+  const std::vector<QueryCount> counts = log.query_counts();
+  ASSERT_EQ(counts.size(), 3u) << "one log line per query in " << log.path();
   EXPECT_GT(counts[0].chunks, 0u);
   EXPECT_EQ(counts[0].read, counts[0].chunks);
   EXPECT_EQ(counts[1].chunks, counts[0].chunks);

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstring>
 #include <map>
 #include <set>
@@ -180,6 +181,45 @@ TEST(MlWorldMeshDetection, BlocksPosedInLocalAreTheRoom) {
   }
   EXPECT_EQ(ml.destroyDetector(d), XR_SUCCESS);
   EXPECT_EQ(ml.destroyDetector(d), XR_ERROR_HANDLE_INVALID);
+}
+
+// A room being scanned (ROOMSENSE_SIM_SCAN_SECONDS): blocks appear over the scan, each NEW when first reported
+// and UPDATED when refined (a later update time), each keeping its uuid; after the scan they are the room.
+TEST(MlWorldMeshDetection, ARoomBeingScannedGivesNewThenUpdatedBlocksAndEndsAsTheRoom) {
+  const auto path = simtest::write_box_room("ml_scanned_box.obj");
+  const roomsense::Scan file = simtest::join_identical_vertices(roomsense::scanio::load_mesh_file(path.string()));
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", path.string());
+  ScopedEnv chunk("ROOMSENSE_SIM_CHUNK_SIZE", std::string("1.0"));
+  ScopedEnv scan("ROOMSENSE_SIM_SCAN_SECONDS", std::string("0.6"));
+  const auto start = std::chrono::steady_clock::now();
+  MagicLeap ml;
+  const auto d = ml.detector();
+  std::map<std::string, XrTime> times;  // per uuid, its update time when last reported
+  std::set<std::size_t> counts;
+  std::size_t updated = 0;
+  while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(700)) {
+    const auto states = ml.states(d);
+    counts.insert(states.size());
+    for (const auto& s : states) {
+      const auto seen = times.find(key(s.uuid));
+      if (seen == times.end()) {
+        EXPECT_EQ(s.status, XR_WORLD_MESH_BLOCK_STATUS_NEW_ML);
+      } else if (s.lastUpdateTime != seen->second) {
+        EXPECT_GT(s.lastUpdateTime, seen->second);
+        EXPECT_EQ(s.status, XR_WORLD_MESH_BLOCK_STATUS_UPDATED_ML);
+        ++updated;
+      } else {
+        EXPECT_EQ(s.status, XR_WORLD_MESH_BLOCK_STATUS_UNCHANGED_ML);
+      }
+      times[key(s.uuid)] = s.lastUpdateTime;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_GE(counts.size(), 3u) << "blocks appeared over the scan";
+  EXPECT_GT(updated, 0u) << "no block was refined";
+  const auto states = ml.states(d);
+  EXPECT_EQ(states.size(), times.size());
+  expect_room(file, ml.meshes(d, states));
 }
 
 TEST(MlWorldMeshDetection, AChunkPastUint16IsSplitIntoBlocks) {

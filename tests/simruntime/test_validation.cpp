@@ -48,6 +48,10 @@ TEST(SimValidation, BadSceneFileOrOptionsFailInstanceCreation) {
     ScopedEnv head("ROOMSENSE_SIM_HEAD_POSE", std::string("1,2"));
     EXPECT_EQ(create_instance(&instance, {}), XR_ERROR_INITIALIZATION_FAILED);
   }
+  for (const char* scan : {"-1", "soon", "4000", "1,2"}) {
+    ScopedEnv seconds("ROOMSENSE_SIM_SCAN_SECONDS", std::string(scan));
+    EXPECT_EQ(create_instance(&instance, {}), XR_ERROR_INITIALIZATION_FAILED) << scan;
+  }
 }
 
 TEST(SimValidation, SystemAndEnumerations) {

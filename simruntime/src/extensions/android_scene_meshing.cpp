@@ -1,6 +1,7 @@
 // XR_ANDROID_scene_meshing (see the header). The room is split into chunks (scene_data.h) once per room and
 // chunk size; every snapshot of every tracker serves those chunks as submeshes, so their uuids and
-// lastUpdatedTime stay the same across snapshots, as a device's do while the room does not change.
+// lastUpdatedTime stay the same across snapshots, as a device's do while the room does not change (while it is
+// being scanned, scan_progress.h, each step is a room of its own, and a chunk's time is when it last changed).
 // Per-vertex labels (DEFAULT label set): a Quest capture's labelled objects give the label of the triangles near
 // their planes; elsewhere, and in plain mesh files, the triangle's normal decides (up-facing at floor level:
 // floor, down-facing at the top: ceiling, vertical: wall, the rest: other). A vertex takes the label most of its
@@ -36,6 +37,7 @@ constexpr double kVertical = 0.3;       // |normal.y| below this: a wall
 
 struct Submesh {
   XrUuid uuid{};
+  XrTime updated = 0;                  // its lastUpdatedTime
   Rigid pose;                          // in world space, rounded to what an XrPosef holds
   std::vector<XrVector3f> vertices;    // in the submesh's space
   std::vector<XrVector3f> normals;
@@ -47,7 +49,6 @@ struct Submesh {
 };
 
 struct MeshScene {
-  XrTime updated = 0;
   std::vector<Submesh> submeshes;
 };
 
@@ -133,14 +134,16 @@ struct Labeller {
 XrVector3f to_xr(const glm::dvec3& v) { return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)}; }
 glm::dvec3 to_glm(const XrVector3f& v) { return {v.x, v.y, v.z}; }
 
-std::shared_ptr<const MeshScene> build_mesh_scene(const Room& room, double chunk_size) {
+std::shared_ptr<const MeshScene> build_mesh_scene(const ScanStep& scanned, double chunk_size) {
   auto scene = std::make_shared<MeshScene>();
-  scene->updated = now_time();
+  const Room& room = *scanned.room;
+  const XrTime built = now_time();
   const Labeller labeller(room);
-  std::uint64_t index = 0;
   for (Chunk& chunk : split_into_chunks(room.mesh, chunk_size)) {
     Submesh s;
-    s.uuid = stable_uuid(room.source, chunked_salt(0x414e44524f4944ull /* "ANDROID" */, chunk_size), index++);
+    // By the chunk's cell, so a submesh keeps its id while others appear (scan_progress.h).
+    s.uuid = stable_uuid(room.source, chunked_salt(0x414e44524f4944ull /* "ANDROID" */, chunk_size), cell_key(chunk.cell));
+    s.updated = scanned.update_time(chunk.cell, built);
     // The pose as an XrPosef holds it; the vertices were made in the unrounded frame, so move them over.
     s.pose = to_rigid(to_pose(chunk.pose));
     const Rigid to_local = s.pose.inverse() * chunk.pose;
@@ -184,11 +187,14 @@ std::shared_ptr<const MeshScene> build_mesh_scene(const Room& room, double chunk
   return scene;
 }
 
-// The scene of an instance's room, built once per room and chunk size. Call under the lock.
+// The scene of an instance's room as scanned now, built once per room and chunk size (each step of a scan is a
+// room of its own; a step's scene is let go once no one else holds its room). Call under the lock.
 std::shared_ptr<const MeshScene> scene_of(const InstanceState& instance) {
-  if (!instance.room) return nullptr;
-  auto& entry = state().scenes[{instance.room.get(), instance.config.chunk_size}];
-  if (!entry.second) entry = {instance.room, build_mesh_scene(*instance.room, instance.config.chunk_size)};
+  const std::shared_ptr<const ScanStep> scanned = instance.room_at(now_time());
+  if (!scanned) return nullptr;
+  std::erase_if(state().scenes, [](const auto& entry) { return entry.second.first.use_count() == 1; });
+  auto& entry = state().scenes[{scanned->room.get(), instance.config.chunk_size}];
+  if (!entry.second) entry = {scanned->room, build_mesh_scene(*scanned, instance.config.chunk_size)};
   return entry.second;
 }
 
@@ -318,7 +324,7 @@ XrResult XRAPI_CALL xrGetAllSubmeshStatesANDROID(XrSceneMeshSnapshotANDROID snap
                           [&](XrSceneSubmeshStateANDROID& out, std::size_t i) {
                             const Submesh& m = s.scene->submeshes[s.submeshes[i]];
                             out.submeshId = m.uuid;
-                            out.lastUpdatedTime = s.scene->updated;
+                            out.lastUpdatedTime = m.updated;
                             out.submeshPoseInBaseSpace = to_pose(s.world_to_base * m.pose);
                             out.bounds = m.bounds;
                           });

@@ -1,6 +1,7 @@
 // XR_ML_world_mesh_detection (see the header). Blocks are built once per room and chunk size, so their uuids
 // and lastUpdateTime stay the same across requests and detectors; a block's status is NEW the first time a
-// detector reports it and UNCHANGED afterwards. Futures are ready after ROOMSENSE_SIM_COMPUTE_DELAY_MS.
+// detector reports it and UNCHANGED afterwards, or UPDATED where its update time changed since (a room being
+// scanned, scan_progress.h: each step is a room of its own, and a chunk's time is when it last changed). Futures are ready after ROOMSENSE_SIM_COMPUTE_DELAY_MS.
 // xrRequestWorldMeshStateCompleteML follows the two-call idiom: a call with no capacity (or too little) leaves
 // the result with the future's detector until a call takes every state.
 #include "ml_world_mesh_detection.h"
@@ -35,6 +36,7 @@ constexpr std::uint64_t kMaxBufferSize = 1ull << 31;      // bytes one buffer ma
 
 struct Block {
   XrUuidEXT uuid{};
+  XrTime updated = 0;                 // its lastUpdateTime
   Rigid pose;                         // in world space, as an XrPosef holds it
   std::vector<XrVector3f> vertices;   // in the block's space
   std::vector<std::uint16_t> indices;
@@ -48,7 +50,6 @@ struct Block {
 };
 
 struct BlockScene {
-  XrTime updated = 0;
   std::vector<Block> blocks;
   std::size_t largest = 0, total = 0;  // bytes
 };
@@ -68,7 +69,7 @@ struct MeshRequest {
 
 struct Detector {
   std::uint64_t session = 0, instance = 0;
-  std::set<std::string> reported;                                  // uuids reported once (later: UNCHANGED)
+  std::map<std::string, XrTime> reported;  // each uuid reported, with its update time then (later: UNCHANGED or UPDATED)
   std::map<XrFutureEXT, std::shared_ptr<const StateResult>> held;  // state results not yet taken in full
   std::map<void*, std::unique_ptr<std::uint8_t[]>> buffers;
   std::map<void*, std::uint32_t> sizes;
@@ -115,11 +116,14 @@ Block make_block(const Chunk& chunk, const Rigid& pose, const std::vector<std::u
   return b;
 }
 
-std::shared_ptr<const BlockScene> build_block_scene(const Room& room, double chunk_size) {
+std::shared_ptr<const BlockScene> build_block_scene(const ScanStep& scanned, double chunk_size) {
   auto scene = std::make_shared<BlockScene>();
-  scene->updated = now_time();
-  std::uint64_t index = 0;
+  const Room& room = *scanned.room;
+  const XrTime built = now_time();
   for (const Chunk& chunk : split_into_chunks(room.mesh, chunk_size)) {
+    // Ids by the chunk's cell and the block's place in it, so a block keeps its id while others appear
+    // (scan_progress.h).
+    std::uint64_t part = 0;
     const Rigid pose = to_rigid(to_pose(chunk.pose));
     // Triangles in order into blocks of at most kMaxBlockVertices distinct vertices.
     std::vector<bool> used(chunk.mesh.vertices.size(), false);
@@ -127,7 +131,9 @@ std::shared_ptr<const BlockScene> build_block_scene(const Room& room, double chu
     std::set<std::uint32_t> in_block;
     auto flush = [&](const std::vector<std::uint32_t>& lone) {
       Block b = make_block(chunk, pose, triangles, lone);
-      b.uuid = stable_uuid(room.source, chunked_salt(0x4d4c32ull /* "ML2" */, chunk_size), index++);
+      b.uuid = stable_uuid(room.source, chunked_salt(0x4d4c32ull /* "ML2" */, chunk_size),
+                           cell_key(chunk.cell) ^ (part++ * 0x9E3779B97F4A7C15ull));
+      b.updated = scanned.update_time(chunk.cell, built);
       scene->blocks.push_back(std::move(b));
       triangles.clear();
       in_block.clear();
@@ -153,10 +159,14 @@ std::shared_ptr<const BlockScene> build_block_scene(const Room& room, double chu
   return scene;
 }
 
+// The blocks of an instance's room as scanned now, built once per room and chunk size (each step of a scan is a
+// room of its own; a step's blocks are let go once no one else holds its room). Call under the lock.
 std::shared_ptr<const BlockScene> scene_of(const InstanceState& instance) {
-  if (!instance.room) return nullptr;
-  auto& entry = state().scenes[{instance.room.get(), instance.config.chunk_size}];
-  if (!entry.second) entry = {instance.room, build_block_scene(*instance.room, instance.config.chunk_size)};
+  const std::shared_ptr<const ScanStep> scanned = instance.room_at(now_time());
+  if (!scanned) return nullptr;
+  std::erase_if(state().scenes, [](const auto& entry) { return entry.second.first.use_count() == 1; });
+  auto& entry = state().scenes[{scanned->room.get(), instance.config.chunk_size}];
+  if (!entry.second) entry = {scanned->room, build_block_scene(*scanned, instance.config.chunk_size)};
   return entry.second;
 }
 
@@ -234,8 +244,12 @@ XrResult XRAPI_CALL xrRequestWorldMeshStateAsyncML(XrWorldMeshDetectorML detecto
         s.uuid = b.uuid;
         s.meshBoundingBoxCenter = to_pose(world_to_base * b.pose);
         s.meshBoundingBoxExtents = b.extents;
-        s.lastUpdateTime = scene->updated;
-        s.status = d->reported.insert(key(b.uuid)).second ? XR_WORLD_MESH_BLOCK_STATUS_NEW_ML : XR_WORLD_MESH_BLOCK_STATUS_UNCHANGED_ML;
+        s.lastUpdateTime = b.updated;
+        const auto [seen, is_new] = d->reported.try_emplace(key(b.uuid), b.updated);
+        s.status = is_new ? XR_WORLD_MESH_BLOCK_STATUS_NEW_ML
+                   : seen->second != b.updated ? XR_WORLD_MESH_BLOCK_STATUS_UPDATED_ML
+                                               : XR_WORLD_MESH_BLOCK_STATUS_UNCHANGED_ML;
+        seen->second = b.updated;
         result->states.push_back(s);
       }
     }

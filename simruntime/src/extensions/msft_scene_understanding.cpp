@@ -63,7 +63,7 @@ void run_compute(std::stop_token stop, std::shared_ptr<ComputeJob> job, ComputeR
     if (stop.stop_requested()) return;
   }
   std::shared_ptr<const SceneData> data;
-  if (!request.room) {
+  if (!request.scanned) {
     log_error("scene compute failed: ROOMSENSE_SIM_SCENE is not set, so there is no room to serve");
   } else {
     try {
@@ -157,7 +157,7 @@ XrResult XRAPI_CALL xrComputeNewSceneMSFT(XrSceneObserverMSFT sceneObserver, con
     const SessionState* session = Runtime::find(runtime().sessions, observer->session);
     const InstanceState* instance = session ? Runtime::find(runtime().instances, session->instance) : nullptr;
     if (instance == nullptr) return XR_ERROR_HANDLE_INVALID;
-    request.room = instance->room;
+    request.scanned = instance->room_at(now_time());
     request.chunks = instance->msft_chunks;
     request.chunk_size = instance->config.chunk_size;
     request.serial = id_of(sceneObserver);  // the spec: an observer correlates component ids across its computes
@@ -271,7 +271,7 @@ XrResult XRAPI_CALL xrGetSceneComponentsMSFT(XrSceneMSFT scene, const XrSceneCom
       return XR_ERROR_SIZE_INSUFFICIENT;
     for (std::size_t i = 0; i < matches.size(); ++i) {
       const SceneComponent& c = *matches[i];
-      components->components[i] = {c.type, c.id, c.parent, state->data->update_time};
+      components->components[i] = {c.type, c.id, c.parent, c.update_time};
       if (objects) objects->sceneObjects[i].objectType = c.object_type.value_or(XR_SCENE_OBJECT_TYPE_UNCATEGORIZED_MSFT);
       if (planes) planes->scenePlanes[i] = {c.alignment, c.size, c.mesh_buffer_id, static_cast<XrBool32>(c.uint16_ok)};
       if (meshes) meshes->sceneMeshes[i] = {c.mesh_buffer_id, static_cast<XrBool32>(c.uint16_ok)};

@@ -1,0 +1,54 @@
+// ROOMSENSE_SIM_SCAN_SECONDS: a user scanning the room. Over that many seconds from the instance's creation the
+// room's chunks (cubes of ROOMSENSE_SIM_CHUNK_SIZE, scene_data.h) appear nearest the head first: in the first half
+// each appears coarse (every second of its triangles), in the second half each is refined to its whole mesh, in
+// the same order. The live-meshing extensions (XR_MSFT_scene_understanding, XR_ANDROID_scene_meshing,
+// XR_ML_world_mesh_detection) serve the room as scanned at each query, each chunk's update time the time it last
+// changed, as a headset meshing the room while the user looks around does; Quest's captured scene and the plane
+// extensions serve the whole room, as a scene captured beforehand. 0 (the default) serves the whole room at once.
+#pragma once
+#include "room_source.h"
+#include "scene_data.h"
+
+#include <openxr/openxr.h>
+
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace roomsense::sim {
+
+// The room as scanned at one time.
+struct ScanStep {
+  std::shared_ptr<const Room> room;    // the chunks shown so far, each coarse or whole; the room itself when all whole
+  std::map<ChunkCell, XrTime> changed; // when each chunk shown last changed; empty where the room never changes
+  // A chunk's update time: when it last changed, or `otherwise` where the room never changes.
+  XrTime update_time(const ChunkCell& cell, XrTime otherwise) const;
+};
+
+class ScanProgress {
+ public:
+  // `head`: where the user stands (ROOMSENSE_SIM_HEAD_POSE); `start`: the scan's first moment.
+  ScanProgress(std::shared_ptr<const Room> room, double chunk_size, const glm::dvec3& head, double seconds, XrTime start);
+  // The room as scanned at `now`: the same object for every time within one step of the scan. Thread-safe.
+  std::shared_ptr<const ScanStep> at(XrTime now);
+  std::size_t chunks() const { return order_.size(); }
+  // Steps are 0 (nothing shown) to 2 * chunks() (every chunk whole): one more at each chunk shown or refined.
+  std::size_t step_at(XrTime now) const;
+
+ private:
+  std::shared_ptr<const ScanStep> build(std::size_t step) const;
+
+  std::shared_ptr<const Room> room_;
+  double chunk_size_;
+  std::vector<ChunkCell> order_;           // the chunks' cells, nearest the head first
+  std::map<ChunkCell, std::size_t> rank_;  // a cell's place in order_
+  std::vector<std::size_t> triangle_rank_; // per triangle of the room's mesh, its chunk's rank
+  std::vector<XrTime> shown_, whole_;      // per rank: when the chunk appears coarse, and whole
+  std::mutex mutex_;
+  std::size_t cached_step_ = 0;
+  std::shared_ptr<const ScanStep> cached_;
+};
+
+}  // namespace roomsense::sim

@@ -90,7 +90,6 @@ XrResult XRAPI_CALL xrCreateInstance(const XrInstanceCreateInfo* createInfo, XrI
         log_error(std::string("ROOMSENSE_SIM_SCENE: ") + e.what());
         return XR_ERROR_INITIALIZATION_FAILED;
       }
-      state->whole_room = std::make_shared<const ScanStep>(ScanStep{state->room, {}});
       if (state->config.scan_seconds > 0.0) {
         const XrVector3f& head = state->config.head_pose.position;
         state->scan = std::make_shared<ScanProgress>(state->room, state->config.chunk_size, glm::dvec3(head.x, head.y, head.z),

@@ -60,15 +60,19 @@ struct InstanceState {
   Config config;
   std::shared_ptr<const Room> room;  // null when ROOMSENSE_SIM_SCENE is unset
   std::shared_ptr<ScanProgress> scan;  // with ROOMSENSE_SIM_SCAN_SECONDS > 0
-  std::shared_ptr<const ScanStep> whole_room;  // without: the room, never changing
-  std::shared_ptr<MeshChunks> msft_chunks = std::make_shared<MeshChunks>();
+  mutable std::shared_ptr<const ScanStep> whole;  // without: the room, never changing (split at the first ask)
   std::deque<SessionEvent> events;
   std::deque<XrEventDataBuffer> extension_events;  // scene extensions' events, after the session events
   std::vector<std::string> paths;  // XrPath n names paths[n - 1]
   std::unordered_map<std::string, XrPath> path_ids;
   bool has(const char* extension) const { return extensions.count(extension) != 0; }
-  // The room as the live-meshing extensions serve it at `now` (scan_progress.h); null without a room.
-  std::shared_ptr<const ScanStep> room_at(XrTime now) const { return scan ? scan->at(now) : whole_room; }
+  // The room as the live-meshing extensions serve it at `now` (scan_progress.h); null without a room. Call under
+  // the runtime's lock.
+  std::shared_ptr<const ScanStep> room_at(XrTime now) const {
+    if (scan) return scan->at(now);
+    if (!whole && room) whole = whole_room(room, config.chunk_size);
+    return whole;
+  }
 };
 
 struct SessionState {

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <numeric>
 
 namespace roomsense::sim {
 
@@ -13,28 +13,64 @@ XrTime ScanStep::update_time(const ChunkCell& cell, XrTime otherwise) const {
   return it == changed.end() ? otherwise : it->second;
 }
 
+std::shared_ptr<const ScanStep> whole_room(const std::shared_ptr<const Room>& room, double chunk_size) {
+  static std::mutex mutex;
+  static std::map<std::pair<const Room*, double>, std::weak_ptr<const ScanStep>> kept;
+  std::lock_guard lock(mutex);
+  std::erase_if(kept, [](const auto& entry) { return entry.second.expired(); });
+  std::weak_ptr<const ScanStep>& entry = kept[{room.get(), chunk_size}];
+  if (std::shared_ptr<const ScanStep> step = entry.lock()) return step;
+  auto step = std::make_shared<ScanStep>();
+  step->room = room;
+  for (Chunk& chunk : split_into_chunks(room->mesh, chunk_size)) step->chunks.push_back(std::make_shared<const Chunk>(std::move(chunk)));
+  entry = step;
+  return step;
+}
+
 ScanProgress::ScanProgress(std::shared_ptr<const Room> room, double chunk_size, const glm::dvec3& head, double seconds,
                            XrTime start)
-    : room_(std::move(room)), chunk_size_(chunk_size) {
-  const Scan& mesh = room_->mesh;
-  std::vector<ChunkCell> triangle_cells;
-  triangle_cells.reserve(mesh.indices.size() / 3);
-  std::map<ChunkCell, glm::dvec3> centres;  // the cells' own centres: where the user looks to see them
+    : whole_room_(whole_room(room, chunk_size)) {
+  // The coarse chunks: every second triangle of each cell, on the vertices they use, split as the room is.
+  const Scan& mesh = room->mesh;
+  Scan coarse;
+  std::map<ChunkCell, bool> keep_next;  // per cell: whether its next triangle is kept
+  constexpr std::uint32_t kUnset = ~std::uint32_t{0};
+  std::vector<std::uint32_t> index_of(mesh.vertices.size(), kUnset);
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-    const ChunkCell cell = triangle_cell(mesh, t, chunk_size);
-    triangle_cells.push_back(cell);
-    centres.emplace(cell, (glm::dvec3(double(cell.x), double(cell.y), double(cell.z)) + 0.5) * chunk_size);
+    const auto [next, is_new] = keep_next.try_emplace(triangle_cell(mesh, t, chunk_size), true);
+    if (next->second)
+      for (std::size_t k = t; k < t + 3; ++k) {
+        std::uint32_t& v = index_of[mesh.indices[k]];
+        if (v == kUnset) {
+          v = std::uint32_t(coarse.vertices.size());
+          coarse.vertices.push_back(mesh.vertices[mesh.indices[k]]);
+        }
+        coarse.indices.push_back(v);
+      }
+    next->second = !next->second;
   }
-  for (const auto& [cell, centre] : centres) order_.push_back(cell);
+  std::map<ChunkCell, SharedChunk> coarse_of, whole_of;
+  for (Chunk& chunk : split_into_chunks(coarse, chunk_size)) {
+    const ChunkCell cell = chunk.cell;
+    coarse_of[cell] = std::make_shared<const Chunk>(std::move(chunk));
+  }
+  for (const SharedChunk& chunk : whole_room_->chunks) whole_of[chunk->cell] = chunk;
+  // The cells with triangles, nearest the head first (their own centres: where the user looks to see them).
+  for (const auto& [cell, chunk] : coarse_of) order_.push_back(cell);
+  const auto centre = [&](const ChunkCell& c) {
+    return (glm::dvec3(double(c.x), double(c.y), double(c.z)) + 0.5) * chunk_size;
+  };
   std::stable_sort(order_.begin(), order_.end(), [&](const ChunkCell& a, const ChunkCell& b) {
-    return glm::distance(centres[a], head) < glm::distance(centres[b], head);
+    return glm::distance(centre(a), head) < glm::distance(centre(b), head);
   });
-  for (std::size_t r = 0; r < order_.size(); ++r) rank_[order_[r]] = r;
-  triangle_rank_.reserve(triangle_cells.size());
-  for (const ChunkCell& cell : triangle_cells) triangle_rank_.push_back(rank_[cell]);
+  by_cell_.resize(order_.size());
+  std::iota(by_cell_.begin(), by_cell_.end(), std::size_t{0});
+  std::sort(by_cell_.begin(), by_cell_.end(), [&](std::size_t a, std::size_t b) { return order_[a] < order_[b]; });
   const double n = double(std::max<std::size_t>(order_.size(), 1));
   const double half_ns = 0.5 * seconds * 1e9;
   for (std::size_t r = 0; r < order_.size(); ++r) {
+    coarse_.push_back(coarse_of.at(order_[r]));
+    whole_chunks_.push_back(whole_of.at(order_[r]));
     shown_.push_back(start + XrTime(std::llround(half_ns * double(r) / n)));
     whole_.push_back(start + XrTime(std::llround(half_ns + half_ns * double(r) / n)));
   }
@@ -52,45 +88,24 @@ std::shared_ptr<const ScanStep> ScanProgress::at(XrTime now) {
   const std::size_t step = step_at(now);
   std::lock_guard lock(mutex_);
   if (!cached_ || cached_step_ != step) {
-    cached_ = build(step);  // the step before is let go: a built scene of it stays only while a snapshot holds it
+    cached_ = build(step);  // the step before is let go: what was built of it stays only while something holds it
     cached_step_ = step;
   }
   return cached_;
 }
 
 std::shared_ptr<const ScanStep> ScanProgress::build(std::size_t step) const {
-  auto out = std::make_shared<ScanStep>();
   const std::size_t n = order_.size();
   const std::size_t shown = std::min(step, n), whole = step > n ? step - n : 0;
+  auto out = std::make_shared<ScanStep>();
+  out->room = whole_room_->room;
   for (std::size_t r = 0; r < shown; ++r) out->changed[order_[r]] = r < whole ? whole_[r] : shown_[r];
-  if (whole == n) {
-    out->room = room_;
+  if (whole == n) {  // the whole room (with any chunks of vertices alone), each chunk at the time it became whole
+    out->chunks = whole_room_->chunks;
     return out;
   }
-  // The chunks shown: a whole one's triangles, or every second triangle of a coarse one, in the room's order, on
-  // the vertices they use (in order of first use, so a chunk made whole is the room's own chunk).
-  const Scan& mesh = room_->mesh;
-  auto room = std::make_shared<Room>();
-  room->source = room_->source;
-  room->objects = room_->objects;
-  room->mesh.labels = mesh.labels;
-  constexpr std::uint32_t kUnset = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> index_of(mesh.vertices.size(), kUnset);
-  std::vector<std::uint8_t> odd(n, 0);  // per coarse chunk: whether its next triangle is dropped
-  for (std::size_t t = 0; 3 * t + 2 < mesh.indices.size(); ++t) {
-    const std::size_t r = triangle_rank_[t];
-    if (r >= shown) continue;
-    if (r >= whole && (odd[r] ^= 1) == 0) continue;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::uint32_t v = mesh.indices[3 * t + k];
-      if (index_of[v] == kUnset) {
-        index_of[v] = std::uint32_t(room->mesh.vertices.size());
-        room->mesh.vertices.push_back(mesh.vertices[v]);
-      }
-      room->mesh.indices.push_back(index_of[v]);
-    }
-  }
-  out->room = std::move(room);
+  for (std::size_t r : by_cell_)
+    if (r < shown) out->chunks.push_back(r < whole ? whole_chunks_[r] : coarse_[r]);
   return out;
 }
 

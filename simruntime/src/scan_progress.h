@@ -19,13 +19,21 @@
 
 namespace roomsense::sim {
 
-// The room as scanned at one time.
+using SharedChunk = std::shared_ptr<const Chunk>;
+
+// The room as scanned at one time: what the live-meshing extensions serve. A chunk shown in several steps is the
+// same object in each, so what an extension builds from it can be kept by its address (while it is held).
 struct ScanStep {
-  std::shared_ptr<const Room> room;    // the chunks shown so far, each coarse or whole; the room itself when all whole
+  std::shared_ptr<const Room> room;    // the whole room: its source, objects and labels
+  std::vector<SharedChunk> chunks;     // the chunks shown, each coarse or whole, in the order of their cells
   std::map<ChunkCell, XrTime> changed; // when each chunk shown last changed; empty where the room never changes
   // A chunk's update time: when it last changed, or `otherwise` where the room never changes.
   XrTime update_time(const ChunkCell& cell, XrTime otherwise) const;
 };
+
+// The whole room in chunks of `chunk_size`, never changing: split at the first ask, and shared by every instance
+// of the room while one holds it.
+std::shared_ptr<const ScanStep> whole_room(const std::shared_ptr<const Room>& room, double chunk_size);
 
 class ScanProgress {
  public:
@@ -40,11 +48,10 @@ class ScanProgress {
  private:
   std::shared_ptr<const ScanStep> build(std::size_t step) const;
 
-  std::shared_ptr<const Room> room_;
-  double chunk_size_;
+  std::shared_ptr<const ScanStep> whole_room_;
   std::vector<ChunkCell> order_;           // the chunks' cells, nearest the head first
-  std::map<ChunkCell, std::size_t> rank_;  // a cell's place in order_
-  std::vector<std::size_t> triangle_rank_; // per triangle of the room's mesh, its chunk's rank
+  std::vector<std::size_t> by_cell_;       // ranks in the order of their cells
+  std::vector<SharedChunk> coarse_, whole_chunks_;  // per rank
   std::vector<XrTime> shown_, whole_;      // per rank: when the chunk appears coarse, and whole
   std::mutex mutex_;
   std::size_t cached_step_ = 0;

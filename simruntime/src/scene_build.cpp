@@ -62,20 +62,6 @@ std::shared_ptr<const MeshBuffer> quad_mesh(const XrExtent2Df& size) {
 
 }  // namespace
 
-std::shared_ptr<const std::vector<MeshChunks::Piece>> MeshChunks::of(const std::shared_ptr<const Room>& room,
-                                                                     double chunk_size) {
-  std::lock_guard lock(mutex_);
-  if (room_ != room) {
-    auto pieces = std::make_shared<std::vector<Piece>>();
-    for (Chunk& chunk : split_into_chunks(room->mesh, chunk_size))
-      pieces->push_back({chunk.cell, chunk.pose, std::make_shared<const MeshBuffer>(std::move(chunk.mesh)), chunk.world_min,
-                         chunk.world_max});
-    room_ = room;
-    pieces_ = std::move(pieces);
-  }
-  return pieces_;
-}
-
 std::shared_ptr<const SceneData> build_scene(const ComputeRequest& request) {
   auto scene = std::make_shared<SceneData>();
   const ScanStep& scanned = *request.scanned;
@@ -83,14 +69,13 @@ std::shared_ptr<const SceneData> build_scene(const ComputeRequest& request) {
   // Each component's UUID is the observer's serial and the component's place in the room (its chunk's cell, its
   // object), not its place in this scene: the observer's computes correlate it, whatever the bounds leave out and
   // whatever else of the room is scanned. The low three bits tell the kinds apart.
-  const std::shared_ptr<const std::vector<MeshChunks::Piece>> pieces = request.chunks->of(scanned.room, request.chunk_size);
-  const std::vector<MeshChunks::Piece>& chunks = *pieces;
+  const std::vector<SharedChunk>& chunks = scanned.chunks;
 
   if (request.visual_mesh || request.collider_mesh) {
     for (std::size_t n = 0; n < chunks.size(); ++n) {
-      const MeshChunks::Piece& chunk = chunks[n];
+      const Chunk& chunk = *chunks[n];
       if (!box_intersects(request.bounds, chunk.world_min, chunk.world_max)) continue;
-      const std::shared_ptr<const MeshBuffer>& mesh = chunk.mesh;
+      const std::shared_ptr<const MeshBuffer> mesh(chunks[n], &chunk.mesh);  // shared by every scene that serves it
       for (XrSceneComponentTypeMSFT type : {XR_SCENE_COMPONENT_TYPE_VISUAL_MESH_MSFT, XR_SCENE_COMPONENT_TYPE_COLLIDER_MESH_MSFT}) {
         if ((type == XR_SCENE_COMPONENT_TYPE_VISUAL_MESH_MSFT && !request.visual_mesh) ||
             (type == XR_SCENE_COMPONENT_TYPE_COLLIDER_MESH_MSFT && !request.collider_mesh))

@@ -62,29 +62,8 @@ struct WorldBounds {
   bool unbounded() const { return spheres.empty() && boxes.empty(); }
 };
 
-// The room's mesh split for XR_MSFT_scene_understanding (split_into_chunks), made once per room, at the first scene
-// compute that serves it: a split of a 78k-vertex room took about 13 ms of every compute. The room never changes,
-// but while it is being scanned (scan_progress.h) each step of the scan is a room of its own.
-class MeshChunks {
- public:
-  struct Piece {
-    ChunkCell cell;
-    Rigid pose;
-    std::shared_ptr<const MeshBuffer> mesh;  // shared by every scene that serves it
-    glm::dvec3 world_min{0.0}, world_max{0.0};
-  };
-  std::shared_ptr<const std::vector<Piece>> of(const std::shared_ptr<const Room>& room, double chunk_size);
-
- private:
-  std::mutex mutex_;
-  std::shared_ptr<const Room> room_;  // of the split kept
-  std::shared_ptr<const std::vector<Piece>> pieces_;
-};
-
 struct ComputeRequest {
-  std::shared_ptr<const ScanStep> scanned;  // the room as scanned when the compute was asked for
-  std::shared_ptr<MeshChunks> chunks;  // the instance's, at `chunk_size`
-  double chunk_size = 2.0;
+  std::shared_ptr<const ScanStep> scanned;  // the room, in chunks, as scanned when the compute was asked for
   bool visual_mesh = false, collider_mesh = false, planes = false, plane_meshes = false;
   WorldBounds bounds;
   std::uint64_t serial = 0;  // the observer's: goes into component UUIDs, the same at each of its computes

@@ -1,7 +1,7 @@
 // XR_ANDROID_scene_meshing (see the header). The room is split into chunks (scene_data.h) once per room and
 // chunk size; every snapshot of every tracker serves those chunks as submeshes, so their uuids and
 // lastUpdatedTime stay the same across snapshots, as a device's do while the room does not change (while it is
-// being scanned, scan_progress.h, each step is a room of its own, and a chunk's time is when it last changed).
+// being scanned, scan_progress.h, a chunk's time is when it last changed).
 // Per-vertex labels (DEFAULT label set): a Quest capture's labelled objects give the label of the triangles near
 // their planes; elsewhere, and in plain mesh files, the triangle's normal decides (up-facing at floor level:
 // floor, down-facing at the top: ceiling, vertical: wall, the rest: other). A vertex takes the label most of its
@@ -24,6 +24,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -69,7 +70,9 @@ struct Snapshot {
 struct State {
   std::unordered_map<std::uint64_t, Tracker> trackers;
   std::unordered_map<std::uint64_t, Snapshot> snapshots;
-  std::map<std::pair<const Room*, double>, std::pair<std::shared_ptr<const Room>, std::shared_ptr<const MeshScene>>> scenes;
+  // Built from a step of the room (scan_progress.h), each kept while something else holds what it came from.
+  std::map<const ScanStep*, std::pair<std::shared_ptr<const ScanStep>, std::shared_ptr<const MeshScene>>> scenes;
+  std::map<const Chunk*, std::pair<SharedChunk, std::shared_ptr<const Submesh>>> submeshes;
 };
 
 State& state() {
@@ -134,67 +137,78 @@ struct Labeller {
 XrVector3f to_xr(const glm::dvec3& v) { return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)}; }
 glm::dvec3 to_glm(const XrVector3f& v) { return {v.x, v.y, v.z}; }
 
-std::shared_ptr<const MeshScene> build_mesh_scene(const ScanStep& scanned, double chunk_size) {
-  auto scene = std::make_shared<MeshScene>();
-  const Room& room = *scanned.room;
-  const XrTime built = now_time();
-  const Labeller labeller(room);
-  for (Chunk& chunk : split_into_chunks(room.mesh, chunk_size)) {
-    Submesh s;
-    // By the chunk's cell, so a submesh keeps its id while others appear (scan_progress.h).
-    s.uuid = stable_uuid(room.source, chunked_salt(0x414e44524f4944ull /* "ANDROID" */, chunk_size), cell_key(chunk.cell));
-    s.updated = scanned.update_time(chunk.cell, built);
-    // The pose as an XrPosef holds it; the vertices were made in the unrounded frame, so move them over.
-    s.pose = to_rigid(to_pose(chunk.pose));
-    const Rigid to_local = s.pose.inverse() * chunk.pose;
-    s.vertices.reserve(chunk.mesh.vertices.size());
-    std::vector<glm::dvec3> world;
-    world.reserve(chunk.mesh.vertices.size());
-    glm::dvec3 extent(0.0);
-    for (const XrVector3f& v : chunk.mesh.vertices) {
-      const glm::dvec3 local = to_local.apply(to_glm(v));
-      s.vertices.push_back(to_xr(local));
-      world.push_back(chunk.pose.apply(to_glm(v)));
-      extent = glm::max(extent, glm::abs(local));
-    }
-    s.bounds = {static_cast<float>(2.0 * extent.x), static_cast<float>(2.0 * extent.y), static_cast<float>(2.0 * extent.z)};
-    s.world_centre = s.pose.translation;
-    s.world_radius = glm::length(extent);
-    s.indices = std::move(chunk.mesh.indices);
-
-    // Normals (area-weighted face normals, in the submesh's space) and label votes per vertex.
-    std::vector<glm::dvec3> normals(s.vertices.size(), glm::dvec3(0.0));
-    std::vector<std::array<std::uint32_t, 5>> votes(s.vertices.size(), std::array<std::uint32_t, 5>{});
-    for (std::size_t t = 0; t + 2 < s.indices.size(); t += 3) {
-      const std::uint32_t i0 = s.indices[t], i1 = s.indices[t + 1], i2 = s.indices[t + 2];
-      const glm::dvec3 n = glm::cross(to_glm(s.vertices[i1]) - to_glm(s.vertices[i0]), to_glm(s.vertices[i2]) - to_glm(s.vertices[i0]));
-      const std::uint8_t label = labeller(world[i0], world[i1], world[i2]);
-      for (std::uint32_t i : {i0, i1, i2}) {
-        normals[i] += n;
-        ++votes[i][label];
-      }
-    }
-    s.normals.reserve(normals.size());
-    s.labels.reserve(normals.size());
-    for (std::size_t v = 0; v < normals.size(); ++v) {
-      const double length = glm::length(normals[v]);
-      s.normals.push_back(length > 0.0 ? to_xr(normals[v] / length) : XrVector3f{0.0f, 1.0f, 0.0f});
-      const auto& vote = votes[v];
-      s.labels.push_back(static_cast<std::uint8_t>(std::max_element(vote.begin(), vote.end()) - vote.begin()));
-    }
-    scene->submeshes.push_back(std::move(s));
+// A chunk as a submesh (its update time aside).
+Submesh build_submesh(const Chunk& chunk, const Labeller& labeller, const std::string& source, double chunk_size) {
+  Submesh s;
+  // By the chunk's cell, so a submesh keeps its id while others appear (scan_progress.h).
+  s.uuid = stable_uuid(source, chunked_salt(0x414e44524f4944ull /* "ANDROID" */, chunk_size), cell_key(chunk.cell));
+  // The pose as an XrPosef holds it; the vertices were made in the unrounded frame, so move them over.
+  s.pose = to_rigid(to_pose(chunk.pose));
+  const Rigid to_local = s.pose.inverse() * chunk.pose;
+  s.vertices.reserve(chunk.mesh.vertices.size());
+  std::vector<glm::dvec3> world;
+  world.reserve(chunk.mesh.vertices.size());
+  glm::dvec3 extent(0.0);
+  for (const XrVector3f& v : chunk.mesh.vertices) {
+    const glm::dvec3 local = to_local.apply(to_glm(v));
+    s.vertices.push_back(to_xr(local));
+    world.push_back(chunk.pose.apply(to_glm(v)));
+    extent = glm::max(extent, glm::abs(local));
   }
-  return scene;
+  s.bounds = {static_cast<float>(2.0 * extent.x), static_cast<float>(2.0 * extent.y), static_cast<float>(2.0 * extent.z)};
+  s.world_centre = s.pose.translation;
+  s.world_radius = glm::length(extent);
+  s.indices = chunk.mesh.indices;
+
+  // Normals (area-weighted face normals, in the submesh's space) and label votes per vertex.
+  std::vector<glm::dvec3> normals(s.vertices.size(), glm::dvec3(0.0));
+  std::vector<std::array<std::uint32_t, 5>> votes(s.vertices.size(), std::array<std::uint32_t, 5>{});
+  for (std::size_t t = 0; t + 2 < s.indices.size(); t += 3) {
+    const std::uint32_t i0 = s.indices[t], i1 = s.indices[t + 1], i2 = s.indices[t + 2];
+    const glm::dvec3 n = glm::cross(to_glm(s.vertices[i1]) - to_glm(s.vertices[i0]), to_glm(s.vertices[i2]) - to_glm(s.vertices[i0]));
+    const std::uint8_t label = labeller(world[i0], world[i1], world[i2]);
+    for (std::uint32_t i : {i0, i1, i2}) {
+      normals[i] += n;
+      ++votes[i][label];
+    }
+  }
+  s.normals.reserve(normals.size());
+  s.labels.reserve(normals.size());
+  for (std::size_t v = 0; v < normals.size(); ++v) {
+    const double length = glm::length(normals[v]);
+    s.normals.push_back(length > 0.0 ? to_xr(normals[v] / length) : XrVector3f{0.0f, 1.0f, 0.0f});
+    const auto& vote = votes[v];
+    s.labels.push_back(static_cast<std::uint8_t>(std::max_element(vote.begin(), vote.end()) - vote.begin()));
+  }
+  return s;
 }
 
-// The scene of an instance's room as scanned now, built once per room and chunk size (each step of a scan is a
-// room of its own; a step's scene is let go once no one else holds its room). Call under the lock.
+// The scene of an instance's room as scanned now, built once per step of the scan (the whole room, where it is not
+// being scanned), each chunk's submesh once while the chunk is held: a step of a scan changes a chunk or two.
+// Labels come from the whole room, so a chunk's are the same at every step. Call under the lock.
 std::shared_ptr<const MeshScene> scene_of(const InstanceState& instance) {
   const std::shared_ptr<const ScanStep> scanned = instance.room_at(now_time());
   if (!scanned) return nullptr;
-  std::erase_if(state().scenes, [](const auto& entry) { return entry.second.first.use_count() == 1; });
-  auto& entry = state().scenes[{scanned->room.get(), instance.config.chunk_size}];
-  if (!entry.second) entry = {scanned->room, build_mesh_scene(*scanned, instance.config.chunk_size)};
+  State& st = state();
+  std::erase_if(st.scenes, [](const auto& entry) { return entry.second.first.use_count() == 1; });
+  auto& entry = st.scenes[scanned.get()];
+  if (entry.second) return entry.second;
+  std::erase_if(st.submeshes, [](const auto& entry) { return entry.second.first.use_count() == 1; });
+  auto scene = std::make_shared<MeshScene>();
+  const XrTime built = now_time();
+  std::optional<Labeller> labeller;
+  for (const SharedChunk& chunk : scanned->chunks) {
+    auto& kept = st.submeshes[chunk.get()];
+    if (!kept.second) {
+      if (!labeller) labeller.emplace(*scanned->room);
+      kept = {chunk, std::make_shared<const Submesh>(
+                         build_submesh(*chunk, *labeller, scanned->room->source, instance.config.chunk_size))};
+    }
+    Submesh s = *kept.second;
+    s.updated = scanned->update_time(chunk->cell, built);
+    scene->submeshes.push_back(std::move(s));
+  }
+  entry = {scanned, std::move(scene)};
   return entry.second;
 }
 
@@ -393,6 +407,7 @@ void forget_instance(std::uint64_t instance) {
   if (state().trackers.empty()) {
     state().snapshots.clear();
     state().scenes.clear();
+    state().submeshes.clear();
   }
 }
 

@@ -1,7 +1,7 @@
 // XR_ML_world_mesh_detection (see the header). Blocks are built once per room and chunk size, so their uuids
 // and lastUpdateTime stay the same across requests and detectors; a block's status is NEW the first time a
 // detector reports it and UNCHANGED afterwards, or UPDATED where its update time changed since (a room being
-// scanned, scan_progress.h: each step is a room of its own, and a chunk's time is when it last changed). Futures are ready after ROOMSENSE_SIM_COMPUTE_DELAY_MS.
+// scanned, scan_progress.h: a chunk's time is when it last changed). Futures are ready after ROOMSENSE_SIM_COMPUTE_DELAY_MS.
 // xrRequestWorldMeshStateCompleteML follows the two-call idiom: a call with no capacity (or too little) leaves
 // the result with the future's detector until a call takes every state.
 #include "ml_world_mesh_detection.h"
@@ -78,7 +78,9 @@ struct Detector {
 // Guarded by runtime().mutex.
 struct State {
   std::unordered_map<std::uint64_t, Detector> detectors;
-  std::map<std::pair<const Room*, double>, std::pair<std::shared_ptr<const Room>, std::shared_ptr<const BlockScene>>> scenes;
+  // Built from a step of the room (scan_progress.h), each kept while something else holds what it came from.
+  std::map<const ScanStep*, std::pair<std::shared_ptr<const ScanStep>, std::shared_ptr<const BlockScene>>> scenes;
+  std::map<const Chunk*, std::pair<SharedChunk, std::shared_ptr<const std::vector<Block>>>> chunk_blocks;
 };
 
 State& state() {
@@ -116,57 +118,66 @@ Block make_block(const Chunk& chunk, const Rigid& pose, const std::vector<std::u
   return b;
 }
 
-std::shared_ptr<const BlockScene> build_block_scene(const ScanStep& scanned, double chunk_size) {
-  auto scene = std::make_shared<BlockScene>();
-  const Room& room = *scanned.room;
-  const XrTime built = now_time();
-  for (const Chunk& chunk : split_into_chunks(room.mesh, chunk_size)) {
-    // Ids by the chunk's cell and the block's place in it, so a block keeps its id while others appear
-    // (scan_progress.h).
-    std::uint64_t part = 0;
-    const Rigid pose = to_rigid(to_pose(chunk.pose));
-    // Triangles in order into blocks of at most kMaxBlockVertices distinct vertices.
-    std::vector<bool> used(chunk.mesh.vertices.size(), false);
-    std::vector<std::uint32_t> triangles;
-    std::set<std::uint32_t> in_block;
-    auto flush = [&](const std::vector<std::uint32_t>& lone) {
-      Block b = make_block(chunk, pose, triangles, lone);
-      b.uuid = stable_uuid(room.source, chunked_salt(0x4d4c32ull /* "ML2" */, chunk_size),
-                           cell_key(chunk.cell) ^ (part++ * 0x9E3779B97F4A7C15ull));
-      b.updated = scanned.update_time(chunk.cell, built);
-      scene->blocks.push_back(std::move(b));
-      triangles.clear();
-      in_block.clear();
-    };
-    for (std::uint32_t t = 0; t + 2 < chunk.mesh.indices.size(); t += 3) {
-      std::size_t fresh = 0;
-      for (int k = 0; k < 3; ++k) fresh += in_block.count(chunk.mesh.indices[t + k]) == 0 ? 1 : 0;
-      if (in_block.size() + fresh > kMaxBlockVertices) flush({});
-      for (int k = 0; k < 3; ++k) in_block.insert(chunk.mesh.indices[t + k]), used[chunk.mesh.indices[t + k]] = true;
-      triangles.push_back(t);
-    }
-    std::vector<std::uint32_t> lone;
-    for (std::uint32_t v = 0; v < used.size(); ++v)
-      if (!used[v]) lone.push_back(v);
-    while (!triangles.empty() || !lone.empty()) {
-      const std::size_t room_left = kMaxBlockVertices - in_block.size();
-      std::vector<std::uint32_t> part(lone.begin(), lone.begin() + static_cast<std::ptrdiff_t>(std::min(room_left, lone.size())));
-      lone.erase(lone.begin(), lone.begin() + static_cast<std::ptrdiff_t>(part.size()));
-      flush(part);
-    }
+// A chunk's blocks (their update time aside): its triangles in order, at most kMaxBlockVertices distinct vertices a
+// block. Ids by the chunk's cell and the block's place in it, so a block keeps its id while others appear
+// (scan_progress.h).
+std::vector<Block> build_blocks(const Chunk& chunk, const std::string& source, double chunk_size) {
+  std::vector<Block> blocks;
+  const Rigid pose = to_rigid(to_pose(chunk.pose));
+  std::vector<bool> used(chunk.mesh.vertices.size(), false);
+  std::vector<std::uint32_t> triangles;
+  std::set<std::uint32_t> in_block;
+  auto flush = [&](const std::vector<std::uint32_t>& lone) {
+    Block b = make_block(chunk, pose, triangles, lone);
+    b.uuid = stable_uuid(source, chunked_salt(0x4d4c32ull /* "ML2" */, chunk_size),
+                         cell_key(chunk.cell) ^ (std::uint64_t(blocks.size()) * 0x9E3779B97F4A7C15ull));
+    blocks.push_back(std::move(b));
+    triangles.clear();
+    in_block.clear();
+  };
+  for (std::uint32_t t = 0; t + 2 < chunk.mesh.indices.size(); t += 3) {
+    std::size_t fresh = 0;
+    for (int k = 0; k < 3; ++k) fresh += in_block.count(chunk.mesh.indices[t + k]) == 0 ? 1 : 0;
+    if (in_block.size() + fresh > kMaxBlockVertices) flush({});
+    for (int k = 0; k < 3; ++k) in_block.insert(chunk.mesh.indices[t + k]), used[chunk.mesh.indices[t + k]] = true;
+    triangles.push_back(t);
   }
-  for (const Block& b : scene->blocks) scene->largest = std::max(scene->largest, b.bytes()), scene->total += b.bytes();
-  return scene;
+  std::vector<std::uint32_t> lone;
+  for (std::uint32_t v = 0; v < used.size(); ++v)
+    if (!used[v]) lone.push_back(v);
+  while (!triangles.empty() || !lone.empty()) {
+    const std::size_t room_left = kMaxBlockVertices - in_block.size();
+    std::vector<std::uint32_t> part(lone.begin(), lone.begin() + static_cast<std::ptrdiff_t>(std::min(room_left, lone.size())));
+    lone.erase(lone.begin(), lone.begin() + static_cast<std::ptrdiff_t>(part.size()));
+    flush(part);
+  }
+  return blocks;
 }
 
-// The blocks of an instance's room as scanned now, built once per room and chunk size (each step of a scan is a
-// room of its own; a step's blocks are let go once no one else holds its room). Call under the lock.
+// The blocks of an instance's room as scanned now, built once per step of the scan (the whole room, where it is
+// not being scanned), each chunk's blocks once while the chunk is held: a step of a scan changes a chunk or two.
+// Call under the lock.
 std::shared_ptr<const BlockScene> scene_of(const InstanceState& instance) {
   const std::shared_ptr<const ScanStep> scanned = instance.room_at(now_time());
   if (!scanned) return nullptr;
-  std::erase_if(state().scenes, [](const auto& entry) { return entry.second.first.use_count() == 1; });
-  auto& entry = state().scenes[{scanned->room.get(), instance.config.chunk_size}];
-  if (!entry.second) entry = {scanned->room, build_block_scene(*scanned, instance.config.chunk_size)};
+  State& st = state();
+  std::erase_if(st.scenes, [](const auto& entry) { return entry.second.first.use_count() == 1; });
+  auto& entry = st.scenes[scanned.get()];
+  if (entry.second) return entry.second;
+  std::erase_if(st.chunk_blocks, [](const auto& entry) { return entry.second.first.use_count() == 1; });
+  auto scene = std::make_shared<BlockScene>();
+  const XrTime built = now_time();
+  for (const SharedChunk& chunk : scanned->chunks) {
+    auto& kept = st.chunk_blocks[chunk.get()];
+    if (!kept.second)
+      kept = {chunk, std::make_shared<const std::vector<Block>>(build_blocks(*chunk, scanned->room->source, instance.config.chunk_size))};
+    for (Block b : *kept.second) {
+      b.updated = scanned->update_time(chunk->cell, built);
+      scene->largest = std::max(scene->largest, b.bytes()), scene->total += b.bytes();
+      scene->blocks.push_back(std::move(b));
+    }
+  }
+  entry = {scanned, std::move(scene)};
   return entry.second;
 }
 
@@ -452,7 +463,10 @@ void forget_session(std::uint64_t session) {
 void forget_instance(std::uint64_t instance) {
   std::lock_guard lock(runtime().mutex);
   std::erase_if(state().detectors, [&](const auto& e) { return e.second.instance == instance; });
-  if (state().detectors.empty()) state().scenes.clear();
+  if (state().detectors.empty()) {
+    state().scenes.clear();
+    state().chunk_blocks.clear();
+  }
 }
 
 }  // namespace

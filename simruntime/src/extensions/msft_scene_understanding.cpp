@@ -158,8 +158,6 @@ XrResult XRAPI_CALL xrComputeNewSceneMSFT(XrSceneObserverMSFT sceneObserver, con
     const InstanceState* instance = session ? Runtime::find(runtime().instances, session->instance) : nullptr;
     if (instance == nullptr) return XR_ERROR_HANDLE_INVALID;
     request.scanned = instance->room_at(now_time());
-    request.chunks = instance->msft_chunks;
-    request.chunk_size = instance->config.chunk_size;
     request.serial = id_of(sceneObserver);  // the spec: an observer correlates component ids across its computes
     if (observer->first_compute == 0) observer->first_compute = now_time();
     request.time = observer->first_compute;

@@ -35,6 +35,41 @@ struct ScanStep {
 // of the room while one holds it.
 std::shared_ptr<const ScanStep> whole_room(const std::shared_ptr<const Room>& room, double chunk_size);
 
+// What an extension builds from the room as scanned: a scene per step and a piece per chunk (a submesh, blocks),
+// each kept while something else holds the step or the chunk it came from, since a step of a scan changes a chunk
+// or two. Not thread-safe: call under the runtime's lock.
+template <class Scene, class Piece>
+class BuiltPerStep {
+ public:
+  // The step's scene: the one kept, or make_scene() (the scenes and pieces no one else holds let go first).
+  template <class MakeScene>
+  std::shared_ptr<const Scene> scene(const std::shared_ptr<const ScanStep>& step, MakeScene make_scene) {
+    std::erase_if(scenes_, unheld);
+    auto& entry = scenes_[step.get()];
+    if (!entry.second) {
+      std::erase_if(pieces_, unheld);
+      entry = {step, std::make_shared<const Scene>(make_scene())};
+    }
+    return entry.second;
+  }
+  // The chunk's piece: the one kept, or make_piece().
+  template <class MakePiece>
+  const Piece& piece(const SharedChunk& chunk, MakePiece make_piece) {
+    auto& entry = pieces_[chunk.get()];
+    if (!entry.second) entry = {chunk, std::make_shared<const Piece>(make_piece())};
+    return *entry.second;
+  }
+  void clear() {
+    scenes_.clear();
+    pieces_.clear();
+  }
+
+ private:
+  static constexpr auto unheld = [](const auto& entry) { return entry.second.first.use_count() == 1; };
+  std::map<const ScanStep*, std::pair<std::shared_ptr<const ScanStep>, std::shared_ptr<const Scene>>> scenes_;
+  std::map<const Chunk*, std::pair<SharedChunk, std::shared_ptr<const Piece>>> pieces_;
+};
+
 class ScanProgress {
  public:
   // `head`: where the user stands (ROOMSENSE_SIM_HEAD_POSE); `start`: the scan's first moment.

@@ -70,9 +70,7 @@ struct Snapshot {
 struct State {
   std::unordered_map<std::uint64_t, Tracker> trackers;
   std::unordered_map<std::uint64_t, Snapshot> snapshots;
-  // Built from a step of the room (scan_progress.h), each kept while something else holds what it came from.
-  std::map<const ScanStep*, std::pair<std::shared_ptr<const ScanStep>, std::shared_ptr<const MeshScene>>> scenes;
-  std::map<const Chunk*, std::pair<SharedChunk, std::shared_ptr<const Submesh>>> submeshes;
+  BuiltPerStep<MeshScene, Submesh> built;  // from the room as scanned (scan_progress.h)
 };
 
 State& state() {
@@ -189,27 +187,20 @@ Submesh build_submesh(const Chunk& chunk, const Labeller& labeller, const std::s
 std::shared_ptr<const MeshScene> scene_of(const InstanceState& instance) {
   const std::shared_ptr<const ScanStep> scanned = instance.room_at(now_time());
   if (!scanned) return nullptr;
-  State& st = state();
-  std::erase_if(st.scenes, [](const auto& entry) { return entry.second.first.use_count() == 1; });
-  auto& entry = st.scenes[scanned.get()];
-  if (entry.second) return entry.second;
-  std::erase_if(st.submeshes, [](const auto& entry) { return entry.second.first.use_count() == 1; });
-  auto scene = std::make_shared<MeshScene>();
-  const XrTime built = now_time();
-  std::optional<Labeller> labeller;
-  for (const SharedChunk& chunk : scanned->chunks) {
-    auto& kept = st.submeshes[chunk.get()];
-    if (!kept.second) {
-      if (!labeller) labeller.emplace(*scanned->room);
-      kept = {chunk, std::make_shared<const Submesh>(
-                         build_submesh(*chunk, *labeller, scanned->room->source, instance.config.chunk_size))};
+  return state().built.scene(scanned, [&] {
+    MeshScene scene;
+    const XrTime built = now_time();
+    std::optional<Labeller> labeller;
+    for (const SharedChunk& chunk : scanned->chunks) {
+      Submesh s = state().built.piece(chunk, [&] {
+        if (!labeller) labeller.emplace(*scanned->room);
+        return build_submesh(*chunk, *labeller, scanned->room->source, instance.config.chunk_size);
+      });
+      s.updated = scanned->update_time(chunk->cell, built);
+      scene.submeshes.push_back(std::move(s));
     }
-    Submesh s = *kept.second;
-    s.updated = scanned->update_time(chunk->cell, built);
-    scene->submeshes.push_back(std::move(s));
-  }
-  entry = {scanned, std::move(scene)};
-  return entry.second;
+    return scene;
+  });
 }
 
 bool finite(const XrVector3f& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -406,8 +397,7 @@ void forget_instance(std::uint64_t instance) {
   std::erase_if(state().trackers, [&](const auto& e) { return e.second.instance == instance; });
   if (state().trackers.empty()) {
     state().snapshots.clear();
-    state().scenes.clear();
-    state().submeshes.clear();
+    state().built.clear();
   }
 }
 

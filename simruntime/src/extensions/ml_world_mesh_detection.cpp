@@ -78,9 +78,7 @@ struct Detector {
 // Guarded by runtime().mutex.
 struct State {
   std::unordered_map<std::uint64_t, Detector> detectors;
-  // Built from a step of the room (scan_progress.h), each kept while something else holds what it came from.
-  std::map<const ScanStep*, std::pair<std::shared_ptr<const ScanStep>, std::shared_ptr<const BlockScene>>> scenes;
-  std::map<const Chunk*, std::pair<SharedChunk, std::shared_ptr<const std::vector<Block>>>> chunk_blocks;
+  BuiltPerStep<BlockScene, std::vector<Block>> built;  // from the room as scanned (scan_progress.h)
 };
 
 State& state() {
@@ -160,25 +158,20 @@ std::vector<Block> build_blocks(const Chunk& chunk, const std::string& source, d
 std::shared_ptr<const BlockScene> scene_of(const InstanceState& instance) {
   const std::shared_ptr<const ScanStep> scanned = instance.room_at(now_time());
   if (!scanned) return nullptr;
-  State& st = state();
-  std::erase_if(st.scenes, [](const auto& entry) { return entry.second.first.use_count() == 1; });
-  auto& entry = st.scenes[scanned.get()];
-  if (entry.second) return entry.second;
-  std::erase_if(st.chunk_blocks, [](const auto& entry) { return entry.second.first.use_count() == 1; });
-  auto scene = std::make_shared<BlockScene>();
-  const XrTime built = now_time();
-  for (const SharedChunk& chunk : scanned->chunks) {
-    auto& kept = st.chunk_blocks[chunk.get()];
-    if (!kept.second)
-      kept = {chunk, std::make_shared<const std::vector<Block>>(build_blocks(*chunk, scanned->room->source, instance.config.chunk_size))};
-    for (Block b : *kept.second) {
-      b.updated = scanned->update_time(chunk->cell, built);
-      scene->largest = std::max(scene->largest, b.bytes()), scene->total += b.bytes();
-      scene->blocks.push_back(std::move(b));
+  return state().built.scene(scanned, [&] {
+    BlockScene scene;
+    const XrTime built = now_time();
+    for (const SharedChunk& chunk : scanned->chunks) {
+      const std::vector<Block>& blocks = state().built.piece(
+          chunk, [&] { return build_blocks(*chunk, scanned->room->source, instance.config.chunk_size); });
+      for (Block b : blocks) {
+        b.updated = scanned->update_time(chunk->cell, built);
+        scene.largest = std::max(scene.largest, b.bytes()), scene.total += b.bytes();
+        scene.blocks.push_back(std::move(b));
+      }
     }
-  }
-  entry = {scanned, std::move(scene)};
-  return entry.second;
+    return scene;
+  });
 }
 
 bool finite(float x) { return std::isfinite(x); }
@@ -464,8 +457,7 @@ void forget_instance(std::uint64_t instance) {
   std::lock_guard lock(runtime().mutex);
   std::erase_if(state().detectors, [&](const auto& e) { return e.second.instance == instance; });
   if (state().detectors.empty()) {
-    state().scenes.clear();
-    state().chunk_blocks.clear();
+    state().built.clear();
   }
 }
 

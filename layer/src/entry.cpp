@@ -297,7 +297,7 @@ std::shared_ptr<const SpatialInstance> make_spatial_instance(const InstanceState
   // (Debian's core validation does, and calling it crashes).
   PFN_xrVoidFunction convert = nullptr;
   if (request.clock && XR_SUCCEEDED(state.next.xrGetInstanceProcAddr(state.handle, kClock.to_xr_time, &convert)))
-    spatial->convert_time = reinterpret_cast<ConvertClockTime>(convert);
+    spatial->convert_time = convert;
   return spatial;
 }
 

@@ -3,6 +3,9 @@
 
 #include <dlfcn.h>
 #include <time.h>
+#define XR_USE_TIMESPEC
+#include <openxr/openxr.h>
+#include <openxr/openxr_platform.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -50,9 +53,11 @@ ClockConversion clock_conversion() {
   return {"XR_KHR_convert_timespec_time", "xrConvertTimespecTimeToTimeKHR", "xrConvertTimeToTimespecTimeKHR"};
 }
 
-bool read_clock(ClockReading& out) {
-  static_assert(sizeof(timespec) <= sizeof(ClockReading) && alignof(timespec) <= 8);
-  return clock_gettime(CLOCK_MONOTONIC, static_cast<timespec*>(out.data())) == 0;
+bool xr_time_now(void (*to_xr_time)(), XrInstance_T* instance, std::int64_t& time) {
+  timespec now{};
+  if (clock_gettime(CLOCK_MONOTONIC, &now) != 0) return false;
+  const auto convert = reinterpret_cast<PFN_xrConvertTimespecTimeToTimeKHR>(to_xr_time);
+  return XR_SUCCEEDED(convert(instance, &now, &time));
 }
 
 std::int64_t monotonic_nanoseconds() {

@@ -9,6 +9,10 @@
 #endif
 #include <windows.h>
 #include <tlhelp32.h>
+#include <unknwn.h>  // IUnknown, which openxr_platform.h's Win32 part names (WIN32_LEAN_AND_MEAN leaves it out)
+#define XR_USE_PLATFORM_WIN32
+#include <openxr/openxr.h>
+#include <openxr/openxr_platform.h>
 
 #include <stdexcept>
 #include <string>
@@ -74,9 +78,11 @@ ClockConversion clock_conversion() {
           "xrConvertTimeToWin32PerformanceCounterKHR"};
 }
 
-bool read_clock(ClockReading& out) {
-  static_assert(sizeof(LARGE_INTEGER) <= sizeof(ClockReading) && alignof(LARGE_INTEGER) <= 8);
-  return QueryPerformanceCounter(static_cast<LARGE_INTEGER*>(out.data())) != 0;
+bool xr_time_now(void (*to_xr_time)(), XrInstance_T* instance, std::int64_t& time) {
+  LARGE_INTEGER now{};
+  if (QueryPerformanceCounter(&now) == 0) return false;
+  const auto convert = reinterpret_cast<PFN_xrConvertWin32PerformanceCounterToTimeKHR>(to_xr_time);
+  return XR_SUCCEEDED(convert(instance, &now, &time));
 }
 
 std::int64_t monotonic_nanoseconds() {

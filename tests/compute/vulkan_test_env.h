@@ -10,7 +10,9 @@
 #include <memory>
 #include <string>
 
-#if defined(__SANITIZE_ADDRESS__)
+#include "sanitizers.h"  // tests/support
+
+#if ROOMSENSE_TEST_ASAN
 #include <dlfcn.h>
 #endif
 
@@ -25,7 +27,7 @@ struct SharedVulkan {
 // LeakSanitizer can name them and lsan_vulkan_drivers.supp (driver libraries only) applies. The handles are
 // left open on purpose (RTLD_NODELETE).
 inline void pin_vulkan_drivers_for_leak_reports() {
-#if defined(__SANITIZE_ADDRESS__)
+#if ROOMSENSE_TEST_ASAN
   for (const char* lib : {"libvulkan_lvp.so", "libVkLayer_khronos_validation.so"}) (void)dlopen(lib, RTLD_NOW | RTLD_NODELETE);
 #endif
 }

@@ -6,6 +6,7 @@
 #include "roomsense/queries.h"
 #include "roomsense/synthetic.h"
 #include "rooms.h"
+#include "sanitizers.h"
 #include "test_process.h"
 
 #include <glm/gtc/quaternion.hpp>
@@ -197,7 +198,7 @@ TEST(Cli, HugeNumbersArePrintedCompactly) {
 
 // A Quest capture bigger than the address space allows: one line and status 1, never an abort.
 TEST(Cli, OutOfMemoryIsOneLineAndStatus1) {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#if ROOMSENSE_TEST_ASAN || ROOMSENSE_TEST_TSAN
   GTEST_SKIP() << "a sanitizer maps terabytes of shadow memory at start: no address-space limit fits it "
                   "(the Release build runs this test)";
 #endif

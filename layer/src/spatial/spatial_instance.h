@@ -17,14 +17,11 @@
 
 namespace roomsense::layer {
 
-// The runtime's conversion of the OS's monotonic clock (platform::clock_conversion(): XR_KHR_convert_timespec_time
-// or XR_KHR_win32_convert_performance_counter_time), declared over the clock reading's storage (a timespec or a
-// LARGE_INTEGER, platform::ClockReading) so that no OS header is needed here.
-using ConvertClockTime = XrResult(XRAPI_PTR*)(XrInstance, const void*, XrTime*);
-
 struct SpatialInstance {
   bool planes = false;            // the layer serves XR_SPATIAL_CAPABILITY_PLANE_TRACKING_EXT: the runtime has none
-  ConvertClockTime convert_time = nullptr;  // the runtime's clock, when it has the clock conversion extension
+  // The runtime's conversion of the OS's monotonic clock, when it has the extension (platform::clock_conversion():
+  // XR_KHR_convert_timespec_time or XR_KHR_win32_convert_performance_counter_time); platform::xr_time_now calls it.
+  PFN_xrVoidFunction convert_time = nullptr;
   struct Forward {
 #define ROOMSENSE_FORWARD_MEMBER(name) PFN_##name name = nullptr;
     ROOMSENSE_SPATIAL_FUNCTIONS(ROOMSENSE_FORWARD_MEMBER)

@@ -89,10 +89,8 @@ void SpatialService::shut_down() {
 XrTime SpatialService::now() const {
   const InstanceState& instance = *session_->instance;
   if (instance.spatial && instance.spatial->convert_time != nullptr) {
-    platform::ClockReading clock;
     XrTime t = 0;
-    if (platform::read_clock(clock) && XR_SUCCEEDED(instance.spatial->convert_time(instance.handle, clock.data(), &t)) && t > 0)
-      return t;
+    if (platform::xr_time_now(instance.spatial->convert_time, instance.handle, t) && t > 0) return t;
   }
   return session_->frame_time.load();
 }

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 
+struct XrInstance_T;  // OpenXR's instance handle (XrInstance), declared here so that OpenXR's header is not needed
+
 // The entry point a plugin (the layer, the simulated runtime) exports; everything else stays hidden
 // (-fvisibility=hidden on ELF; on Windows, the module-definition file made from the same version script).
 #if defined(_WIN32)
@@ -49,17 +51,11 @@ struct ClockConversion {
   const char* from_xr_time;  // xrConvertTimeToTimespecTimeKHR, xrConvertTimeToWin32PerformanceCounterKHR
 };
 ClockConversion clock_conversion();
-// The clock now, in the form `to_xr_time` takes (a timespec or a LARGE_INTEGER); data() points at it.
-class ClockReading {
- public:
-  const void* data() const { return storage_; }
-  void* data() { return storage_; }
-
- private:
-  alignas(8) std::byte storage_[16] = {};
-};
-// Reads the clock; false when the OS refuses.
-bool read_clock(ClockReading& out);
+// The clock now as the runtime's XrTime: read, then converted by `to_xr_time` (the runtime's function as
+// xrGetInstanceProcAddr gave it), called through its own type (a timespec or a LARGE_INTEGER pointer; a call through
+// any other type is undefined behaviour, which clang's -fsanitize=function reports). False when the OS refuses or
+// the function fails.
+bool xr_time_now(void (*to_xr_time)(), XrInstance_T* instance, std::int64_t& time);
 // The same clock in nanoseconds (the simulated runtime's XrTime).
 std::int64_t monotonic_nanoseconds();
 

@@ -10,8 +10,6 @@ cd "$(dirname "$0")/.."
 build_dir=${1:-build-asan}
 shift || true
 
+# The README's test command (scripts/test.sh: set up, build, ctest) with clang and the sanitizers.
 ROOMSENSE_EXTRA_PACKAGES="clang libclang-rt-14-dev" CC=clang CXX=clang++ ROOMSENSE_BUILD_TYPE=RelWithDebInfo \
-  scripts/setup.sh "$build_dir" -DROOMSENSE_SANITIZE=address,undefined -DROOMSENSE_BUILD_BENCH=OFF "$@"
-# Mesa's shader cache stays in the build tree, not in $HOME.
-export XDG_CACHE_HOME="$PWD/$build_dir/.cache"
-ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)"
+  exec scripts/test.sh "$build_dir" -DROOMSENSE_SANITIZE=address,undefined -DROOMSENSE_BUILD_BENCH=OFF "$@"

@@ -2,7 +2,6 @@
 // (Linux, Android) and src/windows.cpp. No product code outside platform/ includes an OS header (the tests'
 // own helpers are in tests/support/test_process.h).
 #pragma once
-#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <string>

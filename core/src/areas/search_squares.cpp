@@ -64,6 +64,9 @@ struct BadCells {
   static int unsuitable(std::uint64_t sum) { return int(sum & 0xffffffffu); }
   // Cells that fail every square holding them: a wall, or more unsuitable ones than it may miss.
   static bool fail(std::uint64_t sum, double may_miss) { return walls(sum) > 0 || double(unsuitable(sum)) > may_miss; }
+  // For may_miss >= 0, the largest sum that does not fail: sum > most(may_miss) is fail(sum, may_miss) in one integer
+  // comparison (a wall puts a sum past 2^32, and the unsuitable count is an integer).
+  static std::uint64_t most(double may_miss) { return std::uint64_t(may_miss); }
 };
 
 // A bit per cell of the padded tile grid, rows along x, with a spare word after each row: word(x, z) is the
@@ -82,10 +85,11 @@ class PaddedBits {
                 words_.begin() + std::ptrdiff_t(std::size_t(z_hi + 1) * row_words_), std::uint64_t{0});
   }
   void set(int x, int z) { words_[std::size_t(z) * row_words_ + std::size_t(x / 64)] |= std::uint64_t{1} << (x % 64); }
-  std::uint64_t word(int x, int z) const {
-    const std::uint64_t* w = words_.data() + std::size_t(z) * row_words_ + std::size_t(x / 64);
-    const int shift = x % 64;
-    return shift == 0 ? w[0] : (w[0] >> shift) | (w[1] << (64 - shift));
+  std::uint64_t word(int x, int z) const {  // x, z >= 0
+    const std::uint64_t* w = words_.data() + std::size_t(z) * row_words_ + std::size_t(unsigned(x) / 64);
+    const unsigned shift = unsigned(x) % 64;
+    // Without a branch on the shift (which varies from corner to corner): for 0, (w[1] << 1) << 63 is 0.
+    return (w[0] >> shift) | ((w[1] << 1) << (63 - shift));
   }
 
  private:
@@ -390,6 +394,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     const auto valid = [&](int x1, int z1, const RingOffset& o, bool& rises) {
       const double may_miss = double(o.cells) - double(fill) * (o.d + 1.0) * (o.d + 1.0);
       if (may_miss < 0.0) return false;
+      const std::uint64_t most_bad = BadCells::most(may_miss);
       rises = false;
       const glm::ivec2 box_lo = glm::ivec2(x1, z1) + o.box_lo, box_hi = glm::ivec2(x1, z1) + o.box_hi;
       const bool box_inside = box_lo.x >= 0 && box_lo.y >= 0 && box_hi.x < spec.nx && box_hi.y < spec.nz;
@@ -404,15 +409,14 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       // The box of whole columns inside the square (RingOffset::core_lo): a wall or too many unsuitable cells
       // there fail the square at once.
       const glm::ivec2 core_lo = glm::ivec2(x1, z1) + o.core_lo, core_hi = glm::ivec2(x1, z1) + o.core_hi;
-      if (core_lo.x <= core_hi.x && BadCells::fail(box_bad.sum(core_lo, core_hi), may_miss)) return false;
+      if (core_lo.x <= core_hi.x && box_bad.sum(core_lo, core_hi) > most_bad) return false;
       // Where the bounding box holds no wall and no more unsuitable cells than allowed, neither do the cells.
-      if (box_inside && !BadCells::fail(bad_in_box, may_miss)) return rises_in_runs();
-      int missing = 0;
+      if (box_inside && bad_in_box <= most_bad) return rises_in_runs();
+      std::uint64_t bad = 0;  // the runs' so far, both counts (BadCells)
       for (const CellRun& run : o.runs) {
         const int x = x1 + run.dx, lo = z1 + run.dz_lo, hi = z1 + run.dz_hi;  // inside: the corners are
-        const std::uint64_t bad = box_bad.sum({x, lo}, {x, hi});
-        missing += BadCells::unsuitable(bad);
-        if (double(missing) > may_miss || BadCells::walls(bad) > 0) return false;
+        bad += box_bad.sum({x, lo}, {x, hi});
+        if (bad > most_bad) return false;
         if (may_rise && !rises) rises = box_raised.sum({x, lo}, {x, hi}) > 0;
       }
       return true;

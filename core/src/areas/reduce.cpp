@@ -180,45 +180,58 @@ double angle_mod_90(int dx, int dz) {
 }  // namespace
 
 CentreDeduplicator::CentreDeduplicator(const GridSpec& spec, std::stop_token stop)
-    // Centre voxels lie within the corners' box: the grid's columns and its levels (one beyond, for a top's
-    // y_Actual). A bit per voxel, rows along x, each level's rows from its first mark: a floor's take a bit a
-    // column.
-    : marked_(std::make_unique<SampleRaster>(-1, spec.ny, 0, spec.nz - 1, 0, spec.nx - 1)), stop_(std::move(stop)) {}
+    : nx_(std::max(spec.nx, 0)), nz_(std::max(spec.nz, 0)), levels_(std::size_t(std::max(spec.ny, 0)) + 2),
+      stop_(std::move(stop)) {}
 CentreDeduplicator::~CentreDeduplicator() = default;
 
 std::size_t CentreDeduplicator::add(const Candidates& rects, AreaSize size,
                                     const std::function<void(const Sized&)>& keep) {
   // A rectangle's centre voxels are corner 1's plus its shape's: corner_sum is 4 x corner 1 plus the shape's own
   // sum, and floor((4 c + s) / 4) = c + floor(s / 4). One voxel per axis, or two neighbours where the centre
-  // lies between them; found once per shape.
-  struct CentreOffsets {
-    int x[2], y[2], z[2];
-    int nx, ny, nz;
+  // lies between them: a box from lo to hi, found once per shape.
+  struct CentreBox {
+    glm::ivec3 lo, hi;
   };
-  std::vector<CentreOffsets> offsets;
+  std::vector<CentreBox> offsets;
   for (const Candidates::Shape& shape : rects.shapes()) {
     const glm::ivec3 sum = PackedCandidate(glm::ivec3(0), shape.dx, shape.dz, shape.side).corner_sum();
-    CentreOffsets o{};
-    o.nx = centre_voxels(sum.x, o.x), o.ny = centre_voxels(sum.y, o.y), o.nz = centre_voxels(sum.z, o.z);
-    offsets.push_back(o);
+    int x[2], y[2], z[2];
+    const int nx = centre_voxels(sum.x, x), ny = centre_voxels(sum.y, y), nz = centre_voxels(sum.z, z);
+    offsets.push_back({{x[0], y[0], z[0]}, {x[nx - 1], y[ny - 1], z[nz - 1]}});
   }
+  const auto bit = [](const std::vector<std::uint64_t>& bits, std::size_t i) { return (bits[i / 64] >> (i % 64)) & 1u; };
+  const std::size_t row = std::size_t(nx_), level_words = (row * std::size_t(nz_) + 63) / 64;
   std::size_t kept = 0;
   for (std::size_t r = 0; r < rects.size(); ++r) {
     if (r % kStopEvery == 0) stop_point(stop_);
     const Candidates::Item& item = rects.item(r);
     const PackedCandidate p = rects.decode(item);
     const glm::ivec3 c = p.corner(0);
-    const CentreOffsets& o = offsets[item.shape];
-    const int x0 = c.x + o.x[0], x1 = c.x + o.x[o.nx - 1];
-    const auto any_marked = [&] {
-      for (int j = 0; j < o.ny; ++j)
-        for (int k = 0; k < o.nz; ++k)
-          if (marked_->any(c.y + o.y[j], c.z + o.z[k], x0, x1)) return true;
-      return false;
-    };
-    if (any_marked()) continue;
-    for (int j = 0; j < o.ny; ++j)
-      for (int k = 0; k < o.nz; ++k) marked_->set(c.y + o.y[j], c.z + o.z[k], x0, x1);
+    const CentreBox& o = offsets[item.shape];
+    const int x0 = c.x + o.lo.x, x1 = c.x + o.hi.x, z0 = c.z + o.lo.z, z1 = c.z + o.hi.z;
+    const int y0 = c.y + o.lo.y, y1 = c.y + o.hi.y;
+    // Centres lie within their corners' box, in the grid's columns and levels (one above for y_Actual).
+    if (x0 < 0 || x1 >= nx_ || z0 < 0 || z1 >= nz_ || y0 < -1 || std::size_t(y1 + 1) >= levels_.size())
+      throw std::logic_error("a rectangle's centre outside its grid");
+    bool marked = false;
+    for (int y = y0; y <= y1 && !marked; ++y) {
+      const std::vector<std::uint64_t>& bits = levels_[std::size_t(y + 1)];
+      if (bits.empty()) continue;
+      for (int z = z0; z <= z1 && !marked; ++z) {
+        const std::size_t i = std::size_t(z) * row + std::size_t(x0);
+        marked = bit(bits, i) || (x1 > x0 && bit(bits, i + 1));
+      }
+    }
+    if (marked) continue;
+    for (int y = y0; y <= y1; ++y) {
+      std::vector<std::uint64_t>& bits = levels_[std::size_t(y + 1)];
+      if (bits.empty()) bits.assign(level_words, 0);
+      for (int z = z0; z <= z1; ++z)
+        for (int x = x0; x <= x1; ++x) {
+          const std::size_t i = std::size_t(z) * row + std::size_t(x);
+          bits[i / 64] |= std::uint64_t{1} << (i % 64);
+        }
+    }
     keep({p, size});
     ++kept;
   }

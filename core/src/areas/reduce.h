@@ -38,7 +38,10 @@ class CentreDeduplicator {
   std::size_t add(const Candidates& rects, AreaSize size, const std::function<void(const Sized&)>& keep);
 
  private:
-  std::unique_ptr<SampleRaster> marked_;
+  // A bit per voxel a centre may lie in, rows along x, per level from -1 to ny (a top's y_Actual lies a level
+  // above its tiles): a level's bits exist from its first mark, so a floor's list marks one level.
+  int nx_, nz_;
+  std::vector<std::vector<std::uint64_t>> levels_;
   std::stop_token stop_;
 };
 

@@ -251,8 +251,12 @@ class WallCentres {
   bool insert(const PackedCandidate& wall) {
     const glm::ivec3 c = wall.corner(0), sum = wall.corner_sum() / 2;  // (2 x1 + dx, 2 y1 - h, 2 z1 + dz)
     if (c.z < z1_) throw std::logic_error("a wall list out of search order");
-    z1_ = c.z;
-    const std::size_t row = std::size_t(((sum.z % int(rows_)) + int(rows_)) % int(rows_));
+    // The row of 2 z1 + dz modulo rows_, from that of 2 z1, found once a z1 (|dz| <= reach): a division a wall
+    // was a fifth of the lists' assembly.
+    if (c.z != z1_) z1_ = c.z, row_2z1_ = ((2 * c.z) % int(rows_) + int(rows_)) % int(rows_);
+    int wrapped = row_2z1_ + sum.z - 2 * c.z;
+    wrapped += wrapped < 0 ? int(rows_) : wrapped >= int(rows_) ? -int(rows_) : 0;
+    const auto row = std::size_t(wrapped);
     if (tags_[row] != sum.z) {
       std::fill_n(bits_.begin() + std::ptrdiff_t(row * row_words_), row_words_, std::uint64_t{0});
       tags_[row] = sum.z;
@@ -266,7 +270,7 @@ class WallCentres {
   }
 
  private:
-  int h_max_ = 0, z1_ = std::numeric_limits<int>::min();
+  int h_max_ = 0, z1_ = std::numeric_limits<int>::min(), row_2z1_ = 0;
   std::size_t y_span_ = 0, rows_ = 0, row_words_ = 0;
   std::vector<std::uint64_t> bits_;
   std::vector<int> tags_;  // per row: the 2 z1 + dz its bits hold

@@ -113,9 +113,10 @@ void time_updates(benchmark::State& state, IncrementalAnalysis& inc, Change chan
     revoxelized += double(inc.revoxelized_chunks());
     bands_searched += double(inc.area_bands_searched()), bands += double(inc.area_bands_total());
   }
-  const auto percentile = [](std::vector<double>& v, double p) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[std::size_t(p * double(v.size() - 1))];
+  std::sort(ms.begin(), ms.end());
+  for (std::vector<double>& times : stages) std::sort(times.begin(), times.end());
+  const auto percentile = [](const std::vector<double>& sorted, double p) {
+    return sorted.empty() ? 0.0 : sorted[std::size_t(p * double(sorted.size() - 1))];
   };
   state.counters["p10_ms"] = percentile(ms, 0.1);
   state.counters["p50_ms"] = percentile(ms, 0.5);

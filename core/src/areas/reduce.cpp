@@ -199,8 +199,7 @@ std::size_t CentreDeduplicator::add(const Candidates& rects, AreaSize size,
     const int nx = centre_voxels(sum.x, x), ny = centre_voxels(sum.y, y), nz = centre_voxels(sum.z, z);
     offsets.push_back({{x[0], y[0], z[0]}, {x[nx - 1], y[ny - 1], z[nz - 1]}});
   }
-  const auto bit = [](const std::vector<std::uint64_t>& bits, std::size_t i) { return (bits[i / 64] >> (i % 64)) & 1u; };
-  const std::size_t row = std::size_t(nx_), level_words = (row * std::size_t(nz_) + 63) / 64;
+  const std::size_t row = std::size_t(nx_);
   std::size_t kept = 0;
   for (std::size_t r = 0; r < rects.size(); ++r) {
     if (r % kStopEvery == 0) stop_point(stop_);
@@ -215,22 +214,18 @@ std::size_t CentreDeduplicator::add(const Candidates& rects, AreaSize size,
       throw std::logic_error("a rectangle's centre outside its grid");
     bool marked = false;
     for (int y = y0; y <= y1 && !marked; ++y) {
-      const std::vector<std::uint64_t>& bits = levels_[std::size_t(y + 1)];
-      if (bits.empty()) continue;
-      for (int z = z0; z <= z1 && !marked; ++z) {
+      const std::optional<BitSet>& bits = levels_[std::size_t(y + 1)];
+      for (int z = z0; z <= z1 && bits && !marked; ++z) {
         const std::size_t i = std::size_t(z) * row + std::size_t(x0);
-        marked = bit(bits, i) || (x1 > x0 && bit(bits, i + 1));
+        marked = bits->test(i) || (x1 > x0 && bits->test(i + 1));
       }
     }
     if (marked) continue;
     for (int y = y0; y <= y1; ++y) {
-      std::vector<std::uint64_t>& bits = levels_[std::size_t(y + 1)];
-      if (bits.empty()) bits.assign(level_words, 0);
+      std::optional<BitSet>& bits = levels_[std::size_t(y + 1)];
+      if (!bits) bits.emplace(row * std::size_t(nz_));
       for (int z = z0; z <= z1; ++z)
-        for (int x = x0; x <= x1; ++x) {
-          const std::size_t i = std::size_t(z) * row + std::size_t(x);
-          bits[i / 64] |= std::uint64_t{1} << (i % 64);
-        }
+        for (int x = x0; x <= x1; ++x) bits->set(std::size_t(z) * row + std::size_t(x));
     }
     keep({p, size});
     ++kept;

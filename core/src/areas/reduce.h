@@ -41,7 +41,7 @@ class CentreDeduplicator {
   // A bit per voxel a centre may lie in, rows along x, per level from -1 to ny (a top's y_Actual lies a level
   // above its tiles): a level's bits exist from its first mark, so a floor's list marks one level.
   int nx_, nz_;
-  std::vector<std::vector<std::uint64_t>> levels_;
+  std::vector<std::optional<BitSet>> levels_;
   std::stop_token stop_;
 };
 

@@ -253,7 +253,7 @@ class WallCentres {
     if (c.z < z1_) throw std::logic_error("a wall list out of search order");
     // The row of 2 z1 + dz modulo rows_, from that of 2 z1, found once a z1 (|dz| <= reach): a division a wall
     // was a fifth of the lists' assembly.
-    if (c.z != z1_) z1_ = c.z, row_2z1_ = ((2 * c.z) % int(rows_) + int(rows_)) % int(rows_);
+    if (c.z != z1_) z1_ = c.z, row_2z1_ = (2 * c.z) % int(rows_);  // corners lie in the grid: z1 >= 0
     int wrapped = row_2z1_ + sum.z - 2 * c.z;
     wrapped += wrapped < 0 ? int(rows_) : wrapped >= int(rows_) ? -int(rows_) : 0;
     const auto row = std::size_t(wrapped);

@@ -332,13 +332,13 @@ namespace {
 // differs).
 std::optional<bool> previous_decision(const PackReplay* replay, std::size_t i, const ChangedRegion::Box& around,
                                       const ChangedRegion& changed) {
-  if (!replay || replay->previous[i] < 0 || changed.touches(around)) return std::nullopt;
-  return replay->previous[i] == 1;
+  if (!replay || replay->previous[i] == PackReplay::kUnknown || changed.touches(around)) return std::nullopt;
+  return replay->previous[i] == PackReplay::kPacked;
 }
 void note_decision(const PackReplay* replay, std::size_t i, const ChangedRegion::Box& around, bool packed,
                    ChangedRegion& changed) {
   // An item refused now and unknown before changes nothing.
-  if (replay && packed != (replay->previous[i] == 1)) changed.add(around);
+  if (replay && packed != (replay->previous[i] == PackReplay::kPacked)) changed.add(around);
 }
 
 }  // namespace

@@ -56,7 +56,9 @@ double misalignment_deg(const Candidate& square, double dominant_deg);
 // previous decision unless an item before it in packing order that is new, gone, or decided otherwise now lies
 // within reach of its samples; only those are tested, so the result is the whole packing's.
 struct PackReplay {
-  std::vector<std::int8_t> previous;  // per item, in the list's order: 1 packed, 0 refused, -1 not known
+  // An item's previous packing: one byte, as SearchCache keeps it for the next analysis.
+  static constexpr std::int8_t kUnknown = -1, kRefused = 0, kPacked = 1;
+  std::vector<std::int8_t> previous;  // per item, in the list's order: kPacked, kRefused or kUnknown
   std::vector<Candidate> gone;        // packed by the previous analysis, not in the list now
   // Squares: per item, its rank in packing order where it is known to be as before (SquarePacker::pack's
   // `ranks`), else kUnknownRank.

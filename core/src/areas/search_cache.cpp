@@ -316,7 +316,7 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
       const std::vector<std::uint32_t> old_ranks = std::exchange(kept.ranks[slot], {});
       kept_bytes_ -= r.items.size() * kBytesEach;
       std::vector<Candidates::Item>& items = kept.pieces[slot];
-      std::vector<std::uint8_t>& states = kept.states[slot];
+      std::vector<std::int8_t>& states = kept.states[slot];
       std::vector<std::uint32_t>& ranks = kept.ranks[slot];
       const auto [first, end] = fresh[slot];
       // The slot's rectangles outside the columns searched are as they were, with their packing and rank
@@ -357,7 +357,7 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
               return;
             }
         }
-        items.push_back(item), states.push_back(kAbsent), ranks.push_back(PackReplay::kUnknownRank);
+        items.push_back(item), states.push_back(PackReplay::kUnknown), ranks.push_back(PackReplay::kUnknownRank);
       };
       std::size_t i = first;
       for (std::size_t k = 0; k < r.items.size(); ++k) {
@@ -387,28 +387,33 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
   Candidates out = found.empty_like();
   std::size_t count = 0;
   for (const auto& piece : kept.pieces) count += piece.size();
-  kept.source.reserve(count);
+  kept.slot_begin.clear();
   kept.replay.previous.reserve(count);
-  const auto previous_of = [](std::uint8_t state) -> std::int8_t {
-    return state == kPacked ? 1 : state == kRefused ? 0 : -1;
-  };
   if (!walls) {
-    // Squares: layer by layer, band by band. A square replaced and not found again as it was (replace()) counts
-    // as gone, one found anew as new.
+    // Squares: layer by layer, band by band, each slot's whole. A square replaced and not found again as it was
+    // (replace()) counts as gone, one found anew as new.
     for (const Replaced& r : replaced)
       for (std::size_t k = 0; known && k < r.items.size(); ++k)
-        if (r.states[k] == kPacked) kept.replay.gone.push_back(found.decode(r.items[k]).unpack());
+        if (r.states[k] == PackReplay::kPacked) kept.replay.gone.push_back(found.decode(r.items[k]).unpack());
     kept.replay.ranks.reserve(count);
+    kept.slot_begin.reserve(kept.pieces.size() + 1);
     for (std::size_t slot = 0; slot < kept.pieces.size(); ++slot) {
       const std::vector<Candidates::Item>& items = kept.pieces[slot];
+      kept.slot_begin.push_back(out.size());
       out.push_items(items);
-      for (std::size_t k = 0; k < items.size(); ++k) {
-        kept.source.push_back({std::uint32_t(slot), std::uint32_t(k)});
-        kept.replay.previous.push_back(known ? previous_of(kept.states[slot][k]) : std::int8_t{-1});
-        kept.replay.ranks.push_back(known ? kept.ranks[slot][k] : PackReplay::kUnknownRank);
+      std::vector<std::int8_t>& previous = kept.replay.previous;
+      std::vector<std::uint32_t>& ranks = kept.replay.ranks;
+      if (known) {
+        previous.insert(previous.end(), kept.states[slot].begin(), kept.states[slot].end());
+        ranks.insert(ranks.end(), kept.ranks[slot].begin(), kept.ranks[slot].end());
+      } else {
+        previous.insert(previous.end(), items.size(), PackReplay::kUnknown);
+        ranks.insert(ranks.end(), items.size(), PackReplay::kUnknownRank);
       }
     }
+    kept.slot_begin.push_back(out.size());
   } else {
+    kept.source.reserve(count);
     // Walls: a replaced slot's rectangles found again keep their packing (a wall's order is the search's, which
     // keeps it among the others); the bands in order, each rectangle unless an earlier one has its centre (as
     // the whole search skips it: an earlier band's, or in a band searched in part, one kept outside its columns).
@@ -426,15 +431,15 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
       return std::tuple(c.z, c.x, c.y, item.shape);
     };
     std::size_t next = 0;  // the slot's first replaced rectangle not before the current one
-    const auto previous_state = [&](std::size_t slot, std::size_t k) -> std::uint8_t {
-      if (!known) return kAbsent;
+    const auto previous_state = [&](std::size_t slot, std::size_t k) -> std::int8_t {
+      if (!known) return PackReplay::kUnknown;
       // A rectangle kept outside the columns searched has its own; one found anew, that of its match.
       const Replaced* r = replaced_of[slot];
-      if (r == nullptr || kept.states[slot][k] != kAbsent) return kept.states[slot][k];
+      if (r == nullptr || kept.states[slot][k] != PackReplay::kUnknown) return kept.states[slot][k];
       const Candidates::Item& item = kept.pieces[slot][k];
       const auto at = search_order(item);
       while (next < r->items.size() && search_order(r->items[next]) < at) ++next;
-      if (next >= r->items.size() || !(r->items[next] == item)) return kAbsent;
+      if (next >= r->items.size() || !(r->items[next] == item)) return PackReplay::kUnknown;
       matched[slot][next] = 1;
       return r->states[next];
     };
@@ -443,21 +448,22 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
       next = 0;
       for (std::size_t k = 0; k < kept.pieces[slot].size(); ++k) {
         const Candidates::Item& item = kept.pieces[slot][k];
-        const std::uint8_t state = previous_state(slot, k);
+        const std::int8_t state = previous_state(slot, k);
         const PackedCandidate p = found.decode(item);
         if (!centres.insert(p)) {
-          if (state == kPacked) kept.replay.gone.push_back(p.unpack());
+          if (state == PackReplay::kPacked) kept.replay.gone.push_back(p.unpack());
           continue;
         }
         out.push_item(item);
         kept.source.push_back({std::uint32_t(slot), std::uint32_t(k)});
-        kept.replay.previous.push_back(previous_of(state));
+        kept.replay.previous.push_back(state);
       }
     }
     // Packed before, not found again.
     for (const Replaced& r : replaced)
       for (std::size_t k = 0; known && k < r.items.size(); ++k)
-        if (!matched[r.slot][k] && r.states[k] == kPacked) kept.replay.gone.push_back(found.decode(r.items[k]).unpack());
+        if (!matched[r.slot][k] && r.states[k] == PackReplay::kPacked)
+          kept.replay.gone.push_back(found.decode(r.items[k]).unpack());
   }
   kept.replay_known = known;
   // The kept rectangles stay within twice the grid's bytes and 16 MB; past that a search keeps nothing.
@@ -535,15 +541,26 @@ void SearchCache::record_packing(std::size_t type, std::size_t size, std::span<c
                                  std::span<const std::uint32_t> ranks) {
   Kept& kept = kept_[3 * type + size];
   if (kept.generation != generation_) return;  // dropped, or not searched in this analysis
-  for (std::vector<std::uint8_t>& states : kept.states) std::fill(states.begin(), states.end(), kAbsent);
-  for (std::size_t i = 0; i < kept.source.size(); ++i) {
-    const auto [slot, k] = kept.source[i];
-    kept.states[slot][k] = kRefused;
-    if (!ranks.empty()) kept.ranks[slot][k] = ranks[i];
+  if (type == 0) {
+    for (std::vector<std::int8_t>& states : kept.states) std::fill(states.begin(), states.end(), PackReplay::kUnknown);
+    for (const auto& [slot, k] : kept.source) kept.states[slot][k] = PackReplay::kRefused;
+    for (const std::size_t i : packed) kept.states[kept.source[i].first][kept.source[i].second] = PackReplay::kPacked;
+  } else {  // every square of the list, slot by slot (assemble)
+    for (std::size_t slot = 0; slot < kept.states.size(); ++slot) {
+      std::fill(kept.states[slot].begin(), kept.states[slot].end(), PackReplay::kRefused);
+      if (!ranks.empty())
+        std::copy(ranks.begin() + std::ptrdiff_t(kept.slot_begin[slot]), ranks.begin() + std::ptrdiff_t(kept.slot_begin[slot + 1]),
+                  kept.ranks[slot].begin());
+    }
+    for (const std::size_t i : packed) {
+      const std::size_t slot =
+          std::size_t(std::upper_bound(kept.slot_begin.begin(), kept.slot_begin.end(), i) - kept.slot_begin.begin()) - 1;
+      kept.states[slot][i - kept.slot_begin[slot]] = PackReplay::kPacked;
+    }
   }
-  for (const std::size_t i : packed) kept.states[kept.source[i].first][kept.source[i].second] = kPacked;
   kept.packed_generation = generation_;
   kept.source = {};
+  kept.slot_begin = {};
   kept.replay = {};
 }
 

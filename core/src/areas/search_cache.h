@@ -90,25 +90,27 @@ class SearchCache {
     int layers = 0, bands = 0;
     std::vector<RingOffset> ring;  // the search's offsets (ring_offsets), found once
     std::vector<std::vector<Candidates::Item>> pieces;  // slot layer * bands + band
-    // Per slot and rectangle, its packing in the analysis of packed_generation (kAbsent: not in the list), and
-    // for squares its rank in packing order.
-    std::vector<std::vector<std::uint8_t>> states;
+    // Per slot and rectangle, its packing in the analysis of packed_generation (PackReplay's kUnknown: not in the
+    // list), and for squares its rank in packing order.
+    std::vector<std::vector<std::int8_t>> states;
     std::vector<std::vector<std::uint32_t>> ranks;
     std::uint64_t packed_generation = 0;
-    // This analysis's list (walls(), squares()): each rectangle's slot and index, and its packing's replay.
+    // This analysis's list (walls(), squares()), and its packing's replay. Walls: each rectangle's slot and index
+    // (a wall whose centre an earlier one has is not in the list). Squares: every slot's rectangles, slot by slot,
+    // slot s's from list index slot_begin[s] on.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> source;
+    std::vector<std::size_t> slot_begin;
     PackReplay replay;
     bool replay_known = false;
   };
-  static constexpr std::uint8_t kAbsent = 0, kRefused = 1, kPacked = 2;
   // What a kept rectangle takes: itself, its packing state and its rank.
-  static constexpr std::size_t kBytesEach = sizeof(Candidates::Item) + sizeof(std::uint8_t) + sizeof(std::uint32_t);
+  static constexpr std::size_t kBytesEach = sizeof(Candidates::Item) + sizeof(std::int8_t) + sizeof(std::uint32_t);
   // What a search replaced in a slot, as it was: its rectangles within the columns searched (of squares, those
   // not found again with their packing and rank).
   struct Replaced {
     std::size_t slot;
     std::vector<Candidates::Item> items;
-    std::vector<std::uint8_t> states;
+    std::vector<std::int8_t> states;
   };
   // Which bands to search: all where `kept` does not match, else those within `reach` rows of a changed row,
   // each over the columns from `columns_before` before to `columns_after` after the changed columns of those

@@ -324,16 +324,22 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
       const auto searched = [&](const glm::ivec2& place) {
         return column_of(place) >= columns.x && column_of(place) <= columns.y;
       };
-      std::vector<glm::ivec2> places(r.items.size());
-      for (std::size_t k = 0; k < r.items.size(); ++k) places[k] = place_of(r.items[k]);
+      const std::size_t n = r.items.size();
+      std::vector<glm::ivec2> places(n);
+      std::vector<std::uint8_t> in_columns(n);  // searched(places[k])
       Replaced gone{slot, {}, {}};
       std::vector<std::uint32_t> gone_ranks;
       std::vector<glm::ivec2> gone_places;
-      for (std::size_t k = 0; k < r.items.size(); ++k)
-        if (searched(places[k])) {
+      for (std::size_t k = 0; k < n; ++k) {
+        places[k] = place_of(r.items[k]);
+        in_columns[k] = searched(places[k]);
+        if (in_columns[k]) {
           gone.items.push_back(r.items[k]), gone.states.push_back(r.states[k]), gone_ranks.push_back(old_ranks[k]);
           gone_places.push_back(places[k]);
         }
+      }
+      const std::size_t kept_as_were = n - gone.items.size();
+      items.reserve(kept_as_were + (end - first)), states.reserve(items.capacity()), ranks.reserve(items.capacity());
       // Squares: one found again keeps its packing and rank where its contact reads no changed column (its
       // packing reads other squares alone, which the replay watches): none changed near it, or none near its
       // edges (a small object set down inside a large square). Both lists are in search order, a centre's
@@ -359,12 +365,23 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
         }
         items.push_back(item), states.push_back(PackReplay::kUnknown), ranks.push_back(PackReplay::kUnknownRank);
       };
+      // The two merged in search order; the rectangles kept as they were go a run at a time, up to the next one
+      // found anew.
       std::size_t i = first;
-      for (std::size_t k = 0; k < r.items.size(); ++k) {
-        const glm::ivec2 place = places[k];
-        if (searched(place)) continue;
-        for (glm::ivec2 at; i < end && before(at = place_of(found.item(i)), place); ++i) add_fresh(i, at);
-        items.push_back(r.items[k]), states.push_back(r.states[k]), ranks.push_back(old_ranks[k]);
+      for (std::size_t k = 0; k < n;) {
+        if (in_columns[k]) {
+          ++k;
+          continue;
+        }
+        for (glm::ivec2 at; i < end && before(at = place_of(found.item(i)), places[k]); ++i) add_fresh(i, at);
+        const std::optional<glm::ivec2> next_fresh = i < end ? std::optional(place_of(found.item(i))) : std::nullopt;
+        std::size_t run_end = k + 1;
+        while (run_end < n && !in_columns[run_end] && !(next_fresh && before(*next_fresh, places[run_end]))) ++run_end;
+        const auto from = std::ptrdiff_t(k), to = std::ptrdiff_t(run_end);
+        items.insert(items.end(), r.items.begin() + from, r.items.begin() + to);
+        states.insert(states.end(), r.states.begin() + from, r.states.begin() + to);
+        ranks.insert(ranks.end(), old_ranks.begin() + from, old_ranks.begin() + to);
+        k = run_end;
       }
       for (; i < end; ++i) add_fresh(i, place_of(found.item(i)));
       // Gone: those not found again.

@@ -188,7 +188,9 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     for (const RingOffset* o : parity)
       most_missing = std::max(most_missing, double(o->cells) - double(fill) * (o->d + 1.0) * (o->d + 1.0));
   const int corner_reach = roomsense::detail::corner_reach(size);
-  // Centres found so far, per level of the squares' corners (y_actual for furniture, Eq. 3.41) or facet.
+  // Per layer, the centres that already have a square at its level: those of the layer below's squares that rise
+  // into it (y_actual for furniture, Eq. 3.41). A layer's own squares at its level need no mark: each centre is
+  // visited once a layer.
   std::vector<CentreSet> centres(std::size_t(layers + 1), CentreSet(spec));
   // The corner test, the loop's most frequent, reads bit copies of the tiles and of the first corners, padded by
   // corner_reach on every side, so that each orientation's four corners are constant offsets from the centre's
@@ -325,7 +327,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
           out.push_item(item);
           const PackedCandidate square = out.decode(item);
           const glm::ivec3 sum = square.corner_sum();
-          (square.corner(0).y == y1 ? centres[std::size_t(layer)] : centres[std::size_t(layer + 1)]).insert({sum.x, 0, sum.z});
+          if (square.corner(0).y != y1) centres[std::size_t(layer + 1)].insert({sum.x, 0, sum.z});
         });
         if (band >= 0) banded.pieces->push_back({layer, band, out.size()});
         continue;
@@ -565,7 +567,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
         const auto add = [&](std::uint32_t orientation, bool rises) {
           const RingOffset& o = *orientations[orientation];
           const int x1 = (cx - (o.dx - o.dz)) / 2, z1 = (cz - (o.dx + o.dz)) / 2;
-          (rises ? above : here).insert(sum);
+          if (rises) above.insert(sum);
           const int y = rises ? y1 + 1 : y1;  // y_Actual, Eq. 3.41
           out.push_back(glm::ivec3(x1, y, z1), first_shape[std::size_t(p)] + orientation);
         };

@@ -104,6 +104,51 @@ TEST(MeshVolume, AMemoMeshesEachEditedVolumeAsMeshingItAfresh) {
   }
 }
 
+// An IncrementalAnalysis's bounds volume (mesh_memo.h's StoreyVolumeMemo): a grid's volume derived with the memo
+// of the grid before it, G and H found again only in the columns that changed and the volume written again only
+// where they changed and beside them, equals the volume derived afresh, byte for byte. Random furniture heights
+// and ceiling clutter leave holes to fill everywhere (three of four neighbours solid); boxes are added and
+// cleared; a cancelled derivation and a changed storey (y_end, the room's columns) in between.
+TEST(BoundsVolume, AMemoDerivesEachEditedVolumeAsDerivingItAfresh) {
+  std::mt19937 rng(11);
+  const GridSpec s = make_grid_spec({0, 0, 0}, {3.0f, 1.9f, 2.6f}, 0.1f);
+  VoxelGrid grid;
+  grid.spec = s;
+  grid.cells.assign(s.voxel_count(), 0);
+  const FloorCeiling levels{1, s.ny - 2, 1, s.ny - 2};
+  std::uniform_int_distribution<int> pick(0, 1 << 20);
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) {
+      for (int y = 0; y <= levels.floor; ++y) grid.cells[s.index(x, y, z)] = 1;
+      for (int y = levels.ceiling; y < s.ny; ++y) grid.cells[s.index(x, y, z)] = 1;
+      if (pick(rng) % 3 == 0) grid.cells[s.index(x, levels.floor + 1 + pick(rng) % 6, z)] = 1;   // clutter below y_end
+      if (pick(rng) % 4 == 0) grid.cells[s.index(x, levels.ceiling - 1 - pick(rng) % 5, z)] = 1;  // and above it
+    }
+  std::vector<std::uint8_t> room(s.column_count(), 1);
+  for (int k = 0; k < 20; ++k) room[std::size_t(pick(rng)) % room.size()] = 0;
+  BoundsStorey storey{levels, levels.floor + 7, &room, nullptr};
+  detail::MeshMemo memo;
+  for (int edit = 0; edit < 80; ++edit) {
+    const int w = 1 + pick(rng) % 4, d = 1 + pick(rng) % 4, h = 1 + pick(rng) % 5;
+    const int x0 = pick(rng) % (s.nx - w + 1), z0 = pick(rng) % (s.nz - d + 1);
+    const int y0 = levels.floor + 1 + pick(rng) % (levels.ceiling - levels.floor - h);
+    const std::uint8_t value = edit % 3 == 2 ? 0 : 1;
+    for (int z = z0; z < z0 + d; ++z)
+      for (int x = x0; x < x0 + w; ++x)
+        for (int y = y0; y < y0 + h; ++y) grid.cells[s.index(x, y, z)] = value;
+    if (edit % 20 == 10) storey.y_end += 1;                      // a storey read otherwise: derived whole
+    if (edit % 20 == 15) room[std::size_t(pick(rng)) % room.size()] ^= 1;
+    const std::vector<std::uint8_t> afresh = bounds_volume(grid, std::span(&storey, 1));
+    if (edit % 9 == 8) {  // a cancelled derivation leaves a memo the next one can use
+      std::stop_source cancel;
+      cancel.request_stop();
+      EXPECT_THROW(detail::bounds_volume(grid, std::span(&storey, 1), {}, 2, cancel.get_token(), &memo), Error);
+    }
+    const std::vector<std::uint8_t> memoized = detail::bounds_volume(grid, std::span(&storey, 1), {}, 2, {}, &memo);
+    ASSERT_EQ(memoized, afresh) << "edit " << edit;
+  }
+}
+
 TEST(MeshVolume, RandomBoxStacksGiveExactSurfaces) {
   // Unions and cuts of boxes: large face regions with holes, notches and touching corners, the shapes of
   // furniture on a floor, where the hole bridges and T-junctions matter. Every third grid is 3 m high, its boxes

@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <optional>
+#include <utility>
 
 namespace roomsense {
 namespace {
@@ -33,53 +36,63 @@ std::uint64_t three_of_four(std::uint64_t a, std::uint64_t b, std::uint64_t c, s
 // §3.6's last step: an inactive voxel becomes active when, in any of the X-Z, X-Y and Y-Z planes, at least
 // three of its four neighbours are active. Neighbours are read from the volume before this pass, I (Eq. 3.62)
 // of `g` and `h`: a column holds levels [floor, g] and [h, ceiling], so it is read from those two numbers, 64
-// levels at a time. The cells to fill are collected first (per worker, over its own z layers) and set afterwards.
+// levels at a time. A column's fills are a function of its own and its four neighbours' G and H.
+class PlaneHoles {
+ public:
+  PlaneHoles(const GridSpec& s, const FloorCeiling& levels, const std::vector<int>& g, const std::vector<int>& h)
+      : s_(s), y_lo_(levels.floor), y_hi_(levels.ceiling), first_(y_lo_ - 1),
+        words_((std::size_t(y_hi_ - y_lo_ + 3) + 63) / 64), width_(std::size_t(s.nx) + 2),
+        // With a border of empty columns around the grid, so that a neighbour is read unchecked.
+        column_runs_(width_ * (std::size_t(s.nz) + 2), std::uint64_t(std::uint32_t(y_lo_ - 1)) << 32 | std::uint32_t(y_hi_ + 1)) {
+    // Each column's levels in [y_lo, y_hi] as one number: [y_lo, top] and [bottom, y_hi] with the empty and the
+    // full ranges written one way each, so that two columns alike there have the same number.
+    for (int z = 0; z < s.nz; ++z)
+      for (int x = 0; x < s.nx; ++x) {
+        const std::size_t col = s.column(x, z);
+        int top = std::max(g[col], y_lo_ - 1), bottom = std::min(h[col], y_hi_ + 1);
+        if (top + 1 >= bottom) top = y_hi_, bottom = y_hi_ + 1;
+        column_runs_[std::size_t(z + 1) * width_ + std::size_t(x + 1)] = std::uint64_t(std::uint32_t(top)) << 32 | std::uint32_t(bottom);
+      }
+  }
+  // The voxels of column (x, z) to fill (GridSpec::index), appended to `fill`.
+  void fills(int x, int z, std::vector<std::size_t>& fill) const {
+    const std::uint64_t* at = column_runs_.data() + std::size_t(z + 1) * width_ + std::size_t(x + 1);
+    const std::uint64_t here = *at, around[4] = {at[-1], at[1], *(at - width_), at[width_]};
+    // Where the four neighbours equal the column, an empty voxel has no active neighbour in the X-Z plane
+    // and at most two (below, above) in the others: nothing to fill.
+    if (around[0] == here && around[1] == here && around[2] == here && around[3] == here) return;
+    const auto word = [&](std::uint64_t r, std::size_t k) {
+      const int top = int(std::int32_t(r >> 32)), bottom = int(std::int32_t(r & 0xFFFFFFFFu));
+      return level_bits(first_, k, y_lo_, top) | level_bits(first_, k, bottom, y_hi_);
+    };
+    for (std::size_t k = 0; k < words_; ++k) {
+      const std::uint64_t c = word(here, k), l = word(around[0], k), r = word(around[1], k), b = word(around[2], k),
+                          f = word(around[3], k);
+      // The levels below and above (the grid's levels -1 and ny read as empty: no run reaches them).
+      const std::uint64_t down = c << 1 | (k > 0 ? word(here, k - 1) >> 63 : 0),
+                          up = c >> 1 | (k + 1 < words_ ? word(here, k + 1) << 63 : 0);
+      const std::uint64_t three = three_of_four(l, r, b, f) | three_of_four(l, r, down, up) | three_of_four(down, up, b, f);
+      std::uint64_t to_fill = ~c & level_bits(first_, k, y_lo_, y_hi_) & three;
+      for (; to_fill != 0; to_fill &= to_fill - 1)
+        fill.push_back(s_.index(x, first_ + 64 * int(k) + std::countr_zero(to_fill), z));
+    }
+  }
+
+ private:
+  const GridSpec& s_;
+  int y_lo_, y_hi_, first_;  // first_: the level of bit 0, the one below those checked
+  std::size_t words_, width_;
+  std::vector<std::uint64_t> column_runs_;
+};
+
+// PlaneHoles's fills of every column, collected first (per worker, over its own z layers) and set afterwards.
 void fill_plane_holes(const GridSpec& s, const FloorCeiling& levels, const std::vector<int>& g,
                       const std::vector<int>& h, std::vector<std::uint8_t>& volume, unsigned threads) {
-  const int y_lo = levels.floor, y_hi = levels.ceiling;
-  // Each column's levels in [y_lo, y_hi] as one number: [y_lo, top] and [bottom, y_hi] with the empty and the
-  // full ranges written one way each, so that two columns alike there have the same number.
-  const auto runs = [&](std::size_t col) {
-    int top = std::max(g[col], y_lo - 1), bottom = std::min(h[col], y_hi + 1);
-    if (top + 1 >= bottom) top = y_hi, bottom = y_hi + 1;
-    return std::uint64_t(std::uint32_t(top)) << 32 | std::uint32_t(bottom);
-  };
-  // With a border of empty columns around the grid, so that a neighbour is read unchecked.
-  const std::uint64_t kEmpty = std::uint64_t(std::uint32_t(y_lo - 1)) << 32 | std::uint32_t(y_hi + 1);
-  const std::size_t width = std::size_t(s.nx) + 2;
-  std::vector<std::uint64_t> column_runs(width * (std::size_t(s.nz) + 2), kEmpty);
-  for (int z = 0; z < s.nz; ++z)
-    for (int x = 0; x < s.nx; ++x) column_runs[std::size_t(z + 1) * width + std::size_t(x + 1)] = runs(s.column(x, z));
-  // The levels checked and the one below and above them, as bits.
-  const int first = y_lo - 1;
-  const std::size_t words = (std::size_t(y_hi - y_lo + 3) + 63) / 64;
+  const PlaneHoles holes(s, levels, g, h);
   std::vector<std::vector<std::size_t>> fills(detail::parallel_slices(std::size_t(s.nz), threads, 8));
   detail::parallel_for(std::size_t(s.nz), threads, 8, [&](std::size_t z_begin, std::size_t z_end, std::size_t slice) {
-    std::vector<std::size_t>& fill = fills[slice];
     for (int z = int(z_begin); z < int(z_end); ++z)
-      for (int x = 0; x < s.nx; ++x) {
-        const std::uint64_t* at = column_runs.data() + std::size_t(z + 1) * width + std::size_t(x + 1);
-        const std::uint64_t here = *at, around[4] = {at[-1], at[1], *(at - width), at[width]};
-        // Where the four neighbours equal the column, an empty voxel has no active neighbour in the X-Z plane
-        // and at most two (below, above) in the others: nothing to fill.
-        if (around[0] == here && around[1] == here && around[2] == here && around[3] == here) continue;
-        const auto word = [&](std::uint64_t r, std::size_t k) {
-          const int top = int(std::int32_t(r >> 32)), bottom = int(std::int32_t(r & 0xFFFFFFFFu));
-          return level_bits(first, k, y_lo, top) | level_bits(first, k, bottom, y_hi);
-        };
-        for (std::size_t k = 0; k < words; ++k) {
-          const std::uint64_t c = word(here, k), l = word(around[0], k), r = word(around[1], k),
-                              b = word(around[2], k), f = word(around[3], k);
-          // The levels below and above (the grid's levels -1 and ny read as empty: no run reaches them).
-          const std::uint64_t down = c << 1 | (k > 0 ? word(here, k - 1) >> 63 : 0),
-                              up = c >> 1 | (k + 1 < words ? word(here, k + 1) << 63 : 0);
-          const std::uint64_t three = three_of_four(l, r, b, f) | three_of_four(l, r, down, up) |
-                                      three_of_four(down, up, b, f);
-          std::uint64_t to_fill = ~c & level_bits(first, k, y_lo, y_hi) & three;
-          for (; to_fill != 0; to_fill &= to_fill - 1)
-            fill.push_back(s.index(x, first + 64 * int(k) + std::countr_zero(to_fill), z));
-        }
-      }
+      for (int x = 0; x < s.nx; ++x) holes.fills(x, z, fills[slice]);
   });
   for (const auto& fill : fills)
     for (const std::size_t i : fill) volume[i] = 1;
@@ -210,33 +223,52 @@ void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& 
   }
 }
 
-// The volume of one storey over `room`'s columns (the storey's B, or a room's part of it).
+// The volume of one storey over `room`'s columns (the storey's B, or a room's part of it). With a memo of the
+// storey's previous volume (StoreyVolumeMemo) and the columns whose cells changed since (`changed`, per column),
+// where the storey read the same else: that volume written again only where it changed; kept in the memo.
 std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStorey& storey,
                                         const std::vector<std::uint8_t>& room, const BoundsParams& params,
-                                        unsigned threads, const std::stop_token& stop) {
+                                        unsigned threads, const std::stop_token& stop,
+                                        detail::StoreyVolumeMemo* memo = nullptr,
+                                        const std::vector<std::uint8_t>* changed = nullptr) {
   const GridSpec& s = grid.spec;
   const FloorCeiling& levels = storey.levels;
   const int y_end = std::clamp(storey.y_end, levels.floor + 1, levels.ceiling - 1);
+  const std::uint32_t min_plateau_bits = std::bit_cast<std::uint32_t>(params.min_plateau_area);
+  const std::vector<int> no_ceiling;
+  const std::vector<int>& ceilings = storey.ceiling != nullptr ? *storey.ceiling : no_ceiling;
+  const bool replay = memo != nullptr && changed != nullptr && memo->spec == s && memo->levels == levels &&
+                      memo->y_end == storey.y_end && memo->min_plateau_area_bits == min_plateau_bits &&
+                      memo->room == room && memo->ceiling == ceilings;
   // Beyond the thesis: under a ceiling lower than I_Ceiling (a roof's slope, a soffit) the column's free space
   // ends at it; G looks no higher, and H is at most it.
   const auto ceiling_of = [&](std::size_t col) {
     return storey.ceiling != nullptr ? std::min((*storey.ceiling)[col], levels.ceiling) : levels.ceiling;
   };
-  std::vector<int> g(s.column_count()), h(s.column_count());
-  detail::parallel_for(s.column_count(), threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
-    for (std::size_t col = begin; col < end; ++col) {
-      const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
-      // G (Eq. 3.60): the highest active level in (I_Floor, I_yEnd]; else I_Floor inside the room; else -1.
-      const int ceiling = ceiling_of(col);
-      const int top = highest_solid(v, levels.floor, std::min(y_end, ceiling - 1));
-      g[col] = top > levels.floor ? top : room[col] ? levels.floor : -1;
-      // H (Eq. 3.61): the lowest active level in [I_yEnd, I_Ceiling); else I_Ceiling inside the room; else
-      // I_Ceiling + 1.
-      const int bottom = lowest_solid(v, y_end, levels.ceiling);
-      h[col] = bottom < levels.ceiling ? bottom : room[col] ? levels.ceiling : levels.ceiling + 1;
-      if (room[col] && ceiling < levels.ceiling) h[col] = std::min(h[col], std::max(ceiling, levels.floor + 1));
-    }
-  });
+  std::vector<int> g, h;
+  const auto find_g_h = [&](std::size_t col) {
+    const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
+    // G (Eq. 3.60): the highest active level in (I_Floor, I_yEnd]; else I_Floor inside the room; else -1.
+    const int ceiling = ceiling_of(col);
+    const int top = highest_solid(v, levels.floor, std::min(y_end, ceiling - 1));
+    g[col] = top > levels.floor ? top : room[col] ? levels.floor : -1;
+    // H (Eq. 3.61): the lowest active level in [I_yEnd, I_Ceiling); else I_Ceiling inside the room; else
+    // I_Ceiling + 1.
+    const int bottom = lowest_solid(v, y_end, levels.ceiling);
+    h[col] = bottom < levels.ceiling ? bottom : room[col] ? levels.ceiling : levels.ceiling + 1;
+    if (room[col] && ceiling < levels.ceiling) h[col] = std::min(h[col], std::max(ceiling, levels.floor + 1));
+  };
+  if (replay) {
+    g = memo->g_found, h = memo->h_found;
+    for (std::size_t col = 0; col < s.column_count(); ++col)
+      if ((*changed)[col]) find_g_h(col);
+  } else {
+    g.resize(s.column_count()), h.resize(s.column_count());
+    detail::parallel_for(s.column_count(), threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
+      for (std::size_t col = begin; col < end; ++col) find_g_h(col);
+    });
+  }
+  std::vector<int> g_found = memo ? g : std::vector<int>(), h_found = memo ? h : std::vector<int>();
   stop_point(stop);
   // In cells, rounding 0.04 m² at 0.1 m to 4, not 5; NaN or <= 0 turns the step off.
   const double cells = params.min_plateau_area > 0.0f
@@ -245,17 +277,53 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
   const int min_cells = int(std::min(cells, double(s.column_count())));
   detail::parallel_tasks(2, threads, [&](std::size_t i) { flatten_small_plateaus(s, room, min_cells, i == 0 ? g : h); });
   stop_point(stop);
-  // I (Eq. 3.62).
-  std::vector<std::uint8_t> volume(s.voxel_count(), 0);
-  detail::parallel_for(s.column_count(), threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
-    for (std::size_t col = begin; col < end; ++col) {
-      std::uint8_t* out = volume.data() + col * std::size_t(s.ny);
-      for (int y = levels.floor; y <= g[col]; ++y) out[y] = 1;
-      for (int y = h[col]; y <= levels.ceiling; ++y) out[y] = 1;
-    }
-  });
-  stop_point(stop);
-  fill_plane_holes(s, levels, g, h, volume, threads);
+  // I (Eq. 3.62) of a column from G and H, into levels [floor, ceiling] that hold nothing.
+  const auto write_column = [&](std::vector<std::uint8_t>& volume, std::size_t col) {
+    std::uint8_t* out = volume.data() + col * std::size_t(s.ny);
+    for (int y = levels.floor; y <= g[col]; ++y) out[y] = 1;
+    for (int y = h[col]; y <= levels.ceiling; ++y) out[y] = 1;
+  };
+  std::vector<std::uint8_t> volume;
+  if (replay) {
+    // The columns whose G or H changed, and their neighbours, written again with their holes.
+    volume = memo->volume;
+    std::vector<std::uint8_t> again(s.column_count(), 0);
+    for (int z = 0; z < s.nz; ++z)
+      for (int x = 0; x < s.nx; ++x) {
+        const std::size_t col = s.column(x, z);
+        if (g[col] == memo->g[col] && h[col] == memo->h[col]) continue;
+        again[col] = 1;
+        if (x > 0) again[col - 1] = 1;
+        if (x + 1 < s.nx) again[col + 1] = 1;
+        if (z > 0) again[col - std::size_t(s.nx)] = 1;
+        if (z + 1 < s.nz) again[col + std::size_t(s.nx)] = 1;
+      }
+    const PlaneHoles holes(s, levels, g, h);
+    std::vector<std::size_t> fill;
+    for (int z = 0; z < s.nz; ++z)
+      for (int x = 0; x < s.nx; ++x)
+        if (const std::size_t col = s.column(x, z); again[col]) {
+          std::fill(volume.begin() + std::ptrdiff_t(col * std::size_t(s.ny) + std::size_t(levels.floor)),
+                    volume.begin() + std::ptrdiff_t(col * std::size_t(s.ny) + std::size_t(levels.ceiling) + 1), std::uint8_t{0});
+          write_column(volume, col);
+          holes.fills(x, z, fill);
+        }
+    for (const std::size_t i : fill) volume[i] = 1;
+  } else {
+    volume.assign(s.voxel_count(), 0);
+    detail::parallel_for(s.column_count(), threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
+      for (std::size_t col = begin; col < end; ++col) write_column(volume, col);
+    });
+    stop_point(stop);
+    fill_plane_holes(s, levels, g, h, volume, threads);
+  }
+  if (memo) {
+    memo->spec = s, memo->levels = levels, memo->y_end = storey.y_end, memo->min_plateau_area_bits = min_plateau_bits;
+    memo->room = room, memo->ceiling = ceilings;
+    memo->g_found = std::move(g_found), memo->h_found = std::move(h_found);
+    memo->g = std::move(g), memo->h = std::move(h);
+    memo->volume = volume;
+  }
   return volume;
 }
 
@@ -387,16 +455,49 @@ BoundsMesh build_bounds(const VoxelGrid& grid, const FloorCeiling& levels, int y
 
 std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,
                                         const BoundsParams& params, unsigned threads, const std::stop_token& stop) {
+  return detail::bounds_volume(grid, storeys, params, threads, stop, nullptr);
+}
+
+std::vector<std::uint8_t> detail::bounds_volume(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,
+                                                const BoundsParams& params, unsigned threads,
+                                                const std::stop_token& stop, MeshMemo* memo) {
+  // With a memo of this grid's previous cells: the columns whose cells changed since (a byte each). The memo
+  // holds no cells until every storey's volume is kept again: a stop on the way leaves the next volume whole.
+  std::optional<std::vector<std::uint8_t>> changed;
+  const GridSpec& s = grid.spec;
+  std::vector<std::uint8_t> previous_cells;
+  if (memo) previous_cells = std::exchange(memo->volume_cells, {});
+  if (memo && memo->volume_spec == s && previous_cells.size() == grid.cells.size()) {
+    changed.emplace(s.column_count(), 0);
+    // A block of columns at a time: most of them are as they were.
+    constexpr std::size_t kBlock = 64;
+    const std::size_t ny = std::size_t(s.ny);
+    for (std::size_t first = 0; first < s.column_count(); first += kBlock) {
+      const std::size_t end = std::min(first + kBlock, s.column_count());
+      const std::uint8_t *a = previous_cells.data() + first * ny, *b = grid.cells.data() + first * ny;
+      if (std::memcmp(a, b, (end - first) * ny) == 0) continue;
+      for (std::size_t col = first; col < end; ++col)
+        (*changed)[col] = std::memcmp(a + (col - first) * ny, b + (col - first) * ny, ny) != 0;
+    }
+  }
+  if (memo) memo->storey_volumes.resize(storeys.size());
   // The first storey's volume, the others' or-ed into it.
   std::vector<std::uint8_t> volume;
-  for (const BoundsStorey& storey : storeys) {
-    std::vector<std::uint8_t> part = storey_volume(grid, storey, *storey.room, params, threads, stop);
+  for (std::size_t k = 0; k < storeys.size(); ++k) {
+    const BoundsStorey& storey = storeys[k];
+    std::vector<std::uint8_t> part = storey_volume(grid, storey, *storey.room, params, threads, stop,
+                                                   memo ? &memo->storey_volumes[k] : nullptr, changed ? &*changed : nullptr);
     if (volume.empty()) volume = std::move(part);
     else
       for (std::size_t i = 0; i < volume.size(); ++i) volume[i] |= part[i];
     stop_point(stop);
   }
   if (volume.empty()) volume.assign(grid.spec.voxel_count(), 0);
+  if (memo) {
+    memo->volume_spec = s;
+    previous_cells.assign(grid.cells.begin(), grid.cells.end());  // its storage, not a new allocation
+    memo->volume_cells = std::move(previous_cells);
+  }
   return volume;
 }
 
@@ -487,7 +588,7 @@ BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> sto
 
 BoundsMesh detail::build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,
                                 const BoundsParams& params, unsigned threads, std::stop_token stop, MeshMemo* memo) {
-  std::vector<std::uint8_t> volume = bounds_volume(grid, storeys, params, threads, stop);
+  std::vector<std::uint8_t> volume = detail::bounds_volume(grid, storeys, params, threads, stop, memo);
   fill_edge_contacts(grid.spec, volume);
   return detail::mesh_volume(grid.spec, volume, threads, std::move(stop), memo);
 }

@@ -2,11 +2,29 @@
 #pragma once
 #include "roomsense/bounds.h"
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <stop_token>
+#include <vector>
 
 namespace roomsense::detail {
+
+// What build_bounds kept of one storey's volume (bounds_volume.cpp): what it read but the grid's cells, G and H
+// (Eq. 3.60, 3.61) as the columns gave them and as flattened, and the volume with its plane holes filled. The
+// next volume finds G and H again only in the columns whose cells changed, and writes again only the columns
+// whose flattened G or H changed and their neighbours: each column of the volume, its filled holes included, is
+// a function of its own and its four neighbours' G and H.
+struct StoreyVolumeMemo {
+  GridSpec spec{};
+  FloorCeiling levels{};
+  int y_end = 0;
+  std::vector<std::uint8_t> room;
+  std::vector<int> ceiling;  // empty: none
+  std::uint32_t min_plateau_area_bits = 0;  // BoundsParams, bit for bit
+  std::vector<int> g_found, h_found, g, h;
+  std::vector<std::uint8_t> volume;
+};
 
 // What mesh_volume kept of the volume it meshed last: the volume, and each slice's polygons (their points and
 // triangles). A slice between two voxel layers that are as they were meshes as it did (its mask, and the surface
@@ -35,6 +53,10 @@ class MeshMemo {
   };
   std::optional<RoomInputs> room;  // where the mesh below is a room's
   BoundsMesh room_mesh;
+  // build_bounds's: the grid it read (its spec and cells), and each storey's volume.
+  GridSpec volume_spec{};
+  std::vector<std::uint8_t> volume_cells;
+  std::vector<StoreyVolumeMemo> storey_volumes;
 
  private:
   friend BoundsMesh mesh_volume(const GridSpec&, const std::vector<std::uint8_t>&, unsigned, std::stop_token,
@@ -48,6 +70,11 @@ BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& vo
                        std::stop_token stop, MeshMemo* memo);
 BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys, const BoundsParams& params,
                         unsigned threads, std::stop_token stop, MeshMemo* memo);
+// bounds_volume (bounds.h), each storey's volume derived again only where the cells changed since the volume
+// `memo` kept (StoreyVolumeMemo), where it is not null; keeps this one's.
+std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,
+                                        const BoundsParams& params, unsigned threads, const std::stop_token& stop,
+                                        MeshMemo* memo);
 BoundsMesh build_room_bounds(const VoxelGrid& grid, const BoundsStorey& storey,
                              const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
                              unsigned threads, std::stop_token stop, MeshMemo* memo);

@@ -285,8 +285,9 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
   };
   std::vector<std::uint8_t> volume;
   if (replay) {
-    // The columns whose G or H changed, and their neighbours, written again with their holes.
-    volume = memo->volume;
+    // The columns whose G or H changed, and their neighbours, written again with their holes, into the memo's
+    // volume (a stop before the end leaves the memo without cells: bounds_volume).
+    std::vector<std::uint8_t>& kept = memo->volume;
     std::vector<std::uint8_t> again(s.column_count(), 0);
     for (int z = 0; z < s.nz; ++z)
       for (int x = 0; x < s.nx; ++x) {
@@ -303,12 +304,13 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
     for (int z = 0; z < s.nz; ++z)
       for (int x = 0; x < s.nx; ++x)
         if (const std::size_t col = s.column(x, z); again[col]) {
-          std::fill(volume.begin() + std::ptrdiff_t(col * std::size_t(s.ny) + std::size_t(levels.floor)),
-                    volume.begin() + std::ptrdiff_t(col * std::size_t(s.ny) + std::size_t(levels.ceiling) + 1), std::uint8_t{0});
-          write_column(volume, col);
+          std::fill(kept.begin() + std::ptrdiff_t(col * std::size_t(s.ny) + std::size_t(levels.floor)),
+                    kept.begin() + std::ptrdiff_t(col * std::size_t(s.ny) + std::size_t(levels.ceiling) + 1), std::uint8_t{0});
+          write_column(kept, col);
           holes.fills(x, z, fill);
         }
-    for (const std::size_t i : fill) volume[i] = 1;
+    for (const std::size_t i : fill) kept[i] = 1;
+    volume = kept;
   } else {
     volume.assign(s.voxel_count(), 0);
     detail::parallel_for(s.column_count(), threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
@@ -318,11 +320,13 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
     fill_plane_holes(s, levels, g, h, volume, threads);
   }
   if (memo) {
-    memo->spec = s, memo->levels = levels, memo->y_end = storey.y_end, memo->min_plateau_area_bits = min_plateau_bits;
-    memo->room = room, memo->ceiling = ceilings;
+    if (!replay) {  // what the storey read; a replay read the same
+      memo->spec = s, memo->levels = levels, memo->y_end = storey.y_end, memo->min_plateau_area_bits = min_plateau_bits;
+      memo->room = room, memo->ceiling = ceilings;
+      memo->volume = volume;
+    }
     memo->g_found = std::move(g_found), memo->h_found = std::move(h_found);
     memo->g = std::move(g), memo->h = std::move(h);
-    memo->volume = volume;
   }
   return volume;
 }

@@ -1,4 +1,5 @@
-// Beyond the thesis (issue 19): the bounds of an IncrementalAnalysis meshed again only where the volume changed.
+// Beyond the thesis (issue 19): the bounds of an IncrementalAnalysis derived again only where the cells changed and
+// meshed again only where the volume changed.
 #pragma once
 #include "roomsense/bounds.h"
 

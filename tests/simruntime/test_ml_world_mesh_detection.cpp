@@ -191,8 +191,8 @@ TEST(MlWorldMeshDetection, ARoomBeingScannedGivesNewThenUpdatedBlocksAndEndsAsTh
   ScopedEnv scene("ROOMSENSE_SIM_SCENE", path.string());
   ScopedEnv chunk("ROOMSENSE_SIM_CHUNK_SIZE", std::string("1.0"));
   ScopedEnv scan("ROOMSENSE_SIM_SCAN_SECONDS", std::string("0.6"));
-  const auto start = std::chrono::steady_clock::now();
   MagicLeap ml;
+  const auto start = std::chrono::steady_clock::now();  // after the instance's creation, where the scan starts
   const auto d = ml.detector();
   std::map<std::string, XrTime> times;  // per uuid, its update time when last reported
   std::set<std::size_t> counts;

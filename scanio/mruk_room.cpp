@@ -38,6 +38,7 @@
 #include "roomsense/mruk_room.h"
 
 #include "roomsense/error.h"
+#include "json_member.h"
 #include "scan_file.h"
 
 #include <glm/geometric.hpp>
@@ -134,11 +135,6 @@ struct Anchor {
   std::optional<Bounds3> volume;
   const json* mesh = nullptr;
 };
-
-const json* member(const json& object, const char* key) {
-  const auto it = object.find(key);
-  return it == object.end() ? nullptr : &*it;
-}
 
 class Reader {
  public:

@@ -2,6 +2,7 @@
 #include "roomsense/quest_capture.h"
 
 #include "roomsense/error.h"
+#include "json_member.h"
 #include "scan_file.h"
 
 #include <glm/geometric.hpp>
@@ -70,11 +71,6 @@ void decode_base64(const std::string& text, const std::string& source, const std
       used = 0;
     }
   }
-}
-
-const json* member(const json& object, const char* key) {
-  const auto it = object.find(key);
-  return it == object.end() ? nullptr : &*it;
 }
 
 const json& object_at(const json& parent, const char* key, const std::string& source, const std::string& where) {

@@ -11,5 +11,5 @@ build_dir=${1:-build-asan}
 shift || true
 
 # The README's test command (scripts/test.sh: set up, build, ctest) with clang and the sanitizers.
-ROOMSENSE_EXTRA_PACKAGES="clang libclang-rt-14-dev" CC=clang CXX=clang++ ROOMSENSE_BUILD_TYPE=RelWithDebInfo \
+ROOMSENSE_EXTRA_PACKAGES="clang libclang-rt-14-dev" CC=clang CXX=clang++ ROOMSENSE_BUILD_TYPE=RelWithDebInfo ROOMSENSE_UNITY=1 \
   exec scripts/test.sh "$build_dir" -DROOMSENSE_SANITIZE=address,undefined -DROOMSENSE_BUILD_BENCH=OFF "$@"

@@ -23,11 +23,11 @@ timeout=${ROOMSENSE_FUZZ_TIMEOUT:-20}
 # Only the harnesses and the seed generator are built, with coverage feedback from all the code they link.
 # clang and its fuzzer runtime (libclang_rt.fuzzer lives in libclang-rt-14-dev on Debian 12) come with the rest.
 ROOMSENSE_EXTRA_PACKAGES="clang libclang-rt-14-dev" \
-  CC=clang CXX=clang++ ROOMSENSE_BUILD_TYPE=RelWithDebInfo ROOMSENSE_TARGET=roomsense_fuzzers \
+  CC=clang CXX=clang++ ROOMSENSE_BUILD_TYPE=RelWithDebInfo ROOMSENSE_UNITY=1 ROOMSENSE_TARGET=roomsense_fuzzers \
   scripts/setup.sh "$build_dir" -DROOMSENSE_BUILD_FUZZERS=ON -DROOMSENSE_SANITIZE=address,undefined \
   -DROOMSENSE_BUILD_TESTS=OFF -DROOMSENSE_BUILD_BENCH=OFF -DROOMSENSE_WITH_VULKAN=OFF "$@"
 
-bin="$PWD/$build_dir/fuzz"
+bin="$(cd "$build_dir" && pwd)/fuzz"  # BUILD_DIR relative or absolute
 "$bin/roomsense_fuzz_seeds" "$build_dir/fuzz-seeds" >/dev/null
 ((seconds > 0)) || exit 0
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1}

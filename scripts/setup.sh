@@ -2,7 +2,10 @@
 # Installs the Debian 12 packages roomsense needs (only those missing), then configures and builds.
 # Usage: scripts/setup.sh [BUILD_DIR] [extra cmake arguments...]; ROOMSENSE_TARGET=NAME builds one target;
 # ROOMSENSE_EXTRA_PACKAGES="a b" installs more (the fuzzing and TSan scripts' compilers); ROOMSENSE_WINDOWS=1 adds
-# the Windows build's (MinGW-w64, Wine, GoogleTest's sources: scripts/windows.sh).
+# the Windows build's (MinGW-w64, Wine, GoogleTest's sources: scripts/windows.sh). ROOMSENSE_UNITY=1 compiles each
+# target's files together in batches (CMake's unity build): the sanitizer, fuzzing and Windows builds, which CI makes
+# besides the README's, so that .ci/run fits its time. The README's build compiles each file alone, which keeps every
+# file's includes complete and its own names its own (the extensions' files compile alone in both: their CMakeLists).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${1:-build}
@@ -30,5 +33,7 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE="${ROOMSENSE_BUILD_TYPE:-Release}" "$@" >/dev/null
+unity=()
+[ -n "${ROOMSENSE_UNITY:-}" ] && unity=(-DCMAKE_UNITY_BUILD=ON)
+cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE="${ROOMSENSE_BUILD_TYPE:-Release}" "${unity[@]}" "$@" >/dev/null
 cmake --build "$build_dir" -j"$(nproc)" ${ROOMSENSE_TARGET:+--target "$ROOMSENSE_TARGET"}

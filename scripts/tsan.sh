@@ -13,7 +13,7 @@ build_dir=${1:-build-tsan}
 shift || true
 
 # setup.sh installs the packages, configures and builds its one target; the others follow.
-ROOMSENSE_BUILD_TYPE=RelWithDebInfo ROOMSENSE_TARGET=capi_c_test scripts/setup.sh "$build_dir" \
+ROOMSENSE_BUILD_TYPE=RelWithDebInfo ROOMSENSE_UNITY=1 ROOMSENSE_TARGET=capi_c_test scripts/setup.sh "$build_dir" \
   -DROOMSENSE_SANITIZE=thread -DROOMSENSE_BUILD_BENCH=OFF -DROOMSENSE_WITH_VULKAN=OFF "$@"
 cmake --build "$build_dir" -j"$(nproc)" --target capi_concurrency_test layer_concurrency_tests
 

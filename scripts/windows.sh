@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${1:-build-win}
 shift || true
-ROOMSENSE_WINDOWS=1 scripts/setup.sh "$build_dir" -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/toolchains/mingw-w64-x86_64.cmake" "$@"
+ROOMSENSE_WINDOWS=1 ROOMSENSE_UNITY=1 scripts/setup.sh "$build_dir" -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/toolchains/mingw-w64-x86_64.cmake" "$@"
 
 echo "== windows: the tests of core, the C APIs, the CLI and the layer DLL under $(wine --version 2>/dev/null)"
 # Wine, with tests starting in parallel, now and then fails to start a process: a test's own (it fails with no

@@ -3,6 +3,7 @@
 // the layer merges them.
 #include "../../layer/src/chunk_feed.h"
 
+#include "json_without_timings.h"
 #include "roomsense/export.h"
 #include "roomsense/incremental.h"
 #include "roomsense/synthetic.h"
@@ -13,18 +14,13 @@
 #include <string>
 #include <vector>
 
+namespace roomsense {
 namespace {
 
-using namespace roomsense;
+using test::json_without_timings;
 using roomsense::layer::ChunkFeed;
 using roomsense::layer::FedPiece;
 using roomsense::layer::MeshPiece;
-
-std::string json_without_timings(const AnalysisResult& r) {
-  nlohmann::json j = nlohmann::json::parse(analysis_json(r, {}));
-  j.erase("timings_ms");
-  return j.dump();
-}
 
 // The pieces merged as analyze_pieces() merges them for a whole analysis: chunk_of each, in order.
 Scan merged(const std::vector<FedPiece>& pieces) {
@@ -103,3 +99,4 @@ TEST(ChunkFeed, TheWorkloadIsTheMergedScansFromKeptBounds) {
 }
 
 }  // namespace
+}  // namespace roomsense

@@ -2,6 +2,7 @@
 // lists it, and a new one sorts last, so a mesh listed before the others leaves their voxels alone.
 #include "../../layer/src/chunk_ids.h"
 
+#include "json_without_timings.h"
 #include "roomsense/export.h"
 #include "roomsense/incremental.h"
 #include "roomsense/synthetic.h"
@@ -14,9 +15,10 @@
 #include <string>
 #include <vector>
 
+namespace roomsense {
 namespace {
 
-using namespace roomsense;
+using test::json_without_timings;
 using roomsense::layer::ChunkIds;
 
 TEST(ChunkIds, AMeshKeepsItsIdWhereverItIsListedAndANewOneSortsLast) {
@@ -38,12 +40,6 @@ void set_pieces(IncrementalAnalysis& inc, const std::vector<std::uint64_t>& ids,
   for (const std::size_t i : order) inc.set_chunk(ids[i], *pieces[i]);
   for (const std::uint64_t id : inc.chunk_ids())
     if (std::find(ids.begin(), ids.end(), id) == ids.end()) inc.remove_chunk(id);
-}
-
-std::string json_without_timings(const AnalysisResult& r) {
-  nlohmann::json j = nlohmann::json::parse(analysis_json(r, {}));
-  j.erase("timings_ms");
-  return j.dump();
 }
 
 // A runtime that lists a new mesh first: with ids by position every mesh after it would move to another chunk and
@@ -85,3 +81,4 @@ TEST(ChunkIds, AMeshListedFirstLeavesTheOthersVoxelsAlone) {
 }
 
 }  // namespace
+}  // namespace roomsense

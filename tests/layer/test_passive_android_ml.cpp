@@ -172,17 +172,17 @@ Received read_ml(App& app, XrSpace base) {
   return r;
 }
 
-struct Headset {
+struct PassiveHeadset {
   const char* extension;
   std::vector<const char*> app_extensions;
   Received (*read)(App&, XrSpace);
   bool labels = false;  // the runtime labels its meshes: the layer's areas differ from the CLI's (compare.h)
 };
 
-const Headset kAndroid{XR_ANDROID_SCENE_MESHING_EXTENSION_NAME,
+const PassiveHeadset kAndroid{XR_ANDROID_SCENE_MESHING_EXTENSION_NAME,
                        {XR_MND_HEADLESS_EXTENSION_NAME, XR_ANDROID_SCENE_MESHING_EXTENSION_NAME},
                        &read_android, true};
-const Headset kMagicLeap{XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME,
+const PassiveHeadset kMagicLeap{XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME,
                          {XR_MND_HEADLESS_EXTENSION_NAME, XR_EXT_FUTURE_EXTENSION_NAME, XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME},
                          &read_ml};
 
@@ -193,13 +193,13 @@ XrSpace base_space(const App& app, const XrPosef* pose) {
 }
 
 // The application without the layer, as the runtime serves it.
-Received read_without_layer(const Headset& headset, const XrPosef* pose) {
+Received read_without_layer(const PassiveHeadset& headset, const XrPosef* pose) {
   ScopedEnv disable("DISABLE_XR_APILAYER_ROOMSENSE", std::string("1"));
   App app(headset.app_extensions);
   return headset.read(app, base_space(app, pose));
 }
 
-void expect_export_of_what_the_app_read(const Headset& headset, const std::string& name, const XrPosef* pose = nullptr) {
+void expect_export_of_what_the_app_read(const PassiveHeadset& headset, const std::string& name, const XrPosef* pose = nullptr) {
   ScopedEnv only("ROOMSENSE_SIM_EXTENSIONS", std::string(headset.extension));
   ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
   const Received want = read_without_layer(headset, pose);

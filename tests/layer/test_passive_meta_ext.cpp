@@ -213,30 +213,30 @@ Received read_planes(App& app) {
   return r;
 }
 
-struct Headset {
+struct QuestPassiveHeadset {
   std::string sim_extensions;
   std::vector<const char*> app_extensions;
   Received (*read)(App&);
 };
 
-const Headset kQuestHeadset{kQuest,
+const QuestPassiveHeadset kQuestHeadset{kQuest,
                             {XR_MND_HEADLESS_EXTENSION_NAME, XR_FB_SPATIAL_ENTITY_EXTENSION_NAME, XR_FB_SPATIAL_ENTITY_QUERY_EXTENSION_NAME,
                              XR_FB_SCENE_EXTENSION_NAME, XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME},
                             &read_quest};
-const Headset kPlanesHeadset{kPlanesOnly,
+const QuestPassiveHeadset kPlanesHeadset{kPlanesOnly,
                              {XR_MND_HEADLESS_EXTENSION_NAME, XR_EXT_FUTURE_EXTENSION_NAME, XR_EXT_SPATIAL_ENTITY_EXTENSION_NAME,
                               XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME},
                              &read_planes};
 
 // The application without the layer, as the runtime serves it.
-Received read_without_layer(const Headset& headset) {
+Received read_without_layer(const QuestPassiveHeadset& headset) {
   ScopedEnv disable("DISABLE_XR_APILAYER_ROOMSENSE", std::string("1"));
   App app(headset.app_extensions);
   return headset.read(app);
 }
 
 // Reads with the layer in export-only mode; returns the exported analysis.
-nlohmann::json export_of_what_the_app_read(const Headset& headset, const std::string& name) {
+nlohmann::json export_of_what_the_app_read(const QuestPassiveHeadset& headset, const std::string& name) {
   ScopedEnv only("ROOMSENSE_SIM_EXTENSIONS", headset.sim_extensions);
   ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
   const Received want = read_without_layer(headset);

@@ -37,7 +37,7 @@ bool on_area(const Area& a, const glm::vec3& p, float tolerance) {
          std::abs(glm::dot(d, a.normal)) <= tolerance;
 }
 
-glm::vec2 xz(const glm::vec3& v) { return {v.x, v.z}; }
+using test::xz;
 
 // The wall (outline edge) nearest to p, with p's position along it.
 struct WallHit {

@@ -38,7 +38,7 @@ std::vector<glm::vec3> footprint_samples(const Placement& p, float grow) {
   return out;
 }
 
-glm::vec2 xz(const glm::vec3& v) { return {v.x, v.z}; }
+using test::xz;
 
 // Two footprints (same surface plane) overlap: separating-axis test on their rectangles, independent of core's.
 bool footprints_overlap(const Placement& a, const Placement& b) {

@@ -69,7 +69,7 @@ float outline_area(const synth::RoomSpec& spec) {
   return 0.5f * std::abs(twice);
 }
 
-glm::vec2 xz(const glm::vec3& v) { return {v.x, v.z}; }
+using test::xz;
 
 // A wall of the outline: from a to b, the room on its inward side.
 struct TrueWall {

@@ -25,6 +25,9 @@ inline const AnalysedRoom& analysed(const synth::RoomSpec& spec) {
   return it->second;
 }
 
+// A point's (x, z): where it lies on the floor plan.
+inline glm::vec2 xz(const glm::vec3& v) { return {v.x, v.z}; }
+
 // Centre of column (x, z) in world (x, z).
 inline glm::vec2 column_centre(const GridSpec& s, int x, int z) {
   return {s.origin.x + (float(x) + 0.5f) * s.voxel_size, s.origin.z + (float(z) + 0.5f) * s.voxel_size};

@@ -2,6 +2,7 @@
 
 #include "checked_calls.h"
 #include "environment.h"
+#include "instance.h"
 
 #include <cstring>
 #include <stdexcept>
@@ -32,13 +33,6 @@ bool runtime_offers(const char* extension) {
 }
 
 // Owns the instance; destroying it takes the session, spaces and analyzer with it.
-struct Instance {
-  XrInstance handle = XR_NULL_HANDLE;
-  ~Instance() {
-    if (handle != XR_NULL_HANDLE) xrDestroyInstance(handle);
-  }
-};
-
 XrSessionState poll_session_state(XrInstance instance, XrSessionState state) {
   XrEventDataBuffer event{XR_TYPE_EVENT_DATA_BUFFER, nullptr};
   while (xrPollEvent(instance, &event) == XR_SUCCESS) {

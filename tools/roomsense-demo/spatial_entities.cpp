@@ -6,6 +6,7 @@
 
 #include "checked_calls.h"
 #include "environment.h"
+#include "instance.h"
 
 #include <openxr/openxr.h>
 
@@ -148,16 +149,6 @@ struct Functions {
 #undef RS_LOAD
 
 // Owns the instance; destroying it takes the session, spaces, contexts and snapshots with it.
-struct Instance {
-  XrInstance handle = XR_NULL_HANDLE;
-  Instance() = default;
-  Instance(const Instance&) = delete;
-  Instance& operator=(const Instance&) = delete;
-  ~Instance() {
-    if (handle != XR_NULL_HANDLE) xrDestroyInstance(handle);
-  }
-};
-
 std::vector<std::string> offered_extensions() {
   uint32_t count = 0;
   if (XR_FAILED(xrEnumerateInstanceExtensionProperties(nullptr, 0, &count, nullptr))) return {};

@@ -205,7 +205,8 @@ int main(int argc, char** argv) {
       "Stages: voxelize = voxel stage (V, |V_y|, levels, |V_xz|); features = A-F; areas = search + reduce + classify\n"
       "(§3.3-3.5); understanding = prepare + voxelize + features + areas (what StartRoomUnderstanding runs);\n"
       "understanding_kept = the same on worker threads kept from one analysis to the next (an analyzer handle's);\n"
-      "bounds = I + its mesh; bounds_pipeline = prepare + voxelize + A/B + bounds (StartRoomBounds); analyze = all.\n\n");
+      "bounds = I + its mesh; bounds_pipeline = prepare + voxelize + A/B + bounds; analyze_bounds = analyze() without\n"
+      "the areas (what StartRoomBounds runs: the features, storeys and rooms the bounds read, and the bounds); analyze = all.\n\n");
   static const std::vector<BenchRoom> rooms = load_rooms();
   for (const BenchRoom& room : rooms) {
     const auto p = prepare(room.scan);
@@ -254,6 +255,14 @@ int main(int argc, char** argv) {
         const std::vector<std::uint8_t> room_mask = detect_room(spec, v.column_any);
         benchmark::DoNotOptimize(build_bounds(v.grid, *v.levels, y_end, room_mask));
       }
+      counters(state, room);
+    });
+    // The bounds as the product runs them alone (thesis StartRoomBounds, RS_COMPUTE_BOUNDS): analyze() without
+    // the area search, so the features, storeys and rooms the bounds read are found too.
+    register_case("analyze_bounds/" + room.name, [&room](benchmark::State& state) {
+      AnalysisOptions o;
+      o.find_areas = false;
+      for (auto _ : state) benchmark::DoNotOptimize(analyze(room.scan, o));
       counters(state, room);
     });
     register_case("analyze/" + room.name, [&room](benchmark::State& state) {

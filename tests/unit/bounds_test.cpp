@@ -149,6 +149,55 @@ TEST(BoundsVolume, AMemoDerivesEachEditedVolumeAsDerivingItAfresh) {
   }
 }
 
+// A room's bounds through its memo (mesh_memo.h): the room's volume derived again only in the columns of its crop
+// whose cells changed, its mesh meshed again only through the slices that changed, equal the room's bounds built
+// afresh. Edits inside the room and in the margin around it; a cancelled build and a changed room in between.
+TEST(BoundsVolume, ARoomsMemoBuildsEachEditedRoomAsBuildingItAfresh) {
+  std::mt19937 rng(13);
+  const GridSpec s = make_grid_spec({0, 0, 0}, {4.0f, 1.9f, 3.0f}, 0.1f);
+  VoxelGrid grid;
+  grid.spec = s;
+  grid.cells.assign(s.voxel_count(), 0);
+  const FloorCeiling levels{1, s.ny - 2, 1, s.ny - 2};
+  std::uniform_int_distribution<int> pick(0, 1 << 20);
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) {
+      for (int y = 0; y <= levels.floor; ++y) grid.cells[s.index(x, y, z)] = 1;
+      for (int y = levels.ceiling; y < s.ny; ++y) grid.cells[s.index(x, y, z)] = 1;
+      if (pick(rng) % 3 == 0) grid.cells[s.index(x, levels.floor + 1 + pick(rng) % 6, z)] = 1;
+      if (pick(rng) % 4 == 0) grid.cells[s.index(x, levels.ceiling - 1 - pick(rng) % 5, z)] = 1;
+    }
+  // The storey's columns, and a room of them: x in [8, 30), z in [5, 25).
+  std::vector<std::uint8_t> storey_room(s.column_count(), 1), room(s.column_count(), 0);
+  for (int z = 5; z < 25; ++z)
+    for (int x = 8; x < 30; ++x) room[s.column(x, z)] = 1;
+  const BoundsStorey storey{levels, levels.floor + 7, &storey_room, nullptr};
+  detail::MeshMemo memo;
+  for (int edit = 0; edit < 60; ++edit) {
+    const int w = 1 + pick(rng) % 4, d = 1 + pick(rng) % 4, h = 1 + pick(rng) % 5;
+    const int x0 = 6 + pick(rng) % (26 - w + 1), z0 = 3 + pick(rng) % (24 - d + 1);  // the room and its margin
+    const int y0 = levels.floor + 1 + pick(rng) % (levels.ceiling - levels.floor - h);
+    const std::uint8_t value = edit % 3 == 2 ? 0 : 1;
+    for (int z = z0; z < z0 + d; ++z)
+      for (int x = x0; x < x0 + w; ++x)
+        for (int y = y0; y < y0 + h; ++y) grid.cells[s.index(x, y, z)] = value;
+    if (edit % 20 == 15) room[s.column(8 + pick(rng) % 22, 5 + pick(rng) % 20)] ^= 1;  // built whole
+    const BoundsMesh afresh = build_room_bounds(grid, storey, room);
+    if (edit % 9 == 8) {  // a cancelled build leaves a memo the next one can use (an unchanged room is the memo's)
+      std::stop_source cancel;
+      cancel.request_stop();
+      try {
+        detail::build_room_bounds(grid, storey, room, {}, 2, cancel.get_token(), &memo);
+      } catch (const Error& e) {
+        EXPECT_EQ(e.code(), ErrorCode::Cancelled);
+      }
+    }
+    const BoundsMesh memoized = detail::build_room_bounds(grid, storey, room, {}, 2, {}, &memo);
+    ASSERT_EQ(memoized.vertices, afresh.vertices) << "edit " << edit;
+    ASSERT_EQ(memoized.indices, afresh.indices) << "edit " << edit;
+  }
+}
+
 TEST(MeshVolume, RandomBoxStacksGiveExactSurfaces) {
   // Unions and cuts of boxes: large face regions with holes, notches and touching corners, the shapes of
   // furniture on a floor, where the hole bridges and T-junctions matter. Every third grid is 3 m high, its boxes

@@ -3,6 +3,7 @@
 // over a run of grids that add and take away furniture, a window, a wall and a door, and with a memo whose grid
 // is not the one before; a local change derives no whole-storey step again, and few columns.
 #include "../../core/src/features/feature_memo.h"
+#include "../../core/src/grid/changed_columns.h"
 #include "roomsense/synthetic.h"
 #include "same_features.h"
 #include "synthetic_fixture.h"

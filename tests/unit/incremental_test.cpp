@@ -55,7 +55,10 @@ void expect_same(const AnalysisResult& got, const AnalysisResult& want, const st
   EXPECT_EQ(got.bounds.vertices, want.bounds.vertices);
   EXPECT_EQ(got.bounds.indices, want.bounds.indices);
   ASSERT_EQ(got.room_bounds.size(), want.room_bounds.size());
-  for (std::size_t i = 0; i < got.room_bounds.size(); ++i) EXPECT_EQ(got.room_bounds[i].indices, want.room_bounds[i].indices);
+  for (std::size_t i = 0; i < got.room_bounds.size(); ++i) {
+    EXPECT_EQ(got.room_bounds[i].vertices, want.room_bounds[i].vertices);
+    EXPECT_EQ(got.room_bounds[i].indices, want.room_bounds[i].indices);
+  }
 }
 
 // `scan` with a runtime's label on every triangle, by its normal and height: floor, ceiling, wall, table top.

@@ -3,6 +3,7 @@
 #include "roomsense/cancel.h"
 
 #include "column_levels.h"
+#include "../grid/changed_columns.h"
 #include "mesh_memo.h"
 #include "parallel.h"
 
@@ -10,6 +11,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -471,19 +473,8 @@ std::vector<std::uint8_t> detail::bounds_volume(const VoxelGrid& grid, std::span
   const GridSpec& s = grid.spec;
   std::vector<std::uint8_t> previous_cells;
   if (memo) previous_cells = std::exchange(memo->volume_cells, {});
-  if (memo && memo->volume_spec == s && previous_cells.size() == grid.cells.size()) {
-    changed.emplace(s.column_count(), 0);
-    // A block of columns at a time: most of them are as they were.
-    constexpr std::size_t kBlock = 64;
-    const std::size_t ny = std::size_t(s.ny);
-    for (std::size_t first = 0; first < s.column_count(); first += kBlock) {
-      const std::size_t end = std::min(first + kBlock, s.column_count());
-      const std::uint8_t *a = previous_cells.data() + first * ny, *b = grid.cells.data() + first * ny;
-      if (std::memcmp(a, b, (end - first) * ny) == 0) continue;
-      for (std::size_t col = first; col < end; ++col)
-        (*changed)[col] = std::memcmp(a + (col - first) * ny, b + (col - first) * ny, ny) != 0;
-    }
-  }
+  if (memo && memo->volume_spec == s && previous_cells.size() == grid.cells.size())
+    changed = detail::changed_columns(std::size_t(s.ny), previous_cells, grid.cells);
   if (memo) memo->storey_volumes.resize(storeys.size());
   // The first storey's volume, the others' or-ed into it.
   std::vector<std::uint8_t> volume;
@@ -491,9 +482,10 @@ std::vector<std::uint8_t> detail::bounds_volume(const VoxelGrid& grid, std::span
     const BoundsStorey& storey = storeys[k];
     std::vector<std::uint8_t> part = storey_volume(grid, storey, *storey.room, params, threads, stop,
                                                    memo ? &memo->storey_volumes[k] : nullptr, changed ? &*changed : nullptr);
+    // By iterators: a loop over volume[i] reloads the vector's size and data after each byte it stores (a byte
+    // may alias them), and is not vectorized.
     if (volume.empty()) volume = std::move(part);
-    else
-      for (std::size_t i = 0; i < volume.size(); ++i) volume[i] |= part[i];
+    else std::transform(volume.begin(), volume.end(), part.begin(), volume.begin(), std::bit_or<>());
     stop_point(stop);
   }
   if (volume.empty()) volume.assign(grid.spec.voxel_count(), 0);
@@ -508,8 +500,16 @@ std::vector<std::uint8_t> detail::bounds_volume(const VoxelGrid& grid, std::span
 std::vector<std::uint8_t> room_bounds_volume(const VoxelGrid& grid, const BoundsStorey& storey,
                                              const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
                                              unsigned threads, const std::stop_token& stop) {
+  return detail::room_bounds_volume(grid, storey, room_columns, params, threads, stop, nullptr, nullptr);
+}
+
+std::vector<std::uint8_t> detail::room_bounds_volume(const VoxelGrid& grid, const BoundsStorey& storey,
+                                                     const std::vector<std::uint8_t>& room_columns,
+                                                     const BoundsParams& params, unsigned threads,
+                                                     const std::stop_token& stop, StoreyVolumeMemo* memo,
+                                                     const std::vector<std::uint8_t>* changed) {
   const GridSpec& s = grid.spec;
-  std::vector<std::uint8_t> volume = storey_volume(grid, storey, room_columns, params, threads, stop);
+  std::vector<std::uint8_t> volume = storey_volume(grid, storey, room_columns, params, threads, stop, memo, changed);
   const int lo = std::max(storey.levels.floor, 0), hi = std::min(storey.levels.ceiling, s.ny - 1);
   for (std::size_t col = 0; col < s.column_count(); ++col) {
     if (!(*storey.room)[col] || room_columns[col]) continue;
@@ -566,9 +566,12 @@ BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& 
       if (storey.ceiling != nullptr) in.ceiling[to] = (*storey.ceiling)[from];
     }
   }
-  // The room's inputs as they were: its mesh as it was.
+  // The room's inputs as they were: its mesh as it was. Else, where the crop is the same, the columns whose
+  // cells changed: the room's volume is derived again there alone (StoreyVolumeMemo).
+  std::optional<std::vector<std::uint8_t>> changed;
   if (memo) {
     if (memo->room == in) return memo->room_mesh;
+    if (memo->room && memo->room->crop == crop) changed = detail::changed_columns(std::size_t(s.ny), memo->room->cells, in.cells);
     memo->room.reset();  // kept again below, once the mesh is built
   }
   VoxelGrid part;
@@ -577,7 +580,9 @@ BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& 
   BoundsStorey cropped = storey;
   cropped.room = &in.storey;
   cropped.ceiling = &in.ceiling;
-  std::vector<std::uint8_t> volume = room_bounds_volume(part, cropped, in.room, params, threads, stop);
+  std::vector<std::uint8_t> volume = detail::room_bounds_volume(part, cropped, in.room, params, threads, stop,
+                                                                memo ? &memo->room_volume : nullptr,
+                                                                changed ? &*changed : nullptr);
   in.cells = std::move(part.cells);
   fill_edge_contacts(crop, volume);
   BoundsMesh mesh = detail::mesh_volume(crop, volume, threads, std::move(stop), memo);

@@ -34,7 +34,8 @@ struct StoreyVolumeMemo {
 //
 // build_room_bounds also keeps what it built a room's mesh from (`room`: the room's crop of the grid, its masks,
 // ceilings, levels and parameters) and the mesh: the same inputs give the same mesh, which a change elsewhere in
-// the home leaves to the rooms it did not reach.
+// the home leaves to the rooms it did not reach; and the room's volume, which a change within the room derives
+// again only in the columns it changed.
 class MeshMemo {
  public:
   MeshMemo();
@@ -54,6 +55,7 @@ class MeshMemo {
   };
   std::optional<RoomInputs> room;  // where the mesh below is a room's
   BoundsMesh room_mesh;
+  StoreyVolumeMemo room_volume;  // the room's volume, derived again only where its crop's cells changed
   // build_bounds's: the grid it read (its spec and cells), and each storey's volume.
   GridSpec volume_spec{};
   std::vector<std::uint8_t> volume_cells;
@@ -79,5 +81,11 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, std::span<const B
 BoundsMesh build_room_bounds(const VoxelGrid& grid, const BoundsStorey& storey,
                              const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
                              unsigned threads, std::stop_token stop, MeshMemo* memo);
+// room_bounds_volume (bounds.h) through `memo` where it is not null, and `changed` (per column, whether its cells
+// changed since the volume the memo kept) where that is not null, as storey_volume reads them.
+std::vector<std::uint8_t> room_bounds_volume(const VoxelGrid& grid, const BoundsStorey& storey,
+                                             const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
+                                             unsigned threads, const std::stop_token& stop, StoreyVolumeMemo* memo,
+                                             const std::vector<std::uint8_t>* changed);
 
 }  // namespace roomsense::detail

@@ -48,28 +48,6 @@ void derive_columns(std::vector<Value>& out, std::size_t columns, const std::vec
 
 }  // namespace
 
-std::vector<std::uint8_t> changed_columns(const VoxelGrid& a, const VoxelGrid& b) {
-  std::vector<std::uint8_t> out(a.spec.column_count(), 0);
-  // The grid in runs of 512 voxels, each compared at once (a column of a few dozen levels is too short for
-  // memcmp to pay); a run that differs marks the columns of the voxels that differ.
-  const auto ny = std::size_t(a.spec.ny);
-  const std::size_t n = a.cells.size();
-  const auto mark = [&](std::size_t from, std::size_t to) {  // voxels [from, to)
-    for (std::size_t c = from / ny; c <= (to - 1) / ny; ++c)
-      for (std::size_t v = std::max(from, c * ny); v < std::min(to, (c + 1) * ny); ++v)
-        if (a.cells[v] != b.cells[v]) {
-          out[c] = 1;
-          break;
-        }
-  };
-  constexpr std::size_t kRun = 512;
-  for (std::size_t i = 0; i < n; i += kRun) {
-    const std::size_t end = std::min(n, i + kRun);
-    if (std::memcmp(a.cells.data() + i, b.cells.data() + i, end - i) != 0) mark(i, end);
-  }
-  return out;
-}
-
 RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
                              const std::vector<std::uint32_t>& column_counts,
                              const std::vector<std::uint8_t>& column_any, const FeatureParams& params,

@@ -145,9 +145,6 @@ struct FeatureMemo {
   OpeningSteps openings;
 };
 
-// 1 for each column whose voxels differ between `a` and `b`, grids of one GridSpec.
-std::vector<std::uint8_t> changed_columns(const VoxelGrid& a, const VoxelGrid& b);
-
 // detect_features (features.h), through `memo` where not null: its whole-storey steps kept where their inputs
 // are, its local steps derived again only near the columns `change` and their entries say changed. `previous`:
 // the features of the analysis before (`change.before`) on these levels, where it has them; the wall normals and

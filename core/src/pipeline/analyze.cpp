@@ -4,6 +4,7 @@
 #include "roomsense/error.h"
 #include "roomsense/number_text.h"
 #include "../parallel.h"
+#include "../grid/changed_columns.h"
 #include "../input/input_view.h"
 #include "analysis_caches.h"
 #include "storeys.h"

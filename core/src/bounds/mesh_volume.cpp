@@ -7,6 +7,7 @@
 #include "roomsense/cancel.h"
 
 #include "column_levels.h"
+#include "../grid/changed_columns.h"
 #include "key_table.h"
 #include "mesh_memo.h"
 #include "parallel.h"
@@ -536,9 +537,10 @@ VolumeChanges volume_changes(const GridSpec& s, const std::vector<std::uint8_t>&
                          std::vector<std::uint8_t>(std::size_t(s.nz), 0)},
                         {}};
   const std::size_t ny = std::size_t(s.ny);
+  const std::vector<std::uint8_t> differs = detail::changed_columns(ny, before, after);
   for (std::size_t col = 0; col < s.column_count(); ++col) {
+    if (!differs[col]) continue;
     const std::uint8_t *a = before.data() + col * ny, *b = after.data() + col * ny;
-    if (std::memcmp(a, b, ny) == 0) continue;
     changed.columns.push_back(col);
     changed.layers[0][col % std::size_t(s.nx)] = changed.layers[2][col / std::size_t(s.nx)] = 1;
     for (std::size_t y = 0; y < ny; ++y)

@@ -22,6 +22,36 @@ using test::signed_volume;
 
 std::size_t solid_count(const std::vector<std::uint8_t>& v) { return std::size_t(std::count(v.begin(), v.end(), 1)); }
 
+// A storey's grid on `levels`: solid at and below the floor and at and above the ceiling, with random furniture
+// heights and ceiling clutter, which leave plane holes to fill everywhere (three of four neighbours solid).
+VoxelGrid cluttered_storey(const GridSpec& s, const FloorCeiling& levels, std::mt19937& rng) {
+  VoxelGrid grid;
+  grid.spec = s;
+  grid.cells.assign(s.voxel_count(), 0);
+  std::uniform_int_distribution<int> pick(0, 1 << 20);
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) {
+      for (int y = 0; y <= levels.floor; ++y) grid.cells[s.index(x, y, z)] = 1;
+      for (int y = levels.ceiling; y < s.ny; ++y) grid.cells[s.index(x, y, z)] = 1;
+      if (pick(rng) % 3 == 0) grid.cells[s.index(x, levels.floor + 1 + pick(rng) % 6, z)] = 1;   // below y_end
+      if (pick(rng) % 4 == 0) grid.cells[s.index(x, levels.ceiling - 1 - pick(rng) % 5, z)] = 1;  // and above it
+    }
+  return grid;
+}
+
+// A random box of 1-4 x 1-5 x 1-4 voxels between the floor and the ceiling, its columns in [lo, hi], set to `value`.
+void edit_box(VoxelGrid& grid, const FloorCeiling& levels, glm::ivec2 lo, glm::ivec2 hi, std::uint8_t value,
+              std::mt19937& rng) {
+  const GridSpec& s = grid.spec;
+  std::uniform_int_distribution<int> pick(0, 1 << 20);
+  const int w = 1 + pick(rng) % 4, d = 1 + pick(rng) % 4, h = 1 + pick(rng) % 5;
+  const int x0 = lo.x + pick(rng) % (hi.x - lo.x + 1 - w + 1), z0 = lo.y + pick(rng) % (hi.y - lo.y + 1 - d + 1);
+  const int y0 = levels.floor + 1 + pick(rng) % (levels.ceiling - levels.floor - h);
+  for (int z = z0; z < z0 + d; ++z)
+    for (int x = x0; x < x0 + w; ++x)
+      for (int y = y0; y < y0 + h; ++y) grid.cells[s.index(x, y, z)] = value;
+}
+
 // The mesh of `volume` is closed, encloses its solid voxels, covers each voxel face exactly once with whole
 // triangles, and has no vertex inside a flat patch.
 void expect_exact_mesh(const GridSpec& s, const std::vector<std::uint8_t>& volume, const BoundsMesh& m,
@@ -106,36 +136,20 @@ TEST(MeshVolume, AMemoMeshesEachEditedVolumeAsMeshingItAfresh) {
 
 // An IncrementalAnalysis's bounds volume (mesh_memo.h's StoreyVolumeMemo): a grid's volume derived with the memo
 // of the grid before it, G and H found again only in the columns that changed and the volume written again only
-// where they changed and beside them, equals the volume derived afresh, byte for byte. Random furniture heights
-// and ceiling clutter leave holes to fill everywhere (three of four neighbours solid); boxes are added and
-// cleared; a cancelled derivation and a changed storey (y_end, the room's columns) in between.
+// where they changed and beside them, equals the volume derived afresh, byte for byte. A cluttered storey; boxes
+// are added and cleared; a cancelled derivation and a changed storey (y_end, the room's columns) in between.
 TEST(BoundsVolume, AMemoDerivesEachEditedVolumeAsDerivingItAfresh) {
   std::mt19937 rng(11);
   const GridSpec s = make_grid_spec({0, 0, 0}, {3.0f, 1.9f, 2.6f}, 0.1f);
-  VoxelGrid grid;
-  grid.spec = s;
-  grid.cells.assign(s.voxel_count(), 0);
   const FloorCeiling levels{1, s.ny - 2, 1, s.ny - 2};
+  VoxelGrid grid = cluttered_storey(s, levels, rng);
   std::uniform_int_distribution<int> pick(0, 1 << 20);
-  for (int z = 0; z < s.nz; ++z)
-    for (int x = 0; x < s.nx; ++x) {
-      for (int y = 0; y <= levels.floor; ++y) grid.cells[s.index(x, y, z)] = 1;
-      for (int y = levels.ceiling; y < s.ny; ++y) grid.cells[s.index(x, y, z)] = 1;
-      if (pick(rng) % 3 == 0) grid.cells[s.index(x, levels.floor + 1 + pick(rng) % 6, z)] = 1;   // clutter below y_end
-      if (pick(rng) % 4 == 0) grid.cells[s.index(x, levels.ceiling - 1 - pick(rng) % 5, z)] = 1;  // and above it
-    }
   std::vector<std::uint8_t> room(s.column_count(), 1);
   for (int k = 0; k < 20; ++k) room[std::size_t(pick(rng)) % room.size()] = 0;
   BoundsStorey storey{levels, levels.floor + 7, &room, nullptr};
   detail::MeshMemo memo;
   for (int edit = 0; edit < 80; ++edit) {
-    const int w = 1 + pick(rng) % 4, d = 1 + pick(rng) % 4, h = 1 + pick(rng) % 5;
-    const int x0 = pick(rng) % (s.nx - w + 1), z0 = pick(rng) % (s.nz - d + 1);
-    const int y0 = levels.floor + 1 + pick(rng) % (levels.ceiling - levels.floor - h);
-    const std::uint8_t value = edit % 3 == 2 ? 0 : 1;
-    for (int z = z0; z < z0 + d; ++z)
-      for (int x = x0; x < x0 + w; ++x)
-        for (int y = y0; y < y0 + h; ++y) grid.cells[s.index(x, y, z)] = value;
+    edit_box(grid, levels, {0, 0}, {s.nx - 1, s.nz - 1}, edit % 3 == 2 ? 0 : 1, rng);
     if (edit % 20 == 10) storey.y_end += 1;                      // a storey read otherwise: derived whole
     if (edit % 20 == 15) room[std::size_t(pick(rng)) % room.size()] ^= 1;
     const std::vector<std::uint8_t> afresh = bounds_volume(grid, std::span(&storey, 1));
@@ -155,18 +169,9 @@ TEST(BoundsVolume, AMemoDerivesEachEditedVolumeAsDerivingItAfresh) {
 TEST(BoundsVolume, ARoomsMemoBuildsEachEditedRoomAsBuildingItAfresh) {
   std::mt19937 rng(13);
   const GridSpec s = make_grid_spec({0, 0, 0}, {4.0f, 1.9f, 3.0f}, 0.1f);
-  VoxelGrid grid;
-  grid.spec = s;
-  grid.cells.assign(s.voxel_count(), 0);
   const FloorCeiling levels{1, s.ny - 2, 1, s.ny - 2};
+  VoxelGrid grid = cluttered_storey(s, levels, rng);
   std::uniform_int_distribution<int> pick(0, 1 << 20);
-  for (int z = 0; z < s.nz; ++z)
-    for (int x = 0; x < s.nx; ++x) {
-      for (int y = 0; y <= levels.floor; ++y) grid.cells[s.index(x, y, z)] = 1;
-      for (int y = levels.ceiling; y < s.ny; ++y) grid.cells[s.index(x, y, z)] = 1;
-      if (pick(rng) % 3 == 0) grid.cells[s.index(x, levels.floor + 1 + pick(rng) % 6, z)] = 1;
-      if (pick(rng) % 4 == 0) grid.cells[s.index(x, levels.ceiling - 1 - pick(rng) % 5, z)] = 1;
-    }
   // The storey's columns, and a room of them: x in [8, 30), z in [5, 25).
   std::vector<std::uint8_t> storey_room(s.column_count(), 1), room(s.column_count(), 0);
   for (int z = 5; z < 25; ++z)
@@ -174,13 +179,7 @@ TEST(BoundsVolume, ARoomsMemoBuildsEachEditedRoomAsBuildingItAfresh) {
   const BoundsStorey storey{levels, levels.floor + 7, &storey_room, nullptr};
   detail::MeshMemo memo;
   for (int edit = 0; edit < 60; ++edit) {
-    const int w = 1 + pick(rng) % 4, d = 1 + pick(rng) % 4, h = 1 + pick(rng) % 5;
-    const int x0 = 6 + pick(rng) % (26 - w + 1), z0 = 3 + pick(rng) % (24 - d + 1);  // the room and its margin
-    const int y0 = levels.floor + 1 + pick(rng) % (levels.ceiling - levels.floor - h);
-    const std::uint8_t value = edit % 3 == 2 ? 0 : 1;
-    for (int z = z0; z < z0 + d; ++z)
-      for (int x = x0; x < x0 + w; ++x)
-        for (int y = y0; y < y0 + h; ++y) grid.cells[s.index(x, y, z)] = value;
+    edit_box(grid, levels, {6, 3}, {31, 26}, edit % 3 == 2 ? 0 : 1, rng);  // in the room and its margin
     if (edit % 20 == 15) room[s.column(8 + pick(rng) % 22, 5 + pick(rng) % 20)] ^= 1;  // built whole
     const BoundsMesh afresh = build_room_bounds(grid, storey, room);
     if (edit % 9 == 8) {  // a cancelled build leaves a memo the next one can use (an unchanged room is the memo's)

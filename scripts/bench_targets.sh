@@ -4,13 +4,15 @@
 # machines drift from hour to hour (bench/README.md): a table is a reading of one hour of one machine.
 # Usage: scripts/bench_targets.sh [ROUNDS] [MIN_TIME]
 #   ROUNDS: separate runs of the program (default 3); MIN_TIME: --benchmark_min_time (default 0.3).
-#   BUILD_DIR (environment): the build to run (default build/, built first).
+#   BUILD_DIR (environment): the build to run (default build/; set up and built by scripts/setup.sh where it is not
+#   there yet, else brought up to date).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rounds=${1:-3}
 min_time=${2:-0.3}
 build=${BUILD_DIR:-build}
-cmake --build "$build" --target roomsense_bench >/dev/null
+if [ -f "$build/CMakeCache.txt" ]; then cmake --build "$build" --target roomsense_bench >/dev/null
+else ROOMSENSE_TARGET=roomsense_bench scripts/setup.sh "$build" >/dev/null; fi
 bin="$build/bench/roomsense_bench"
 # The cases behind the targets: thesis-room1's understanding and bounds (a bounds-only run, and the stage alone), the 20 x 14 m hall, the two-storey house,
 # the 50 x 50 m floor (analyze_growth), the area search's heap on the largest floor (area_growth), and an added

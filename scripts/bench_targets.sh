@@ -14,9 +14,9 @@ build=${BUILD_DIR:-build}
 if [ -f "$build/CMakeCache.txt" ]; then cmake --build "$build" --target roomsense_bench >/dev/null
 else ROOMSENSE_TARGET=roomsense_bench scripts/setup.sh "$build" >/dev/null; fi
 bin="$build/bench/roomsense_bench"
-# The cases behind the targets: thesis-room1's understanding and bounds (a bounds-only run, and the stage alone), the 20 x 14 m hall, the two-storey house,
-# the 50 x 50 m floor (analyze_growth), the area search's heap on the largest floor (area_growth), and an added
-# object's and a re-sent block's updates of thesis-room1 (78k vertices).
+# The cases behind the targets: thesis-room1's understanding and bounds (a bounds-only run, and the stage alone),
+# the 20 x 14 m hall, the two-storey house, the 50 x 50 m floor (analyze_growth), the area search's heap on the
+# largest floor (area_growth), and an added object's and a re-sent block's updates of thesis-room1 (78k vertices).
 filter='^((understanding|bounds|analyze_bounds|analyze)/synthetic:(thesis-room1|hall|house)|analyze_growth/hall_50x50|area_growth/hall_90x90|update(_object)?/synthetic:thesis-room1/.*)$'
 
 out=$(mktemp -d)

@@ -180,11 +180,11 @@ struct PassiveHeadset {
 };
 
 const PassiveHeadset kAndroid{XR_ANDROID_SCENE_MESHING_EXTENSION_NAME,
-                       {XR_MND_HEADLESS_EXTENSION_NAME, XR_ANDROID_SCENE_MESHING_EXTENSION_NAME},
-                       &read_android, true};
+                              {XR_MND_HEADLESS_EXTENSION_NAME, XR_ANDROID_SCENE_MESHING_EXTENSION_NAME},
+                              &read_android, true};
 const PassiveHeadset kMagicLeap{XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME,
-                         {XR_MND_HEADLESS_EXTENSION_NAME, XR_EXT_FUTURE_EXTENSION_NAME, XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME},
-                         &read_ml};
+                                {XR_MND_HEADLESS_EXTENSION_NAME, XR_EXT_FUTURE_EXTENSION_NAME, XR_ML_WORLD_MESH_DETECTION_EXTENSION_NAME},
+                                &read_ml};
 
 // The application's base space: LOCAL, or a LOCAL space moved by `pose` (the layer then places what it read
 // through the base space's location in its own capture space).

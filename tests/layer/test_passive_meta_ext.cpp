@@ -220,13 +220,13 @@ struct QuestPassiveHeadset {
 };
 
 const QuestPassiveHeadset kQuestHeadset{kQuest,
-                            {XR_MND_HEADLESS_EXTENSION_NAME, XR_FB_SPATIAL_ENTITY_EXTENSION_NAME, XR_FB_SPATIAL_ENTITY_QUERY_EXTENSION_NAME,
-                             XR_FB_SCENE_EXTENSION_NAME, XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME},
-                            &read_quest};
+                                        {XR_MND_HEADLESS_EXTENSION_NAME, XR_FB_SPATIAL_ENTITY_EXTENSION_NAME, XR_FB_SPATIAL_ENTITY_QUERY_EXTENSION_NAME,
+                                         XR_FB_SCENE_EXTENSION_NAME, XR_META_SPATIAL_ENTITY_MESH_EXTENSION_NAME},
+                                        &read_quest};
 const QuestPassiveHeadset kPlanesHeadset{kPlanesOnly,
-                             {XR_MND_HEADLESS_EXTENSION_NAME, XR_EXT_FUTURE_EXTENSION_NAME, XR_EXT_SPATIAL_ENTITY_EXTENSION_NAME,
-                              XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME},
-                             &read_planes};
+                                         {XR_MND_HEADLESS_EXTENSION_NAME, XR_EXT_FUTURE_EXTENSION_NAME, XR_EXT_SPATIAL_ENTITY_EXTENSION_NAME,
+                                          XR_EXT_SPATIAL_PLANE_TRACKING_EXTENSION_NAME},
+                                         &read_planes};
 
 // The application without the layer, as the runtime serves it.
 Received read_without_layer(const QuestPassiveHeadset& headset) {

@@ -1,4 +1,5 @@
-// The demo's XrInstance, destroyed (with its sessions and spaces) when its owner goes.
+// The demo's XrInstance, destroyed when its owner goes: with it the session, spaces, analyzer, contexts and
+// snapshots made from it.
 #pragma once
 #include <openxr/openxr.h>
 

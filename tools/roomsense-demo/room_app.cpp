@@ -32,7 +32,6 @@ bool runtime_offers(const char* extension) {
   return false;
 }
 
-// Owns the instance; destroying it takes the session, spaces and analyzer with it.
 XrSessionState poll_session_state(XrInstance instance, XrSessionState state) {
   XrEventDataBuffer event{XR_TYPE_EVENT_DATA_BUFFER, nullptr};
   while (xrPollEvent(instance, &event) == XR_SUCCESS) {

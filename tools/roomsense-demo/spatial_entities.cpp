@@ -148,7 +148,6 @@ struct Functions {
 
 #undef RS_LOAD
 
-// Owns the instance; destroying it takes the session, spaces, contexts and snapshots with it.
 std::vector<std::string> offered_extensions() {
   uint32_t count = 0;
   if (XR_FAILED(xrEnumerateInstanceExtensionProperties(nullptr, 0, &count, nullptr))) return {};

@@ -11,6 +11,8 @@ cd "$(dirname "$0")/.."
 rounds=${1:-3}
 min_time=${2:-0.3}
 build=${BUILD_DIR:-build}
+[[ $rounds =~ ^[1-9][0-9]*$ ]] || { echo "bench_targets: ROUNDS must be a whole number from 1, not '$rounds'" >&2; exit 2; }
+[[ $min_time =~ ^[0-9]*\.?[0-9]+$ ]] || { echo "bench_targets: MIN_TIME must be seconds, not '$min_time'" >&2; exit 2; }
 if [ -f "$build/CMakeCache.txt" ]; then cmake --build "$build" --target roomsense_bench >/dev/null
 else ROOMSENSE_TARGET=roomsense_bench scripts/setup.sh "$build" >/dev/null; fi
 bin="$build/bench/roomsense_bench"

@@ -15,14 +15,14 @@ class SampleRaster {
   SampleRaster(long a_lo, long a_hi, long b_lo, long b_hi, long c_lo, long c_hi)
       : a_lo_(a_lo), b_lo_(b_lo), c_lo_(c_lo),
         na_(std::max(0L, a_hi - a_lo + 1)), nb_(std::max(0L, b_hi - b_lo + 1)),
-        words_per_row_(std::max(1L, (c_hi - c_lo + 64) / 64)),
+        words_per_row_(std::max(1L, (c_hi - c_lo + 64) / 64)), nc_(64 * words_per_row_),
         slabs_(std::size_t(na_)) {}
 
   // Whether any bit c in [c0, c1] of row (a, b) is set; outside the box nothing is.
   bool any(long a, long b, long c0, long c1) const {
     c0 = std::max(c0, c_lo_);
-    c1 = std::min(c1, c_lo_ + 64 * words_per_row_ - 1);
-    if (a < a_lo_ || b < b_lo_ || a >= a_lo_ + na_ || b >= b_lo_ + nb_ || c0 > c1) return false;
+    c1 = std::min(c1, c_lo_ + nc_ - 1);
+    if (!inside(a, b) || c0 > c1) return false;
     const std::vector<std::uint64_t>& slab = slabs_[std::size_t(a - a_lo_)];
     if (slab.empty()) return false;
     const std::uint64_t* row = &slab[row_index(b)];
@@ -39,8 +39,7 @@ class SampleRaster {
 
   // Whether bit c of row (a, b) is set; outside the box none is.
   bool test(long a, long b, long c) const {
-    if (a < a_lo_ || b < b_lo_ || c < c_lo_ || a >= a_lo_ + na_ || b >= b_lo_ + nb_ || c >= c_lo_ + 64 * words_per_row_)
-      return false;
+    if (!inside(a, b) || std::size_t(c - c_lo_) >= std::size_t(nc_)) return false;
     const std::vector<std::uint64_t>& slab = slabs_[std::size_t(a - a_lo_)];
     if (slab.empty()) return false;
     const std::size_t i = std::size_t(c - c_lo_);
@@ -51,9 +50,7 @@ class SampleRaster {
   // a sample outside it is a bug in that bound, not something to drop silently.
   void set(long a, long b, long c0, long c1) {
     if (c0 > c1) return;
-    if (a < a_lo_ || b < b_lo_ || a >= a_lo_ + na_ || b >= b_lo_ + nb_ || c0 < c_lo_ ||
-        c1 >= c_lo_ + 64 * words_per_row_)
-      throw std::logic_error("packing sample outside its raster");
+    if (!inside(a, b) || c0 < c_lo_ || c1 >= c_lo_ + nc_) throw std::logic_error("packing sample outside its raster");
     std::vector<std::uint64_t>& slab = slabs_[std::size_t(a - a_lo_)];
     if (slab.empty()) slab.assign(std::size_t(nb_) * std::size_t(words_per_row_), 0);
     std::uint64_t* row = &slab[row_index(b)];
@@ -61,6 +58,11 @@ class SampleRaster {
   }
 
  private:
+  // Row (a, b) in the box: each coordinate's offset from the box's start below its extent, as unsigned (one
+  // comparison each, a coordinate below the start wrapping past it).
+  bool inside(long a, long b) const {
+    return std::size_t(a - a_lo_) < std::size_t(na_) && std::size_t(b - b_lo_) < std::size_t(nb_);
+  }
   std::size_t row_index(long b) const { return std::size_t(b - b_lo_) * std::size_t(words_per_row_); }
   // Calls f(word, mask) for the words holding bits [i0, i1] of a row (0 <= i0 <= i1).
   template <class F>
@@ -73,7 +75,7 @@ class SampleRaster {
     }
   }
 
-  long a_lo_, b_lo_, c_lo_, na_, nb_, words_per_row_;
+  long a_lo_, b_lo_, c_lo_, na_, nb_, words_per_row_, nc_;  // nc_: bits a row holds
   std::vector<std::vector<std::uint64_t>> slabs_;  // per a: its rows, or empty before its first mark
 };
 

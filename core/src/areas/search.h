@@ -41,9 +41,16 @@ struct NormalCounts {
   // Eq. 3.25's test of one cell over a span of levels: false where no rectangle may hold the cell (a wall column,
   // or a blocked voxel in the span), else the voxels with a normal in it in `with_normal`.
   bool usable(std::size_t column, Levels span, int& with_normal) const;
-  // Bits z in [z_from, z_from + 64) of the voxels at (x, y) whose normal Alg. 2 pairs with a first corner of
-  // normals `first` (compatible_normals); 0 outside the grid.
-  std::uint64_t z_window(int nx, int x, int y, std::uint8_t first, int z_from) const;
+  // The bit rows a first corner of normals `first` reads (compatible_normals): row k alone (all four normals but
+  // k), rows 0 and 1 together (all four), or none. Found once per first corner, not per window.
+  struct ZRows {
+    int count = 0;  // 0, 1 or 2
+    std::size_t k = 0;
+  };
+  static ZRows z_rows(std::uint8_t first);
+  // Bits z in [z_from, z_from + 64) of the voxels at (x, y) whose normal Alg. 2 pairs with a first corner whose
+  // rows are `rows` (z_rows); 0 outside the grid.
+  std::uint64_t z_window(int nx, int x, int y, ZRows rows, int z_from) const;
 };
 NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features);
 // Normals the second corner of a wall rectangle may carry (Alg. 2) when the first carries `first`: the first
@@ -88,22 +95,27 @@ inline bool NormalCounts::usable(std::size_t column, Levels span, int& with_norm
   return true;
 }
 
-inline std::uint64_t NormalCounts::z_window(int nx, int x, int y, std::uint8_t first, int z_from) const {
+inline NormalCounts::ZRows NormalCounts::z_rows(std::uint8_t first) {
   constexpr std::uint8_t kAll = kNormalLeft | kNormalRight | kNormalForward | kNormalBackward;
   const std::uint8_t compatible = compatible_normals(first);
-  const int total = int(64 * z_words);
-  if (compatible == 0 || z_from >= total || z_from <= -64) return 0;
-  const std::uint64_t* rows = z_bits.data() + (std::size_t(y - y0) * std::size_t(nx) + std::size_t(x)) * 4 * z_words;
+  if (compatible == 0) return {};
   // All four normals but k: row k; all four: rows 0 and 1 (a normal other than left, or other than right).
-  const auto window = [&](int k) {
-    const std::uint64_t* row = rows + std::size_t(k) * z_words;
+  if (compatible == kAll) return {2, 0};
+  return {1, std::size_t(std::countr_zero(unsigned(kAll & ~compatible)))};
+}
+
+inline std::uint64_t NormalCounts::z_window(int nx, int x, int y, ZRows rows, int z_from) const {
+  const int total = int(64 * z_words);
+  if (rows.count == 0 || z_from >= total || z_from <= -64) return 0;
+  const std::uint64_t* first_row =
+      z_bits.data() + ((std::size_t(y - y0) * std::size_t(nx) + std::size_t(x)) * 4 + rows.k) * z_words;
+  const auto window = [&](const std::uint64_t* row) {
     if (z_from < 0) return row[0] << -z_from;
     const std::size_t w = std::size_t(z_from / 64);
     const int shift = z_from % 64;
     return shift != 0 && w + 1 < z_words ? (row[w] >> shift) | (row[w + 1] << (64 - shift)) : row[w] >> shift;
   };
-  if (compatible == kAll) return window(0) | window(1);
-  return window(std::countr_zero(unsigned(kAll & ~compatible)));
+  return rows.count == 2 ? window(first_row) | window(first_row + z_words) : window(first_row);
 }
 
 // A search over bands of grid rows (z), for SearchCache (search_cache.h): band b holds rows [b * rows,

@@ -183,6 +183,18 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   // the box inscribed in that disk: if those alone hold a wall or too many unsuitable cells, no orientation
   // can be valid.
   const double inner_half = size.min_d / (2.0 * std::numbers::sqrt2) - 0.5;
+  // That box's cells along an axis for a centre at c / 2 (half-voxel units): [ceil(c / 2 - inner_half),
+  // floor(c / 2 + inner_half)] where it lies in the grid, else empty (lo > hi). Once per coordinate, not per centre
+  // (a floor's search visits every centre of the grid).
+  const auto inner_spans = [&](int cells) {
+    std::vector<glm::ivec2> spans(inner_half >= 0.0 ? 2 * std::size_t(std::max(cells, 0)) : 0);
+    for (std::size_t c = 0; c < spans.size(); ++c) {
+      const glm::ivec2 span(-floor_int(inner_half - 0.5 * double(c)), floor_int(0.5 * double(c) + inner_half));
+      spans[c] = span.x >= 0 && span.y < cells && span.x <= span.y ? span : glm::ivec2(1, 0);
+    }
+    return spans;
+  };
+  const std::vector<glm::ivec2> inner_x = inner_spans(spec.nx), inner_z = inner_spans(spec.nz);
   double most_missing = -1.0;
   for (const auto& parity : by_parity)
     for (const RingOffset* o : parity)
@@ -476,6 +488,9 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
         }
       open_here.assign(words, 0);
       open_above.assign(words, 0);
+      // The row's parts of the boxes below.
+      const int near_z_lo = std::max(hz - corner_reach, 0), near_z_hi = std::min(hz + corner_reach, spec.nz - 1);
+      const glm::ivec2 in_z = inner_z.empty() ? glm::ivec2(1, 0) : inner_z[std::size_t(cz)];
       for (int i = 0; i < centres_in_row; ++i) {
         const int hx = hx_first + i;
         const int cx = 2 * hx + p;
@@ -487,16 +502,12 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
           continue;
         }
         if (from_previous && (change == TileChange::Lost || !row_reads_changed)) continue;
-        const glm::ivec2 near_lo = glm::max(glm::ivec2(cx / 2 - corner_reach, cz / 2 - corner_reach), glm::ivec2(0));
-        const glm::ivec2 near_hi =
-            glm::min(glm::ivec2(cx / 2 + corner_reach, cz / 2 + corner_reach), glm::ivec2(spec.nx - 1, spec.nz - 1));
+        const glm::ivec2 near_lo(std::max(hx - corner_reach, 0), near_z_lo);
+        const glm::ivec2 near_hi(std::min(hx + corner_reach, spec.nx - 1), near_z_hi);
         if (box_first.sum(near_lo, near_hi) == 0) continue;  // no first corner anywhere near: no square
-        if (inner_half >= 0.0) {
-          const glm::ivec2 in_lo(-floor_int(inner_half - 0.5 * cx), -floor_int(inner_half - 0.5 * cz));  // ceil
-          const glm::ivec2 in_hi(floor_int(0.5 * cx + inner_half), floor_int(0.5 * cz + inner_half));
-          if (in_lo.x >= 0 && in_lo.y >= 0 && in_hi.x < spec.nx && in_hi.y < spec.nz && in_lo.x <= in_hi.x &&
-              in_lo.y <= in_hi.y && BadCells::fail(box_bad.sum(in_lo, in_hi), most_missing))
-            continue;
+        if (in_z.x <= in_z.y) {
+          const glm::ivec2 in_x = inner_x[std::size_t(cx)];
+          if (in_x.x <= in_x.y && BadCells::fail(box_bad.sum({in_x.x, in_z.x}, {in_x.y, in_z.y}), most_missing)) continue;
         }
         const glm::ivec3 sum(2 * cx, 0, 2 * cz);
         if (!here.contains(sum)) open_here[std::size_t(i / 64)] |= bit;

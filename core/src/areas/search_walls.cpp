@@ -91,21 +91,33 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   const int y_first = floor + int(std::floor(size.min_d * size.height_ratio));
   const auto& f = features.normals;
 
-  // Eq. 3.25's test for one rectangle: no wall column among the cells the top segment touches, and enough
-  // voxels with a normal in the rows [y1 - h, y1]. Gives up once too many voxels lack one. Beyond the thesis:
-  // no voxel before an opening (RoomFeatures::wall_blocked).
-  const auto valid = [&](int x1, int z1, const RingOffset& o, int y_top, int h) {
-    const int y_bottom = std::max(y_top - h, floor);
+  // The rectangles' levels lie in [floor, ceiling]; their offsets are the ring's, each with its height.
+  std::vector<Candidates::Shape> shapes;
+  for (const RingOffset& o : ring) shapes.push_back({o.dx, o.dz, size.wall_height(o.d)});
+  // Per ring offset, the voxels with a normal a rectangle of it needs at its full height: fill of (⌊d⌋ + 1)(h + 1).
+  std::vector<double> need(ring.size());
+  for (std::size_t r = 0; r < ring.size(); ++r)
+    need[r] = double(fill) * (std::floor(ring[r].d) + 1.0) * double(shapes[r].side + 1);
+  // Eq. 3.25's test for one rectangle (ring offset r, top at y_top): no wall column among the cells the top
+  // segment touches, and enough voxels with a normal in the rows [y1 - h, y1]. Gives up once too many voxels lack
+  // one. Beyond the thesis: no voxel before an opening (RoomFeatures::wall_blocked).
+  const auto valid = [&](int x1, int z1, std::size_t r, int y_top) {
+    const RingOffset& o = ring[r];
+    const int y_bottom = std::max(y_top - shapes[r].side, floor);
     const long rows = y_top - y_bottom + 1;
-    const double need = double(fill) * (std::floor(o.d) + 1.0) * double(h + 1);
-    const double may_miss = double(long(o.cells) * rows) - need;
+    const double may_miss = double(long(o.cells) * rows) - need[r];
     const NormalCounts::Levels span = normals.levels_of(y_bottom, y_top);
+    // Most rectangles lie inside the grid along z: no run of theirs to clip.
+    const bool inside = z1 + o.box_lo.y >= 0 && z1 + o.box_hi.y < spec.nz;
     long missing = 0;
     for (const CellRun& run : o.runs) {
       // The run's cells in the grid, column by column along z; those past its edge lack every voxel.
-      const int z_lo = z1 + run.dz_lo, z_hi = z1 + run.dz_hi;
-      const int in_lo = std::max(z_lo, 0), in_hi = std::min(z_hi, spec.nz - 1);
-      missing += rows * long((z_hi - z_lo + 1) - std::max(in_hi - in_lo + 1, 0));
+      int in_lo = z1 + run.dz_lo, in_hi = z1 + run.dz_hi;
+      if (!inside) {
+        const int z_lo = in_lo, z_hi = in_hi;
+        in_lo = std::max(z_lo, 0), in_hi = std::min(z_hi, spec.nz - 1);
+        missing += rows * long((z_hi - z_lo + 1) - std::max(in_hi - in_lo + 1, 0));
+      }
       std::size_t col = spec.column(x1 + run.dx, in_lo);
       for (int z = in_lo; z <= in_hi; ++z, col += std::size_t(spec.nx)) {
         int with_normal = 0;
@@ -117,9 +129,6 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     return true;
   };
 
-  // The rectangles' levels lie in [floor, ceiling]; their offsets are the ring's, each with its height.
-  std::vector<Candidates::Shape> shapes;
-  for (const RingOffset& o : ring) shapes.push_back({o.dx, o.dz, size.wall_height(o.d)});
   Candidates out(spec, spec.ny, shapes);
   // The ring in words of 64 dz (bit dz + reach) per dx, in the ring's order (dx ascending, then dz): only the
   // words that hold offsets, each with the ring index of its lowest bit. Offset bit b of a word is ring entry
@@ -187,7 +196,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       if (c == glm::ivec3(x1, y1, z1) && item.shape == r) return true;
       if (std::tie(c.z, c.x, c.y, item.shape) > std::tie(z1, x1, y1, r)) return false;
     }
-    return valid(x1, z1, o, y1, shapes[r].side);
+    return valid(x1, z1, r, y1);
   };
   // Where Alg. 2 has a second corner: one with a compatible normal at a ring offset, tried in the ring's order.
   // By bands, each band's centres are its own: the bits it set are cleared when it ends.
@@ -243,9 +252,11 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
           }
           continue;
         }
+        const NormalCounts::ZRows rows = NormalCounts::z_rows(f1);
+        if (rows.count == 0) continue;  // no normal a second corner may carry
         for (const RingWord& word : ring_words) {
           if (x1 + word.dx >= spec.nx) break;  // dx only grows
-          std::uint64_t seconds = word.offsets & normals.z_window(spec.nx, x1 + word.dx, y1, f1, z1 + word.dz_from);
+          std::uint64_t seconds = word.offsets & normals.z_window(spec.nx, x1 + word.dx, y1, rows, z1 + word.dz_from);
           for (; seconds != 0; seconds &= seconds - 1)
             try_rectangle(x1, y1, z1, word.first + word.rank[std::size_t(std::countr_zero(seconds))]);
         }

@@ -573,11 +573,11 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       for (int i = 0; i < centres_in_row; ++i) {
         const std::uint32_t h = found_here[std::size_t(i)], a = found_above[std::size_t(i)];
         if (h == kNone && a == kNone) continue;
-        const int cx = 2 * (hx_first + i) + p;
+        const int hx = hx_first + i, cx = 2 * hx + p;
         const glm::ivec3 sum(2 * cx, 0, 2 * cz);
         const auto add = [&](std::uint32_t orientation, bool rises) {
-          const RingOffset& o = *orientations[orientation];
-          const int x1 = (cx - (o.dx - o.dz)) / 2, z1 = (cz - (o.dx + o.dz)) / 2;
+          const CornerCells& k = cells[orientation];  // corner 1 from the centre's cell, padded
+          const int x1 = hx + k.x[0] - pad, z1 = hz + k.z[0] - pad;
           if (rises) above.insert(sum);
           const int y = rises ? y1 + 1 : y1;  // y_Actual, Eq. 3.41
           out.push_back(glm::ivec3(x1, y, z1), first_shape[std::size_t(p)] + orientation);

@@ -39,8 +39,10 @@ struct NormalCounts {
   };
   Levels levels_of(int y_from, int y_to) const { return {std::size_t(y_from - y0), std::size_t(y_to - y0 + 1)}; }
   // Eq. 3.25's test of one cell over a span of levels: false where no rectangle may hold the cell (a wall column,
-  // or a blocked voxel in the span), else the voxels with a normal in it in `with_normal`.
-  bool usable(std::size_t column, Levels span, int& with_normal) const;
+  // or a blocked voxel in the span), else the voxels with a normal in it in `with_normal`. `prefix`: prefix8's or
+  // prefix16's data, whichever the counts are in (the wall search chooses once a rectangle, not once a cell).
+  template <class Count>
+  bool usable(const Count* prefix, std::size_t column, Levels span, int& with_normal) const;
   // The bit rows a first corner of normals `first` reads (compatible_normals): row k alone (all four normals but
   // k), rows 0 and 1 together (all four), or none. Found once per first corner, not per window.
   struct ZRows {
@@ -63,11 +65,14 @@ inline std::uint8_t compatible_normals(std::uint8_t first) {
 }
 
 namespace normal_counts {
-// The counts in [span.from, span.to) of a column whose counts start at `start` (kNoNormal: none).
-inline int count(const NormalCounts& n, std::uint32_t start, NormalCounts::Levels span) {
+// The counts in [span.from, span.to) of a column whose counts start at `start` (kNoNormal: none), in `prefix`.
+template <class Count>
+int count(const Count* prefix, std::uint32_t start, NormalCounts::Levels span) {
   if (start == NormalCounts::kNoNormal) return 0;
-  return n.prefix8.empty() ? int(n.prefix16[start + span.to]) - int(n.prefix16[start + span.from])
-                           : int(n.prefix8[start + span.to]) - int(n.prefix8[start + span.from]);
+  return int(prefix[start + span.to]) - int(prefix[start + span.from]);
+}
+inline int count(const NormalCounts& n, std::uint32_t start, NormalCounts::Levels span) {
+  return n.prefix8.empty() ? count(n.prefix16.data(), start, span) : count(n.prefix8.data(), start, span);
 }
 // Any blocked voxel in the span, of a column that has one.
 inline bool blocked(const NormalCounts& n, std::size_t column, NormalCounts::Levels span) {
@@ -88,10 +93,11 @@ inline int NormalCounts::count(std::size_t column, int y_from, int y_to) const {
   return normal_counts::count(*this, start[column] & kStartBits, levels_of(y_from, y_to));
 }
 
-inline bool NormalCounts::usable(std::size_t column, Levels span, int& with_normal) const {
+template <class Count>
+bool NormalCounts::usable(const Count* prefix, std::size_t column, Levels span, int& with_normal) const {
   const std::uint32_t word = start[column];
   if ((word & kWallColumn) || ((word & kHasBlocked) && normal_counts::blocked(*this, column, span))) return false;
-  with_normal = normal_counts::count(*this, word & kStartBits, span);
+  with_normal = normal_counts::count(prefix, word & kStartBits, span);
   return true;
 }
 

@@ -104,8 +104,9 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     need[r] = double(fill) * (std::floor(ring[r].d) + 1.0) * double(shapes[r].side + 1);
   // Eq. 3.25's test for one rectangle (ring offset r, top at y_top): no wall column among the cells the top
   // segment touches, and enough voxels with a normal in the rows [y1 - h, y1]. Gives up once too many voxels lack
-  // one. Beyond the thesis: no voxel before an opening (RoomFeatures::wall_blocked).
-  const auto valid = [&](int x1, int z1, std::size_t r, int y_top) {
+  // one. Beyond the thesis: no voxel before an opening (RoomFeatures::wall_blocked). `prefix`: the counts'
+  // (NormalCounts::usable).
+  const auto valid_in = [&]<class Count>(const Count* prefix, int x1, int z1, std::size_t r, int y_top) {
     const RingOffset& o = ring[r];
     const int y_bottom = std::max(y_top - shapes[r].side, floor);
     const long rows = y_top - y_bottom + 1;
@@ -125,12 +126,16 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       std::size_t col = spec.column(x1 + run.dx, in_lo);
       for (int z = in_lo; z <= in_hi; ++z, col += std::size_t(spec.nx)) {
         int with_normal = 0;
-        if (!normals.usable(col, span, with_normal)) return false;
+        if (!normals.usable(prefix, col, span, with_normal)) return false;
         missing += rows - with_normal;
       }
       if (double(missing) > may_miss) return false;
     }
     return true;
+  };
+  const auto valid = [&](int x1, int z1, std::size_t r, int y_top) {
+    return normals.prefix8.empty() ? valid_in(normals.prefix16.data(), x1, z1, r, y_top)
+                                   : valid_in(normals.prefix8.data(), x1, z1, r, y_top);
   };
 
   Candidates out(spec, spec.ny, shapes);

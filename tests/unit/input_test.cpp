@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -234,6 +235,42 @@ TEST(PrepareInput, ChecksOnSeveralThreadsNameTheFirstBadIndex) {
   EXPECT_EQ(four.input.skipped_vertices, one.input.skipped_vertices);
   EXPECT_EQ(four.voxels.grid.spec, one.voxels.grid.spec);
   EXPECT_EQ(four.voxels.grid.cells, one.voxels.grid.cells);
+}
+
+// summarize_vertices reads four vertices at a time: its counts and bounds are a loop's over the vertices in
+// order, zeros' signs included (the first of equal extremes, +0 or -0, is kept), with NaN and Inf anywhere.
+TEST(PrepareInput, AVertexRunIsTheLoopsInOrder) {
+  const auto in_order = [](const std::vector<glm::vec3>& vertices) {
+    detail::VertexRun run;
+    run.count = vertices.size();
+    for (const glm::vec3& v : vertices) {
+      if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z))) continue;
+      ++run.finite;
+      for (int axis = 0; axis < 3; ++axis) {
+        if (v[axis] < run.lo[axis]) run.lo[axis] = v[axis];
+        if (run.hi[axis] < v[axis]) run.hi[axis] = v[axis];
+      }
+    }
+    return run;
+  };
+  const auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f); };
+  std::mt19937 random(7);
+  for (int trial = 0; trial < 4000; ++trial) {
+    std::vector<glm::vec3> vertices(random() % 40);
+    for (glm::vec3& v : vertices)
+      for (int axis = 0; axis < 3; ++axis) {
+        const unsigned pick = random() % 12;
+        v[axis] = pick == 0 ? 0.0f : pick == 1 ? -0.0f : pick == 2 && trial % 3 == 0 ? NAN
+                : pick == 3 && trial % 5 == 0 ? -INFINITY : float(int(random() % 7) - 3) * 0.5f;
+      }
+    const detail::VertexRun got = detail::summarize_vertices(vertices), want = in_order(vertices);
+    ASSERT_EQ(got.count, want.count) << "trial " << trial;
+    ASSERT_EQ(got.finite, want.finite) << "trial " << trial;
+    for (int axis = 0; axis < 3; ++axis) {
+      ASSERT_EQ(bits(got.lo[axis]), bits(want.lo[axis])) << "trial " << trial << " axis " << axis;
+      ASSERT_EQ(bits(got.hi[axis]), bits(want.hi[axis])) << "trial " << trial << " axis " << axis;
+    }
+  }
 }
 
 TEST(PrepareInput, AnAnalysisOfWhatIsLeftEqualsOneOfTheCleanScan) {

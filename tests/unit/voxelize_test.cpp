@@ -4,11 +4,13 @@
 #include "roomsense/synthetic.h"
 #include "roomsense/voxelize.h"
 #include "synthetic_fixture.h"
+#include "../../core/src/grid/voxelize_cpu.h"
 
 #include <gtest/gtest.h>
 
 #include <glm/vector_relational.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <span>
@@ -170,6 +172,45 @@ TEST(Voxelize, CornersPastTheGridLandWhereBoxIndexPutsThem) {
     voxelize_cpu_into({spec, g, std::span(indices).subspan(3 * t, 3), VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}},
                       alone, 1);
   EXPECT_EQ(alone.cells, want.cells);
+}
+
+// Where the CPU has SSE4.1, the voxelizer's hottest loops run a copy built for it (voxelize_cpu.h): it marks the
+// voxels and counts the tests the baseline copy does, on whole rooms (every vertex's cell found first) and on
+// corners past the grid's edges and on them (each triangle's cells found as it goes), on one and two threads.
+TEST(Voxelize, TheSse41CopyMarksWhatTheBaselineMarks) {
+  if (!detail::voxel_sse41_copy()) GTEST_SKIP() << "no SSE4.1 copy on this CPU or build: one copy of the loops";
+  const auto both = [](const VoxelizeRequest& request, const char* what) {
+    for (const unsigned threads : {1u, 2u}) {
+      VoxelGrid best(request.spec), baseline(request.spec);
+      std::uint64_t best_tests = 0, baseline_tests = 0;
+      detail::voxelize_cpu_into(request, best, threads, &best_tests, detail::VoxelInstructions::Best);
+      detail::voxelize_cpu_into(request, baseline, threads, &baseline_tests, detail::VoxelInstructions::Baseline);
+      EXPECT_EQ(best.cells, baseline.cells) << what << ", " << threads << " threads";
+      EXPECT_EQ(best_tests, baseline_tests) << what << ", " << threads << " threads";
+      EXPECT_GT(std::count(best.cells.begin(), best.cells.end(), 1), 0) << what;
+    }
+  };
+  for (const char* room : {"synthetic:thesis-room1", "synthetic:rotated", "synthetic:house"}) {
+    const Scan scan = synth::generate_builtin_source(room);
+    const PreparedInput in = prepare_input(scan);
+    const GridSpec spec = make_grid_spec(in.lo, in.hi, kDefaultVoxelSize);
+    const std::vector<glm::vec3> g = to_grid_units(in.vertices, spec);
+    both({spec, g, in.indices, VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}, room);
+    both({spec, g, std::span(in.indices).first(300), VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}, room);
+  }
+  const GridSpec spec = make_grid_spec({0, 0, 0}, {2, 1.5f, 2.5f}, 0.25f);
+  std::mt19937 rng(23);
+  const auto coordinate = [&](int n) {
+    const float e = kVoxelTestEpsilon;
+    const float picks[] = {-3.0f, -1e9f, -e, 0.0f, float(n - 1) - e, float(n - 1), float(n) + 2.0f, 1e9f, NAN};
+    return rng() % 3 == 0 ? std::uniform_real_distribution<float>(-1.5f, float(n) + 0.5f)(rng) : picks[rng() % std::size(picks)];
+  };
+  std::vector<glm::vec3> g;
+  for (int i = 0; i < 60; ++i) g.push_back({coordinate(spec.nx), coordinate(spec.ny), coordinate(spec.nz)});
+  std::vector<std::uint32_t> indices;
+  for (int t = 0; t < 150; ++t)
+    for (int k = 0; k < 3; ++k) indices.push_back(std::uint32_t(rng() % g.size()));
+  both({spec, g, indices, VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}, "corners past the edges");
 }
 
 TEST(Voxelize, AFaceOnAVoxelBoundaryLandsInTheUpperVoxelOnly) {

@@ -600,7 +600,13 @@ BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint
     corners.emplace(spec, volume, box, threads, stop);
   }
   MeshBuilder parts[3];
-  detail::parallel_tasks(3, threads, [&](std::size_t axis) {
+  // The slices along y first: a storey's floor and ceiling are most of its faces (thesis-room1: 0.22 ms of the
+  // three axes' 0.42 on one thread), so on two workers the walls' two axes share the other one, where taken in
+  // order one worker would do the walls' first axis and then y.
+  constexpr std::size_t kMeshOrder[3] = {2, 0, 1};
+  static_assert(kAxes[2].c == 1);
+  detail::parallel_tasks(3, threads, [&](std::size_t task) {
+    const std::size_t axis = kMeshOrder[task];
     const int c = kAxes[axis].c;
     mesh_axis(spec, volume, box, kAxes[axis], corners ? &*corners : nullptr, parts[axis], stop,
               {kept ? &kept->slices[axis] : nullptr, kept ? &changed.layers[std::size_t(c)] : nullptr,

@@ -1,6 +1,8 @@
 // Voxelization on the CPU: the reference for every backend (thesis Eq. 3.6/3.7, plus triangle mode).
 // This file is compiled with -ffp-contract=off: a fused multiply-add would round differently from the
 // Vulkan shaders, which mark their arithmetic `precise`.
+#include "voxelize_cpu.h"
+
 #include "../floor_int.h"
 #include "../parallel.h"
 #include "roomsense/cancel.h"
@@ -205,7 +207,46 @@ void scan_triangle(const TriangleScan& scan, const glm::vec3& a, const glm::vec3
   }
 }
 
+// A copy of the loops for SSE4.1 (voxelize_cpu.h), where x86's baseline lacks it and GCC or Clang build: a loop's
+// body is inlined (always_inline) into a function compiled for SSE4.1, which the CPU's check chooses. Only code
+// inlined into that function uses SSE4.1; every function it calls stays baseline code, so nothing another caller
+// shares can fault on an older CPU.
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__) && !defined(__SSE4_1__)
+#define ROOMSENSE_VOXEL_SSE41_COPY 1
+#define ROOMSENSE_INLINE_BODY __attribute__((always_inline))
+#else
+#define ROOMSENSE_VOXEL_SSE41_COPY 0
+#define ROOMSENSE_INLINE_BODY
+#endif
+
+bool use_sse41_copy(detail::VoxelInstructions instructions) {
+  return instructions == detail::VoxelInstructions::Best && detail::voxel_sse41_copy();
+}
+
+// detail::parallel_for over `body`, built for SSE4.1 where `sse41`.
+template <class Body>
+void parallel_for_on(bool sse41, std::size_t n, unsigned threads, std::size_t min_grain, const Body& body) {
+#if ROOMSENSE_VOXEL_SSE41_COPY
+  if (sse41) {
+    detail::parallel_for(n, threads, min_grain,
+                         [&](std::size_t begin, std::size_t end, std::size_t slice)
+                             __attribute__((target("sse4.1"))) { body(begin, end, slice); });
+    return;
+  }
+#endif
+  (void)sse41;
+  detail::parallel_for(n, threads, min_grain, body);
+}
+
 }  // namespace
+
+bool detail::voxel_sse41_copy() {
+#if ROOMSENSE_VOXEL_SSE41_COPY
+  return __builtin_cpu_supports("sse4.1");
+#else
+  return false;
+#endif
+}
 
 std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const GridSpec& spec, unsigned threads) {
   std::vector<glm::vec3> out(world.size());
@@ -252,6 +293,12 @@ VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads, std::ui
 }
 
 void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned threads, std::uint64_t* tests_done) {
+  detail::voxelize_cpu_into(request, grid, threads, tests_done, detail::VoxelInstructions::Best);
+}
+
+void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned threads,
+                               std::uint64_t* tests_done, VoxelInstructions instructions) {
+  const bool sse41 = use_sse41_copy(instructions);
   if (!(grid.spec.nx == request.spec.nx && grid.spec.ny == request.spec.ny && grid.spec.nz == request.spec.nz) ||
       grid.cells.size() != request.spec.voxel_count())
     throw Error(ErrorCode::BadParameter, "voxelize_cpu_into: the grid is not the request's");
@@ -282,7 +329,7 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
   std::unique_ptr<CornerCell[]> cells;  // not zeroed first: every one is written
   if (request.indices.size() >= 2 * p.size()) {
     cells = std::make_unique_for_overwrite<CornerCell[]>(p.size());
-    detail::parallel_for(p.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) {
+    parallel_for_on(sse41, p.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) ROOMSENSE_INLINE_BODY {
       for (std::size_t i = begin; i < end; ++i) {
         if ((i & 0xffff) == 0) stop_point(request.stop);
         cells[i] = corner_cell(p[i]);
@@ -307,7 +354,7 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
     const std::uint32_t* corner = indices + 3 * t;
     return std::array<std::uint32_t, 3>{corner[0], corner[1], corner[2]};
   };
-  detail::parallel_for(triangles, threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t slice) {
+  parallel_for_on(sse41, triangles, threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t slice) ROOMSENSE_INLINE_BODY {
     std::uint64_t tests = 0, boxes = 0, large_box = 0;
     for (std::size_t t = begin; t < end; ++t) {
       const auto [i, j, k] = corners_of(t);

@@ -174,6 +174,27 @@ TEST(Voxelize, CornersPastTheGridLandWhereBoxIndexPutsThem) {
   EXPECT_EQ(alone.cells, want.cells);
 }
 
+// to_grid_units converts whole fours of vertices at a time: every vertex is (v - origin) / voxel size exactly,
+// whatever the count and however the threads' slices cut the vertices.
+TEST(Voxelize, GridUnitsAreEachVertexsOwnFormula) {
+  const GridSpec spec = make_grid_spec({-1.3f, 0.2f, 5.1f}, {4.0f, 3.1f, 9.7f}, 0.07f);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> coordinate(-10.0f, 10.0f);
+  for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{3}, std::size_t{4}, std::size_t{7},
+                              std::size_t{33}, std::size_t{50001}}) {
+    std::vector<glm::vec3> world(n);
+    for (glm::vec3& v : world) v = {coordinate(rng), coordinate(rng), coordinate(rng)};
+    for (const unsigned threads : {1u, 2u, 3u}) {
+      const std::vector<glm::vec3> g = to_grid_units(world, spec, threads);
+      ASSERT_EQ(g.size(), n);
+      for (std::size_t i = 0; i < n; ++i)
+        for (int axis = 0; axis < 3; ++axis)
+          ASSERT_EQ(g[i][axis], (world[i][axis] - spec.origin[axis]) / spec.voxel_size)
+              << "vertex " << i << " of " << n << ", axis " << axis << ", " << threads << " threads";
+    }
+  }
+}
+
 // Where the CPU has SSE4.1, the voxelizer's hottest loops run a copy built for it (voxelize_cpu.h): it marks the
 // voxels and counts the tests the baseline copy does, on whole rooms (every vertex's cell found first) and on
 // corners past the grid's edges and on them (each triangle's cells found as it goes), on one and two threads.

@@ -2,11 +2,11 @@
 #include "roomsense/input.h"
 #include "input_view.h"
 #include "../parallel.h"
+#include "../vertex_lanes.h"
 
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <cstring>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -340,25 +340,19 @@ VertexRun summarize_in_order(std::span<const glm::vec3> vertices) {
 }  // namespace
 
 VertexRun summarize_vertices(std::span<const glm::vec3> vertices) {
-  // Four vertices at a time as three vectors of twelve floats, each lane always of one axis (x y z x | y z x y |
-  // z x y z), with GCC's vector extensions (SSE2 on x86-64, NEON on ARM): the loop above does not vectorize, and
-  // was 5 % of a bounds-only run of thesis-room1 on one thread. Where every vertex is finite its extremes are
-  // those of the loop above but for the sign of a zero (the loop keeps the first of equal values, +0 or -0);
-  // an extreme of zero takes the sign of the first vertex that holds it. A vertex that is not finite: the loop.
-  static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
-  typedef float Lanes __attribute__((vector_size(16)));
+  // Four vertices at a time (vertex_lanes.h): the loop above does not vectorize, and was 5 % of a bounds-only run
+  // of thesis-room1 on one thread. Where every vertex is finite its extremes are those of the loop above but for
+  // the sign of a zero (the loop keeps the first of equal values, +0 or -0): an extreme of zero takes the sign of
+  // the first vertex that holds it. A vertex that is not finite: the loop.
   typedef std::int32_t Bits __attribute__((vector_size(16)));
   const std::size_t quads = vertices.size() / 4;
-  const float* f = &vertices.data()->x;
-  Lanes lo[3], hi[3];
+  VertexLanes lo[3], hi[3];
   Bits not_finite{0, 0, 0, 0};
-  for (int k = 0; k < 3; ++k) lo[k] = Lanes{} + INFINITY, hi[k] = Lanes{} - INFINITY;
+  for (int k = 0; k < 3; ++k) lo[k] = VertexLanes{} + INFINITY, hi[k] = VertexLanes{} - INFINITY;
   for (std::size_t q = 0; q < quads; ++q)
     for (int k = 0; k < 3; ++k) {
-      Lanes v;
-      std::memcpy(&v, f + 12 * q + 4 * std::size_t(k), sizeof v);
-      const Bits exponent = std::bit_cast<Bits>(v) & 0x7f800000;
-      not_finite |= exponent == 0x7f800000;
+      const VertexLanes v = load_lanes(vertices.data() + 4 * q, k);
+      not_finite |= (std::bit_cast<Bits>(v) & 0x7f800000) == 0x7f800000;
       lo[k] = v < lo[k] ? v : lo[k];
       hi[k] = hi[k] < v ? v : hi[k];
     }
@@ -368,7 +362,7 @@ VertexRun summarize_vertices(std::span<const glm::vec3> vertices) {
   run.finite += 4 * quads;
   for (int k = 0; k < 3; ++k)
     for (int lane = 0; lane < 4; ++lane) {
-      const int axis = (4 * k + lane) % 3;
+      const int axis = lane_axis(k, lane);
       run.lo[axis] = std::min(run.lo[axis], lo[k][lane]);
       run.hi[axis] = std::max(run.hi[axis], hi[k][lane]);
     }

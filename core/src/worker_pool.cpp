@@ -121,7 +121,7 @@ void WorkerPool::serve() {
   for (;;) {
     if (queue_.empty() && !ending_) {
       lock.unlock();
-      spin_until([&] { return queued_ != 0; });
+      spin_until([&] { return queued_ != 0 || ending_; });
       lock.lock();
     }
     work_.wait(lock, [&] { return ending_ || !queue_.empty(); });

@@ -92,6 +92,22 @@ TEST(Storeys, HorizontalCountsUpdatedInChangedColumnsEqualTheWholeCount) {
   }
 }
 
+// The whole count (its loop without branches) equals the columns' counts one by one (the update's own loop, from
+// an empty grid) for grids of any height and any nonzero voxel byte.
+TEST(Storeys, HorizontalCountsOfAWholeGridAreEachColumnsCounts) {
+  std::mt19937 random(11);
+  for (const int ny : {1, 2, 3, 4, 9, 29}) {
+    GridSpec spec;
+    spec.nx = 7, spec.ny = ny, spec.nz = 5;
+    VoxelGrid grid(spec);
+    for (std::uint8_t& cell : grid.cells) cell = random() % 2 == 0 ? 0 : std::uint8_t(1 + random() % 255);
+    const std::vector<std::uint8_t> all(spec.column_count(), 1);
+    const std::vector<std::uint32_t> by_column =
+        detail::horizontal_counts(grid, VoxelGrid(spec), std::vector<std::uint32_t>(std::size_t(ny), 0), all);
+    EXPECT_EQ(detail::horizontal_counts(grid), by_column) << ny << " levels";
+  }
+}
+
 TEST(Storeys, EveryStoreyOfTheHouseAtItsHeights) {
   const AnalysedHouse& h = house();
   const AnalysisResult& r = h.result;

@@ -48,8 +48,22 @@ void count_horizontal(const VoxelGrid& grid, std::size_t col, std::uint32_t sign
 }  // namespace
 
 std::vector<std::uint32_t> horizontal_counts(const VoxelGrid& grid) {
-  std::vector<std::uint32_t> out(std::size_t(grid.spec.ny), 0);
-  for (std::size_t col = 0; col < grid.spec.column_count(); ++col) count_horizontal(grid, col, 1, out);
+  // count_horizontal on every column, without its branches (they vectorize): a full analysis waits for this pass
+  // on one thread, some 0.05 ms of thesis-room1's.
+  const std::size_t ny = std::size_t(grid.spec.ny);
+  std::vector<std::uint32_t> out(ny, 0);
+  if (ny < 3) {
+    for (std::size_t col = 0; col < grid.spec.column_count(); ++col) count_horizontal(grid, col, 1, out);
+    return out;
+  }
+  std::uint32_t* const counts = out.data();
+  for (std::size_t col = 0; col < grid.spec.column_count(); ++col) {
+    const std::uint8_t* v = grid.cells.data() + col * ny;
+    counts[0] += v[0] != 0;
+    counts[ny - 1] += v[ny - 1] != 0;
+    for (std::size_t y = 1; y + 1 < ny; ++y)
+      counts[y] += std::uint32_t(v[y] != 0) & ~(std::uint32_t(v[y - 1] != 0) & std::uint32_t(v[y + 1] != 0));
+  }
   return out;
 }
 

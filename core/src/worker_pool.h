@@ -46,7 +46,7 @@ class WorkerPool {
   std::condition_variable work_;  // a batch has jobs not taken, a batch ended, or the pool ends
   std::deque<Batch*> queue_;      // batches with jobs not taken, oldest first
   std::atomic<std::size_t> queued_ = 0;  // queue_.size(), read without the lock while spinning
-  std::atomic<bool> ending_ = false;  // read without the lock while spinning: ~WorkerPool joins a spinning thread at once
+  std::atomic<bool> ending_ = false;     // also read without the lock while spinning, so ~WorkerPool joins at once
   std::vector<std::jthread> threads_;
 };
 

@@ -145,11 +145,10 @@ TEST(Voxelize, AMeshOfSharedVerticesMarksExactlyWhatTheTestAcceptsInEachBox) {
   EXPECT_EQ(alone.cells, want.cells);
 }
 
-// Corners past the grid's edges, on them, and a test epsilon off them land where box_index puts them (the edge
-// voxel past an edge), as one scan's vertices shared by many triangles and as a few triangles' own.
-TEST(Voxelize, CornersPastTheGridLandWhereBoxIndexPutsThem) {
-  const GridSpec spec = make_grid_spec({0, 0, 0}, {2, 1.5f, 2.5f}, 0.25f);
-  std::mt19937 rng(17);
+// Corners past a grid's edges, on them and a test epsilon off them (and some near the grid), in grid units, shared
+// by 150 random triangles.
+std::pair<std::vector<glm::vec3>, std::vector<std::uint32_t>> corners_at_the_edges(const GridSpec& spec, unsigned seed) {
+  std::mt19937 rng(seed);
   const auto coordinate = [&](int n) {
     const float e = kVoxelTestEpsilon;
     const float picks[] = {-3.0f, -1e9f, -e, -0.5f * e, 0.0f, float(n - 1) - e, float(n - 1) - 0.5f * e, float(n - 1),
@@ -162,6 +161,14 @@ TEST(Voxelize, CornersPastTheGridLandWhereBoxIndexPutsThem) {
   std::vector<std::uint32_t> indices;
   for (int t = 0; t < 150; ++t)
     for (int k = 0; k < 3; ++k) indices.push_back(std::uint32_t(rng() % g.size()));
+  return {g, indices};
+}
+
+// Corners past the grid's edges, on them, and a test epsilon off them land where box_index puts them (the edge
+// voxel past an edge), as one scan's vertices shared by many triangles and as a few triangles' own.
+TEST(Voxelize, CornersPastTheGridLandWhereBoxIndexPutsThem) {
+  const GridSpec spec = make_grid_spec({0, 0, 0}, {2, 1.5f, 2.5f}, 0.25f);
+  const auto [g, indices] = corners_at_the_edges(spec, 17);
   std::size_t by_size[3] = {0, 0, 0};
   const VoxelGrid want = whole_boxes(spec, g, indices, by_size);
   for (const std::size_t n : by_size) EXPECT_GT(n, 0u);
@@ -197,7 +204,7 @@ TEST(Voxelize, GridUnitsAreEachVertexsOwnFormula) {
 
 // Where the CPU has SSE4.1, the voxelizer's hottest loops run a copy built for it (voxelize_cpu.h): it marks the
 // voxels and counts the tests the baseline copy does, on whole rooms (every vertex's cell found first) and on
-// corners past the grid's edges and on them (each triangle's cells found as it goes), on one and two threads.
+// corners past the grid's edges and on them (a few triangles' cells found as they go), on one and two threads.
 TEST(Voxelize, TheSse41CopyMarksWhatTheBaselineMarks) {
   if (!detail::voxel_sse41_copy()) GTEST_SKIP() << "no SSE4.1 copy on this CPU or build: one copy of the loops";
   const auto both = [](const VoxelizeRequest& request, const char* what) {
@@ -220,17 +227,7 @@ TEST(Voxelize, TheSse41CopyMarksWhatTheBaselineMarks) {
     both({spec, g, std::span(in.indices).first(300), VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}, room);
   }
   const GridSpec spec = make_grid_spec({0, 0, 0}, {2, 1.5f, 2.5f}, 0.25f);
-  std::mt19937 rng(23);
-  const auto coordinate = [&](int n) {
-    const float e = kVoxelTestEpsilon;
-    const float picks[] = {-3.0f, -1e9f, -e, 0.0f, float(n - 1) - e, float(n - 1), float(n) + 2.0f, 1e9f, NAN};
-    return rng() % 3 == 0 ? std::uniform_real_distribution<float>(-1.5f, float(n) + 0.5f)(rng) : picks[rng() % std::size(picks)];
-  };
-  std::vector<glm::vec3> g;
-  for (int i = 0; i < 60; ++i) g.push_back({coordinate(spec.nx), coordinate(spec.ny), coordinate(spec.nz)});
-  std::vector<std::uint32_t> indices;
-  for (int t = 0; t < 150; ++t)
-    for (int k = 0; k < 3; ++k) indices.push_back(std::uint32_t(rng() % g.size()));
+  const auto [g, indices] = corners_at_the_edges(spec, 23);
   both({spec, g, indices, VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}, "corners past the edges");
 }
 

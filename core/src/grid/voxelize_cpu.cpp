@@ -340,12 +340,13 @@ void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, 
   std::unique_ptr<CornerCell[]> cells;  // not zeroed first: every one is written
   if (request.indices.size() >= 2 * p.size()) {
     cells = std::make_unique_for_overwrite<CornerCell[]>(p.size());
-    parallel_for_on(sse41, p.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end, std::size_t) ROOMSENSE_INLINE_BODY {
+    const auto cells_of = [&](std::size_t begin, std::size_t end, std::size_t) ROOMSENSE_INLINE_BODY {
       for (std::size_t i = begin; i < end; ++i) {
         if ((i & 0xffff) == 0) stop_point(request.stop);
         cells[i] = corner_cell(p[i]);
       }
-    });
+    };
+    parallel_for_on(sse41, p.size(), threads, 1 << 14, cells_of);
   }
   // The table's pointer held by value: through the unique_ptr, the marks' atomics would have GCC load it again
   // at every triangle.
@@ -365,7 +366,7 @@ void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, 
     const std::uint32_t* corner = indices + 3 * t;
     return std::array<std::uint32_t, 3>{corner[0], corner[1], corner[2]};
   };
-  parallel_for_on(sse41, triangles, threads, 1 << 12, [&](std::size_t begin, std::size_t end, std::size_t slice) ROOMSENSE_INLINE_BODY {
+  const auto small_triangles = [&](std::size_t begin, std::size_t end, std::size_t slice) ROOMSENSE_INLINE_BODY {
     std::uint64_t tests = 0, boxes = 0, large_box = 0;
     for (std::size_t t = begin; t < end; ++t) {
       const auto [i, j, k] = corners_of(t);
@@ -386,7 +387,8 @@ void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, 
     }
     counter.flush(tests);
     small_boxes[slice] = boxes, large_boxes[slice] = large_box;
-  });
+  };
+  parallel_for_on(sse41, triangles, threads, 1 << 12, small_triangles);
   std::vector<std::size_t> listed;
   for (std::vector<std::size_t>& part : large) listed.insert(listed.end(), part.begin(), part.end()), part = {};
   const auto sum = [](const std::vector<std::uint64_t>& v) { return std::accumulate(v.begin(), v.end(), std::uint64_t{0}); };

@@ -8,10 +8,10 @@ namespace roomsense::detail {
 
 // Which instructions the voxelizer's two hottest loops (each vertex's cell, the small triangles' pass) are
 // compiled for. x86-64's baseline has SSE2 alone, which has no 32-bit integer minimum or maximum and no blend:
-// a triangle's box of its corners' cells takes some twenty instructions more a triangle there. Where the CPU has
-// SSE4.1, a copy of those loops built for it runs (thesis-room1's voxelization 1.41 -> 1.24 ms on one thread,
-// this project's VM); it marks the same voxels, as only integer lanes and selects change. Elsewhere (ARM, or a
-// build for SSE4.1 and up) there is one copy.
+// each minimum or maximum of a triangle's corners' cells takes four instructions there, one in SSE4.1. Where
+// the CPU has SSE4.1, a copy of those loops built for it runs (thesis-room1's voxelization 1.41 -> 1.24 ms on
+// one thread, this project's VM); it marks the same voxels, as only integer lanes and selects change.
+// Elsewhere (ARM, or a build for SSE4.1 and up) there is one copy.
 enum class VoxelInstructions { Best, Baseline };
 bool voxel_sse41_copy();  // whether Best runs a copy of its own on this CPU and build
 

@@ -366,10 +366,14 @@ VertexRun summarize_vertices(std::span<const glm::vec3> vertices) {
       run.lo[axis] = std::min(run.lo[axis], lo[k][lane]);
       run.hi[axis] = std::max(run.hi[axis], hi[k][lane]);
     }
-  for (int axis = 0; axis < 3; ++axis)
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto first_zero = [&] {
+      return (*std::find_if(vertices.begin(), vertices.end(),
+                            [&](const glm::vec3& v) { return finite(v) && v[axis] == 0.0f; }))[axis];
+    };
     for (float* extreme : {&run.lo[axis], &run.hi[axis]})
-      if (*extreme == 0.0f)
-        *extreme = std::find_if(vertices.begin(), vertices.end(), [&](const glm::vec3& v) { return finite(v) && v[axis] == 0.0f; })->operator[](axis);
+      if (*extreme == 0.0f) *extreme = first_zero();
+  }
   return run;
 }
 

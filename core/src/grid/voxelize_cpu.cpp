@@ -220,13 +220,10 @@ void scan_triangle(const TriangleScan& scan, const glm::vec3& a, const glm::vec3
 #define ROOMSENSE_INLINE_BODY
 #endif
 
-bool use_sse41_copy(detail::VoxelInstructions instructions) {
-  return instructions == detail::VoxelInstructions::Best && detail::voxel_sse41_copy();
-}
-
 // detail::parallel_for over `body`, built for SSE4.1 where `sse41`.
 template <class Body>
-void parallel_for_on(bool sse41, std::size_t n, unsigned threads, std::size_t min_grain, const Body& body) {
+void parallel_for_on([[maybe_unused]] bool sse41, std::size_t n, unsigned threads, std::size_t min_grain,
+                     const Body& body) {
 #if ROOMSENSE_VOXEL_SSE41_COPY
   if (sse41) {
     detail::parallel_for(n, threads, min_grain,
@@ -235,7 +232,6 @@ void parallel_for_on(bool sse41, std::size_t n, unsigned threads, std::size_t mi
     return;
   }
 #endif
-  (void)sse41;
   detail::parallel_for(n, threads, min_grain, body);
 }
 
@@ -309,7 +305,7 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
 
 void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned threads,
                                std::uint64_t* tests_done, VoxelInstructions instructions) {
-  const bool sse41 = use_sse41_copy(instructions);
+  const bool sse41 = instructions == VoxelInstructions::Best && voxel_sse41_copy();
   if (!(grid.spec.nx == request.spec.nx && grid.spec.ny == request.spec.ny && grid.spec.nz == request.spec.nz) ||
       grid.cells.size() != request.spec.voxel_count())
     throw Error(ErrorCode::BadParameter, "voxelize_cpu_into: the grid is not the request's");

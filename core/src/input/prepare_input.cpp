@@ -17,7 +17,8 @@ namespace roomsense {
 namespace {
 
 // Not NaN or Inf: not every exponent bit set.
-bool finite(float f) { return (std::bit_cast<std::uint32_t>(f) & 0x7f800000u) != 0x7f800000u; }
+constexpr std::uint32_t kExponentBits = 0x7f800000u;
+bool finite(float f) { return (std::bit_cast<std::uint32_t>(f) & kExponentBits) != kExponentBits; }
 bool finite(const glm::vec3& v) { return int(finite(v.x)) + int(finite(v.y)) + int(finite(v.z)) == 3; }
 
 // The k-th smallest and the k-th largest value (from 0) of `v`, as std::nth_element finds them. For a k near the
@@ -344,7 +345,7 @@ VertexRun summarize_vertices(std::span<const glm::vec3> vertices) {
   // of thesis-room1 on one thread. Where every vertex is finite its extremes are those of the loop above but for
   // the sign of a zero (the loop keeps the first of equal values, +0 or -0): an extreme of zero takes the sign of
   // the first vertex that holds it. A vertex that is not finite: the loop.
-  typedef std::int32_t Bits __attribute__((vector_size(16)));
+  typedef std::uint32_t Bits __attribute__((vector_size(16)));
   const std::size_t quads = vertices.size() / 4;
   VertexLanes lo[3], hi[3];
   Bits not_finite{0, 0, 0, 0};
@@ -352,7 +353,7 @@ VertexRun summarize_vertices(std::span<const glm::vec3> vertices) {
   for (std::size_t q = 0; q < quads; ++q)
     for (int k = 0; k < 3; ++k) {
       const VertexLanes v = load_lanes(vertices.data() + 4 * q, k);
-      not_finite |= (std::bit_cast<Bits>(v) & 0x7f800000) == 0x7f800000;
+      not_finite |= (std::bit_cast<Bits>(v) & kExponentBits) == kExponentBits;  // finite() on each lane
       lo[k] = v < lo[k] ? v : lo[k];
       hi[k] = hi[k] < v ? v : hi[k];
     }

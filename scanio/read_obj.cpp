@@ -9,21 +9,158 @@
 // first bad index is an error naming the face (numbered from 1, in file order, like OBJ's vertices) and the
 // index as written. Lines tinyobjloader does not know (l, p, curves, mtllib, ...) are ignored. In a file with
 // triangles, vertices no triangle uses are dropped (scan_file.h says why); one without keeps them as points.
+// A vertex's three coordinates are checked as the file is read (CheckedVertexLines): tinyobjloader alone reads
+// "nan", "inf", "1,5" or a missing coordinate as 0 without a word.
 #include "roomsense/scanio.h"
 
 #include "scan_file.h"
 
 #include <tiny_obj_loader.h>
 
+#include <charconv>
+#include <cmath>
 #include <cstdint>
+#include <deque>
+#include <istream>
 #include <limits>
+#include <streambuf>
 #include <string>
+#include <string_view>
 
 namespace roomsense::scanio {
 namespace {
 
+// Whether `token` is a number as tinyobjloader's parser reads it whole: [+-] digits [. digits] [e [+-] digits], or
+// [+-] . digits [e [+-] digits]. Its value is then tinyobjloader's.
+bool plain_number(std::string_view token) {
+  std::size_t i = 0;
+  const auto digits = [&] {
+    const std::size_t from = i;
+    while (i < token.size() && token[i] >= '0' && token[i] <= '9') ++i;
+    return i - from;
+  };
+  if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+  std::size_t mantissa = digits();
+  if (i < token.size() && token[i] == '.') ++i, mantissa += digits();
+  if (mantissa == 0) return false;
+  if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
+    ++i;
+    if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == token.size();
+}
+
+// The file as tinyobjloader reads it, line by line, each `v` line's coordinates checked on the way: three of them,
+// each a number. One tinyobjloader would read as 0 that is not ("nan", "inf", "-infinity", read as
+// std::from_chars reads it, whatever the locale) gives the vertex its value: the pipeline skips a vertex that is
+// not finite and says how many it skipped, as for PLY. Anything else ("1,5", "1.5e", a missing coordinate) ends
+// the stream and is the read's error, naming the line.
+class CheckedVertexLines : public std::streambuf {
+ public:
+  explicit CheckedVertexLines(std::streambuf& source) : source_(source) {}
+  // The vertex tinyobjloader reports next (in the `v` lines' order), as it read it: with the values of the
+  // coordinates it read as 0.
+  glm::vec3 vertex(glm::vec3 read) {
+    ++vertices_taken_;
+    if (replaced_.empty() || replaced_.front().vertex != vertices_taken_) return read;
+    const Replaced r = replaced_.front();
+    replaced_.pop_front();
+    for (int axis = 0; axis < 3; ++axis)
+      if (r.axes[axis]) read[axis] = r.value[axis];
+    return read;
+  }
+  const std::string& error() const { return error_; }
+
+ protected:
+  // The next block of whole lines, each checked: read in blocks (a line at a time cost a quarter more time than
+  // tinyobjloader's own reading), the last line left for the next block where it may go on.
+  int_type underflow() override {
+    constexpr std::size_t kBlock = 1 << 16;
+    if (!error_.empty()) return traits_type::eof();
+    buffer_.erase(0, exposed_);  // what tinyobjloader has read; the rest is the start of a line
+    exposed_ = 0;
+    std::size_t end = std::string::npos;  // past the last terminator whose line is whole
+    bool at_eof = false;
+    while (end == std::string::npos && !at_eof) {
+      const std::size_t before = buffer_.size();
+      buffer_.resize(before + kBlock);
+      const std::streamsize got = source_.sgetn(buffer_.data() + before, std::streamsize(kBlock));
+      buffer_.resize(before + std::size_t(std::max<std::streamsize>(got, 0)));
+      at_eof = got <= 0;
+      // A \r at the very end may be the first half of \r\n: its line ends in the next block.
+      for (std::size_t i = buffer_.size(); i > before && end == std::string::npos; --i) {
+        const char c = buffer_[i - 1];
+        if (c == '\n' || (c == '\r' && i < buffer_.size())) end = i;
+      }
+    }
+    if (end == std::string::npos) end = buffer_.size();  // the file's last line, without a terminator
+    if (end == 0) return traits_type::eof();
+    for (std::size_t from = 0; from < end && error_.empty();) {
+      std::size_t to = from;
+      while (to < end && buffer_[to] != '\n' && buffer_[to] != '\r') ++to;
+      ++line_number_;
+      check(std::string_view(buffer_).substr(from, to - from));
+      from = to + (to + 1 < buffer_.size() && buffer_[to] == '\r' && buffer_[to + 1] == '\n' ? 2 : 1);
+    }
+    if (!error_.empty()) return traits_type::eof();
+    exposed_ = end;
+    setg(buffer_.data(), buffer_.data(), buffer_.data() + end);
+    return traits_type::to_int_type(buffer_[0]);
+  }
+
+ private:
+  void check(std::string_view line) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+    const auto skip_blanks = [&] {
+      while (!line.empty() && blank(line.front())) line.remove_prefix(1);
+    };
+    skip_blanks();
+    if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t')) return;
+    line.remove_prefix(2);
+    ++vertex_lines_;
+    Replaced r{vertex_lines_, glm::vec3(0.0f), glm::bvec3(false)};
+    for (int axis = 0; axis < 3; ++axis) {
+      skip_blanks();
+      std::size_t length = 0;
+      while (length < line.size() && !blank(line[length])) ++length;
+      const std::string_view token = line.substr(0, length);
+      line.remove_prefix(token.size());
+      if (token.empty() || token[0] == '#') {
+        fail("a vertex needs three coordinates");
+        return;
+      }
+      if (plain_number(token)) continue;
+      const std::string_view unsigned_token = token[0] == '+' && token.size() > 1 && token[1] != '-' ? token.substr(1) : token;
+      const char* const end = unsigned_token.data() + unsigned_token.size();
+      float value = 0.0f;
+      const std::from_chars_result read = std::from_chars(unsigned_token.data(), end, value);
+      if (read.ec != std::errc() || read.ptr != end || std::isfinite(value)) {
+        fail("vertex coordinate '" + std::string(token.substr(0, 40)) + "' is not a number");
+        return;
+      }
+      r.value[axis] = value, r.axes[axis] = true;
+    }
+    if (r.axes.x || r.axes.y || r.axes.z) replaced_.push_back(r);
+  }
+  void fail(const std::string& what) { error_ = "line " + std::to_string(line_number_) + ": " + what; }
+
+  std::streambuf& source_;
+  std::string buffer_;         // lines read from source_: those before exposed_ given to tinyobjloader
+  std::size_t exposed_ = 0;
+  std::uint64_t line_number_ = 0, vertex_lines_ = 0, vertices_taken_ = 0;
+  struct Replaced {
+    std::uint64_t vertex;  // its number, from 1
+    glm::vec3 value;       // on `axes`
+    glm::bvec3 axes;
+  };
+  std::deque<Replaced> replaced_;  // in order; those tinyobjloader has not reported yet
+  std::string error_;
+};
+
 struct ObjReader {
   const std::string& name;
+  CheckedVertexLines& lines;
   Scan scan;
   std::uint64_t faces = 0;
   // The largest 1-based index seen and the face it is in: checked against the vertex count at the end.
@@ -33,7 +170,7 @@ struct ObjReader {
   void vertex(float x, float y, float z) {
     if (scan.vertices.size() >= std::numeric_limits<std::uint32_t>::max())
       throw_read_error(name, "it has more vertices than 32-bit indices can address");
-    scan.vertices.emplace_back(x, y, z);
+    scan.vertices.push_back(lines.vertex(glm::vec3(x, y, z)));
   }
 
   // Raw OBJ index (1-based, negative = relative, 0 = none) to a 0-based vertex index.
@@ -71,7 +208,10 @@ struct ObjReader {
 }  // namespace
 
 Scan read_obj(std::istream& in, const std::string& name) {
-  ObjReader reader{name, {}};
+  if (in.rdbuf() == nullptr) throw_read_error(name, "reading it failed");
+  CheckedVertexLines lines(*in.rdbuf());
+  std::istream checked(&lines);
+  ObjReader reader{name, lines, {}};
   tinyobj::callback_t callbacks;
   callbacks.vertex_cb = [](void* self, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z, tinyobj::real_t) {
     static_cast<ObjReader*>(self)->vertex(x, y, z);
@@ -82,7 +222,8 @@ Scan read_obj(std::istream& in, const std::string& name) {
   std::string warnings, errors;
   // Our callbacks throw Error (and std::bad_alloc may come from anywhere): tinyobjloader holds only standard
   // containers while it parses, so the exceptions unwind through it cleanly.
-  const bool ok = tinyobj::LoadObjWithCallback(in, callbacks, &reader, nullptr, &warnings, &errors);
+  const bool ok = tinyobj::LoadObjWithCallback(checked, callbacks, &reader, nullptr, &warnings, &errors);
+  if (!lines.error().empty()) throw_read_error(name, lines.error());
   if (!ok) throw_read_error(name, errors.empty() ? "it is not a valid OBJ file" : errors.substr(0, errors.find('\n')));
   if (in.bad()) throw_read_error(name, "reading it failed");
   if (reader.scan.vertices.empty()) throw_read_error(name, "it holds no vertices");

@@ -8,10 +8,12 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -244,6 +246,31 @@ TEST(ObjReader, BadIndicesNameTheFace) {
             "cannot read 'test.obj': face 1 has a missing or zero vertex index");
   EXPECT_NE(io_error([] { obj("v 0 0 0\nv 1 0 0\nf 1 7\n"); }).find("face 1 refers to vertex 7"), std::string::npos);
   EXPECT_EQ(io_error([] { obj("# nothing but a comment\n"); }), "cannot read 'test.obj': it holds no vertices");
+}
+
+// tinyobjloader alone read these as 0 (a vertex at the origin, silently): a coordinate that is not finite keeps its
+// value (the pipeline skips such vertices and counts them, as PLY's), and one that is no number is an error.
+TEST(ObjReader, CoordinatesThatAreNotFiniteKeepTheirValue) {
+  const Scan scan = obj("v nan 0.5 0\nv 1 -inf 0\nv 0 1 +Infinity\nv -.5 +1. 2E-1 1.0\nv NaN 2 -nan\n"
+                        "f 1 2 3\nf 3 4 5\n");
+  ASSERT_EQ(scan.vertices.size(), 5u);
+  EXPECT_TRUE(std::isnan(scan.vertices[0].x));
+  EXPECT_EQ(scan.vertices[0].y, 0.5f);  // the plain coordinates of such a line as before
+  EXPECT_EQ(scan.vertices[1].y, -std::numeric_limits<float>::infinity());
+  EXPECT_EQ(scan.vertices[2].z, std::numeric_limits<float>::infinity());
+  EXPECT_EQ(scan.vertices[3], glm::vec3(-0.5f, 1.0f, 0.2f));
+  EXPECT_TRUE(std::isnan(scan.vertices[4].x) && std::isnan(scan.vertices[4].z));
+  EXPECT_EQ(scan.vertices[4].y, 2.0f);
+}
+
+TEST(ObjReader, ACoordinateThatIsNoNumberIsAnErrorNamingTheLine) {
+  EXPECT_EQ(io_error([] { obj("v 0 0 0\n# comment\nv 1,5 0 0\nv 0 1 0\nf 1 2 3\n"); }),
+            "cannot read 'test.obj': line 3: vertex coordinate '1,5' is not a number");
+  EXPECT_EQ(io_error([] { obj("v 1.5e 0 0\n"); }), "cannot read 'test.obj': line 1: vertex coordinate '1.5e' is not a number");
+  EXPECT_EQ(io_error([] { obj("v 0 0 0\r\nv +-1 0 0\r\n"); }),
+            "cannot read 'test.obj': line 2: vertex coordinate '+-1' is not a number");
+  EXPECT_EQ(io_error([] { obj("v 0 0 0\rv 1 2\r"); }), "cannot read 'test.obj': line 2: a vertex needs three coordinates");
+  EXPECT_EQ(io_error([] { obj("v 1 2 # z\n"); }), "cannot read 'test.obj': line 1: a vertex needs three coordinates");
 }
 
 // --- load_mesh_file ------------------------------------------------------------------------------------

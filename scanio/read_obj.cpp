@@ -51,11 +51,11 @@ bool plain_number(std::string_view token) {
   return i == token.size();
 }
 
-// The file as tinyobjloader reads it, line by line, each `v` line's coordinates checked on the way: three of them,
-// each a number. One tinyobjloader would read as 0 that is not ("nan", "inf", "-infinity", read as
-// std::from_chars reads it, whatever the locale) gives the vertex its value: the pipeline skips a vertex that is
-// not finite and says how many it skipped, as for PLY. Anything else ("1,5", "1.5e", a missing coordinate) ends
-// the stream and is the read's error, naming the line.
+// The file as tinyobjloader reads it, in blocks of whole lines, each `v` line's coordinates checked on the way:
+// three of them, each a number. A coordinate that is not plain_number but a value that is not finite ("nan", "inf",
+// "-infinity", as std::from_chars reads them, whatever the locale) keeps that value, where tinyobjloader reads 0:
+// the pipeline skips a vertex that is not finite and says how many it skipped, as for PLY. Anything else ("1,5",
+// "1.5e", a missing coordinate) ends the stream and is the read's error, naming the line.
 class CheckedVertexLines : public std::streambuf {
  public:
   explicit CheckedVertexLines(std::streambuf& source) : source_(source) {}
@@ -73,8 +73,9 @@ class CheckedVertexLines : public std::streambuf {
   const std::string& error() const { return error_; }
 
  protected:
-  // The next block of whole lines, each checked: read in blocks (a line at a time cost a quarter more time than
-  // tinyobjloader's own reading), the last line left for the next block where it may go on.
+  // The next block of whole lines, each checked; the last line left for the next block where it may go on. Read in
+  // 64 KiB blocks and scanned by hand: a line at a time, through std::string's find_first_of, cost 20-40 % more than
+  // tinyobjloader's own reading, this about 5 % (a 4.9 MB scan: 43.5 -> 45.6 ms).
   int_type underflow() override {
     constexpr std::size_t kBlock = 1 << 16;
     if (!error_.empty()) return traits_type::eof();
@@ -225,7 +226,7 @@ Scan read_obj(std::istream& in, const std::string& name) {
   const bool ok = tinyobj::LoadObjWithCallback(checked, callbacks, &reader, nullptr, &warnings, &errors);
   if (!lines.error().empty()) throw_read_error(name, lines.error());
   if (!ok) throw_read_error(name, errors.empty() ? "it is not a valid OBJ file" : errors.substr(0, errors.find('\n')));
-  if (in.bad()) throw_read_error(name, "reading it failed");
+  if (in.bad() || checked.bad()) throw_read_error(name, "reading it failed");  // checked: a source that threw
   if (reader.scan.vertices.empty()) throw_read_error(name, "it holds no vertices");
   if (reader.max_index > reader.scan.vertices.size())
     throw_read_error(name, "face " + std::to_string(reader.max_index_face) + " refers to vertex " +

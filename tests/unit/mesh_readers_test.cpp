@@ -15,6 +15,8 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
+#include <streambuf>
 #include <string>
 #include <vector>
 
@@ -271,6 +273,14 @@ TEST(ObjReader, ACoordinateThatIsNoNumberIsAnErrorNamingTheLine) {
             "cannot read 'test.obj': line 2: vertex coordinate '+-1' is not a number");
   EXPECT_EQ(io_error([] { obj("v 0 0 0\rv 1 2\r"); }), "cannot read 'test.obj': line 2: a vertex needs three coordinates");
   EXPECT_EQ(io_error([] { obj("v 1 2 # z\n"); }), "cannot read 'test.obj': line 1: a vertex needs three coordinates");
+}
+
+TEST(ObjReader, AStreamThatFailsIsAnErrorNotAShortFile) {
+  struct Failing : std::streambuf {
+    int_type underflow() override { throw std::runtime_error("disk gone"); }
+  } failing;
+  std::istream in(&failing);
+  EXPECT_EQ(io_error([&] { scanio::read_obj(in, "test.obj"); }), "cannot read 'test.obj': reading it failed");
 }
 
 // --- load_mesh_file ------------------------------------------------------------------------------------

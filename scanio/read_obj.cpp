@@ -137,7 +137,7 @@ class CheckedVertexLines : public std::streambuf {
       float value = 0.0f;
       const std::from_chars_result read = std::from_chars(unsigned_token.data(), end, value);
       if (read.ec != std::errc() || read.ptr != end || std::isfinite(value)) {
-        fail("vertex coordinate '" + std::string(token.substr(0, 40)) + "' is not a number");
+        fail("vertex coordinate " + quoted(token) + " is not a number");
         return;
       }
       r.value[axis] = value, r.axes[axis] = true;

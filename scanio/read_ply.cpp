@@ -242,7 +242,7 @@ class PlyReader {
         if (words[1] == "ascii") format_ = Format::Ascii;
         else if (words[1] == "binary_little_endian") format_ = Format::BinaryLittleEndian;
         else if (words[1] == "binary_big_endian") format_ = Format::BinaryBigEndian;
-        else fail(where + ": unknown format '" + std::string(words[1].substr(0, 32)) + "'");
+        else fail(where + ": unknown format " + quoted(words[1]));
         have_format = true;
       } else if (words[0] == "element") {
         if (words.size() != 3) fail(where + " is not 'element NAME COUNT'");
@@ -263,7 +263,7 @@ class PlyReader {
           property = {std::string(words[4].substr(0, 64)), *item_type, true, *count_type};
         } else if (words.size() == 3) {
           const auto type = parse_type(words[1]);
-          if (!type) fail(where + ": unknown property type '" + std::string(words[1].substr(0, 32)) + "'");
+          if (!type) fail(where + ": unknown property type " + quoted(words[1]));
           property = {std::string(words[2].substr(0, 64)), *type, false, Type::UInt8};
         } else {
           fail(where + " is not 'property TYPE NAME' or 'property list TYPE TYPE NAME'");
@@ -382,7 +382,7 @@ class PlyReader {
         std::int64_t v = 0;
         const auto [stop, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
         if (ec != std::errc() || stop != t.data() + t.size())
-          fail(where() + ": '" + std::string(t.substr(0, 32)) + "' is not an integer");
+          fail(where() + ": " + quoted(t) + " is not an integer");
         return v;
       };
       glm::vec3 position(0.0f);
@@ -395,7 +395,7 @@ class PlyReader {
           double v = 0;
           const auto [stop, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
           if (ec != std::errc() || stop != t.data() + t.size())
-            fail(where() + ": '" + std::string(t.substr(0, 32)) + "' is not a number");
+            fail(where() + ": " + quoted(t) + " is not a number");
           position[roles[k] == Role::X ? 0 : roles[k] == Role::Y ? 1 : 2] = to_float(v);
           continue;
         }

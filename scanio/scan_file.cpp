@@ -29,6 +29,13 @@ void throw_read_error(const std::string& name, const std::string& what) {
   throw Error(ErrorCode::Io, "cannot read '" + name + "': " + what);
 }
 
+std::string quoted(std::string_view word) {
+  std::string out(1, '\'');
+  for (const char c : word.substr(0, 32)) out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? '?' : c;
+  out += '\'';
+  return out;
+}
+
 std::ifstream open_scan_file(const std::string& path) {
   std::error_code ec;
   const std::filesystem::file_status status = std::filesystem::status(path, ec);  // follows symlinks

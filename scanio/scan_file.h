@@ -6,11 +6,16 @@
 
 #include <fstream>
 #include <string>
+#include <string_view>
 
 namespace roomsense::scanio {
 
 // Throws Error(ErrorCode::Io, "cannot read '<name>': <what>").
 [[noreturn]] void throw_read_error(const std::string& name, const std::string& what);
+
+// A word of the file as an error message quotes it: its first 32 bytes in single quotes, control bytes (a NUL, a
+// tab, an escape) as '?', so that the message stays one printable line whatever the file holds.
+std::string quoted(std::string_view word);
 
 // Opens `path` for binary reading; throws the read error above when it does not exist, is a directory, a
 // FIFO, a device or anything else that is not a regular file, or cannot be opened.

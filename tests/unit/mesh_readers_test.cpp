@@ -273,6 +273,11 @@ TEST(ObjReader, ACoordinateThatIsNoNumberIsAnErrorNamingTheLine) {
             "cannot read 'test.obj': line 2: vertex coordinate '+-1' is not a number");
   EXPECT_EQ(io_error([] { obj("v 0 0 0\rv 1 2\r"); }), "cannot read 'test.obj': line 2: a vertex needs three coordinates");
   EXPECT_EQ(io_error([] { obj("v 1 2 # z\n"); }), "cannot read 'test.obj': line 1: a vertex needs three coordinates");
+  // A word of the file is quoted as one printable line: control bytes as '?', at most 32 bytes.
+  EXPECT_EQ(io_error([] { obj(std::string("v 0\0x\x1b 0 0\n", 11)); }),
+            "cannot read 'test.obj': line 1: vertex coordinate '0?x?' is not a number");
+  EXPECT_EQ(io_error([] { obj("v " + std::string(100, 'x') + " 0 0\n"); }),
+            "cannot read 'test.obj': line 1: vertex coordinate '" + std::string(32, 'x') + "' is not a number");
 }
 
 TEST(ObjReader, AStreamThatFailsIsAnErrorNotAShortFile) {

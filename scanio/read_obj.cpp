@@ -132,7 +132,7 @@ class CheckedVertexLines : public std::streambuf {
         return;
       }
       if (plain_number(token)) continue;
-      const std::string_view unsigned_token = token[0] == '+' && token.size() > 1 && token[1] != '-' ? token.substr(1) : token;
+      const std::string_view unsigned_token = without_plus(token);
       const char* const end = unsigned_token.data() + unsigned_token.size();
       float value = 0.0f;
       const std::from_chars_result read = std::from_chars(unsigned_token.data(), end, value);

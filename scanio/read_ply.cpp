@@ -378,10 +378,10 @@ class PlyReader {
         return {start, std::size_t(p - start)};
       };
       const auto integer = [&](std::string_view t) {
-        if (t.size() > 1 && t[0] == '+') t.remove_prefix(1);  // from_chars takes no '+'
+        const std::string_view digits = without_plus(t);
         std::int64_t v = 0;
-        const auto [stop, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-        if (ec != std::errc() || stop != t.data() + t.size())
+        const auto [stop, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+        if (ec != std::errc() || stop != digits.data() + digits.size())
           fail(where() + ": " + quoted(t) + " is not an integer");
         return v;
       };
@@ -389,12 +389,12 @@ class PlyReader {
       for (std::size_t k = 0; k < element.properties.size(); ++k) {
         const Property& property = element.properties[k];
         if (!property.list) {
-          std::string_view t = token();
+          const std::string_view t = token();
           if (roles[k] == Role::Skip) continue;
-          if (t.size() > 1 && t[0] == '+') t.remove_prefix(1);
+          const std::string_view number = without_plus(t);
           double v = 0;
-          const auto [stop, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-          if (ec != std::errc() || stop != t.data() + t.size())
+          const auto [stop, ec] = std::from_chars(number.data(), number.data() + number.size(), v);
+          if (ec != std::errc() || stop != number.data() + number.size())
             fail(where() + ": " + quoted(t) + " is not a number");
           position[roles[k] == Role::X ? 0 : roles[k] == Role::Y ? 1 : 2] = to_float(v);
           continue;

@@ -1,6 +1,7 @@
-// What every scan reader shares: the one shape of their error line, opening a path only when it is a
-// regular file, and dropping the vertices no face uses. A FIFO would block the open, /dev/zero would never end and a directory "opens" on some
-// systems, so the kind of file is checked first and named in the message.
+// What every scan reader shares: the one shape of their error line and of a word it quotes, a number's sign,
+// opening a path only when it is a regular file, and dropping the vertices no face uses. A FIFO would block the
+// open, /dev/zero would never end and a directory "opens" on some systems, so the kind of file is checked first
+// and named in the message.
 #pragma once
 #include "roomsense/scan.h"
 
@@ -16,6 +17,10 @@ namespace roomsense::scanio {
 // A word of the file as an error message quotes it: its first 32 bytes in single quotes, control bytes (a NUL, a
 // tab, an escape) as '?', so that the message stays one printable line whatever the file holds.
 std::string quoted(std::string_view word);
+
+// A number word without the '+' that std::from_chars does not take: "+1.5" as "1.5". A word with a second sign
+// after it ("+-1", "++1") keeps its '+', so that from_chars refuses it rather than reading "-1".
+std::string_view without_plus(std::string_view word);
 
 // Opens `path` for binary reading; throws the read error above when it does not exist, is a directory, a
 // FIFO, a device or anything else that is not a regular file, or cannot be opened.

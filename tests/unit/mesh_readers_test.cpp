@@ -120,6 +120,25 @@ TEST(PlyReader, RefusesWhatIsNotPly) {
 
 // --- PLY: what it reads ------------------------------------------------------------------------------------
 
+// A '+' sign is read as OBJ reads it (scan_file.h's without_plus): once, and never before another sign, where it
+// had made "+-1" read as -1.
+TEST(PlyReader, APlusSignIsReadOnceAndNeverBeforeAnotherSign) {
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const Scan scan = ply(header + "+1.5 0 0\n1 +0 0\n0 1 +.5e+1\n+3 0 +1 +2\n");
+  EXPECT_EQ(scan.vertices, (std::vector<glm::vec3>{{1.5f, 0, 0}, {1, 0, 0}, {0, 1, 5}}));
+  EXPECT_EQ(scan.indices, (Indices{0, 1, 2}));
+  EXPECT_EQ(io_error([&] { ply(header + "0 0 0\n1 +-1 0\n0 1 0\n3 0 1 2\n"); }),
+            "cannot read 'test.ply': vertex 1 (line 11): '+-1' is not a number");
+  EXPECT_EQ(io_error([&] { ply(header + "0 0 0\n1 0 0\n0 1 ++2\n3 0 1 2\n"); }),
+            "cannot read 'test.ply': vertex 2 (line 12): '++2' is not a number");
+  EXPECT_EQ(io_error([&] { ply(header + "0 0 0\n1 0 0\n0 1 0\n3 0 +-1 2\n"); }),
+            "cannot read 'test.ply': face 0 (line 13): '+-1' is not an integer");
+  EXPECT_EQ(io_error([&] { ply(header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 +\n"); }),
+            "cannot read 'test.ply': face 0 (line 13): '+' is not an integer");
+}
+
 TEST(PlyReader, AsciiPolygonsOtherPropertiesAndElements) {
   const Scan scan = ply(
       "ply\nformat ascii 1.0\ncomment made by hand\nelement vertex 5\nproperty double x\nproperty uchar red\n"

@@ -14,6 +14,7 @@
 #if ROOMSENSE_BENCH_LAYER_FEED
 #include "../layer/src/chunk_feed.h"
 #endif
+#include "../core/src/pipeline/surface_heights.h"
 
 #include <algorithm>
 #include <array>
@@ -202,7 +203,8 @@ int main(int argc, char** argv) {
   std::fprintf(stderr,
       "Thesis figures (6-core i7-5820K, rooms 1-2 of about 78k vertices): room understanding 55-180 ms,\n"
       "room bounds 18-37 ms. Targets here (2 cores): bounds <= 5 ms and understanding <= 20 ms on a ~78k-vertex room.\n"
-      "Stages: voxelize = voxel stage (V, |V_y|, levels, |V_xz|); features = A-F; areas = search + reduce + classify\n"
+      "Stages: voxelize = voxel stage (V, |V_y|, levels, |V_xz|); heights = the floor's and ceiling's height sums\n"
+      "(one thread); features = A-F; areas = search + reduce + classify\n"
       "(§3.3-3.5); understanding = prepare + voxelize + features + areas (what StartRoomUnderstanding runs);\n"
       "understanding_kept = the same on worker threads kept from one analysis to the next (an analyzer handle's);\n"
       "bounds = I + its mesh; bounds_pipeline = prepare + voxelize + A/B + bounds; analyze_bounds = analyze() without\n"
@@ -214,6 +216,19 @@ int main(int argc, char** argv) {
       CpuVoxelStage stage;
       for (auto _ : state)
         benchmark::DoNotOptimize(stage.run({p->spec, p->grid_vertices, p->input.indices, VoxelMode::Triangles, 15, kDefaultVoxelTestBudget, {}}));
+      counters(state, room);
+    });
+    // The floor's and ceiling's height sums (surface_heights.h), one pass over the triangles on one thread: a
+    // whole analysis runs it beside the features (12 % of a bounds-only run on thesis-room1, bench/README.md).
+    register_case("heights/" + room.name, [&room, p](benchmark::State& state) {
+      if (!p->voxels.levels) {
+        state.SkipWithError("no floor and ceiling levels");
+        return;
+      }
+      const FloorCeiling& fc = *p->voxels.levels;
+      const std::vector<detail::BandLimits> bands = {detail::band_limits(p->spec, fc.floor_peak, fc.floor),
+                                                     detail::band_limits(p->spec, fc.ceiling, fc.ceiling_peak)};
+      for (auto _ : state) benchmark::DoNotOptimize(detail::band_sums(p->input.vertices, p->input.indices, bands, 1));
       counters(state, room);
     });
     register_case("features/" + room.name, [&room, p](benchmark::State& state) {

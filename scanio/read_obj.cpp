@@ -17,12 +17,12 @@
 
 #include <tiny_obj_loader.h>
 
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <deque>
 #include <istream>
 #include <limits>
+#include <optional>
 #include <streambuf>
 #include <string>
 #include <string_view>
@@ -132,15 +132,12 @@ class CheckedVertexLines : public std::streambuf {
         return;
       }
       if (plain_number(token)) continue;
-      const std::string_view unsigned_token = without_plus(token);
-      const char* const end = unsigned_token.data() + unsigned_token.size();
-      float value = 0.0f;
-      const std::from_chars_result read = std::from_chars(unsigned_token.data(), end, value);
-      if (read.ec != std::errc() || read.ptr != end || std::isfinite(value)) {
+      const std::optional<float> value = number_word<float>(token);
+      if (!value || std::isfinite(*value)) {
         fail("vertex coordinate " + quoted(token) + " is not a number");
         return;
       }
-      r.value[axis] = value, r.axes[axis] = true;
+      r.value[axis] = *value, r.axes[axis] = true;
     }
     if (r.axes.x || r.axes.y || r.axes.z) replaced_.push_back(r);
   }

@@ -378,12 +378,9 @@ class PlyReader {
         return {start, std::size_t(p - start)};
       };
       const auto integer = [&](std::string_view t) {
-        const std::string_view digits = without_plus(t);
-        std::int64_t v = 0;
-        const auto [stop, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
-        if (ec != std::errc() || stop != digits.data() + digits.size())
-          fail(where() + ": " + quoted(t) + " is not an integer");
-        return v;
+        const std::optional<std::int64_t> v = number_word<std::int64_t>(t);
+        if (!v) fail(where() + ": " + quoted(t) + " is not an integer");
+        return *v;
       };
       glm::vec3 position(0.0f);
       for (std::size_t k = 0; k < element.properties.size(); ++k) {
@@ -391,12 +388,9 @@ class PlyReader {
         if (!property.list) {
           const std::string_view t = token();
           if (roles[k] == Role::Skip) continue;
-          const std::string_view number = without_plus(t);
-          double v = 0;
-          const auto [stop, ec] = std::from_chars(number.data(), number.data() + number.size(), v);
-          if (ec != std::errc() || stop != number.data() + number.size())
-            fail(where() + ": " + quoted(t) + " is not a number");
-          position[roles[k] == Role::X ? 0 : roles[k] == Role::Y ? 1 : 2] = to_float(v);
+          const std::optional<double> v = number_word<double>(t);
+          if (!v) fail(where() + ": " + quoted(t) + " is not a number");
+          position[roles[k] == Role::X ? 0 : roles[k] == Role::Y ? 1 : 2] = to_float(*v);
           continue;
         }
         const std::int64_t count = integer(token());

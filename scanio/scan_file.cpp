@@ -36,10 +36,6 @@ std::string quoted(std::string_view word) {
   return out;
 }
 
-std::string_view without_plus(std::string_view word) {
-  return word.size() > 1 && word[0] == '+' && word[1] != '+' && word[1] != '-' ? word.substr(1) : word;
-}
-
 std::ifstream open_scan_file(const std::string& path) {
   std::error_code ec;
   const std::filesystem::file_status status = std::filesystem::status(path, ec);  // follows symlinks

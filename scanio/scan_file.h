@@ -5,7 +5,9 @@
 #pragma once
 #include "roomsense/scan.h"
 
+#include <charconv>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -18,9 +20,17 @@ namespace roomsense::scanio {
 // tab, an escape) as '?', so that the message stays one printable line whatever the file holds.
 std::string quoted(std::string_view word);
 
-// A number word without the '+' that std::from_chars does not take: "+1.5" as "1.5". A word with a second sign
-// after it ("+-1", "++1") keeps its '+', so that from_chars refuses it rather than reading "-1".
-std::string_view without_plus(std::string_view word);
+// A whole word of the file as a number of type T (std::from_chars); nothing where the word is no such number, or
+// one out of T's range. from_chars takes no '+': a leading one is read once, and never before another sign, so
+// that "+1.5" is 1.5 and "+-1", "++1" are no numbers (rather than -1).
+template <class T>
+std::optional<T> number_word(std::string_view word) {
+  if (word.size() > 1 && word[0] == '+' && word[1] != '+' && word[1] != '-') word.remove_prefix(1);
+  T value{};
+  const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (ec != std::errc() || end != word.data() + word.size()) return std::nullopt;
+  return value;
+}
 
 // Opens `path` for binary reading; throws the read error above when it does not exist, is a directory, a
 // FIFO, a device or anything else that is not a regular file, or cannot be opened.

@@ -120,7 +120,7 @@ TEST(PlyReader, RefusesWhatIsNotPly) {
 
 // --- PLY: what it reads ------------------------------------------------------------------------------------
 
-// A '+' sign is read as OBJ reads it (scan_file.h's without_plus): once, and never before another sign, where it
+// A '+' sign is read as OBJ reads it (scan_file.h's number_word): once, and never before another sign, where it
 // had made "+-1" read as -1.
 TEST(PlyReader, APlusSignIsReadOnceAndNeverBeforeAnotherSign) {
   const std::string header =

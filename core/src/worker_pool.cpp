@@ -153,4 +153,10 @@ PoolScope::PoolScope(WorkerPool* pool) : previous_(t_current) { t_current = pool
 
 PoolScope::~PoolScope() { t_current = previous_; }
 
+StagePool::StagePool(unsigned threads) {
+  if (WorkerPool::current() != nullptr || resolve_threads(threads) <= 1) return;
+  pool_for(own_, threads);
+  scope_.emplace(own_.get());
+}
+
 }  // namespace roomsense::detail

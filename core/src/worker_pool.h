@@ -11,6 +11,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -64,6 +65,20 @@ class PoolScope {
 
  private:
   WorkerPool* previous_;
+};
+
+// For a public stage called on its own (build_bounds, mesh_volume, ...), outside any analysis: a pool for its
+// loops where this thread has none and several workers are asked for, so that the loops start one thread between
+// them rather than one each (some 75 us apiece); else nothing.
+class StagePool {
+ public:
+  explicit StagePool(unsigned threads);
+  StagePool(const StagePool&) = delete;
+  StagePool& operator=(const StagePool&) = delete;
+
+ private:
+  std::unique_ptr<WorkerPool> own_;
+  std::optional<PoolScope> scope_;  // ends before own_
 };
 
 }  // namespace roomsense::detail

@@ -33,8 +33,9 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeilin
                                         unsigned threads = 0, const std::stop_token& stop = {});
 
 // Ours: fills the empty voxels of every 2x2 block around an edge where two solid voxels touch only along
-// that edge. Their surface would have an edge shared by four faces; after this, every edge has two.
-void fill_edge_contacts(const GridSpec& spec, std::vector<std::uint8_t>& volume);
+// that edge. Their surface would have an edge shared by four faces; after this, every edge has two. The same
+// voxels on any number of threads (0: one per core).
+void fill_edge_contacts(const GridSpec& spec, std::vector<std::uint8_t>& volume, unsigned threads = 1);
 
 // Meshing of a volume (Eq. 3.63/3.64). The thesis merges each slice's faces of one orientation into greedy
 // rectangles (after Lysenko 2012); we merge them further, into whole regions, each a polygon with holes,

@@ -116,9 +116,12 @@ VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads = 0, std
 // time reuses one grid, clearing only the chunk's box.
 void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned threads = 0,
                        std::uint64_t* tests = nullptr);
-std::vector<std::uint32_t> count_levels(const VoxelGrid& grid);
+// |V_y| per level, and per column its voxels between the levels: the same on any number of threads (0: one per
+// core).
+std::vector<std::uint32_t> count_levels(const VoxelGrid& grid, unsigned threads = 1);
 void count_columns(const VoxelGrid& grid, const std::optional<FloorCeiling>& levels,
-                   std::vector<std::uint32_t>& column_counts, std::vector<std::uint8_t>& column_any);
+                   std::vector<std::uint32_t>& column_counts, std::vector<std::uint8_t>& column_any,
+                   unsigned threads = 1);
 // count_columns's count of one column: its voxels in [levels.floor, levels.ceiling].
 std::uint32_t count_column(const VoxelGrid& grid, std::size_t column, const FloorCeiling& levels);
 

@@ -8,6 +8,7 @@
 #include "parallel.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <functional>
@@ -340,16 +341,22 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeilin
   return storey_volume(grid, BoundsStorey{levels, y_end, &room}, room, params, threads, stop);
 }
 
-void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
+void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, unsigned threads) {
   // Only levels that hold a solid voxel (and the one above them) can form a contact. Each column is read only
-  // below the lowest solid level found so far and above the highest.
+  // below the lowest solid level found so far and above the highest; rows of columns side by side.
   const std::size_t ny = std::size_t(s.ny);
+  constexpr std::size_t kRowGrain = 4;
+  std::vector<std::array<int, 2>> y_ranges(detail::parallel_slices(std::size_t(s.nz), threads, kRowGrain), {s.ny, -1});
+  detail::parallel_for(std::size_t(s.nz), threads, kRowGrain, [&](std::size_t z_begin, std::size_t z_end, std::size_t slice) {
+    auto& [lo, hi] = y_ranges[slice];
+    for (std::size_t col = z_begin * std::size_t(s.nx); col < z_end * std::size_t(s.nx); ++col) {
+      const std::uint8_t* v = volume.data() + col * ny;
+      lo = lowest_solid(v, 0, lo);
+      hi = highest_solid(v, hi, s.ny - 1);
+    }
+  });
   int y_lo = s.ny, y_hi = -1;
-  for (std::size_t col = 0; col < s.column_count(); ++col) {
-    const std::uint8_t* v = volume.data() + col * ny;
-    y_lo = lowest_solid(v, 0, y_lo);
-    y_hi = highest_solid(v, y_hi, s.ny - 1);
-  }
+  for (const auto& [lo, hi] : y_ranges) y_lo = std::min(y_lo, lo), y_hi = std::max(y_hi, hi);
   if (y_hi < 0) return;
   const int y_end = std::min(y_hi + 1, s.ny - 1);
   // A 2x2 block around an edge holds cells p, q (one diagonal) and r, t (the other). When one diagonal is
@@ -367,11 +374,34 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
   const auto same = [&](const std::uint8_t* a, const std::uint8_t* b) {
     return std::equal(a + read_from, a + read_from + read_count, b + read_from);
   };
-  // Whether an edge of a block can fill as the block stands (the edges along y, z and x where check_y, check_z
-  // and check_x), eight levels at a time (`fillable` on each byte's lowest bit): a block none of whose edges can
-  // fill fills nothing, as only a fill changes it. A voxel reads as 1 where it is not 0.
-  const auto can_fill = [&](const std::uint8_t* c, const std::uint8_t* cx, const std::uint8_t* cz,
-                            const std::uint8_t* cxz, bool check_y, bool check_z, bool check_x) {
+  // The block of columns (x, z), (x + 1, z), (x, z + 1), (x + 1, z + 1) (c, cx, cz, cxz; null past the grid's
+  // side), and which of its edges can fill: along y, z and x.
+  struct Block {
+    std::size_t col, col_x, col_z, col_xz;
+    std::uint8_t *c, *cx, *cz, *cxz;
+    bool check_y, check_z, check_x;
+  };
+  const auto block_at = [&](int x, int z) {
+    Block b;
+    b.col = s.column(x, z);
+    b.col_x = x + 1 < s.nx ? s.column(x + 1, z) : b.col, b.col_z = z + 1 < s.nz ? s.column(x, z + 1) : b.col;
+    b.col_xz = x + 1 < s.nx && z + 1 < s.nz ? s.column(x + 1, z + 1) : b.col;
+    b.c = volume.data() + b.col * ny;
+    b.cx = x + 1 < s.nx ? volume.data() + b.col_x * ny : nullptr;
+    b.cz = z + 1 < s.nz ? volume.data() + b.col_z * ny : nullptr;
+    b.cxz = b.cx && b.cz ? volume.data() + b.col_xz * ny : nullptr;
+    // A contact needs a solid and an empty voxel side by side in each pair of columns the edge lies between:
+    // where two of them are equal over the levels read, that edge can fill nothing, as long as nothing in this
+    // block is filled (after a fill every check runs).
+    b.check_y = b.cxz && !same(b.c, b.cx) && !same(b.c, b.cz) && !same(b.cxz, b.cx) && !same(b.cxz, b.cz);
+    b.check_z = b.cx && !same(b.c, b.cx), b.check_x = b.cz && !same(b.c, b.cz);
+    return b;
+  };
+  // Whether an edge of a block can fill as the block stands, eight levels at a time (`fillable` on each byte's
+  // lowest bit): a block none of whose edges can fill fills nothing, as only a fill changes it. A voxel reads
+  // as 1 where it is not 0.
+  const auto can_fill = [&](const Block& b) {
+    if (!b.check_y && !b.check_z && !b.check_x) return false;
     constexpr std::uint64_t kOnes = 0x0101010101010101ull, kLow7 = 0x7F7F7F7F7F7F7F7Full;
     const auto solid = [&](const std::uint8_t* v, int y) {
       const std::uint64_t w = eight_levels(v, y);
@@ -379,66 +409,64 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume) {
     };
     int y = y_lo;
     for (; y + 8 <= y_end + 1 && y + 9 <= s.ny; y += 8) {
-      const std::uint64_t C = solid(c, y), C_up = solid(c, y + 1);
+      const std::uint64_t C = solid(b.c, y), C_up = solid(b.c, y + 1);
       std::uint64_t edges = 0;
-      if (check_y) {
-        const std::uint64_t X = solid(cx, y), Z = solid(cz, y), XZ = solid(cxz, y);
+      if (b.check_y) {
+        const std::uint64_t X = solid(b.cx, y), Z = solid(b.cz, y), XZ = solid(b.cxz, y);
         edges |= (C & XZ & ~X & ~Z) | (X & Z & ~C & ~XZ);
       }
-      if (check_z) {
-        const std::uint64_t X = solid(cx, y), X_up = solid(cx, y + 1);
+      if (b.check_z) {
+        const std::uint64_t X = solid(b.cx, y), X_up = solid(b.cx, y + 1);
         edges |= (C & X_up & ~X & ~C_up) | (X & C_up & ~C & ~X_up);
       }
-      if (check_x) {
-        const std::uint64_t Z = solid(cz, y), Z_up = solid(cz, y + 1);
+      if (b.check_x) {
+        const std::uint64_t Z = solid(b.cz, y), Z_up = solid(b.cz, y + 1);
         edges |= (C & Z_up & ~Z & ~C_up) | (Z & C_up & ~C & ~Z_up);
       }
       if (edges & kOnes) return true;
     }
     for (; y <= y_end; ++y) {
-      if (check_y && fillable(c[y], cxz[y], cx[y], cz[y])) return true;
-      if (y + 1 < s.ny && ((check_z && fillable(c[y], cx[y + 1], cx[y], c[y + 1])) ||
-                           (check_x && fillable(c[y], cz[y + 1], cz[y], c[y + 1]))))
+      if (b.check_y && fillable(b.c[y], b.cxz[y], b.cx[y], b.cz[y])) return true;
+      if (y + 1 < s.ny && ((b.check_z && fillable(b.c[y], b.cx[y + 1], b.cx[y], b.c[y + 1])) ||
+                           (b.check_x && fillable(b.c[y], b.cz[y + 1], b.cz[y], b.c[y + 1]))))
         return true;
     }
     return false;
   };
+  // The blocks that can fill in the volume as given, found side by side: the first pass, in order, visits only
+  // those and the blocks with a column it filled earlier. Any other block still holds what it held when it was
+  // found unable to fill, so skipping it changes nothing.
+  std::vector<std::uint8_t> may_fill(s.column_count(), 0);
+  detail::parallel_for(std::size_t(s.nz), threads, kRowGrain, [&](std::size_t z_begin, std::size_t z_end, std::size_t) {
+    for (int z = int(z_begin); z < int(z_end); ++z)
+      for (int x = 0; x < s.nx; ++x) may_fill[s.column(x, z)] = can_fill(block_at(x, z)) ? 1 : 0;
+  });
   // Which columns a pass filled in: a later pass visits only the blocks with such a column (earlier in this
-  // pass or anywhere in the last). Any other block holds what it held when the last pass checked it and found
-  // nothing to fill, so skipping it changes nothing: the passes fill exactly what full passes would.
-  std::vector<std::uint8_t> filled_last(s.column_count(), 1), filled_now(s.column_count(), 0);
-  for (bool changed = true; changed;) {
+  // pass or anywhere in the last), by the same reasoning: the passes fill exactly what full passes would.
+  std::vector<std::uint8_t> filled_last = std::move(may_fill), filled_now(s.column_count(), 0);
+  for (bool changed = true, first_pass = true; changed; first_pass = false) {
     changed = false;
     for (int z = 0; z < s.nz; ++z)
       for (int x = 0; x < s.nx; ++x) {
         const std::size_t col = s.column(x, z);
-        const std::size_t col_x = x + 1 < s.nx ? s.column(x + 1, z) : col, col_z = z + 1 < s.nz ? s.column(x, z + 1) : col,
-                          col_xz = x + 1 < s.nx && z + 1 < s.nz ? s.column(x + 1, z + 1) : col;
-        if (!(filled_last[col] | filled_last[col_x] | filled_last[col_z] | filled_last[col_xz] | filled_now[col] |
-              filled_now[col_x] | filled_now[col_z] | filled_now[col_xz]))
-          continue;
-        std::uint8_t* c = volume.data() + col * ny;
-        std::uint8_t* cx = x + 1 < s.nx ? volume.data() + col_x * ny : nullptr;
-        std::uint8_t* cz = z + 1 < s.nz ? volume.data() + col_z * ny : nullptr;
-        std::uint8_t* cxz = cx && cz ? volume.data() + col_xz * ny : nullptr;
-        // A contact needs a solid and an empty voxel side by side in each pair of columns the edge lies
-        // between: where two of them are equal over the levels read, that edge can fill nothing, as long as
-        // nothing in this block is filled (after a fill every check runs).
-        bool check_y = cxz && !same(c, cx) && !same(c, cz) && !same(cxz, cx) && !same(cxz, cz);
-        bool check_z = cx && !same(c, cx), check_x = cz && !same(c, cz);
-        if (!check_y && !check_z && !check_x) continue;
-        if (!can_fill(c, cx, cz, cxz, check_y, check_z, check_x)) continue;
+        const std::size_t col_x = x + 1 < s.nx ? col + 1 : col, col_z = z + 1 < s.nz ? col + std::size_t(s.nx) : col,
+                          col_xz = x + 1 < s.nx && z + 1 < s.nz ? col + std::size_t(s.nx) + 1 : col;
+        const bool last = first_pass ? filled_last[col] != 0
+                                     : (filled_last[col] | filled_last[col_x] | filled_last[col_z] | filled_last[col_xz]) != 0;
+        if (!last && !(filled_now[col] | filled_now[col_x] | filled_now[col_z] | filled_now[col_xz])) continue;
+        Block b = block_at(x, z);
+        if (!can_fill(b)) continue;
         bool filled = false;
         const auto fill = [&](std::uint8_t& p, std::uint8_t& q, std::uint8_t& r, std::uint8_t& t) {
           if (!settle(p, q, r, t)) return;
           filled = true;
-          check_y = cxz != nullptr, check_z = cx != nullptr, check_x = cz != nullptr;
+          b.check_y = b.cxz != nullptr, b.check_z = b.cx != nullptr, b.check_x = b.cz != nullptr;
         };
         for (int y = y_lo; y <= y_end; ++y) {
-          if (check_y) fill(c[y], cxz[y], cx[y], cz[y]);  // edge along y
+          if (b.check_y) fill(b.c[y], b.cxz[y], b.cx[y], b.cz[y]);  // edge along y
           if (y + 1 < s.ny) {
-            if (check_z) fill(c[y], cx[y + 1], cx[y], c[y + 1]);  // edge along z
-            if (check_x) fill(c[y], cz[y + 1], cz[y], c[y + 1]);  // edge along x
+            if (b.check_z) fill(b.c[y], b.cx[y + 1], b.cx[y], b.c[y + 1]);  // edge along z
+            if (b.check_x) fill(b.c[y], b.cz[y + 1], b.cz[y], b.c[y + 1]);  // edge along x
           }
         }
         if (filled) {
@@ -521,6 +549,7 @@ std::vector<std::uint8_t> detail::room_bounds_volume(const VoxelGrid& grid, cons
 BoundsMesh build_room_bounds(const VoxelGrid& grid, const BoundsStorey& storey,
                              const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
                              unsigned threads, std::stop_token stop) {
+  const detail::StagePool pool(threads);
   return detail::build_room_bounds(grid, storey, room_columns, params, threads, std::move(stop), nullptr);
 }
 
@@ -583,7 +612,7 @@ BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& 
                                                                 memo ? &memo->room_volume : nullptr,
                                                                 changed ? &*changed : nullptr);
   in.cells = std::move(part.cells);
-  fill_edge_contacts(crop, volume);
+  fill_edge_contacts(crop, volume, threads);
   BoundsMesh mesh = detail::mesh_volume(crop, volume, threads, std::move(stop), memo);
   if (memo) memo->room = std::move(in), memo->room_mesh = mesh;
   return mesh;
@@ -591,13 +620,14 @@ BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& 
 
 BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys, const BoundsParams& params,
                         unsigned threads, std::stop_token stop) {
+  const detail::StagePool pool(threads);
   return detail::build_bounds(grid, storeys, params, threads, std::move(stop), nullptr);
 }
 
 BoundsMesh detail::build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,
                                 const BoundsParams& params, unsigned threads, std::stop_token stop, MeshMemo* memo) {
   std::vector<std::uint8_t> volume = detail::bounds_volume(grid, storeys, params, threads, stop, memo);
-  fill_edge_contacts(grid.spec, volume);
+  fill_edge_contacts(grid.spec, volume, threads);
   return detail::mesh_volume(grid.spec, volume, threads, std::move(stop), memo);
 }
 

@@ -247,6 +247,11 @@ bool detail::voxel_sse41_copy() {
 
 std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const GridSpec& spec, unsigned threads) {
   std::vector<glm::vec3> out(world.size());
+  detail::to_grid_units_into(world, spec, threads, out.data());
+  return out;
+}
+
+void detail::to_grid_units_into(std::span<const glm::vec3> world, const GridSpec& spec, unsigned threads, glm::vec3* out) {
   const auto one = [&](std::size_t i) { out[i] = (world[i] - spec.origin) / spec.voxel_size; };
   // Whole fours of vertices at a time (vertex_lanes.h), the same subtraction and division per float; the slices'
   // other vertices one at a time.
@@ -257,10 +262,9 @@ std::vector<glm::vec3> to_grid_units(std::span<const glm::vec3> world, const Gri
     for (std::size_t i = begin; i < first; ++i) one(i);
     for (std::size_t i = first; i < last; i += 4)
       for (int k = 0; k < 3; ++k)
-        detail::store_lanes(out.data() + i, k, (detail::load_lanes(world.data() + i, k) - origin[k]) / spec.voxel_size);
+        detail::store_lanes(out + i, k, (detail::load_lanes(world.data() + i, k) - origin[k]) / spec.voxel_size);
     for (std::size_t i = last; i < end; ++i) one(i);
   });
-  return out;
 }
 
 
@@ -419,13 +423,23 @@ void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, 
   if (tests_done != nullptr) *tests_done = counter.total();
 }
 
-std::vector<std::uint32_t> count_levels(const VoxelGrid& grid) {
+// Columns side by side, each slice's counts summed after (integers: in any order).
+constexpr std::size_t kColumnGrain = 2048;
+
+std::vector<std::uint32_t> count_levels(const VoxelGrid& grid, unsigned threads) {
   const GridSpec& s = grid.spec;
+  std::vector<std::vector<std::uint32_t>> parts(detail::parallel_slices(s.column_count(), threads, kColumnGrain));
+  detail::parallel_for(s.column_count(), threads, kColumnGrain, [&](std::size_t begin, std::size_t end, std::size_t slice) {
+    std::vector<std::uint32_t> counts(std::size_t(s.ny), 0);
+    for (std::size_t col = begin; col < end; ++col) {
+      const std::uint8_t* cells = grid.cells.data() + col * std::size_t(s.ny);
+      for (int y = 0; y < s.ny; ++y) counts[std::size_t(y)] += cells[y];
+    }
+    parts[slice] = std::move(counts);
+  });
   std::vector<std::uint32_t> counts(std::size_t(s.ny), 0);
-  for (std::size_t col = 0; col < s.column_count(); ++col) {
-    const std::uint8_t* cells = grid.cells.data() + col * std::size_t(s.ny);
-    for (int y = 0; y < s.ny; ++y) counts[std::size_t(y)] += cells[y];
-  }
+  for (const std::vector<std::uint32_t>& part : parts)
+    for (std::size_t y = 0; y < part.size(); ++y) counts[y] += part[y];
   return counts;
 }
 
@@ -455,15 +469,17 @@ std::optional<FloorCeiling> select_floor_ceiling(std::span<const std::uint32_t> 
 }
 
 void count_columns(const VoxelGrid& grid, const std::optional<FloorCeiling>& levels,
-                   std::vector<std::uint32_t>& column_counts, std::vector<std::uint8_t>& column_any) {
+                   std::vector<std::uint32_t>& column_counts, std::vector<std::uint8_t>& column_any, unsigned threads) {
   const GridSpec& s = grid.spec;
   column_counts.assign(s.column_count(), 0);
   column_any.assign(s.column_count(), 0);
   if (!levels) return;
-  for (std::size_t col = 0; col < s.column_count(); ++col) {
-    column_counts[col] = count_column(grid, col, *levels);
-    column_any[col] = column_counts[col] > 0 ? 1 : 0;
-  }
+  detail::parallel_for(s.column_count(), threads, kColumnGrain, [&](std::size_t begin, std::size_t end, std::size_t) {
+    for (std::size_t col = begin; col < end; ++col) {
+      column_counts[col] = count_column(grid, col, *levels);
+      column_any[col] = column_counts[col] > 0 ? 1 : 0;
+    }
+  });
 }
 
 std::uint32_t count_column(const VoxelGrid& grid, std::size_t column, const FloorCeiling& levels) {
@@ -475,10 +491,11 @@ std::uint32_t count_column(const VoxelGrid& grid, std::size_t column, const Floo
 
 VoxelStageResult CpuVoxelStage::run(const VoxelizeRequest& request) {
   VoxelStageResult r;
+  const detail::StagePool pool(threads_);
   r.grid = voxelize_cpu(request, threads_, &r.voxel_tests);
-  r.level_counts = count_levels(r.grid);
+  r.level_counts = count_levels(r.grid, threads_);
   r.levels = select_floor_ceiling(r.level_counts, request.min_separation_levels);
-  count_columns(r.grid, r.levels, r.column_counts, r.column_any);
+  count_columns(r.grid, r.levels, r.column_counts, r.column_any, threads_);
   return r;
 }
 

@@ -5,6 +5,7 @@
 #include "roomsense/number_text.h"
 #include "../parallel.h"
 #include "../grid/changed_columns.h"
+#include "../grid/voxelize_cpu.h"
 #include "../input/input_view.h"
 #include "analysis_caches.h"
 #include "storeys.h"
@@ -182,7 +183,10 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   // nothing: the whole scan's vertices are not mapped for each change.
   const bool stage_maps_chunks = chunks != nullptr && &stage == caches->chunk_stage && r.mode == VoxelMode::Triangles &&
                                  in.vertices.data() == scan.vertices.data() && in.indices.data() == scan.indices.data();
-  const std::vector<glm::vec3> grid_vertices = stage_maps_chunks ? std::vector<glm::vec3>() : to_grid_units(in.vertices, spec, options.threads);
+  const std::size_t mapped = stage_maps_chunks ? 0 : in.vertices.size();
+  const std::unique_ptr<glm::vec3[]> grid_vertex_data = std::make_unique_for_overwrite<glm::vec3[]>(mapped);
+  detail::to_grid_units_into(in.vertices.first(mapped), spec, options.threads, grid_vertex_data.get());
+  const std::span<const glm::vec3> grid_vertices(grid_vertex_data.get(), mapped);
   const int min_separation = voxels_for(options.features.min_floor_ceiling, spec.voxel_size);
   r.timings.prepare = clock.lap();
 
@@ -216,7 +220,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   std::vector<std::uint32_t> horizontal =
       !changed.empty() && caches->horizontal_serial + 1 == serial
           ? detail::horizontal_counts(r.voxels.grid, previous->voxels.grid, std::move(caches->horizontal), changed)
-          : detail::horizontal_counts(r.voxels.grid);
+          : detail::horizontal_counts(r.voxels.grid, options.threads);
   detail::StoreyLevels storeys = detail::find_storeys(r.voxels.level_counts, horizontal, *r.voxels.levels, min_separation);
   if (caches) caches->horizontal = std::move(horizontal), caches->horizontal_serial = serial;
   // Beyond the thesis (issue 15): a storey under a pitched roof reaches up to its ridge (raised_ceiling), below
@@ -234,7 +238,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
         if (other->floor_peak > fc->ceiling_peak) upper = std::min(upper, other->floor_peak);
       // The voxel stage counted the columns on its own levels: the main storey's, but where storeys moved them.
       const bool counted = *fc == *r.voxels.levels;
-      if (!counted) count_columns(r.voxels.grid, *fc, counts, any);
+      if (!counted) count_columns(r.voxels.grid, *fc, counts, any, options.threads);
       const auto up = raised_ceiling(r.voxels.grid, *fc, detect_room(spec, counted ? r.voxels.column_any : any), upper);
       if (up) *fc = *up;
       raised.push_back(up.has_value());
@@ -242,7 +246,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   }
   if (storeys.main != *r.voxels.levels) {
     r.voxels.levels = storeys.main;
-    count_columns(r.voxels.grid, r.voxels.levels, r.voxels.column_counts, r.voxels.column_any);
+    count_columns(r.voxels.grid, r.voxels.levels, r.voxels.column_counts, r.voxels.column_any, options.threads);
   }
   const FloorCeiling& levels = *r.voxels.levels;
   // Each storey's floor and ceiling heights: the sums over the triangles in their bands, in one pass over the

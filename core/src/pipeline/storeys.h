@@ -9,8 +9,8 @@
 namespace roomsense::detail {
 
 // Per level, the voxels with an empty voxel right above or right below: horizontal surfaces. A wall's voxels
-// stack up in their column, so they count only where the wall ends.
-std::vector<std::uint32_t> horizontal_counts(const VoxelGrid& grid);
+// stack up in their column, so they count only where the wall ends. The same on any number of threads.
+std::vector<std::uint32_t> horizontal_counts(const VoxelGrid& grid, unsigned threads = 1);
 // The same from `previous`'s counts `before`, counted again in the columns `changed` marks (where `grid` and
 // `previous`, of one spec, differ).
 std::vector<std::uint32_t> horizontal_counts(const VoxelGrid& grid, const VoxelGrid& previous,

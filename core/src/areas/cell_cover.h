@@ -18,9 +18,11 @@ struct ZSpan {
 inline ZSpan covered_cells(std::span<const glm::dvec2> polygon, int x) {
   const double a = x - 0.5, b = x + 0.5;  // the column's strip
   double zmin = INFINITY, zmax = -INFINITY;
+  // Comparisons rather than std::fmin and std::fmax, which GCC leaves as calls into libm (a fifth of a ring's
+  // time): no z here is NaN, and a zero's sign does not move the cells below.
   const auto take = [&](double z) {
-    zmin = std::fmin(zmin, z);
-    zmax = std::fmax(zmax, z);
+    zmin = z < zmin ? z : zmin;
+    zmax = z > zmax ? z : zmax;
   };
   const std::size_t n = polygon.size();
   for (std::size_t i = 0; i < n; ++i) {

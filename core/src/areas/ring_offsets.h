@@ -58,12 +58,17 @@ inline std::vector<RingOffset> ring_offsets(const SizeRange& size, Shape shape) 
       for (const glm::dvec2& corner : polygon)
         o.box_lo = glm::min(o.box_lo, glm::ivec2(corner)), o.box_hi = glm::max(o.box_hi, glm::ivec2(corner));
       if (shape == Shape::Square) {
+        // The first largest box, as trying every pair of runs i <= j finds it; pairs that cannot beat the best so
+        // far are not tried: the runs from i on are at most n - i wide, and no taller than run i (or than
+        // the part of it that runs i..j share).
+        const std::size_t n = o.runs.size();
         long best = 0;
-        for (std::size_t i = 0; i < o.runs.size(); ++i) {
+        for (std::size_t i = 0; i < n; ++i) {
           int lo = o.runs[i].dz_lo, hi = o.runs[i].dz_hi;  // the z both ends of runs i..j cover
-          for (std::size_t j = i; j < o.runs.size(); ++j) {
+          if (long(n - i) * long(hi - lo + 1) <= best) continue;
+          for (std::size_t j = i; j < n; ++j) {
             lo = std::max(lo, o.runs[j].dz_lo), hi = std::min(hi, o.runs[j].dz_hi);
-            if (lo > hi) break;
+            if (lo > hi || long(n - i) * long(hi - lo + 1) <= best) break;
             const long area = long(j - i + 1) * long(hi - lo + 1);
             if (area > best) best = area, o.core_lo = {o.runs[i].dx, lo}, o.core_hi = {o.runs[j].dx, hi};
           }

@@ -290,6 +290,7 @@ class SliceMesher {
         mask_(width_ * (std::size_t(nb) + 2), 0),
         label_(mask_.size(), -1),
         visited_(mask_.size(), 0),
+        sides_(mask_.size(), 0),
         point_(mask_.size(), kNoPoint),
         neighbour_{-std::ptrdiff_t(width_), 1, std::ptrdiff_t(width_), -1} {}
   // One non-zero cell (a, b) of the slice, in any order. Labelling and tracing visit only these, not the
@@ -311,10 +312,9 @@ class SliceMesher {
     label_regions();
     loops_.clear();
     for (const std::size_t c : filled_) {
-      const signed char m = mask_[c];
+      if (sides_[c] == 0) continue;  // inside its region: most of a floor's or a ceiling's cells
       for (int side = 0; side < 4; ++side)
-        if (mask_[c + neighbour_[side]] != m && !(visited_[c] & (1 << side)))
-          trace(int(c % width_) - 1, int(c / width_) - 1, side, corners, to_point, out);
+        if (sides_[c] & ~visited_[c] & (1 << side)) trace(int(c % width_) - 1, int(c / width_) - 1, side, corners, to_point, out);
     }
     // Each region: its outer loop (positive area) and its holes.
     std::sort(loops_.begin(), loops_.end(), [](const Traced& x, const Traced& y) {
@@ -333,7 +333,7 @@ class SliceMesher {
       i = j;
     }
     // Outside the set cells mask, labels and visits stay at their cleared values between slices.
-    for (const std::size_t c : filled_) mask_[c] = 0, label_[c] = -1, visited_[c] = 0;
+    for (const std::size_t c : filled_) mask_[c] = 0, label_[c] = -1, visited_[c] = 0, sides_[c] = 0;
     filled_.clear();
   }
 
@@ -355,6 +355,8 @@ class SliceMesher {
   std::size_t cell(int a, int b) const { return std::size_t(b + 1) * width_ + std::size_t(a + 1); }
   signed char value(int a, int b) const { return mask_[cell(a, b)]; }
 
+  // Numbers the 4-connected regions of one value, and notes each cell's sides on its region's border (sides_),
+  // which the tracing then starts from: the neighbours are read once, here.
   void label_regions() {
     int next = 0;
     for (const std::size_t seed : filled_) {
@@ -364,9 +366,11 @@ class SliceMesher {
       while (!stack_.empty()) {
         const std::size_t c = stack_.back();
         stack_.pop_back();
-        for (const std::ptrdiff_t n : neighbour_) {
-          const std::size_t nc = c + n;  // a border cell is empty: never the seed's value
-          if (label_[nc] < 0 && mask_[nc] == mask_[seed]) {
+        for (int side = 0; side < 4; ++side) {
+          const std::size_t nc = c + neighbour_[side];  // a border cell is empty: never the seed's value
+          if (mask_[nc] != mask_[seed]) {
+            sides_[c] |= std::uint8_t(1 << side);
+          } else if (label_[nc] < 0) {
             label_[nc] = next;
             stack_.push_back(nc);
           }
@@ -420,6 +424,7 @@ class SliceMesher {
   std::vector<std::size_t> filled_;
   std::vector<int> label_;
   std::vector<std::uint8_t> visited_;
+  std::vector<std::uint8_t> sides_;  // per cell, bit `side` where the neighbour that way holds another value
   std::vector<std::uint32_t> point_;
   std::size_t first_point_ = 0;
   std::vector<std::size_t> stack_;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
@@ -78,6 +79,28 @@ void parallel_for(std::size_t n, unsigned threads, std::size_t min_grain, Body&&
   };
   run_workers(std::min<std::size_t>(resolve_threads(threads), slices), run);
   if (failure) std::rethrow_exception(failure);
+}
+
+// Slices of a grid's light per-column passes: columns (a count or a test per level), or rows of columns.
+inline constexpr std::size_t kColumnGrain = 2048;
+inline constexpr std::size_t kRowGrain = 4;
+
+// Counts per level over [0, n) on the threads: count(begin, end, counts) adds those of [begin, end) into `counts`
+// (`levels` zeros to start), each slice into its own; the slices' counts summed after (integers: the same in any
+// order and on any number of threads).
+template <class Count>
+std::vector<std::uint32_t> counts_by_slices(std::size_t n, unsigned threads, std::size_t min_grain, std::size_t levels,
+                                            Count&& count) {
+  std::vector<std::vector<std::uint32_t>> parts(parallel_slices(n, threads, min_grain));
+  parallel_for(n, threads, min_grain, [&](std::size_t begin, std::size_t end, std::size_t slice) {
+    std::vector<std::uint32_t> part(levels, 0);
+    count(begin, end, part);
+    parts[slice] = std::move(part);
+  });
+  std::vector<std::uint32_t> counts(levels, 0);
+  for (const std::vector<std::uint32_t>& part : parts)
+    for (std::size_t y = 0; y < part.size(); ++y) counts[y] += part[y];
+  return counts;
 }
 
 // Runs task(i) for every i in [0, n) on up to `threads` workers, each taking the next task when it is free:

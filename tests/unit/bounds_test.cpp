@@ -283,8 +283,8 @@ TEST(MeshVolume, EdgeContactsFillWhatWholePassesFill) {
         for (int y = 0; y < s.ny; ++y)
           volume[s.index(x, y, z)] = x > 0 && copy(rng) ? volume[s.index(x - 1, y, z)] : solid(rng) ? one : 0;
     const std::vector<std::uint8_t> expected = edge_contacts_by_full_passes(s, volume);
-    // On two threads the blocks that may fill are found side by side (rows of 4 columns: these grids' 9 rows are
-    // two slices), then filled in order.
+    // On two threads the blocks that may fill are found side by side (slices of at least 4 rows of columns: these
+    // grids' 9 rows are two), then filled in order.
     std::vector<std::uint8_t> on_two = volume;
     fill_edge_contacts(s, volume);
     ASSERT_EQ(volume, expected) << "trial " << trial;

@@ -34,7 +34,7 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeilin
 
 // Ours: fills the empty voxels of every 2x2 block around an edge where two solid voxels touch only along
 // that edge. Their surface would have an edge shared by four faces; after this, every edge has two. The same
-// voxels on any number of threads (0: one per core).
+// voxels on any number of threads (0: one per core; by default one, as before the parameter existed).
 void fill_edge_contacts(const GridSpec& spec, std::vector<std::uint8_t>& volume, unsigned threads = 1);
 
 // Meshing of a volume (Eq. 3.63/3.64). The thesis merges each slice's faces of one orientation into greedy

@@ -117,7 +117,7 @@ VoxelGrid voxelize_cpu(const VoxelizeRequest& request, unsigned threads = 0, std
 void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned threads = 0,
                        std::uint64_t* tests = nullptr);
 // |V_y| per level, and per column its voxels between the levels: the same on any number of threads (0: one per
-// core).
+// core; by default one, as before the parameter existed).
 std::vector<std::uint32_t> count_levels(const VoxelGrid& grid, unsigned threads = 1);
 void count_columns(const VoxelGrid& grid, const std::optional<FloorCeiling>& levels,
                    std::vector<std::uint32_t>& column_counts, std::vector<std::uint8_t>& column_any,

@@ -338,14 +338,16 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
 std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
                                         const std::vector<std::uint8_t>& room, const BoundsParams& params,
                                         unsigned threads, const std::stop_token& stop) {
+  const detail::StagePool pool(threads);
   return storey_volume(grid, BoundsStorey{levels, y_end, &room}, room, params, threads, stop);
 }
 
 void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, unsigned threads) {
   // Only levels that hold a solid voxel (and the one above them) can form a contact. Each column is read only
   // below the lowest solid level found so far and above the highest; rows of columns side by side.
+  const detail::StagePool pool(threads);
   const std::size_t ny = std::size_t(s.ny);
-  constexpr std::size_t kRowGrain = 4;
+  using detail::kRowGrain;
   std::vector<std::array<int, 2>> y_ranges(detail::parallel_slices(std::size_t(s.nz), threads, kRowGrain), {s.ny, -1});
   detail::parallel_for(std::size_t(s.nz), threads, kRowGrain, [&](std::size_t z_begin, std::size_t z_end, std::size_t slice) {
     auto& [lo, hi] = y_ranges[slice];
@@ -381,11 +383,16 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, un
     std::uint8_t *c, *cx, *cz, *cxz;
     bool check_y, check_z, check_x;
   };
+  // The block's four columns (col for those past the grid's side).
+  const auto columns_at = [&](int x, int z) {
+    const std::size_t col = s.column(x, z);
+    return std::array<std::size_t, 4>{col, x + 1 < s.nx ? s.column(x + 1, z) : col, z + 1 < s.nz ? s.column(x, z + 1) : col,
+                                      x + 1 < s.nx && z + 1 < s.nz ? s.column(x + 1, z + 1) : col};
+  };
   const auto block_at = [&](int x, int z) {
     Block b;
-    b.col = s.column(x, z);
-    b.col_x = x + 1 < s.nx ? s.column(x + 1, z) : b.col, b.col_z = z + 1 < s.nz ? s.column(x, z + 1) : b.col;
-    b.col_xz = x + 1 < s.nx && z + 1 < s.nz ? s.column(x + 1, z + 1) : b.col;
+    const std::array<std::size_t, 4> cols = columns_at(x, z);
+    b.col = cols[0], b.col_x = cols[1], b.col_z = cols[2], b.col_xz = cols[3];
     b.c = volume.data() + b.col * ny;
     b.cx = x + 1 < s.nx ? volume.data() + b.col_x * ny : nullptr;
     b.cz = z + 1 < s.nz ? volume.data() + b.col_z * ny : nullptr;
@@ -448,9 +455,7 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, un
     changed = false;
     for (int z = 0; z < s.nz; ++z)
       for (int x = 0; x < s.nx; ++x) {
-        const std::size_t col = s.column(x, z);
-        const std::size_t col_x = x + 1 < s.nx ? col + 1 : col, col_z = z + 1 < s.nz ? col + std::size_t(s.nx) : col,
-                          col_xz = x + 1 < s.nx && z + 1 < s.nz ? col + std::size_t(s.nx) + 1 : col;
+        const auto [col, col_x, col_z, col_xz] = columns_at(x, z);
         const bool last = first_pass ? filled_last[col] != 0
                                      : (filled_last[col] | filled_last[col_x] | filled_last[col_z] | filled_last[col_xz]) != 0;
         if (!last && !(filled_now[col] | filled_now[col_x] | filled_now[col_z] | filled_now[col_xz])) continue;
@@ -488,6 +493,7 @@ BoundsMesh build_bounds(const VoxelGrid& grid, const FloorCeiling& levels, int y
 
 std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,
                                         const BoundsParams& params, unsigned threads, const std::stop_token& stop) {
+  const detail::StagePool pool(threads);
   return detail::bounds_volume(grid, storeys, params, threads, stop, nullptr);
 }
 
@@ -527,6 +533,7 @@ std::vector<std::uint8_t> detail::bounds_volume(const VoxelGrid& grid, std::span
 std::vector<std::uint8_t> room_bounds_volume(const VoxelGrid& grid, const BoundsStorey& storey,
                                              const std::vector<std::uint8_t>& room_columns, const BoundsParams& params,
                                              unsigned threads, const std::stop_token& stop) {
+  const detail::StagePool pool(threads);
   return detail::room_bounds_volume(grid, storey, room_columns, params, threads, stop, nullptr, nullptr);
 }
 

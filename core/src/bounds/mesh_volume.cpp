@@ -46,9 +46,8 @@ struct Box {
 // Rows of columns side by side, each slice's box joined after: minima and maxima, in any order.
 Box solid_box(const GridSpec& s, const std::vector<std::uint8_t>& volume, unsigned threads) {
   const Box kEmpty{{s.nx, s.ny, s.nz}, {-1, -1, -1}};
-  constexpr std::size_t kRowGrain = 4;
-  std::vector<Box> parts(detail::parallel_slices(std::size_t(s.nz), threads, kRowGrain), kEmpty);
-  detail::parallel_for(std::size_t(s.nz), threads, kRowGrain, [&](std::size_t z_begin, std::size_t z_end, std::size_t slice) {
+  std::vector<Box> parts(detail::parallel_slices(std::size_t(s.nz), threads, detail::kRowGrain), kEmpty);
+  detail::parallel_for(std::size_t(s.nz), threads, detail::kRowGrain, [&](std::size_t z_begin, std::size_t z_end, std::size_t slice) {
     Box& box = parts[slice];
     for (int z = int(z_begin); z < int(z_end); ++z)
       for (int x = 0; x < s.nx; ++x) {

@@ -423,24 +423,15 @@ void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, 
   if (tests_done != nullptr) *tests_done = counter.total();
 }
 
-// Columns side by side, each slice's counts summed after (integers: in any order).
-constexpr std::size_t kColumnGrain = 2048;
-
 std::vector<std::uint32_t> count_levels(const VoxelGrid& grid, unsigned threads) {
   const GridSpec& s = grid.spec;
-  std::vector<std::vector<std::uint32_t>> parts(detail::parallel_slices(s.column_count(), threads, kColumnGrain));
-  detail::parallel_for(s.column_count(), threads, kColumnGrain, [&](std::size_t begin, std::size_t end, std::size_t slice) {
-    std::vector<std::uint32_t> counts(std::size_t(s.ny), 0);
+  return detail::counts_by_slices(s.column_count(), threads, detail::kColumnGrain, std::size_t(s.ny),
+                                  [&](std::size_t begin, std::size_t end, std::vector<std::uint32_t>& counts) {
     for (std::size_t col = begin; col < end; ++col) {
       const std::uint8_t* cells = grid.cells.data() + col * std::size_t(s.ny);
       for (int y = 0; y < s.ny; ++y) counts[std::size_t(y)] += cells[y];
     }
-    parts[slice] = std::move(counts);
   });
-  std::vector<std::uint32_t> counts(std::size_t(s.ny), 0);
-  for (const std::vector<std::uint32_t>& part : parts)
-    for (std::size_t y = 0; y < part.size(); ++y) counts[y] += part[y];
-  return counts;
 }
 
 std::optional<FloorCeiling> select_floor_ceiling(std::span<const std::uint32_t> counts, int min_separation) {
@@ -474,7 +465,7 @@ void count_columns(const VoxelGrid& grid, const std::optional<FloorCeiling>& lev
   column_counts.assign(s.column_count(), 0);
   column_any.assign(s.column_count(), 0);
   if (!levels) return;
-  detail::parallel_for(s.column_count(), threads, kColumnGrain, [&](std::size_t begin, std::size_t end, std::size_t) {
+  detail::parallel_for(s.column_count(), threads, detail::kColumnGrain, [&](std::size_t begin, std::size_t end, std::size_t) {
     for (std::size_t col = begin; col < end; ++col) {
       column_counts[col] = count_column(grid, col, *levels);
       column_any[col] = column_counts[col] > 0 ? 1 : 0;

@@ -59,11 +59,8 @@ std::vector<std::uint32_t> horizontal_counts(const VoxelGrid& grid, unsigned thr
     for (std::size_t col = 0; col < grid.spec.column_count(); ++col) count_horizontal(grid, col, 1, out);
     return out;
   }
-  constexpr std::size_t kColumnGrain = 2048;
-  const std::size_t columns = grid.spec.column_count();
-  std::vector<std::vector<std::uint32_t>> parts(parallel_slices(columns, threads, kColumnGrain));
-  parallel_for(columns, threads, kColumnGrain, [&](std::size_t begin, std::size_t end, std::size_t slice) {
-    std::vector<std::uint32_t> part(ny, 0);
+  return counts_by_slices(grid.spec.column_count(), threads, kColumnGrain, ny,
+                          [&](std::size_t begin, std::size_t end, std::vector<std::uint32_t>& part) {
     std::uint32_t* const counts = part.data();
     for (std::size_t col = begin; col < end; ++col) {
       const std::uint8_t* v = grid.cells.data() + col * ny;
@@ -72,11 +69,7 @@ std::vector<std::uint32_t> horizontal_counts(const VoxelGrid& grid, unsigned thr
       for (std::size_t y = 1; y + 1 < ny; ++y)
         counts[y] += std::uint32_t(v[y] != 0) & ~(std::uint32_t(v[y - 1] != 0) & std::uint32_t(v[y + 1] != 0));
     }
-    parts[slice] = std::move(part);
   });
-  for (const std::vector<std::uint32_t>& part : parts)
-    for (std::size_t y = 0; y < ny; ++y) out[y] += part[y];
-  return out;
 }
 
 std::vector<std::uint32_t> horizontal_counts(const VoxelGrid& grid, const VoxelGrid& previous,

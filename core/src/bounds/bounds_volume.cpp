@@ -343,22 +343,12 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeilin
 }
 
 void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, unsigned threads) {
-  // Only levels that hold a solid voxel (and the one above them) can form a contact. Each column is read only
-  // below the lowest solid level found so far and above the highest; rows of columns side by side.
+  // Only levels that hold a solid voxel (and the one above them) can form a contact: the solid box's.
   const detail::StagePool pool(threads);
   const std::size_t ny = std::size_t(s.ny);
   using detail::kRowGrain;
-  std::vector<std::array<int, 2>> y_ranges(detail::parallel_slices(std::size_t(s.nz), threads, kRowGrain), {s.ny, -1});
-  detail::parallel_for(std::size_t(s.nz), threads, kRowGrain, [&](std::size_t z_begin, std::size_t z_end, std::size_t slice) {
-    auto& [lo, hi] = y_ranges[slice];
-    for (std::size_t col = z_begin * std::size_t(s.nx); col < z_end * std::size_t(s.nx); ++col) {
-      const std::uint8_t* v = volume.data() + col * ny;
-      lo = lowest_solid(v, 0, lo);
-      hi = highest_solid(v, hi, s.ny - 1);
-    }
-  });
-  int y_lo = s.ny, y_hi = -1;
-  for (const auto& [lo, hi] : y_ranges) y_lo = std::min(y_lo, lo), y_hi = std::max(y_hi, hi);
+  const detail::SolidBox solid = detail::solid_box(s, volume, threads);
+  const int y_lo = solid.lo[1], y_hi = solid.hi[1];
   if (y_hi < 0) return;
   const int y_end = std::min(y_hi + 1, s.ny - 1);
   // A 2x2 block around an edge holds cells p, q (one diagonal) and r, t (the other). When one diagonal is
@@ -379,7 +369,6 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, un
   // The block of columns (x, z), (x + 1, z), (x, z + 1), (x + 1, z + 1) (c, cx, cz, cxz; null past the grid's
   // side), and which of its edges can fill: along y, z and x.
   struct Block {
-    std::size_t col, col_x, col_z, col_xz;
     std::uint8_t *c, *cx, *cz, *cxz;
     bool check_y, check_z, check_x;
   };
@@ -389,14 +378,13 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, un
     return std::array<std::size_t, 4>{col, x + 1 < s.nx ? s.column(x + 1, z) : col, z + 1 < s.nz ? s.column(x, z + 1) : col,
                                       x + 1 < s.nx && z + 1 < s.nz ? s.column(x + 1, z + 1) : col};
   };
-  const auto block_at = [&](int x, int z) {
+  // The block at (x, z), of columns_at(x, z).
+  const auto block_at = [&](int x, int z, const std::array<std::size_t, 4>& cols) {
     Block b;
-    const std::array<std::size_t, 4> cols = columns_at(x, z);
-    b.col = cols[0], b.col_x = cols[1], b.col_z = cols[2], b.col_xz = cols[3];
-    b.c = volume.data() + b.col * ny;
-    b.cx = x + 1 < s.nx ? volume.data() + b.col_x * ny : nullptr;
-    b.cz = z + 1 < s.nz ? volume.data() + b.col_z * ny : nullptr;
-    b.cxz = b.cx && b.cz ? volume.data() + b.col_xz * ny : nullptr;
+    b.c = volume.data() + cols[0] * ny;
+    b.cx = x + 1 < s.nx ? volume.data() + cols[1] * ny : nullptr;
+    b.cz = z + 1 < s.nz ? volume.data() + cols[2] * ny : nullptr;
+    b.cxz = b.cx && b.cz ? volume.data() + cols[3] * ny : nullptr;
     // A contact needs a solid and an empty voxel side by side in each pair of columns the edge lies between:
     // where two of them are equal over the levels read, that edge can fill nothing, as long as nothing in this
     // block is filled (after a fill every check runs).
@@ -446,7 +434,7 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, un
   std::vector<std::uint8_t> may_fill(s.column_count(), 0);
   detail::parallel_for(std::size_t(s.nz), threads, kRowGrain, [&](std::size_t z_begin, std::size_t z_end, std::size_t) {
     for (int z = int(z_begin); z < int(z_end); ++z)
-      for (int x = 0; x < s.nx; ++x) may_fill[s.column(x, z)] = can_fill(block_at(x, z)) ? 1 : 0;
+      for (int x = 0; x < s.nx; ++x) may_fill[s.column(x, z)] = can_fill(block_at(x, z, columns_at(x, z))) ? 1 : 0;
   });
   // Which columns a pass filled in: a later pass visits only the blocks with such a column (earlier in this
   // pass or anywhere in the last), by the same reasoning: the passes fill exactly what full passes would.
@@ -455,11 +443,12 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, un
     changed = false;
     for (int z = 0; z < s.nz; ++z)
       for (int x = 0; x < s.nx; ++x) {
-        const auto [col, col_x, col_z, col_xz] = columns_at(x, z);
+        const std::array<std::size_t, 4> cols = columns_at(x, z);
+        const auto [col, col_x, col_z, col_xz] = cols;
         const bool last = first_pass ? filled_last[col] != 0
                                      : (filled_last[col] | filled_last[col_x] | filled_last[col_z] | filled_last[col_xz]) != 0;
         if (!last && !(filled_now[col] | filled_now[col_x] | filled_now[col_z] | filled_now[col_xz])) continue;
-        Block b = block_at(x, z);
+        Block b = block_at(x, z, cols);
         if (!can_fill(b)) continue;
         bool filled = false;
         const auto fill = [&](std::uint8_t& p, std::uint8_t& q, std::uint8_t& r, std::uint8_t& t) {

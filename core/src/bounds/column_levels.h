@@ -1,9 +1,14 @@
 // A voxel column's levels read eight at a time: one byte per level (GridSpec::index), the lowest level in the
-// lowest byte of a word.
+// lowest byte of a word; and the box of a volume's solid voxels, found with them.
 #pragma once
+#include "roomsense/grid.h"
+#include "parallel.h"
+
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 namespace roomsense::detail {
 
@@ -39,6 +44,37 @@ inline int highest_solid(const std::uint8_t* v, int below, int to) {
   if (const std::uint64_t w = to > below ? eight_levels(v, below + 1) : 0)
     return below + 1 + (63 - std::countl_zero(w)) / 8;
   return below;
+}
+
+// The box of a volume's solid voxels (one byte per voxel, GridSpec::index): meshing stops at its faces (outside it
+// every mask entry is 0), and the edge contacts read only its levels.
+struct SolidBox {
+  int lo[3], hi[3];  // inclusive; hi < lo when empty
+  bool operator==(const SolidBox&) const = default;
+};
+// Rows of columns side by side, each slice's box joined after: minima and maxima, in any order.
+inline SolidBox solid_box(const GridSpec& s, const std::vector<std::uint8_t>& volume, unsigned threads) {
+  const SolidBox kEmpty{{s.nx, s.ny, s.nz}, {-1, -1, -1}};
+  std::vector<SolidBox> parts(parallel_slices(std::size_t(s.nz), threads, kRowGrain), kEmpty);
+  parallel_for(std::size_t(s.nz), threads, kRowGrain, [&](std::size_t z_begin, std::size_t z_end, std::size_t slice) {
+    SolidBox& box = parts[slice];
+    for (int z = int(z_begin); z < int(z_end); ++z)
+      for (int x = 0; x < s.nx; ++x) {
+        // A column's lowest and highest solid voxels: found from either end, most columns' first.
+        const std::uint8_t* v = volume.data() + s.column(x, z) * std::size_t(s.ny);
+        const int first = lowest_solid(v, 0, s.ny);
+        if (first == s.ny) continue;
+        const int lo[3] = {x, first, z}, hi[3] = {x, highest_solid(v, first, s.ny - 1), z};
+        for (int k = 0; k < 3; ++k) {
+          box.lo[k] = std::min(box.lo[k], lo[k]);
+          box.hi[k] = std::max(box.hi[k], hi[k]);
+        }
+      }
+  });
+  SolidBox box = kEmpty;
+  for (const SolidBox& part : parts)
+    for (int k = 0; k < 3; ++k) box.lo[k] = std::min(box.lo[k], part.lo[k]), box.hi[k] = std::max(box.hi[k], part.hi[k]);
+  return box;
 }
 
 }  // namespace roomsense::detail

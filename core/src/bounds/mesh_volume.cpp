@@ -38,35 +38,8 @@ struct Axes {
 };
 constexpr Axes kAxes[] = {{2, 0, 1}, {0, 1, 2}, {1, 2, 0}};
 
-// The box of solid voxels: meshing stops at its faces (outside it every mask entry is 0).
-struct Box {
-  int lo[3], hi[3];  // inclusive; hi < lo when empty
-  bool operator==(const Box&) const = default;
-};
-// Rows of columns side by side, each slice's box joined after: minima and maxima, in any order.
-Box solid_box(const GridSpec& s, const std::vector<std::uint8_t>& volume, unsigned threads) {
-  const Box kEmpty{{s.nx, s.ny, s.nz}, {-1, -1, -1}};
-  std::vector<Box> parts(detail::parallel_slices(std::size_t(s.nz), threads, detail::kRowGrain), kEmpty);
-  detail::parallel_for(std::size_t(s.nz), threads, detail::kRowGrain, [&](std::size_t z_begin, std::size_t z_end, std::size_t slice) {
-    Box& box = parts[slice];
-    for (int z = int(z_begin); z < int(z_end); ++z)
-      for (int x = 0; x < s.nx; ++x) {
-        // A column's lowest and highest solid voxels: found from either end, most columns' first.
-        const std::uint8_t* v = volume.data() + s.column(x, z) * std::size_t(s.ny);
-        const int first = detail::lowest_solid(v, 0, s.ny);
-        if (first == s.ny) continue;
-        const int lo[3] = {x, first, z}, hi[3] = {x, detail::highest_solid(v, first, s.ny - 1), z};
-        for (int k = 0; k < 3; ++k) {
-          box.lo[k] = std::min(box.lo[k], lo[k]);
-          box.hi[k] = std::max(box.hi[k], hi[k]);
-        }
-      }
-  });
-  Box box = kEmpty;
-  for (const Box& part : parts)
-    for (int k = 0; k < 3; ++k) box.lo[k] = std::min(box.lo[k], part.lo[k]), box.hi[k] = std::max(box.hi[k], part.hi[k]);
-  return box;
-}
+using Box = detail::SolidBox;
+using detail::solid_box;
 
 // Whether a lattice point is a corner of some face region, from the 8 voxels around it (bit dx | dy << 1 |
 // dz << 2 for voxel (x-1+dx, y-1+dy, z-1+dz)). In each of the three planes through the point, the four

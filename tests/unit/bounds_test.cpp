@@ -95,6 +95,29 @@ TEST(MeshVolume, RandomVolumesGiveClosedOutwardSurfacesOfTheRightVolume) {
   }
 }
 
+// The mesh does not depend on the threads: each axis is meshed in parts of its slices on the pool and the parts are
+// appended in order. Every fourth grid is one voxel thick along an axis, so one part of that axis has no slice.
+TEST(MeshVolume, AnyNumberOfThreadsGivesTheSameMesh) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 40; ++trial) {
+    const float thin = 0.05f;
+    glm::vec3 extent{1.15f, 0.85f, 0.95f};
+    if (trial % 4 == 3) extent[trial / 4 % 3] = thin;
+    const GridSpec s = make_grid_spec({0, 0, 0}, extent, 0.1f);
+    std::vector<std::uint8_t> volume(s.voxel_count());
+    std::bernoulli_distribution solid(0.2 + 0.6 * (trial % 3) / 2.0);
+    for (auto& v : volume) v = solid(rng) ? 1 : 0;
+    fill_edge_contacts(s, volume, 1);
+    const BoundsMesh one = mesh_volume(s, volume, 1);
+    for (const unsigned threads : {2u, 3u, 5u}) {
+      const BoundsMesh many = mesh_volume(s, volume, threads);
+      ASSERT_EQ(many.vertices, one.vertices) << "trial " << trial << ", " << threads << " threads";
+      ASSERT_EQ(many.indices, one.indices) << "trial " << trial << ", " << threads << " threads";
+    }
+    expect_exact_mesh(s, volume, one, 1e-5, 1e-5, "trial " + std::to_string(trial));
+  }
+}
+
 // An IncrementalAnalysis's bounds (mesh_memo.h): a volume meshed with the memo of the volume before it, which
 // replays the slices and keeps the surface corners where nothing changed, gives the mesh meshing it afresh gives,
 // point for point, also after a cancelled one. Boxes are added and cleared, small (the corners beside them found

@@ -78,19 +78,46 @@ struct SideRun {
   int length;
 };
 
-// The runs of extent e's columns (rows: its rows) under `cell_of`; along_axes(e) gave from_v.
-template <class CellOf>
-std::vector<SideRun> side_runs(const Extent& e, float h, bool rows, const std::array<bool, 3>& from_v, const CellOf& cell_of) {
-  std::vector<SideRun> out;
+// The runs of extent e's columns (rows: its rows) under `cell_of`, each to f(run) as it ends; along_axes(e) gave
+// from_v.
+template <class CellOf, class F>
+void side_runs(const Extent& e, float h, bool rows, const std::array<bool, 3>& from_v, const CellOf& cell_of, const F& f) {
+  SideRun run{glm::ivec3(0), 0};
   for (int i = 0, n = sample_count(rows ? e.v1 - e.v0 : e.u1 - e.u0, h); i < n; ++i) {
     glm::ivec3 cell = cell_of(rows ? e.sample(0, i, h) : e.sample(i, 0, h));
     for (std::size_t c = 0; c < 3; ++c)
       if (from_v[c] != rows) cell[int(c)] = 0;
-    if (!out.empty() && out.back().cell == cell) ++out.back().length;
-    else out.push_back({cell, 1});
+    if (run.length > 0 && run.cell == cell) {
+      ++run.length;
+      continue;
+    }
+    if (run.length > 0) f(run);
+    run = {cell, 1};
   }
-  return out;
+  if (run.length > 0) f(run);
 }
+
+// An extent's row runs, as many as most areas' sides have on the stack, more on the heap: growth visits every
+// strip it tries by runs, and a vector per visit was a third of a full analysis's allocations.
+class RowRuns {
+ public:
+  void push_back(const SideRun& run) {
+    if (size_ < kLocal) local_[size_] = run;
+    else {
+      if (size_ == kLocal) heap_.assign(local_.begin(), local_.end());
+      heap_.push_back(run);
+    }
+    ++size_;
+  }
+  const SideRun* begin() const { return size_ <= kLocal ? local_.data() : heap_.data(); }
+  const SideRun* end() const { return begin() + size_; }
+
+ private:
+  static constexpr std::size_t kLocal = 64;
+  std::array<SideRun, kLocal> local_;
+  std::vector<SideRun> heap_;
+  std::size_t size_ = 0;
+};
 
 // Calls f(cell, samples) once per run of columns by run of rows of extent e in one cell, for e along the grid's
 // axes (along_axes(e) gave from_v), `cell_of` being a map of a point to a cell each of whose coordinates is a floor
@@ -98,9 +125,11 @@ std::vector<SideRun> side_runs(const Extent& e, float h, bool rows, const std::a
 // run's.
 template <class CellOf, class F>
 void each_cell_by_runs(const Extent& e, float h, const std::array<bool, 3>& from_v, const CellOf& cell_of, const F& f) {
-  const std::vector<SideRun> rows = side_runs(e, h, true, from_v, cell_of);
-  for (const SideRun& column : side_runs(e, h, false, from_v, cell_of))
+  RowRuns rows;
+  side_runs(e, h, true, from_v, cell_of, [&](const SideRun& row) { rows.push_back(row); });
+  side_runs(e, h, false, from_v, cell_of, [&](const SideRun& column) {
     for (const SideRun& row : rows) f(column.cell + row.cell, column.length * row.length);
+  });
 }
 
 // Calls f(cell, samples) for the cells `cell_of` gives extent e's samples: by runs where e lies along the grid's

@@ -581,9 +581,11 @@ constexpr std::uint32_t kContactMask = (std::uint32_t{1} << kContactBits) - 1;
 // Squares of a size share a few hundred edge directions: each direction's 5° step is computed once.
 int SquarePacker::misalignment_step(const Candidate& c) {
   const glm::ivec3 e = c.corners[1] - c.corners[0];
-  const auto [it, added] = steps_of_direction_.try_emplace(pack_key(e.x, 0, e.z), 0);
-  if (added) it->second = int(std::lround(misalignment_deg(c, dominant_deg_) / 5.0));
-  return it->second;
+  const std::uint64_t key = pack_key(e.x, 0, e.z);
+  if (const std::uint32_t step = steps_of_direction_.find(key); step != KeyTable::kAbsent) return int(step);
+  const int step = int(std::lround(misalignment_deg(c, dominant_deg_) / 5.0));  // 0 to 9: at most 45°
+  steps_of_direction_.insert(key, std::uint32_t(step));
+  return step;
 }
 
 // [0, n) ordered by bucket_of(i) ascending, stable: a counting sort, as packing's buckets are few (ten steps,
@@ -644,6 +646,7 @@ std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
   constexpr std::size_t kSteps = 10;  // misalignment is at most 45°: steps 0 to 9
   // A size's squares have a few hundred shapes: what each decides, found once.
   std::vector<ShapeFacts> facts;
+  facts.reserve(squares.shapes().size());
   for (const Candidates::Shape& shape : squares.shapes()) facts.push_back(shape_facts(shape));
   std::array<std::size_t, kSteps + 1> step_begin{};
   std::vector<std::uint32_t> by_step;  // the squares' indices, step by step, each step's in search order

@@ -12,7 +12,6 @@
 #include <optional>
 #include <span>
 #include <stop_token>
-#include <unordered_map>
 
 namespace roomsense::detail {
 
@@ -228,7 +227,7 @@ class SquarePacker {
   std::unique_ptr<NonTileCounts> runs_;  // floor and ceiling: contact along the axes by run, not by cell
   std::unique_ptr<SquareSampleRuns> own_samples_;
   SquareSampleRuns* samples_;  // own_samples_ or the caller's
-  std::unordered_map<std::uint64_t, int> steps_of_direction_;
+  KeyTable steps_of_direction_;  // by pack_key(dx, 0, dz) of the first side
   std::unique_ptr<SampleRaster> taken_;
   ChangedRegion changed_;  // over all sizes: a large square's change reaches the smaller ones after it
   bool replayable_ = true;

@@ -6,7 +6,9 @@
 #include "cell_cover.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 #include <vector>
 
 namespace roomsense::detail {
@@ -43,10 +45,15 @@ inline std::vector<RingOffset> ring_offsets(const SizeRange& size, Shape shape) 
       const double d2 = double(dx) * dx + double(dz) * dz;
       if (d2 < lo2 || d2 > hi2) continue;
       RingOffset o{dx, dz, std::sqrt(d2), {}, 0};
-      std::vector<glm::dvec2> polygon = {{0, 0}, {dx, dz}};
-      if (shape == Shape::Square) polygon = {{0, 0}, {dx, dz}, {dx - dz, dz + dx}, {-dz, dx}};
-      const int x_lo = std::min({0, dx, dx - dz, -dz}), x_hi = std::max({0, dx, dx - dz, -dz});
-      for (int x = shape == Shape::Square ? x_lo : 0; x <= (shape == Shape::Square ? x_hi : dx); ++x) {
+      // On the stack, and the runs one allocation: rings of large squares hold thousands of offsets, made each
+      // analysis, and their vectors were a third of its allocations.
+      const std::array<glm::dvec2, 4> corners = {glm::dvec2(0, 0), glm::dvec2(dx, dz), glm::dvec2(dx - dz, dz + dx),
+                                                 glm::dvec2(-dz, dx)};
+      const std::span<const glm::dvec2> polygon(corners.data(), shape == Shape::Square ? 4 : 2);
+      const int x_first = shape == Shape::Square ? std::min({0, dx, dx - dz, -dz}) : 0;
+      const int x_last = shape == Shape::Square ? std::max({0, dx, dx - dz, -dz}) : dx;
+      o.runs.reserve(std::size_t(x_last - x_first + 1));
+      for (int x = x_first; x <= x_last; ++x) {
         const ZSpan span = covered_cells(polygon, x);
         if (span.lo > span.hi) continue;
         o.runs.push_back({x, span.lo, span.hi});

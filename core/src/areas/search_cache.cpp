@@ -307,6 +307,14 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
   const auto column_of = [&](const glm::ivec2& place) { return walls ? place.x : place.x / 2; };
   const auto before = [](const glm::ivec2& a, const glm::ivec2& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; };
   std::vector<Replaced> old;
+  // A slot's scratch, kept from slot to slot (furniture has a slot per level and band: lists per slot were a
+  // quarter of an update's allocations).
+  std::vector<glm::ivec2> places;
+  std::vector<std::uint8_t> in_columns;  // searched(places[k])
+  Replaced gone{0, {}, {}};
+  std::vector<std::uint32_t> gone_ranks;
+  std::vector<glm::ivec2> gone_places;
+  std::vector<std::uint8_t> found_again;
   for (std::size_t b = 0; b < band_count; ++b) {
     if (!bands.searched[b]) continue;
     const glm::ivec2 columns = bands.columns[b];
@@ -325,11 +333,8 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
         return column_of(place) >= columns.x && column_of(place) <= columns.y;
       };
       const std::size_t n = r.items.size();
-      std::vector<glm::ivec2> places(n);
-      std::vector<std::uint8_t> in_columns(n);  // searched(places[k])
-      Replaced gone{slot, {}, {}};
-      std::vector<std::uint32_t> gone_ranks;
-      std::vector<glm::ivec2> gone_places;
+      places.resize(n), in_columns.resize(n);
+      gone.items.clear(), gone.states.clear(), gone_ranks.clear(), gone_places.clear();
       for (std::size_t k = 0; k < n; ++k) {
         places[k] = place_of(r.items[k]);
         in_columns[k] = searched(places[k]);
@@ -345,7 +350,7 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
       // edges (a small object set down inside a large square). Both lists are in search order, a centre's
       // squares (one a level) together. Walls are matched so when the list is assembled (their packing reads
       // other walls alone).
-      std::vector<std::uint8_t> found_again(gone.items.size(), 0);
+      found_again.assign(gone.items.size(), 0);
       std::size_t g = 0;  // the first gone square not before the fresh one
       const auto add_fresh = [&](std::size_t i, const glm::ivec2& place) {
         const Candidates::Item& item = found.item(i);
@@ -386,6 +391,8 @@ std::vector<SearchCache::Replaced> SearchCache::replace(Kept& kept, std::size_t 
       for (; i < end; ++i) add_fresh(i, place_of(found.item(i)));
       // Gone: those not found again.
       r = {slot, {}, {}};
+      const auto not_found = std::size_t(std::count(found_again.begin(), found_again.end(), std::uint8_t{0}));
+      r.items.reserve(not_found), r.states.reserve(not_found);
       for (std::size_t k = 0; k < gone.items.size(); ++k)
         if (!found_again[k]) r.items.push_back(gone.items[k]), r.states.push_back(gone.states[k]);
       kept_bytes_ += items.size() * kBytesEach;

@@ -158,7 +158,10 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   std::vector<std::pair<double, std::size_t>> order(ring.size());
   for (std::size_t i = 0; i < ring.size(); ++i) order[i] = {misalignment(ring[i]), i};
   std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  // The lists below are sized before they are filled: a large square's ring holds thousands of offsets, and their
+  // doublings were most of a search's allocations.
   std::array<std::vector<const RingOffset*>, 2> by_parity;  // into `ring`
+  for (auto& parity : by_parity) parity.reserve(ring.size());
   for (const auto& [key, i] : order) by_parity[std::size_t((ring[i].dx - ring[i].dz) & 1)].push_back(&ring[i]);
   const FloorCeiling& levels = features.levels;
   // The layers (square_layers): levels from y_from, or facets.
@@ -170,6 +173,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   // Corner 1 lies in the grid at y_Actual, at most one level above the highest level searched (Eq. 3.41); the
   // offsets are both parities' in turn.
   std::vector<Candidates::Shape> shapes;
+  shapes.reserve(ring.size());
   for (const auto& parity : by_parity)
     for (const RingOffset* o : parity) shapes.push_back({o->dx, o->dz, PackedCandidate::kSquare});
   const std::array<std::uint32_t, 2> first_shape = {0, std::uint32_t(by_parity[0].size())};
@@ -221,6 +225,10 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   };
   std::array<std::vector<CornerCells>, 2> corner_cells;
   std::array<std::vector<Reads>, 2> reads;
+  for (int p = 0; p < 2; ++p) {
+    corner_cells[std::size_t(p)].reserve(by_parity[std::size_t(p)].size());
+    reads[std::size_t(p)].reserve(by_parity[std::size_t(p)].size());
+  }
   for (int p = 0; p < 2; ++p)
     for (const RingOffset* o : by_parity[std::size_t(p)]) {
       const int x1 = (p - o->dx + o->dz) / 2, z1 = (p - o->dx - o->dz) / 2;

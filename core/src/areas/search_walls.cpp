@@ -97,6 +97,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
 
   // The rectangles' levels lie in [floor, ceiling]; their offsets are the ring's, each with its height.
   std::vector<Candidates::Shape> shapes;
+  shapes.reserve(ring.size());
   for (const RingOffset& o : ring) shapes.push_back({o.dx, o.dz, size.wall_height(o.d)});
   // Per ring offset, the voxels with a normal a rectangle of it needs at its full height: fill of (⌊d⌋ + 1)(h + 1).
   std::vector<double> need(ring.size());

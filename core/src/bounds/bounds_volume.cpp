@@ -266,7 +266,9 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
       if ((*changed)[col]) find_g_h(col);
   } else {
     g.resize(s.column_count()), h.resize(s.column_count());
-    detail::parallel_for(s.column_count(), threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
+    // Slices of kColumnGrain: at 4096 columns a slice, a room of thesis-room1's 4,331 columns was one slice, G and H
+    // and the volume's columns each found on one thread (the bounds stage alone 0.765 -> 0.726 ms with these).
+    detail::parallel_for(s.column_count(), threads, detail::kColumnGrain, [&](std::size_t begin, std::size_t end, std::size_t) {
       for (std::size_t col = begin; col < end; ++col) find_g_h(col);
     });
   }
@@ -315,7 +317,7 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
     volume = kept;
   } else {
     volume.assign(s.voxel_count(), 0);
-    detail::parallel_for(s.column_count(), threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
+    detail::parallel_for(s.column_count(), threads, detail::kColumnGrain, [&](std::size_t begin, std::size_t end, std::size_t) {
       for (std::size_t col = begin; col < end; ++col) write_column(volume, col);
     });
     stop_point(stop);

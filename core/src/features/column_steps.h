@@ -114,7 +114,7 @@ void redo_along_axes(const GridSpec& s, std::span<const std::uint32_t> changed, 
 template <class Value, class Step>
 std::vector<Value> every_column(std::size_t columns, const Step& step, unsigned threads = 1) {
   std::vector<Value> out(columns);
-  parallel_for(columns, threads, 2048, [&](std::size_t begin, std::size_t end, std::size_t) {
+  parallel_for(columns, threads, kColumnGrain, [&](std::size_t begin, std::size_t end, std::size_t) {
     for (std::size_t col = begin; col < end; ++col) out[col] = step(col);
   });
   return out;

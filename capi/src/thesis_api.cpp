@@ -76,6 +76,7 @@ ThesisOutput bound(const Scan& scan, std::stop_token stop) {
   AnalysisOptions options;
   options.stop = std::move(stop);
   options.find_areas = false;
+  options.area_features = false;  // the bounds alone are returned
   const AnalysisResult result = analyze(scan, options);
   ThesisOutput out;
   if (!result.ok()) return out;

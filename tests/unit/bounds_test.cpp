@@ -1,8 +1,12 @@
 // Room bounds (§3.6): the volume I, its mesh, closure, orientation.
+#include "roomsense/analysis.h"
 #include "roomsense/bounds.h"
 #include "roomsense/error.h"
+#include "roomsense/queries.h"
+#include "roomsense/surfaces.h"
 #include "roomsense/synthetic.h"
 #include "mesh_checks.h"
+#include "same_features.h"
 #include "synthetic_fixture.h"
 #include "../../core/src/bounds/mesh_memo.h"
 
@@ -566,6 +570,48 @@ TEST(Bounds, TheRoomIsHollowAndTheFloorIsSolid) {
   // Under the table: filled up to its top (unreachable space, §3.6).
   const int tx = int((0.6f - s.origin.x) / s.voxel_size), tz = int((0.4f - s.origin.z) / s.voxel_size);
   EXPECT_EQ(volume[s.index(tx, l.floor + 3, tz)], 1);
+}
+
+// A bounds-only run without the areas' features (AnalysisOptions::area_features off, as StartRoomBounds runs) skips
+// C, D, F and the openings and nothing the bounds read: the same bounds, room bounds, levels, heights, storeys and
+// rooms as with them, on rooms with furniture, two storeys, several rooms and a sloped ceiling. What reads the
+// skipped features gets none: no furniture tops among the surfaces, empty queries.
+TEST(AnalyzeBounds, WithoutTheAreasFeaturesGivesTheSameBoundsLevelsAndRooms) {
+  for (const char* room : {"synthetic:thesis-room1", "synthetic:house", "synthetic:flat", "synthetic:loft"}) {
+    SCOPED_TRACE(room);
+    const Scan scan = synth::generate_builtin_source(room);
+    AnalysisOptions all;
+    all.find_areas = false;
+    AnalysisOptions lean = all;
+    lean.area_features = false;
+    const AnalysisResult a = analyze(scan, all), b = analyze(scan, lean);
+    ASSERT_TRUE(a.ok());
+    ASSERT_TRUE(b.ok());
+    EXPECT_EQ(b.bounds.vertices, a.bounds.vertices);
+    EXPECT_EQ(b.bounds.indices, a.bounds.indices);
+    ASSERT_EQ(b.room_bounds.size(), a.room_bounds.size());
+    for (std::size_t k = 0; k < a.room_bounds.size(); ++k) {
+      EXPECT_EQ(b.room_bounds[k].vertices, a.room_bounds[k].vertices);
+      EXPECT_EQ(b.room_bounds[k].indices, a.room_bounds[k].indices);
+    }
+    EXPECT_EQ(b.floor_y, a.floor_y);
+    EXPECT_EQ(b.ceiling_y, a.ceiling_y);
+    ASSERT_EQ(b.storeys.size(), a.storeys.size());
+    for (std::size_t i = 0; i < a.storeys.size(); ++i) {
+      EXPECT_EQ(b.storeys[i].floor_y, a.storeys[i].floor_y);
+      EXPECT_EQ(b.storeys[i].ceiling_y, a.storeys[i].ceiling_y);
+      // Every feature the same but the four skipped, which are empty.
+      RoomFeatures skipped = a.storey_features(std::uint32_t(i));
+      EXPECT_FALSE(skipped.furniture.empty() || skipped.free_floor.empty() || skipped.normals.empty());
+      skipped.furniture.clear(), skipped.free_floor.clear(), skipped.normals.clear(), skipped.wall_blocked.clear();
+      test::expect_same_features(b.storey_features(std::uint32_t(i)), skipped);
+    }
+    EXPECT_EQ(b.rooms.size(), a.rooms.size());
+    for (const Surface& surface : extract_surfaces(b))
+      EXPECT_TRUE(surface.kind != SurfaceKind::Table && surface.kind != SurfaceKind::Furniture);
+    EXPECT_TRUE(RoomQueries(b).empty());
+    EXPECT_FALSE(RoomQueries(a).empty());
+  }
 }
 
 }  // namespace

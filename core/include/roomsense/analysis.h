@@ -28,6 +28,11 @@ struct AnalysisOptions {
   BoundsParams bounds;
   bool find_areas = true;     // §3.3-3.5; off for a bounds-only run (thesis StartRoomBounds)
   bool build_bounds = true;   // §3.6; off for an areas-only run (thesis StartRoomUnderstanding)
+  // Off with find_areas off: the features only the areas and the placement queries read (furniture tops C, free
+  // floor D, wall normals F, openings) are not derived and stay empty in the result, whose surfaces then have no
+  // furniture tops and whose RoomQueries answer nothing; the bounds, levels, heights and rooms are the same. The
+  // thesis API's StartRoomBounds, which returns the bounds alone, runs so. An IncrementalAnalysis derives them all.
+  bool area_features = true;
   VoxelStage* voxel_stage = nullptr;  // not owned; nullptr: the CPU stage
   KeptThreads* kept_threads = nullptr;  // not owned; nullptr: threads started for the analysis
   std::stop_token stop;               // a stop request ends analyze() with Error(Cancelled) within ~100 ms

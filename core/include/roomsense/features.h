@@ -82,6 +82,7 @@ struct RoomFeatures {
   int y_end = 0;                         // I_yEnd = I_Floor + ⌊1.5 / S⌋
   std::vector<std::uint8_t> walls;       // A, per column
   std::vector<std::uint8_t> room;        // B, per column
+  // C, D, F and wall_blocked are empty where the analysis skipped them (AnalysisOptions::area_features).
   std::vector<int> furniture;            // C, per column: the level above a furniture top, or kNoFurniture
   std::vector<std::uint8_t> free_floor;  // D, per column
   std::vector<std::uint8_t> free_ceiling;  // E, per column

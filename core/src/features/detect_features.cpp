@@ -51,8 +51,10 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
                              const std::vector<std::uint32_t>& column_counts,
                              const std::vector<std::uint8_t>& column_any, const FeatureParams& params,
                              unsigned threads, const std::stop_token& stop, const LabelGrid& labels,
-                             FeatureMemo* memo, const GridChange& change, const RoomFeatures* previous) {
+                             FeatureMemo* memo, const GridChange& change, const RoomFeatures* previous,
+                             bool area_features) {
   check_params(params);
+  area_features = area_features || memo != nullptr;  // a memo keeps every step's inputs
   const float s = grid.spec.voxel_size;
   RoomFeatures f;
   f.levels = levels;
@@ -120,7 +122,9 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
   };
   // The rooms read the inside and the walls alone: beside C, D and E (a large storey's split is as long as the
   // three together), first, so that one thread takes it while the other takes the column steps' slices.
-  detail::parallel_tasks(4, threads, [&](std::size_t task) {
+  // Without the areas' features: the rooms and E (whose facets the ceiling's height and planes read) alone.
+  detail::parallel_tasks(area_features ? 4 : 2, threads, [&](std::size_t task) {
+    if (!area_features && task == 1) task = 2;
     if (task == 0)
       f.rooms = through(
           memo ? &memo->rooms : nullptr,
@@ -135,6 +139,7 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
     if (task == 3) f.free_floor = floor();
   });
   steps.inputs.done(change);
+  if (!area_features) return f;
   for (std::size_t c = 0; c < inside.size(); ++c)
     if (!inside[c]) f.furniture[c] = kNoFurniture;
   apply_furniture_labels(grid.spec, f.levels, labels, f.free_floor, f.furniture);

@@ -148,11 +148,14 @@ struct FeatureMemo {
 // detect_features (features.h), through `memo` where not null: its whole-storey steps kept where their inputs
 // are, its local steps derived again only near the columns `change` and their entries say changed. `previous`:
 // the features of the analysis before (`change.before`) on these levels, where it has them; the wall normals and
-// openings are its own, updated (without it they are derived whole).
+// openings are its own, updated (without it they are derived whole). `area_features` false (without a memo only):
+// C, D, F and the openings, which only the areas and the placement queries read, are left empty
+// (AnalysisOptions::area_features).
 RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
                              const std::vector<std::uint32_t>& column_counts,
                              const std::vector<std::uint8_t>& column_any, const FeatureParams& params,
                              unsigned threads, const std::stop_token& stop, const LabelGrid& labels,
-                             FeatureMemo* memo, const GridChange& change, const RoomFeatures* previous);
+                             FeatureMemo* memo, const GridChange& change, const RoomFeatures* previous,
+                             bool area_features = true);
 
 }  // namespace roomsense::detail

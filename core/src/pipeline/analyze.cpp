@@ -287,6 +287,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   std::vector<RoomFeatures> storey_features(all.size());  // as `all`
   std::vector<BandSum> sums;  // as `bands`; none for a point cloud
   if (caches && caches->features.size() < all.size()) caches->features.resize(all.size());
+  const bool area_features = options.find_areas || options.area_features;
   // Task 0, the main storey's, most likely on this thread, whose heap then holds what lives longest (worker_pool.h).
   detail::parallel_tasks(all.size() + 1, options.threads, [&](std::size_t k) {
     stop_point(options.stop);
@@ -303,14 +304,15 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
       } else if (k == 0)
         storey_features[k] = detail::detect_features(r.voxels.grid, *all[k], r.voxels.column_counts,
                                                      r.voxels.column_any, options.features, options.threads,
-                                                     options.stop, labels, memo, change, previous_storey(*all[k]));
+                                                     options.stop, labels, memo, change, previous_storey(*all[k]),
+                                                     area_features);
       else {
         std::vector<std::uint32_t> column_counts;
         std::vector<std::uint8_t> column_any;
         count_columns(r.voxels.grid, *all[k], column_counts, column_any);
         storey_features[k] = detail::detect_features(r.voxels.grid, *all[k], column_counts, column_any,
                                                      options.features, options.threads, options.stop, labels, memo,
-                                                     change, previous_storey(*all[k]));
+                                                     change, previous_storey(*all[k]), area_features);
       }
       return;
     }

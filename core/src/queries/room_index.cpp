@@ -251,6 +251,8 @@ std::shared_ptr<const RoomQueries::Index> build_index(const AnalysisResult& anal
                                                       const std::vector<Surface>& surfaces) {
   if (!analysis.ok() || !analysis.features) return nullptr;
   const RoomFeatures& f = *analysis.features;
+  // The placement index reads C, D and F, which a run without the areas' features skipped.
+  if (f.furniture.size() != analysis.voxels.grid.spec.column_count()) return nullptr;
   auto ix = std::make_shared<RoomQueries::Index>();
   const GridSpec& s = analysis.voxels.grid.spec;
   ix->spec = s;

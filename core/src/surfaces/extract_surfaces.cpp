@@ -323,6 +323,7 @@ std::vector<Surface> furniture_tops(const AnalysisResult& analysis, std::uint32_
                                     const std::stop_token& stop) {
   const GridSpec& s = analysis.voxels.grid.spec;
   const std::vector<int>& c = analysis.storey_features(storey).furniture;
+  if (c.size() != s.column_count()) return {};  // C not derived (AnalysisOptions::area_features)
   const double voxel = s.voxel_size, min_cells = params.min_area / (voxel * voxel);
   const detail::Components parts = detail::label_components(
       s.nx, s.nz, [&](std::size_t col) { return c[col] != kNoFurniture; },

@@ -52,13 +52,7 @@ void expect_same(const AnalysisResult& got, const AnalysisResult& want, const st
   EXPECT_EQ(got.voxels.levels, want.voxels.levels);
   EXPECT_EQ(got.voxels.column_counts, want.voxels.column_counts);
   EXPECT_EQ(got.voxels.column_any, want.voxels.column_any);
-  EXPECT_EQ(got.bounds.vertices, want.bounds.vertices);
-  EXPECT_EQ(got.bounds.indices, want.bounds.indices);
-  ASSERT_EQ(got.room_bounds.size(), want.room_bounds.size());
-  for (std::size_t i = 0; i < got.room_bounds.size(); ++i) {
-    EXPECT_EQ(got.room_bounds[i].vertices, want.room_bounds[i].vertices);
-    EXPECT_EQ(got.room_bounds[i].indices, want.room_bounds[i].indices);
-  }
+  roomsense::test::expect_same_bounds(got, want);
 }
 
 // `scan` with a runtime's label on every triangle, by its normal and height: floor, ceiling, wall, table top.

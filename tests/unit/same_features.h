@@ -1,6 +1,7 @@
-// Every field of two RoomFeatures, compared: the features an IncrementalAnalysis reuses or derives again near a
-// change against those derived whole.
+// Parts of two analyses compared field by field: every field of two RoomFeatures (the features an
+// IncrementalAnalysis reuses or derives again near a change against those derived whole), and the bounds meshes.
 #pragma once
+#include "roomsense/analysis.h"
 #include "roomsense/features.h"
 
 #include <gtest/gtest.h>
@@ -29,6 +30,17 @@ inline void expect_same_features(const RoomFeatures& a, const RoomFeatures& b) {
     EXPECT_EQ(a.facets[i].slope_x, b.facets[i].slope_x);
     EXPECT_EQ(a.facets[i].slope_z, b.facets[i].slope_z);
     EXPECT_EQ(a.facets[i].offset, b.facets[i].offset);
+  }
+}
+
+// The bounds mesh and each room's, vertex for vertex and index for index.
+inline void expect_same_bounds(const AnalysisResult& got, const AnalysisResult& want) {
+  EXPECT_EQ(got.bounds.vertices, want.bounds.vertices);
+  EXPECT_EQ(got.bounds.indices, want.bounds.indices);
+  ASSERT_EQ(got.room_bounds.size(), want.room_bounds.size());
+  for (std::size_t i = 0; i < got.room_bounds.size(); ++i) {
+    EXPECT_EQ(got.room_bounds[i].vertices, want.room_bounds[i].vertices);
+    EXPECT_EQ(got.room_bounds[i].indices, want.room_bounds[i].indices);
   }
 }
 

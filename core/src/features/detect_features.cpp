@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <span>
 
 namespace roomsense {
 
@@ -123,8 +124,10 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
   // The rooms read the inside and the walls alone: beside C, D and E (a large storey's split is as long as the
   // three together), first, so that one thread takes it while the other takes the column steps' slices.
   // Without the areas' features: the rooms and E (whose facets the ceiling's height and planes read) alone.
-  detail::parallel_tasks(area_features ? 4 : 2, threads, [&](std::size_t task) {
-    if (!area_features && task == 1) task = 2;
+  static constexpr std::size_t kEveryTask[] = {0, 1, 2, 3}, kBoundsTasks[] = {0, 2};
+  const std::span<const std::size_t> tasks = area_features ? std::span<const std::size_t>(kEveryTask) : kBoundsTasks;
+  detail::parallel_tasks(tasks.size(), threads, [&](std::size_t i) {
+    const std::size_t task = tasks[i];
     if (task == 0)
       f.rooms = through(
           memo ? &memo->rooms : nullptr,

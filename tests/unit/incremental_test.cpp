@@ -55,6 +55,15 @@ void expect_same(const AnalysisResult& got, const AnalysisResult& want, const st
   roomsense::test::expect_same_bounds(got, want);
 }
 
+// inc.result() against a full analysis of its combined scan, warnings included; returns the full analysis.
+AnalysisResult expect_same_as_full(IncrementalAnalysis& inc, const std::string& step, const AnalysisOptions& options = {}) {
+  AnalysisResult want = analyze(inc.combined_scan(), options);
+  const AnalysisResult& got = inc.result();
+  EXPECT_EQ(got.warnings, want.warnings) << step;
+  expect_same(got, want, step);
+  return want;
+}
+
 // `scan` with a runtime's label on every triangle, by its normal and height: floor, ceiling, wall, table top.
 Scan labelled_by_normals(Scan scan) {
   float low = INFINITY;
@@ -230,10 +239,7 @@ TEST(Incremental, LabelsPastTheTestBudgetGiveTheFullAnalysisWarnings) {
   IncrementalAnalysis inc(options);
   std::size_t over = 0, under = 0;
   const auto check = [&](const std::string& step) {
-    const AnalysisResult want = analyze(inc.combined_scan(), options);
-    const AnalysisResult& got = inc.result();
-    EXPECT_EQ(got.warnings, want.warnings) << step;
-    expect_same(got, want, step);
+    const AnalysisResult want = expect_same_as_full(inc, step, options);
     const bool dropped = std::any_of(want.warnings.begin(), want.warnings.end(),
                                      [](const std::string& s) { return s.find("runtime labels ignored") != std::string::npos; });
     (dropped ? over : under) += 1;
@@ -275,12 +281,7 @@ TEST(Incremental, HeavilyOverlappingLabelsAreVoxelizedWholeAndEqualTheFullAnalys
     }
   }
   IncrementalAnalysis inc;
-  const auto check = [&](const std::string& step) {
-    const AnalysisResult want = analyze(inc.combined_scan());
-    const AnalysisResult& got = inc.result();
-    EXPECT_EQ(got.warnings, want.warnings) << step;
-    expect_same(got, want, step);
-  };
+  const auto check = [&](const std::string& step) { expect_same_as_full(inc, step); };
   for (const auto& [id, tile] : tiles) inc.set_chunk(id, tile);
   check("all");
   for (const std::uint64_t id : heavy) {
@@ -291,6 +292,34 @@ TEST(Incremental, HeavilyOverlappingLabelsAreVoxelizedWholeAndEqualTheFullAnalys
   }
   inc.set_chunk(heavy.front(), tiles.at(heavy.front()));
   check("one heavy chunk back");
+}
+
+// Labels that are not their chunk's own: a labelled triangle indexing past its chunk's label vertices (in the
+// combined scan, into the next chunk's), and a chunk with a label more than it has labelled triangles (in the
+// combined scan, the next chunk's first triangle takes it, and every label after shifts). The chunks are then
+// read as the combined scan holds them, and every result equals the full analysis, warnings included.
+TEST(Incremental, LabelsReachingPastTheirChunkEqualTheFullAnalysis) {
+  std::map<std::uint64_t, Scan> tiles = split_into_blocks(labelled_by_normals(synth::generate_builtin_source("synthetic:default")), 2.0f);
+  ASSERT_GE(tiles.size(), 4u);
+  auto it = tiles.begin();
+  Scan& past_vertices = it->second;
+  ASSERT_FALSE(past_vertices.labels.indices.empty());
+  past_vertices.labels.indices.back() = std::uint32_t(past_vertices.labels.vertices.size() + 2);
+  const std::uint64_t past_vertices_id = it->first;
+  Scan& extra_label = (++it)->second;
+  extra_label.labels.labels.push_back(SurfaceLabel::Table);
+  const std::uint64_t extra_label_id = it->first;
+  IncrementalAnalysis inc;
+  const auto check = [&](const std::string& step) { expect_same_as_full(inc, step); };
+  for (const auto& [id, tile] : tiles) {
+    if (id == extra_label_id) continue;
+    inc.set_chunk(id, tile);
+  }
+  check("an index past its chunk's label vertices");
+  inc.set_chunk(past_vertices_id, labelled_by_normals(split_into_blocks(synth::generate_builtin_source("synthetic:default"), 2.0f).at(past_vertices_id)));
+  check("that chunk's labels its own again");
+  inc.set_chunk(extra_label_id, tiles.at(extra_label_id));
+  check("a chunk with a label past its triangles");
 }
 
 // Bad chunks: an index past the chunk's own vertices is refused even where the combined scan would have a

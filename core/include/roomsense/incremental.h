@@ -7,9 +7,11 @@
 // - each chunk's voxels (its triangles' marks on the grid, kept per chunk while the grid and the chunk are
 //   unchanged): a change voxelizes only the chunks it touched; and the level counts, column counts and
 //   horizontal-surface counts, counted again only in the columns of the chunks voxelized again or dropped;
-// - the combined scan, copied again from the first changed chunk (in id order) on, and each chunk's input
-//   checks (its finite vertices' bounds, against the outlier ranges) and its surface heights' sums (exact in
-//   any grouping), so unchanged chunks cost those passes nothing;
+// - each chunk's input checks (its finite vertices' bounds, against the outlier ranges) and its surface heights'
+//   sums (exact in any grouping), so unchanged chunks cost those passes nothing; the input checks, voxels, sums
+//   and labels read each chunk's own arrays, and the chunks are copied end to end into one scan only for what reads
+//   it whole (input to renumber, a ridge's height or one past the exact sums, a sloped ceiling's planes), then
+//   again only from the first chunk (in id order) not in its place;
 // - the features and bounds, where the grid, the labels' voxels and the storeys' levels are the previous
 //   result's (a chunk refined within its voxels);
 // - otherwise, each storey's feature steps that read the whole storey (the walls' heights, the walls' closure,

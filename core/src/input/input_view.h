@@ -17,6 +17,7 @@ struct InputView {
   InputView(const InputView&) = delete;  // the views may point into `checked`
   InputView& operator=(const InputView&) = delete;
   InputView(InputView&&) = default;  // moving keeps the arrays' storage, so the views stay valid
+  InputView& operator=(InputView&&) = default;
 
   PreparedInput checked;  // every count and the bounds; the arrays only where something was removed
   std::span<const glm::vec3> vertices;  // the scan's own arrays, or `checked`'s where something was removed
@@ -53,5 +54,13 @@ struct QuantileGuess {
 // is tried and updated (above).
 InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* known = nullptr, unsigned threads = 1,
                      QuantileGuess* guess = nullptr);
+
+// view_input's checks of a scan held as parts (an IncrementalAnalysis's chunks, in order) with `index_count`
+// indices, all known in range, and a run per part (`known`): its errors, and where nothing is to be removed its
+// counts and bounds, with the outlier ranges view_input finds (their sample walks the parts as one array). Where a
+// vertex is to be removed (not finite, or an outlier), std::nullopt: view_input of the whole scan renumbers.
+std::optional<PreparedInput> check_parts(std::span<const std::span<const glm::vec3>> parts, std::size_t index_count,
+                                         bool reject_outliers, const KnownInput& known, unsigned threads = 1,
+                                         QuantileGuess* guess = nullptr);
 
 }  // namespace roomsense::detail

@@ -114,19 +114,31 @@ std::pair<float, float> both_tails(std::vector<float>& v, std::size_t k, detail:
 // scans cheap. The sample is gathered in one pass (a strided read touches every cache line of the vertices), by
 // slices side by side where every vertex is kept; the axes' selections run side by side.
 constexpr std::size_t kQuantileSample = 16384;
-std::array<std::pair<float, float>, 3> robust_ranges(const std::vector<glm::vec3>& vertices,
+// `parts`: the vertices as consecutive parts (an IncrementalAnalysis's chunks), sampled as one array; `keep`
+// (indexed over all of them) only with one part.
+std::array<std::pair<float, float>, 3> robust_ranges(std::span<const std::span<const glm::vec3>> parts,
                                                      const std::vector<std::uint8_t>& keep, unsigned threads,
                                                      detail::QuantileGuess* guess) {
+  std::vector<std::size_t> part_end;  // where each part ends among all the vertices
+  std::size_t count = 0;
+  for (const std::span<const glm::vec3> part : parts) part_end.push_back(count += part.size());
   std::array<std::vector<float>, 3> values;
-  const std::size_t stride = std::max<std::size_t>(1, vertices.size() / kQuantileSample);
-  const std::size_t sampled = (vertices.size() + stride - 1) / stride;
+  const std::size_t stride = std::max<std::size_t>(1, count / kQuantileSample);
+  const std::size_t sampled = (count + stride - 1) / stride;
   for (std::vector<float>& axis : values) axis.resize(sampled);
   if (keep.empty()) {  // every vertex kept (the usual scan): sample j is vertex j * stride, gathered side by side
     detail::parallel_for(sampled, threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
-      for (std::size_t j = begin; j < end; ++j)
-        for (int axis = 0; axis < 3; ++axis) values[std::size_t(axis)][j] = vertices[j * stride][axis];
+      // The part holding the slice's first sample, then onward with the samples.
+      std::size_t part = std::size_t(std::upper_bound(part_end.begin(), part_end.end(), begin * stride) - part_end.begin());
+      for (std::size_t j = begin; j < end; ++j) {
+        const std::size_t i = j * stride;
+        while (part_end[part] <= i) ++part;
+        const glm::vec3& v = parts[part][i - (part_end[part] - parts[part].size())];
+        for (int axis = 0; axis < 3; ++axis) values[std::size_t(axis)][j] = v[axis];
+      }
     });
   } else {
+    const std::span<const glm::vec3> vertices = parts.front();
     std::size_t taken = 0;
     for (std::size_t i = 0; i < vertices.size(); i += stride)
       if (keep[i]) {
@@ -193,17 +205,39 @@ bool covers(std::span<const detail::VertexRun> runs, std::size_t vertices) {
 // (then `out` holds the kept vertices and triangles). The bounds are those of the kept vertices either way.
 // The three axes' outlier ranges are sampled on up to `threads` threads (the same ranges on any number), from
 // `guess` where it serves (view_input).
+// The checks of the arrays' sizes alone, and the counts they give.
+void check_sizes(std::size_t vertices, std::size_t indices, PreparedInput& out) {
+  if (vertices == 0) throw Error(ErrorCode::EmptyInput, "the scan has no vertices");
+  if (vertices > std::numeric_limits<std::uint32_t>::max())
+    throw Error(ErrorCode::BadIndices, "the scan has more vertices than 32-bit indices can address");
+  if (indices % 3 != 0)
+    throw Error(ErrorCode::BadIndices, "the index count " + std::to_string(indices) + " is not a multiple of 3");
+  out.input_vertices = vertices;
+  out.input_triangles = indices / 3;
+}
+
+// Whether a run's finite vertices all lie within the outlier ranges: its bounds are its extremes, so a run that
+// is not has an outlier.
+bool run_inside(const detail::VertexRun& run, const std::array<std::pair<float, float>, 3>& range) {
+  bool inside = true;
+  for (int axis = 0; axis < 3; ++axis)
+    inside = inside && run.lo[axis] >= range[axis].first && run.hi[axis] <= range[axis].second;
+  return inside;
+}
+
+// The bounds of the runs' finite vertices.
+void bounds_of_runs(std::span<const detail::VertexRun> runs, PreparedInput& out) {
+  out.lo = glm::vec3(INFINITY), out.hi = glm::vec3(-INFINITY);
+  for (const detail::VertexRun& run : runs) {
+    out.lo = glm::min(out.lo, run.lo);
+    out.hi = glm::max(out.hi, run.hi);
+  }
+}
+
 bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, const detail::KnownInput* known,
                  unsigned threads, detail::QuantileGuess* guess) {
-  if (scan.vertices.empty()) throw Error(ErrorCode::EmptyInput, "the scan has no vertices");
-  if (scan.vertices.size() > std::numeric_limits<std::uint32_t>::max())
-    throw Error(ErrorCode::BadIndices, "the scan has more vertices than 32-bit indices can address");
-  if (scan.indices.size() % 3 != 0)
-    throw Error(ErrorCode::BadIndices,
-                "the index count " + std::to_string(scan.indices.size()) + " is not a multiple of 3");
+  check_sizes(scan.vertices.size(), scan.indices.size(), out);
   const std::uint32_t vertex_count = std::uint32_t(scan.vertices.size());
-  out.input_vertices = scan.vertices.size();
-  out.input_triangles = scan.indices.size() / 3;
 
   // The vertices by runs: the caller's, or one over them all. That run and the index check come from one pass
   // over slices of both arrays, side by side.
@@ -262,13 +296,11 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
   if (out.skipped_vertices != 0) make_keep();
 
   if (reject_outliers && finite_count >= kOutlierMinVertices) {
-    const std::array<std::pair<float, float>, 3> range = robust_ranges(scan.vertices, keep, threads, guess);
+    const std::span<const glm::vec3> all(scan.vertices);
+    const std::array<std::pair<float, float>, 3> range = robust_ranges(std::span(&all, 1), keep, threads, guess);
     std::size_t first = 0;
     for (const detail::VertexRun& run : runs) {
-      // A run whose finite vertices' bounds lie within the ranges has no outlier.
-      bool inside = true;
-      for (int axis = 0; axis < 3; ++axis)
-        inside = inside && run.lo[axis] >= range[axis].first && run.hi[axis] <= range[axis].second;
+      const bool inside = run_inside(run, range);
       for (std::size_t i = first; !inside && i < first + run.count; ++i) {
         const glm::vec3& v = scan.vertices[i];
         if (!finite(v)) continue;
@@ -291,11 +323,7 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
     const detail::VertexRun kept = detail::summarize_vertices(out.vertices);
     out.lo = kept.lo, out.hi = kept.hi;
   } else {
-    out.lo = glm::vec3(INFINITY), out.hi = glm::vec3(-INFINITY);
-    for (const detail::VertexRun& run : runs) {
-      out.lo = glm::min(out.lo, run.lo);
-      out.hi = glm::max(out.hi, run.hi);
-    }
+    bounds_of_runs(runs, out);
   }
   return renumbered;
 }
@@ -376,6 +404,29 @@ VertexRun summarize_vertices(std::span<const glm::vec3> vertices) {
       if (*extreme == 0.0f) *extreme = first_zero();
   }
   return run;
+}
+
+std::optional<PreparedInput> check_parts(std::span<const std::span<const glm::vec3>> parts, std::size_t index_count,
+                                         bool reject_outliers, const KnownInput& known, unsigned threads,
+                                         QuantileGuess* guess) {
+  PreparedInput out;
+  std::size_t vertex_count = 0;
+  for (const std::span<const glm::vec3> part : parts) vertex_count += part.size();
+  check_sizes(vertex_count, index_count, out);
+  if (!known.indices_in_range || known.runs.size() != parts.size()) return std::nullopt;
+  std::size_t finite_count = 0;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    if (known.runs[k].count != parts[k].size()) return std::nullopt;
+    finite_count += known.runs[k].finite;
+  }
+  if (finite_count != vertex_count) return std::nullopt;  // a vertex to skip: check_input renumbers
+  if (reject_outliers && finite_count >= kOutlierMinVertices) {
+    const std::array<std::pair<float, float>, 3> range = robust_ranges(parts, {}, threads, guess);
+    for (const VertexRun& run : known.runs)
+      if (!run_inside(run, range)) return std::nullopt;  // an outlier: check_input renumbers
+  }
+  bounds_of_runs(known.runs, out);
+  return out;
 }
 
 InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* known, unsigned threads,

@@ -8,6 +8,61 @@
 #include <limits>
 
 namespace roomsense::detail {
+namespace {
+
+// Writes `from` at `to`, each index moved by `base`.
+void copy_indices(std::uint32_t* to, std::span<const std::uint32_t> from, std::uint32_t base) {
+  for (std::size_t k = 0; k < from.size(); ++k) to[k] = base + from[k];
+}
+
+// Writes chunk `s`'s arrays into `out` where `at` places them, its indices moved past the vertices before it.
+void place_chunk(Scan& out, const CombinedScan::Placed& at, const Scan& s) {
+  std::copy(s.vertices.begin(), s.vertices.end(), out.vertices.begin() + std::ptrdiff_t(at.vertex));
+  copy_indices(out.indices.data() + at.index, s.indices, std::uint32_t(at.vertex));
+  std::copy(s.labels.vertices.begin(), s.labels.vertices.end(), out.labels.vertices.begin() + std::ptrdiff_t(at.label_vertex));
+  copy_indices(out.labels.indices.data() + at.label_index, s.labels.indices, std::uint32_t(at.label_vertex));
+  std::copy(s.labels.labels.begin(), s.labels.labels.end(), out.labels.labels.begin() + std::ptrdiff_t(at.label));
+}
+
+// `v` resized to n, of which the first `keep` elements matter (place_chunk writes over the rest). Past its
+// capacity it takes exactly n, copying only those: vector's own growth would double a whole scan's arrays.
+template <class T>
+void resize_keeping(std::vector<T>& v, std::size_t keep, std::size_t n) {
+  if (n > v.capacity()) {
+    v.resize(std::min(keep, v.size()));
+    v.reserve(n);
+  }
+  v.resize(n);
+}
+
+}  // namespace
+
+const Scan& CombinedScan::whole(unsigned threads) {
+  const std::size_t from = std::min(in_place, placed.size());
+  const bool sized = scan.vertices.size() == end.vertex && scan.indices.size() == end.index &&
+                     scan.labels.vertices.size() == end.label_vertex && scan.labels.indices.size() == end.label_index &&
+                     scan.labels.labels.size() == end.label;
+  if (from == placed.size() && sized) return scan;
+  // The arrays ending where `end` says, the parts before chunk `from` kept; then each chunk's own part, the workers
+  // copying chunks side by side. A failure leaves in_place as it was: those chunks are still in place.
+  const Placed start = from < placed.size() ? placed[from] : end;
+  resize_keeping(scan.vertices, start.vertex, end.vertex);
+  resize_keeping(scan.indices, start.index, end.index);
+  resize_keeping(scan.labels.vertices, start.label_vertex, end.label_vertex);
+  resize_keeping(scan.labels.indices, start.label_index, end.label_index);
+  resize_keeping(scan.labels.labels, start.label, end.label);
+  parallel_for(placed.size() - from, threads, 1, [&](std::size_t begin, std::size_t stop, std::size_t) {
+    for (std::size_t k = from + begin; k < from + stop; ++k) place_chunk(scan, placed[k], *chunks[k]);
+  });
+  in_place = placed.size();
+  return scan;
+}
+
+Scan CombinedScan::take_whole(unsigned threads) {
+  whole(threads);
+  in_place = 0;
+  return std::move(scan);
+}
 
 std::vector<BandSum> ChunkBandSums::sums(const CombinedScan& c, std::span<const BandLimits> bands, unsigned threads) {
   const std::vector<BandLimits> wanted(bands.begin(), bands.end());
@@ -22,9 +77,8 @@ std::vector<BandSum> ChunkBandSums::sums(const CombinedScan& c, std::span<const 
   }
   std::vector<std::vector<BandSum>> found(missing.size());
   parallel_tasks(missing.size(), threads, [&](std::size_t i) {
-    const std::size_t k = missing[i];
-    const std::size_t first = c.placed[k].index;
-    found[i] = band_sums(c.scan.vertices, std::span(c.scan.indices).subspan(first, c.index_end(k) - first), bands);
+    const Scan& chunk = *c.chunks[missing[i]];
+    found[i] = band_sums(chunk.vertices, chunk.indices, bands);
   });
   for (std::size_t i = 0; i < missing.size(); ++i) {
     const CombinedScan::Placed& p = c.placed[missing[i]];
@@ -46,14 +100,15 @@ bool same_spec(const GridSpec& a, const GridSpec& b) {
 
 }  // namespace
 
-LabelGrid ChunkLabelVoxels::grid(const CombinedScan& c, const GridSpec& spec, std::uint64_t test_budget,
-                                 std::vector<std::string>& warnings) {
+LabelGrid ChunkLabelVoxels::grid(CombinedScan& c, const GridSpec& spec, std::uint64_t test_budget,
+                                 std::vector<std::string>& warnings, unsigned threads) {
   LabelGrid out;
-  const LabelledTriangles& labels = c.scan.labels;
-  if (!labels_usable(labels, warnings)) return out;
-  // Chunk k's labelled triangles: its indices (into the scan's label vertices) and labels, one per triangle (the
-  // scan has one label per triangle, and no chunk fewer: IncrementalAnalysis refuses those).
-  const auto label_end = [&](std::size_t k) { return k + 1 < c.placed.size() ? c.placed[k + 1].label : labels.labels.size(); };
+  if (!labels_usable(c.end.label_index, c.end.label, warnings)) return out;
+  // Chunk k's labelled triangles: its own arrays where every chunk's are its own (CombinedScan::own_labels), else
+  // its part of the whole scan's, its indices into all the label vertices (where one may land in a later chunk's)
+  // and its labels as placed (labels_usable: as many in all as labelled triangles).
+  const LabelledTriangles* all = c.labels_own() ? nullptr : &c.whole(threads).labels;
+  const auto label_end = [&](std::size_t k) { return k + 1 < c.placed.size() ? c.placed[k + 1].label : c.end.label; };
   std::map<std::uint64_t, Kept> now;
   std::vector<std::pair<std::size_t, LabelBoxes>> fresh;  // chunk, its boxes
   std::uint64_t tests = 0;
@@ -66,8 +121,11 @@ LabelGrid ChunkLabelVoxels::grid(const CombinedScan& c, const GridSpec& spec, st
       continue;
     }
     const std::size_t count = label_end(k) - p.label;
-    fresh.emplace_back(k, label_boxes(spec, labels.vertices, std::span(labels.indices).subspan(p.label_index, 3 * count),
-                                      std::span(labels.labels).subspan(p.label, count)));
+    const LabelledTriangles& own = c.chunks[k]->labels;
+    fresh.emplace_back(k, all ? label_boxes(spec, all->vertices, std::span(all->indices).subspan(p.label_index, 3 * count),
+                                            std::span(all->labels).subspan(p.label, count))
+                              : label_boxes(spec, own.vertices, std::span(own.indices).first(3 * count),
+                                            std::span(own.labels).first(count)));
     tests += fresh.back().second.tests;
   }
   chunks_ = std::move(now);  // the fresh ones join below, within the budget
@@ -79,7 +137,7 @@ LabelGrid ChunkLabelVoxels::grid(const CombinedScan& c, const GridSpec& spec, st
   // overlap a lot, and the labels are voxelized whole, as a full analysis does, with nothing kept.
   const auto whole = [&] {
     chunks_.clear();
-    return voxelize_labels(spec, labels, test_budget, warnings);
+    return voxelize_labels(spec, c.whole(threads).labels, test_budget, warnings);
   };
   if (spec.voxel_count() > std::numeric_limits<std::uint32_t>::max()) return whole();
   std::uint64_t entries = 0;

@@ -12,6 +12,7 @@
 #include "../worker_pool.h"
 #include "surface_heights.h"
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <utility>
@@ -20,20 +21,40 @@
 
 namespace roomsense::detail {
 
-// An IncrementalAnalysis's chunks in id order as one scan, kept between analyses: a change copies the chunks
-// from the first one that changed on, not all of them, and summarizes each chunk's vertices once.
+// An IncrementalAnalysis's chunks in id order as one scan, kept between analyses. An analysis reads each chunk's
+// own arrays where it can (the input checks, the voxels, the surface heights' sums, the labels' voxels): the
+// chunks' arrays placed end to end (whole()) are made only for a step that reads the scan whole (input checks that
+// renumber, a ridge's or an inexact surface height, a sloped ceiling's planes), and then copied again only from
+// the first chunk not in its place since they were last made. So a change costs the chunks it changed, not a copy
+// of the room, and the chunks are not held twice.
 struct CombinedScan {
   struct Placed {
     std::uint64_t id = 0, hash = 0;
-    // Where the chunk's arrays begin in `scan`'s.
+    // Where the chunk's arrays begin in the whole scan's.
     std::size_t vertex = 0, index = 0, label_vertex = 0, label_index = 0, label = 0;
   };
+  std::vector<Placed> placed;        // each chunk, in order
+  Placed end;                        // where the last chunk's arrays end: the whole scan's sizes
+  std::vector<const Scan*> chunks;   // each placed chunk's own arrays (its IncrementalAnalysis's)
+  KnownInput known;                  // a run per placed chunk; every index in range
+  // Per placed chunk, whether its labelled triangles index its own label vertices alone: where all do, a chunk's
+  // labels read alone are what they are in the whole scan.
+  std::vector<std::uint8_t> own_labels;
+  bool labels_own() const { return std::find(own_labels.begin(), own_labels.end(), 0) == own_labels.end(); }
+  // The chunks' arrays end to end, brought up to `placed` (the first `in_place` chunks are there already), copied
+  // on up to `threads` workers.
+  const Scan& whole(unsigned threads);
+  // whole(), moved out.
+  Scan take_whole(unsigned threads);
+  // What analyze() is given for these chunks: an address, whose arrays only whole() brings up to date.
+  const Scan& handle() const { return scan; }
+  // After a change: the chunks before `first` are where the whole scan had them.
+  void moved_from(std::size_t first) { in_place = std::min(in_place, first); }
+  void clear() { *this = {}; }
+
+ private:
   Scan scan;
-  std::vector<Placed> placed;  // each chunk in `scan`, in order
-  KnownInput known;            // a run per placed chunk; every index in range
-  // Where chunk k's vertices and indices end in `scan`'s.
-  std::size_t vertex_end(std::size_t k) const { return k + 1 < placed.size() ? placed[k + 1].vertex : scan.vertices.size(); }
-  std::size_t index_end(std::size_t k) const { return k + 1 < placed.size() ? placed[k + 1].index : scan.indices.size(); }
+  std::size_t in_place = 0;
 };
 
 // The surface heights' sums (surface_heights.h) of a combined scan's bands, chunk by chunk: a band's sum is the
@@ -61,10 +82,12 @@ class ChunkBandSums {
 // triangle, as Android XR does, labels the whole room).
 class ChunkLabelVoxels {
  public:
-  // voxelize_labels(spec, c.scan.labels, test_budget, warnings), equal in result and warnings. Keeps each chunk's
-  // voxels for the next analysis, and no others; where they would hold more entries than the grid has voxels (the
-  // chunks' labelled triangles overlap a lot), keeps none and voxelizes the labels whole, as a full analysis does.
-  LabelGrid grid(const CombinedScan& c, const GridSpec& spec, std::uint64_t test_budget, std::vector<std::string>& warnings);
+  // voxelize_labels(spec, c.whole().labels, test_budget, warnings), equal in result and warnings. Keeps each
+  // chunk's voxels for the next analysis, and no others; where they would hold more entries than the grid has
+  // voxels (the chunks' labelled triangles overlap a lot), keeps none and voxelizes the labels whole, as a full
+  // analysis does. `threads`: for c.whole(), where it is needed.
+  LabelGrid grid(CombinedScan& c, const GridSpec& spec, std::uint64_t test_budget, std::vector<std::string>& warnings,
+                 unsigned threads);
 
  private:
   struct Kept {
@@ -105,7 +128,7 @@ struct AnalysisCaches {
 };
 
 // analyze() (analysis.h), served by `caches` where not null: its area searches, features and bounds always;
-// its input checks and surface heights where `scan` is caches->combined.scan.
+// its input checks, voxels, surface heights and labels chunk by chunk where `scan` is caches->combined.handle().
 AnalysisResult analyze(const Scan& scan, const AnalysisOptions& options, AnalysisCaches* caches);
 
 }  // namespace roomsense::detail

@@ -156,11 +156,33 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   stop_point(options.stop);
   check_params(options.features);
   check_params(options.areas);
-  // An IncrementalAnalysis's combined scan: what it knows of each chunk.
-  const CombinedScan* chunks = caches != nullptr && &scan == &caches->combined.scan ? &caches->combined : nullptr;
-  const detail::InputView in =
-      detail::view_input(scan, options.reject_outliers, chunks ? &chunks->known : nullptr, options.threads,
-                         caches ? &caches->quantiles : nullptr);
+  // An IncrementalAnalysis's chunks: what it knows of each. Their input checks, voxels, surface sums and labels
+  // read each chunk's own arrays; `scan` is not read (its arrays are made only by chunks->whole()).
+  CombinedScan* const chunks = caches != nullptr && &scan == &caches->combined.handle() ? &caches->combined : nullptr;
+  detail::InputView in;
+  // The chunks checked as parts, where nothing is to be removed: `in` then has the counts and bounds alone, and
+  // whole_input() gives it the whole scan's arrays where a step reads them. Otherwise the whole scan, as given or
+  // made from the chunks, checked and where need be renumbered.
+  std::optional<PreparedInput> parts_checked;
+  if (chunks) {
+    std::vector<std::span<const glm::vec3>> parts;
+    parts.reserve(chunks->chunks.size());
+    for (const Scan* chunk : chunks->chunks) parts.emplace_back(chunk->vertices);
+    parts_checked = detail::check_parts(parts, chunks->end.index, options.reject_outliers, chunks->known,
+                                        options.threads, &caches->quantiles);
+  }
+  if (parts_checked) in.checked = std::move(*parts_checked);
+  else in = detail::view_input(chunks ? chunks->whole(options.threads) : scan, options.reject_outliers,
+                               chunks ? &chunks->known : nullptr, options.threads, caches ? &caches->quantiles : nullptr);
+  // Whether the checks renumbered the input (then `in` holds its own arrays, and a chunk's are not the input's).
+  const bool renumbered = !in.checked.vertices.empty();
+  const bool in_parts = parts_checked.has_value();
+  const auto whole_input = [&] {
+    if (!in_parts || !in.vertices.empty()) return;
+    const Scan& whole = chunks->whole(options.threads);
+    in.vertices = whole.vertices, in.indices = whole.indices;
+  };
+  const std::size_t index_count = in_parts ? chunks->end.index : in.indices.size();
   const PreparedInput& checked = in.checked;
   r.input = {checked.input_vertices, checked.input_triangles, checked.skipped_vertices, checked.outlier_vertices,
              checked.dropped_triangles};
@@ -171,8 +193,8 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   if (checked.dropped_triangles > 0)
     r.warnings.push_back(std::to_string(checked.dropped_triangles) + " triangles touching skipped vertices dropped");
 
-  r.mode = options.mode.value_or(in.indices.empty() ? VoxelMode::Vertices : VoxelMode::Triangles);
-  if (r.mode == VoxelMode::Triangles && in.indices.empty()) {
+  r.mode = options.mode.value_or(index_count == 0 ? VoxelMode::Vertices : VoxelMode::Triangles);
+  if (r.mode == VoxelMode::Triangles && index_count == 0) {
     r.mode = VoxelMode::Vertices;
     r.warnings.push_back("triangle mode asked for a scan without triangles: vertex mode used");
   }
@@ -182,7 +204,8 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   // An IncrementalAnalysis's stage maps the few chunks it voxelizes again itself, where the input checks removed
   // nothing: the whole scan's vertices are not mapped for each change.
   const bool stage_maps_chunks = chunks != nullptr && &stage == caches->chunk_stage && r.mode == VoxelMode::Triangles &&
-                                 in.vertices.data() == scan.vertices.data() && in.indices.data() == scan.indices.data();
+                                 !renumbered;
+  if (!stage_maps_chunks) whole_input();
   const std::size_t mapped = stage_maps_chunks ? 0 : in.vertices.size();
   const std::unique_ptr<glm::vec3[]> grid_vertex_data = std::make_unique_for_overwrite<glm::vec3[]>(mapped);
   detail::to_grid_units_into(in.vertices.first(mapped), spec, options.threads, grid_vertex_data.get());
@@ -268,7 +291,8 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   // heights decide (no room, which storeys are rooms) waits for all; a storey the heights drop is rare. The
   // labels' warnings come after that decision, as the features do.
   std::vector<std::string> label_warnings;
-  LabelGrid labels = chunks != nullptr ? caches->label_voxels.grid(*chunks, spec, options.voxel_test_budget, label_warnings)
+  LabelGrid labels = chunks != nullptr ? caches->label_voxels.grid(*chunks, spec, options.voxel_test_budget,
+                                                                   label_warnings, options.threads)
                                         : voxelize_labels(spec, scan.labels, options.voxel_test_budget, label_warnings);
   // An IncrementalAnalysis whose chunks changed within their voxels: the features of a storey on the levels of one
   // of the previous analysis's (and below, the bounds, where every storey is) are that analysis's.
@@ -316,12 +340,13 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
       }
       return;
     }
-    if (!in.indices.empty())
-      sums = chunks != nullptr && in.indices.data() == scan.indices.data()
-                 ? caches->band_sums.sums(*chunks, bands, options.threads)
-                 : band_sums(in.vertices, in.indices, bands, options.threads);
+    if (index_count > 0)
+      sums = chunks != nullptr && !renumbered ? caches->band_sums.sums(*chunks, bands, options.threads)
+                                              : band_sums(in.vertices, in.indices, bands, options.threads);
   });
   // From the sums at once; a ridge, a point cloud's (or terms past the sums) a pass each, side by side.
+  for (std::size_t k = 0; k < heights.size(); ++k)
+    if (ridge(k) || sums.empty() || !sums[band_of[k]].exact()) whole_input();
   detail::parallel_tasks(heights.size(), sums.empty() ? options.threads : 1, [&](std::size_t k) {
     const auto [lo, hi] = levels_of(k);
     const std::size_t b = band_of[k];
@@ -352,8 +377,10 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   r.timings.features = clock.lap();
   stop_point(options.stop);
 
-  for (std::uint32_t i = 0; i < r.storeys.size(); ++i)
+  for (std::uint32_t i = 0; i < r.storeys.size(); ++i) {
+    if (r.storey_features(i).facets.size() > 1) whole_input();  // the facets past the first read the input
     r.storeys[i].ceiling_planes = detail::ceiling_planes(spec, in.vertices, in.indices, r.storey_features(i));
+  }
   list_rooms(r);
   // The areas (each storey's, side by side: one storey's search leaves a worker idle now and then, the next
   // fills it) and the bounds, which read the features alone, beside them: the area search's task graph leaves

@@ -119,23 +119,17 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     std::uint64_t tests = 0;
   };
 
-  // Chunk k's triangles alone on the grid, its vertices mapped to grid units here and its indices made its own;
-  // its marks lie within its vertices' box (box_index per axis).
+  // Chunk k's triangles alone on the grid, from its own arrays (its vertices mapped to grid units here); its marks
+  // lie within its vertices' box (box_index per axis).
   Kept voxelize_chunk(const VoxelizeRequest& request, std::uint64_t hash, std::size_t k) {
-    const detail::CombinedScan& c = *combined_;
+    const Scan& chunk = *combined_->chunks[k];
     Kept kept;
     kept.hash = hash;
-    const std::size_t first_index = c.placed[k].index, first_vertex = c.placed[k].vertex;
+    if (chunk.indices.empty()) return kept;
+    const std::vector<glm::vec3> vertices = to_grid_units(chunk.vertices, request.spec);
     VoxelizeRequest part = request;
-    part.indices = request.indices.subspan(first_index, c.index_end(k) - first_index);
-    if (part.indices.empty()) return kept;
-    const std::vector<glm::vec3> vertices =
-        to_grid_units(std::span(c.scan.vertices).subspan(first_vertex, c.vertex_end(k) - first_vertex), request.spec);
-    std::vector<std::uint32_t> indices;
-    indices.reserve(part.indices.size());
-    for (const std::uint32_t i : part.indices) indices.push_back(i - std::uint32_t(first_vertex));
     part.grid_vertices = vertices;
-    part.indices = indices;
+    part.indices = chunk.indices;
     // One scratch grid for every chunk, cleared over each chunk's box after use: a chunk costs its box, not the
     // grid (the first result of a room in a hundred chunks cleared the whole grid a hundred times).
     // A failure here reaches run(), which drops the scratch grid with whatever marks it holds.
@@ -237,20 +231,6 @@ void check_indices(std::uint64_t id, const Scan& s) {
                                            " is out of range (" + std::to_string(s.vertices.size()) + " vertices)");
 }
 
-// Writes `from` at `to`, each index moved by `base`.
-void copy_indices(std::uint32_t* to, std::span<const std::uint32_t> from, std::uint32_t base) {
-  for (std::size_t k = 0; k < from.size(); ++k) to[k] = base + from[k];
-}
-
-// Writes chunk `s`'s arrays into `out` where `at` places them, its indices moved past the vertices before it.
-void place_chunk(Scan& out, const detail::CombinedScan::Placed& at, const Scan& s) {
-  std::copy(s.vertices.begin(), s.vertices.end(), out.vertices.begin() + std::ptrdiff_t(at.vertex));
-  copy_indices(out.indices.data() + at.index, s.indices, std::uint32_t(at.vertex));
-  std::copy(s.labels.vertices.begin(), s.labels.vertices.end(), out.labels.vertices.begin() + std::ptrdiff_t(at.label_vertex));
-  copy_indices(out.labels.indices.data() + at.label_index, s.labels.indices, std::uint32_t(at.label_vertex));
-  std::copy(s.labels.labels.begin(), s.labels.labels.end(), out.labels.labels.begin() + std::ptrdiff_t(at.label));
-}
-
 // Where the arrays of a scan placed at `at` end.
 detail::CombinedScan::Placed end_of(detail::CombinedScan::Placed at, const Scan& s) {
   at.vertex += s.vertices.size(), at.index += s.indices.size(), at.label_vertex += s.labels.vertices.size();
@@ -271,24 +251,13 @@ std::vector<detail::CombinedScan::Placed> place_from(detail::CombinedScan::Place
   return placed;
 }
 
-// `v` resized to n, of which the first `keep` elements matter (place_chunk writes over the rest). Past its
-// capacity it takes exactly n, copying only those: vector's own growth would double a whole scan's arrays.
-template <class T>
-void resize_keeping(std::vector<T>& v, std::size_t keep, std::size_t n) {
-  if (n > v.capacity()) {
-    v.resize(std::min(keep, v.size()));
-    v.reserve(n);
-  }
-  v.resize(n);
-}
-
-// `out`'s arrays ending where `end` says, the parts before `start` kept.
-void resize_to(Scan& out, const detail::CombinedScan::Placed& start, const detail::CombinedScan::Placed& end) {
-  resize_keeping(out.vertices, start.vertex, end.vertex);
-  resize_keeping(out.indices, start.index, end.index);
-  resize_keeping(out.labels.vertices, start.label_vertex, end.label_vertex);
-  resize_keeping(out.labels.indices, start.label_index, end.label_index);
-  resize_keeping(out.labels.labels, start.label, end.label);
+// Whether `s`'s labelled triangles are its own: one label each, and each indexing its own label vertices. (In a
+// combined scan, a chunk's index past its own may land in a later chunk's label vertices, and a chunk's labels
+// past its triangles label the next chunk's.)
+bool labels_own(const Scan& s) {
+  const LabelledTriangles& l = s.labels;
+  const auto worst = std::max_element(l.indices.begin(), l.indices.end());
+  return l.indices.size() == 3 * l.labels.size() && (worst == l.indices.end() || *worst < l.vertices.size());
 }
 
 }  // namespace
@@ -302,16 +271,15 @@ std::vector<std::uint64_t> IncrementalAnalysis::chunk_ids() const {
 
 Scan IncrementalAnalysis::combined_scan() const {
   std::vector<std::pair<std::uint64_t, const Scan*>> chunks;
+  detail::CombinedScan c;
   for (const auto& [id, chunk] : chunks_) {
     check_indices(id, chunk.scan);
     chunks.push_back({id, &chunk.scan});
+    c.chunks.push_back(&chunk.scan);
   }
-  Scan out;
-  const std::vector<detail::CombinedScan::Placed> placed = place_from({}, chunks, {});
-  if (placed.empty()) return out;
-  resize_to(out, {}, end_of(placed.back(), *chunks.back().second));
-  for (std::size_t k = 0; k < chunks.size(); ++k) place_chunk(out, placed[k], *chunks[k].second);
-  return out;
+  c.placed = place_from({}, chunks, {});
+  if (!c.placed.empty()) c.end = end_of(c.placed.back(), *chunks.back().second);
+  return c.take_whole(1);
 }
 
 void IncrementalAnalysis::update_combined() {
@@ -321,46 +289,53 @@ void IncrementalAnalysis::update_combined() {
   auto it = chunks_.begin();
   for (; same < c.placed.size() && it != chunks_.end(); ++same, ++it)
     if (c.placed[same].id != it->first || c.placed[same].hash != it->second.hash) break;
-  // The vertex runs of the chunks after those, by id, kept for the ones that come back unchanged (their indices
-  // were checked when they were placed).
-  std::vector<std::pair<detail::CombinedScan::Placed, detail::VertexRun>> later;
-  for (std::size_t k = same; k < c.placed.size(); ++k) later.push_back({c.placed[k], c.known.runs[k]});
-  // The chunks placed again, each changed one's indices checked before anything moves: a chunk refused here leaves
-  // the combined scan as the last result had it.
+  // What is known of the chunks after those (their vertex runs, whether their labels are their own), by id, kept
+  // for the ones that come back unchanged (their indices were checked when they were placed).
+  struct Known {
+    detail::CombinedScan::Placed at;
+    detail::VertexRun run;
+    std::uint8_t own_labels;
+  };
+  std::vector<Known> later;
+  for (std::size_t k = same; k < c.placed.size(); ++k) later.push_back({c.placed[k], c.known.runs[k], c.own_labels[k]});
+  // The chunks placed again, each changed one's indices checked before anything changes: a chunk refused here
+  // leaves the combined scan as the last result had it.
   std::vector<std::pair<std::uint64_t, const Scan*>> rest;
   std::vector<std::uint64_t> hashes;
-  std::vector<std::optional<detail::VertexRun>> runs;  // kept, or summarized below
+  std::vector<const Known*> kept;  // per chunk of `rest`: what was known of it, or null where it changed
   auto was = later.begin();
   for (; it != chunks_.end(); ++it) {
-    while (was != later.end() && was->first.id < it->first) ++was;
-    const bool unchanged = was != later.end() && was->first.id == it->first && was->first.hash == it->second.hash;
+    while (was != later.end() && was->at.id < it->first) ++was;
+    const bool unchanged = was != later.end() && was->at.id == it->first && was->at.hash == it->second.hash;
     if (!unchanged) check_indices(it->first, it->second.scan);
     rest.push_back({it->first, &it->second.scan});
     hashes.push_back(it->second.hash);
-    runs.push_back(unchanged ? std::optional(was->second) : std::nullopt);
-  }
-  // Where the chunks placed again begin: after the kept ones.
-  detail::CombinedScan::Placed start{0, 0, c.scan.vertices.size(), c.scan.indices.size(), c.scan.labels.vertices.size(),
-                                     c.scan.labels.indices.size(), c.scan.labels.labels.size()};
-  if (same < c.placed.size()) {
-    start = c.placed[same];
-    c.placed.resize(same);
-    c.known.runs.resize(same);
+    kept.push_back(unchanged ? &*was : nullptr);
   }
   try {
+    // Where the chunks placed again begin: after the kept ones.
+    const detail::CombinedScan::Placed start = same < c.placed.size() ? c.placed[same] : c.end;
     const std::vector<detail::CombinedScan::Placed> placed = place_from(start, rest, hashes);
-    resize_to(c.scan, start, placed.empty() ? start : end_of(placed.back(), *rest.back().second));
-    // Each chunk's own part of the arrays: the workers copy chunks side by side.
+    // The changed chunks' runs and labels, side by side.
+    std::vector<detail::VertexRun> runs(rest.size());
+    std::vector<std::uint8_t> own(rest.size());
     detail::parallel_for(rest.size(), options_.threads, 1, [&](std::size_t begin, std::size_t end, std::size_t) {
       for (std::size_t k = begin; k < end; ++k) {
-        place_chunk(c.scan, placed[k], *rest[k].second);
-        if (!runs[k]) runs[k] = detail::summarize_vertices(rest[k].second->vertices);
+        runs[k] = kept[k] ? kept[k]->run : detail::summarize_vertices(rest[k].second->vertices);
+        own[k] = kept[k] ? kept[k]->own_labels : std::uint8_t(labels_own(*rest[k].second));
       }
     });
+    c.placed.resize(same), c.known.runs.resize(same), c.own_labels.resize(same), c.chunks.resize(same);
     c.placed.insert(c.placed.end(), placed.begin(), placed.end());
-    for (const std::optional<detail::VertexRun>& run : runs) c.known.runs.push_back(*run);
+    c.known.runs.insert(c.known.runs.end(), runs.begin(), runs.end());
+    c.own_labels.insert(c.own_labels.end(), own.begin(), own.end());
+    // Every chunk's arrays: a kept one's Scan is the same object as before (chunks_'s node), and may be read.
+    for (std::size_t k = 0; k < same; ++k) c.chunks[k] = &chunks_.at(c.placed[k].id).scan;
+    for (const auto& [id, scan] : rest) c.chunks.push_back(scan);
+    c.end = placed.empty() ? start : end_of(placed.back(), *rest.back().second);
+    c.moved_from(same);
   } catch (...) {
-    c = {};  // arrays half grown: the next result places every chunk again
+    c.clear();  // lists half made: the next result places every chunk again
     throw;
   }
   c.known.indices_in_range = true;
@@ -381,7 +356,7 @@ const AnalysisResult& IncrementalAnalysis::result() {
     detail::AnalysisCaches& caches;
     ~Forget() { caches.previous = nullptr; }
   } forget{*caches_};
-  result_ = detail::analyze(caches_->combined.scan, options_, caches_.get());
+  result_ = detail::analyze(caches_->combined.handle(), options_, caches_.get());
   dirty_ = false;
   return *result_;
 }

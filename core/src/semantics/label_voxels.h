@@ -27,6 +27,8 @@ struct LabelBoxes {
 
 // Whether `labels` has one label per labelled triangle (else one warning); false too when it has none.
 bool labels_usable(const LabelledTriangles& labels, std::vector<std::string>& warnings);
+// The same from the counts of labelled triangles' indices and of labels.
+bool labels_usable(std::size_t indices, std::size_t labels, std::vector<std::string>& warnings);
 // The boxes of triangles `labels.size()` triangles of `indices` (into `vertices`), each with its label.
 LabelBoxes label_boxes(const GridSpec& spec, std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,
                        std::span<const SurfaceLabel> labels);

@@ -11,14 +11,18 @@
 namespace roomsense {
 namespace detail {
 
-bool labels_usable(const LabelledTriangles& in, std::vector<std::string>& warnings) {
-  if (in.labels.empty()) return false;
-  if (in.indices.size() != 3 * in.labels.size()) {
-    warnings.push_back("runtime labels ignored: " + std::to_string(in.labels.size()) + " labels for " +
-                       std::to_string(in.indices.size() / 3) + " labelled triangles");
+bool labels_usable(std::size_t indices, std::size_t labels, std::vector<std::string>& warnings) {
+  if (labels == 0) return false;
+  if (indices != 3 * labels) {
+    warnings.push_back("runtime labels ignored: " + std::to_string(labels) + " labels for " +
+                       std::to_string(indices / 3) + " labelled triangles");
     return false;
   }
   return true;
+}
+
+bool labels_usable(const LabelledTriangles& in, std::vector<std::string>& warnings) {
+  return labels_usable(in.indices.size(), in.labels.size(), warnings);
 }
 
 LabelBoxes label_boxes(const GridSpec& spec, std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,

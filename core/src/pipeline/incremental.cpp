@@ -329,7 +329,7 @@ void IncrementalAnalysis::update_combined() {
     c.placed.insert(c.placed.end(), placed.begin(), placed.end());
     c.known.runs.insert(c.known.runs.end(), runs.begin(), runs.end());
     c.own_labels.insert(c.own_labels.end(), own.begin(), own.end());
-    // Every chunk's arrays: a kept one's Scan is the same object as before (chunks_'s node), and may be read.
+    // Every chunk's arrays, a kept one's looked up again: removed and set again as it was, it is another node.
     for (std::size_t k = 0; k < same; ++k) c.chunks[k] = &chunks_.at(c.placed[k].id).scan;
     for (const auto& [id, scan] : rest) c.chunks.push_back(scan);
     c.end = placed.empty() ? start : end_of(placed.back(), *rest.back().second);

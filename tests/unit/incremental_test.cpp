@@ -145,6 +145,12 @@ void replay(const Scan& scan, unsigned seed, bool keeps_voxels = true) {
     inc.set_chunk(id, tiles.at(id));
     check("add back");
   }
+  // A chunk removed and set again as it was before the next result: the same chunk, held anew (one added back
+  // above holds its tile as split).
+  if (!removed.empty() && inc.remove_chunk(removed.front())) {
+    inc.set_chunk(removed.front(), tiles.at(removed.front()));
+    check("removed and set again");
+  }
   // Nothing changed: the previous result, at once.
   inc.result();
   EXPECT_TRUE(inc.reused_result());

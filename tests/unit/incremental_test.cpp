@@ -92,7 +92,7 @@ void replay(const Scan& scan, unsigned seed, bool keeps_voxels = true) {
   std::mt19937 rng(seed);
   std::shuffle(order.begin(), order.end(), rng);
   IncrementalAnalysis inc;
-  std::vector<std::uint64_t> added, removed;
+  std::vector<std::uint64_t> added, removed, refined_ids;
   std::size_t steps = 0, same_grid_steps = 0, bands_searched = 0, bands_total = 0, partly_searched = 0;
   std::optional<GridSpec> previous_grid;
   const auto check = [&](const std::string& what) {
@@ -134,6 +134,7 @@ void replay(const Scan& scan, unsigned seed, bool keeps_voxels = true) {
     const std::uint64_t victim = added[rng() % added.size()];
     if (rng() % 2 == 0) {
       inc.set_chunk(victim, refined(tiles.at(victim)));
+      refined_ids.push_back(victim);
       check("replace after add " + std::to_string(i));
     } else if (inc.remove_chunk(victim)) {
       added.erase(std::find(added.begin(), added.end(), victim));
@@ -145,11 +146,13 @@ void replay(const Scan& scan, unsigned seed, bool keeps_voxels = true) {
     inc.set_chunk(id, tiles.at(id));
     check("add back");
   }
-  // A chunk removed and set again as it was before the next result: the same chunk, held anew (one added back
-  // above holds its tile as split).
-  if (!removed.empty() && inc.remove_chunk(removed.front())) {
-    inc.set_chunk(removed.front(), tiles.at(removed.front()));
+  // A chunk removed and set again as it was before the next result: the same chunk, held anew.
+  for (const std::uint64_t id : order) {
+    if (std::find(refined_ids.begin(), refined_ids.end(), id) != refined_ids.end()) continue;  // not as split
+    ASSERT_TRUE(inc.remove_chunk(id));
+    inc.set_chunk(id, tiles.at(id));
     check("removed and set again");
+    break;
   }
   // Nothing changed: the previous result, at once.
   inc.result();

@@ -24,9 +24,9 @@ namespace roomsense::detail {
 // An IncrementalAnalysis's chunks in id order as one scan, kept between analyses. An analysis reads each chunk's
 // own arrays where it can (the input checks, the voxels, the surface heights' sums, the labels' voxels): the
 // chunks' arrays placed end to end (whole()) are made only for a step that reads the scan whole (input checks that
-// renumber, a ridge's or an inexact surface height, a sloped ceiling's planes), and then copied again only from
-// the first chunk not in its place since they were last made. So a change costs the chunks it changed, not a copy
-// of the room, and the chunks are not held twice.
+// renumber, a ridge's or an inexact surface height, a sloped ceiling's planes, labels not their chunk's own), and
+// then copied again only from the first chunk not in its place since they were last made. So a change costs the
+// chunks it changed, not a copy of the room, and the chunks are not held twice.
 struct CombinedScan {
   struct Placed {
     std::uint64_t id = 0, hash = 0;

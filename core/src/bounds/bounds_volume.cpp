@@ -93,8 +93,10 @@ void fill_plane_holes(const GridSpec& s, const FloorCeiling& levels, const std::
   const PlaneHoles holes(s, levels, g, h);
   std::vector<std::vector<std::size_t>> fills(detail::parallel_slices(std::size_t(s.nz), threads, 8));
   detail::parallel_for(std::size_t(s.nz), threads, 8, [&](std::size_t z_begin, std::size_t z_end, std::size_t slice) {
+    std::vector<std::size_t> found;  // moved in after: the slices' vectors share cache lines
     for (int z = int(z_begin); z < int(z_end); ++z)
-      for (int x = 0; x < s.nx; ++x) holes.fills(x, z, fills[slice]);
+      for (int x = 0; x < s.nx; ++x) holes.fills(x, z, found);
+    fills[slice] = std::move(found);
   });
   for (const auto& fill : fills)
     for (const std::size_t i : fill) volume[i] = 1;

@@ -604,10 +604,14 @@ BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint
   detail::parallel_tasks(3 * kHalves, threads, [&](std::size_t task) {
     const std::size_t axis = kMeshOrder[task / kHalves], half = task % kHalves;
     const int c = kAxes[axis].c, middle = (box.lo[c] - 1 + box.hi[c]) / 2;
+    // Built in the task's own builder and moved in after: the parts' vectors lie side by side, and growing them in
+    // place had the workers pass their cache lines back and forth.
+    MeshBuilder part;
     mesh_axis(spec, volume, box, kAxes[axis], half == 0 ? box.lo[c] - 1 : middle + 1, half == 0 ? middle : box.hi[c],
-              corners ? &*corners : nullptr, parts[axis][half], stop,
+              corners ? &*corners : nullptr, part, stop,
               {kept ? &kept->slices[axis] : nullptr, kept ? &changed.layers[std::size_t(c)] : nullptr,
                next ? &next->slices[axis] : nullptr});
+    parts[axis][half] = std::move(part);
   });
   BoundsMesh mesh;
   MeshBuilder::MeshPoints index;

@@ -5,7 +5,6 @@
 #include "surfaces/regions.h"
 
 #include <algorithm>
-#include <deque>
 
 namespace roomsense {
 
@@ -16,46 +15,53 @@ RoomSplit split_rooms(const GridSpec& spec, const std::vector<std::uint8_t>& ins
   for (std::size_t c = 0; c < columns; ++c) free[c] = inside[c] && !walls[c] ? 1 : 0;
   // A core cell has more than half the passage to the nearest blocked cell, centre to centre: a corridor of
   // w cells has cores only when w > min_passage / voxel.
-  const std::vector<float> clearance = detail::distance_to_unmasked(spec.nx, spec.nz, free);
   const float core_cells = 0.5f * min_passage / spec.voxel_size;
+  const std::vector<std::uint8_t> core = detail::farther_than(spec.nx, spec.nz, free, core_cells + 1e-3f);
   const detail::Components cores = detail::label_components(
-      spec.nx, spec.nz, [&](std::size_t c) { return free[c] && clearance[c] > core_cells + 1e-3f; },
-      [](std::size_t, std::size_t) { return true; });
+      spec.nx, spec.nz, [&](std::size_t c) { return free[c] && core[c]; }, [](std::size_t, std::size_t) { return true; });
 
   // Every free column joins the core it reaches first through free columns (a breadth-first search from all
   // cores at once, 4-connected, in column order on ties): a doorway is split where the two fronts meet.
   std::vector<int> label(columns, kNoRoom);
-  std::deque<std::size_t> queue;
-  for (std::size_t c = 0; c < columns; ++c)
-    if (cores.label[c] >= 0) {
-      label[c] = cores.label[c];
-      queue.push_back(c);
-    }
+  // First in, first out: the columns queued and not yet spread from start at `head`; each with its x and z.
+  struct Queued {
+    std::size_t column;
+    int x, z;
+  };
+  std::vector<Queued> queue;
+  std::size_t head = 0;
+  for (int z = 0; z < spec.nz; ++z)
+    for (int x = 0; x < spec.nx; ++x)
+      if (const std::size_t c = spec.column(x, z); cores.label[c] >= 0) {
+        label[c] = cores.label[c];
+        queue.push_back({c, x, z});
+      }
   int next = int(cores.sizes.size());
   // Breadth-first from the queued columns over free unlabelled ones, each taking its parent's label.
   const auto spread = [&] {
-    while (!queue.empty()) {
-      const std::size_t c = queue.front();
-      queue.pop_front();
-      const int x = int(c % std::size_t(spec.nx)), z = int(c / std::size_t(spec.nx));
-      const int nbr[4][2] = {{x - 1, z}, {x + 1, z}, {x, z - 1}, {x, z + 1}};
-      for (const auto& n : nbr) {
-        if (n[0] < 0 || n[1] < 0 || n[0] >= spec.nx || n[1] >= spec.nz) continue;
-        const std::size_t nc = spec.column(n[0], n[1]);
-        if (!free[nc] || label[nc] != kNoRoom) continue;
+    for (; head < queue.size(); ++head) {
+      const auto [c, x, z] = queue[head];
+      const auto visit = [&](bool inside, std::size_t nc, int xn, int zn) {
+        if (!inside || !free[nc] || label[nc] != kNoRoom) return;
         label[nc] = label[c];
-        queue.push_back(nc);
-      }
+        queue.push_back({nc, xn, zn});
+      };
+      visit(x > 0, c - 1, x - 1, z);
+      visit(x + 1 < spec.nx, c + 1, x + 1, z);
+      visit(z > 0, c - std::size_t(spec.nx), x, z - 1);
+      visit(z + 1 < spec.nz, c + std::size_t(spec.nx), x, z + 1);
     }
   };
   spread();
   // Free space no core reaches (a closet narrower than the passage) is a room of its own.
-  for (std::size_t c = 0; c < columns; ++c) {
-    if (!free[c] || label[c] != kNoRoom) continue;
-    label[c] = next++;
-    queue.push_back(c);
-    spread();
-  }
+  for (int z = 0; z < spec.nz; ++z)
+    for (int x = 0; x < spec.nx; ++x) {
+      const std::size_t c = spec.column(x, z);
+      if (!free[c] || label[c] != kNoRoom) continue;
+      label[c] = next++;
+      queue.push_back({c, x, z});
+      spread();
+    }
 
   // A room below min_room_area (a wide spot of a corridor, a core squeezed between two others) joins the room
   // it shares the longest border with, the smallest first; one with no neighbour belongs to no room.

@@ -1,5 +1,6 @@
 #include "distance_transform.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -64,6 +65,52 @@ std::vector<float> distance_to_unmasked(int nx, int nz, const std::vector<std::u
     for (int x = 0; x < nx; ++x)
       out[std::size_t(z) * std::size_t(nx) + std::size_t(x)] =
           float(std::sqrt(grid[std::size_t(z + 1) * std::size_t(px) + std::size_t(x + 1)]));
+  return out;
+}
+
+std::vector<std::uint8_t> farther_than(int nx, int nz, const std::vector<std::uint8_t>& mask, float limit) {
+  std::vector<std::uint8_t> out(std::size_t(nx) * std::size_t(nz), 0);
+  if (!(limit < kFartherThanRows)) {  // far or NaN: the transform itself
+    const std::vector<float> distance = distance_to_unmasked(nx, nz, mask);
+    for (std::size_t c = 0; c < out.size(); ++c) out[c] = distance[c] > limit ? 1 : 0;
+    return out;
+  }
+  // The transform's distances are float(sqrt(d)) of whole squared distances d, so `> limit` holds exactly from the
+  // least such d on: `least`. A cell passes where no unmasked cell (nor the raster's outside) lies at a squared
+  // distance below it: in each row dz away (dz² < least), none within `reach[dz]` = the largest dx with
+  // dx² + dz² < least of the cell's x.
+  const auto passes = [limit](long d) { return float(std::sqrt(double(d))) > limit; };
+  long least = limit > 0.0f ? std::max(0L, long(std::floor(double(limit) * double(limit))) - 2) : 0;
+  while (!passes(least)) ++least;
+  std::vector<int> reach;
+  for (int dz = 0; long(dz) * dz < least; ++dz) {
+    int dx = 0;
+    while (long(dx + 1) * (dx + 1) + long(dz) * dz < least) ++dx;
+    reach.push_back(dx);
+  }
+  // Per cell, the distance along its row to the nearest unmasked cell or the raster's side (0 where unmasked).
+  std::vector<int> along(out.size(), 0);
+  for (int z = 0; z < nz; ++z) {
+    int* row = along.data() + std::size_t(z) * std::size_t(nx);
+    const std::uint8_t* m = mask.data() + std::size_t(z) * std::size_t(nx);
+    for (int x = 0, run = 0; x < nx; ++x) row[x] = run = m[x] ? run + 1 : 0;
+    for (int x = nx - 1, run = 0; x >= 0; --x) row[x] = std::min(row[x], run = m[x] ? run + 1 : 0);
+  }
+  // Row by row, each row dz away tested across the whole row at once (a loop that vectorizes).
+  for (int z = 0; z < nz; ++z) {
+    std::uint8_t* row = out.data() + std::size_t(z) * std::size_t(nx);
+    std::fill(row, row + nx, std::uint8_t{1});
+    for (std::size_t dz = 0; dz < reach.size(); ++dz)
+      for (const long r : {long(z) - long(dz), long(z) + long(dz)}) {
+        if (r < 0 || r >= nz) {
+          std::fill(row, row + nx, std::uint8_t{0});
+          break;
+        }
+        const int* other = along.data() + std::size_t(r) * std::size_t(nx);
+        const int most = reach[dz];
+        for (int x = 0; x < nx; ++x) row[x] &= std::uint8_t(other[x] > most);
+      }
+  }
   return out;
 }
 

@@ -11,4 +11,10 @@ namespace roomsense::detail {
 // way out of it.
 std::vector<float> distance_to_unmasked(int nx, int nz, const std::vector<std::uint8_t>& mask);
 
+// 1 where distance_to_unmasked(nx, nz, mask) > `limit`, else 0: the same comparison of the same distances, as a
+// threshold on squared distances (whole numbers) tested row by row within the limit, where the limit is at most
+// kFartherThanRows cells; beyond it (or NaN) through the transform.
+inline constexpr float kFartherThanRows = 64.0f;
+std::vector<std::uint8_t> farther_than(int nx, int nz, const std::vector<std::uint8_t>& mask, float limit);
+
 }  // namespace roomsense::detail

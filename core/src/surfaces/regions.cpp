@@ -9,42 +9,6 @@ std::size_t ColumnMask::count() const {
   return std::size_t(std::count_if(cells.begin(), cells.end(), [](std::uint8_t c) { return c != 0; }));
 }
 
-Components label_components(int nx, int nz, const std::function<bool(std::size_t)>& member,
-                            const std::function<bool(std::size_t, std::size_t)>& joins) {
-  Components out;
-  out.label.assign(std::size_t(nx) * std::size_t(nz), -1);
-  std::vector<std::size_t> queue;
-  for (std::size_t seed = 0; seed < out.label.size(); ++seed) {
-    if (out.label[seed] >= 0 || !member(seed)) continue;
-    const int id = int(out.sizes.size());
-    out.label[seed] = id;
-    queue.assign(1, seed);
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      const std::size_t col = queue[head];
-      const int x = int(col % std::size_t(nx)), z = int(col / std::size_t(nx));
-      const auto visit = [&](int xn, int zn) {
-        if (xn < 0 || zn < 0 || xn >= nx || zn >= nz) return;
-        const std::size_t next = std::size_t(zn) * std::size_t(nx) + std::size_t(xn);
-        if (out.label[next] >= 0 || !member(next) || !joins(col, next)) return;
-        out.label[next] = id;
-        queue.push_back(next);
-      };
-      visit(x - 1, z);
-      visit(x + 1, z);
-      visit(x, z - 1);
-      visit(x, z + 1);
-    }
-    std::array<int, 4> box{nx, nz, -1, -1};
-    for (const std::size_t col : queue) {
-      const int x = int(col % std::size_t(nx)), z = int(col / std::size_t(nx));
-      box = {std::min(box[0], x), std::min(box[1], z), std::max(box[2], x), std::max(box[3], z)};
-    }
-    out.sizes.push_back(queue.size());
-    out.boxes.push_back(box);
-  }
-  return out;
-}
-
 ColumnMask component_mask(const Components& components, int nx, int label) {
   const std::array<int, 4>& box = components.boxes[std::size_t(label)];
   ColumnMask mask(box[2] - box[0] + 3, box[3] - box[1] + 3, box[0] - 1, box[1] - 1);

@@ -1,10 +1,10 @@
 // Regions on the column raster (x, z) of a grid: 4-connected components and hole filling. The floor of a
 // storey is one such region (the room mask B, Eq. 3.12), a furniture top another (a run of C, Eq. 3.13).
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 namespace roomsense::detail {
@@ -30,10 +30,46 @@ struct Components {
   std::vector<std::array<int, 4>> boxes;  // per component: lowest x, z and highest x, z
 };
 
-// The 4-connected components of the columns where `member` holds, two neighbours joined where `joins` holds
-// (e.g. furniture levels at most one apart).
-Components label_components(int nx, int nz, const std::function<bool(std::size_t)>& member,
-                            const std::function<bool(std::size_t, std::size_t)>& joins);
+// The 4-connected components of the columns where `member(column)` holds, two neighbours joined where
+// `joins(column, neighbour)` holds (e.g. furniture levels at most one apart). A template, so that the tests inline:
+// through std::function, a room's split spent most of its cores' labelling in the calls.
+template <class Member, class Joins>
+Components label_components(int nx, int nz, const Member& member, const Joins& joins) {
+  Components out;
+  out.label.assign(std::size_t(nx) * std::size_t(nz), -1);
+  // A breadth-first walk from each column no component holds yet, in scan order; each queued column with its x
+  // and z (no division to find them again).
+  struct Queued {
+    std::size_t column;
+    int x, z;
+  };
+  std::vector<Queued> queue;
+  for (int seed_z = 0; seed_z < nz; ++seed_z)
+    for (int seed_x = 0; seed_x < nx; ++seed_x) {
+      const std::size_t seed = std::size_t(seed_z) * std::size_t(nx) + std::size_t(seed_x);
+      if (out.label[seed] >= 0 || !member(seed)) continue;
+      const int id = int(out.sizes.size());
+      out.label[seed] = id;
+      queue.assign(1, {seed, seed_x, seed_z});
+      std::array<int, 4> box{seed_x, seed_z, seed_x, seed_z};
+      for (std::size_t head = 0; head < queue.size(); ++head) {
+        const auto [col, x, z] = queue[head];
+        box = {std::min(box[0], x), std::min(box[1], z), std::max(box[2], x), std::max(box[3], z)};
+        const auto visit = [&](bool inside, std::size_t next, int xn, int zn) {
+          if (!inside || out.label[next] >= 0 || !member(next) || !joins(col, next)) return;
+          out.label[next] = id;
+          queue.push_back({next, xn, zn});
+        };
+        visit(x > 0, col - 1, x - 1, z);
+        visit(x + 1 < nx, col + 1, x + 1, z);
+        visit(z > 0, col - std::size_t(nx), x, z - 1);
+        visit(z + 1 < nz, col + std::size_t(nx), x, z + 1);
+      }
+      out.sizes.push_back(queue.size());
+      out.boxes.push_back(box);
+    }
+  return out;
+}
 
 // The columns of one component, in its box widened by one column all round (so that outside reaches round it).
 ColumnMask component_mask(const Components& components, int nx, int label);

@@ -14,10 +14,12 @@
 #include <glm/vec2.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <span>
 #include <utility>
 
 namespace roomsense {
@@ -70,21 +72,34 @@ void assign_area_rooms(AnalysisResult& r) {
     a.room = room_at_point(r, a.storey, a.type == AreaType::Wall ? a.center + 0.5f * s.voxel_size * a.normal : a.center);
 }
 
+// What the bounds read of a storey with these features.
+BoundsStorey bounds_storey(const RoomFeatures& f) { return {f.levels, f.y_end, &f.room, &f.ceiling}; }
+
+// The bounds built from a result's grid and its storeys' features (in order): the home's and each room's.
+struct AllBounds {
+  BoundsMesh bounds;
+  std::vector<BoundsMesh> room_bounds;  // index as the result's rooms
+};
+
 // Issue 15: each room's bounds (build_room_bounds) over its room_mask of its storey's B (its free columns and
 // the walls within 0.3 m of them). A scan of one room has its bounds.
-// The home's bounds and each room's (index as r.rooms). Every mesh is its own task, on one thread each: a
-// home's rooms are independent, so two cores build two at a time (one after another, five rooms of
-// SU_Apartment cost as much as the rest of its analysis).
-void build_all_bounds(AnalysisResult& r, const AnalysisOptions& options, std::vector<detail::MeshMemo>* memos) {
-  const std::vector<BoundsStorey> storeys = bounds_storeys(r);
+// The home's bounds and each room's (the rooms as list_rooms lists them: each storey's split in order). Every
+// mesh is its own task, on one thread each: a home's rooms are independent, so two cores build two at a time (one
+// after another, five rooms of SU_Apartment cost as much as the rest of its analysis).
+AllBounds build_all_bounds(const VoxelGrid& grid, std::span<const RoomFeatures* const> features,
+                           const AnalysisOptions& options, std::vector<detail::MeshMemo>* memos) {
+  std::vector<BoundsStorey> storeys;
+  std::size_t rooms = 0;
+  for (const RoomFeatures* f : features) storeys.push_back(bounds_storey(*f)), rooms += std::size_t(f->rooms.count);
   const auto memo = [&](std::size_t k) { return memos ? &(*memos)[k] : nullptr; };
-  if (r.rooms.size() <= 1) {
+  AllBounds out;
+  if (rooms <= 1) {
     if (memos) memos->resize(1);
-    r.bounds = detail::build_bounds(r.voxels.grid, storeys, options.bounds, options.threads, options.stop, memo(0));
-    r.room_bounds.assign(r.rooms.size(), r.bounds);
-    return;
+    out.bounds = detail::build_bounds(grid, storeys, options.bounds, options.threads, options.stop, memo(0));
+    out.room_bounds.assign(rooms, out.bounds);
+    return out;
   }
-  const GridSpec& s = r.voxels.grid.spec;
+  const GridSpec& s = grid.spec;
   const int reach = room_reach_columns(s);
   struct RoomJob {
     std::size_t storey;
@@ -93,33 +108,30 @@ void build_all_bounds(AnalysisResult& r, const AnalysisOptions& options, std::ve
   };
   std::vector<RoomJob> jobs;
   for (std::size_t i = 0; i < storeys.size(); ++i) {
-    const RoomSplit& split = r.storey_features(i).rooms;
+    const RoomSplit& split = features[i]->rooms;
     const auto rooms_of = std::make_shared<const std::vector<int>>(rooms_of_mask(s, *storeys[i].room, split, reach));
     for (int k = 0; k < split.count; ++k) jobs.push_back({i, rooms_of, k});
   }
-  r.room_bounds.assign(jobs.size(), {});
+  out.room_bounds.assign(jobs.size(), {});
   if (memos) memos->resize(jobs.size() + 1);
   detail::parallel_tasks(jobs.size() + 1, options.threads, [&](std::size_t t) {
     stop_point(options.stop);
     if (t == 0) {
-      r.bounds = detail::build_bounds(r.voxels.grid, storeys, options.bounds, 1, options.stop, memo(0));
+      out.bounds = detail::build_bounds(grid, storeys, options.bounds, 1, options.stop, memo(0));
       return;
     }
     const RoomJob& job = jobs[t - 1];
-    r.room_bounds[t - 1] = detail::build_room_bounds(r.voxels.grid, storeys[job.storey],
-                                                     room_mask(*job.rooms_of, job.room), options.bounds, 1,
-                                                     options.stop, memo(t));
+    out.room_bounds[t - 1] = detail::build_room_bounds(grid, storeys[job.storey], room_mask(*job.rooms_of, job.room),
+                                                       options.bounds, 1, options.stop, memo(t));
   });
+  return out;
 }
 
 }  // namespace
 
 std::vector<BoundsStorey> bounds_storeys(const AnalysisResult& result) {
   std::vector<BoundsStorey> out;
-  for (std::size_t i = 0; i < result.storeys.size(); ++i) {
-    const RoomFeatures& f = result.storey_features(i);
-    out.push_back({f.levels, f.y_end, &f.room, &f.ceiling});
-  }
+  for (std::size_t i = 0; i < result.storeys.size(); ++i) out.push_back(bounds_storey(result.storey_features(i)));
   return out;
 }
 
@@ -312,6 +324,24 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   std::vector<BandSum> sums;  // as `bands`; none for a point cloud
   if (caches && caches->features.size() < all.size()) caches->features.resize(all.size());
   const bool area_features = options.find_areas || options.area_features;
+  // Without the areas, the bounds wait for the features alone, not for the heights: the task that ends the last
+  // storey's features builds them, beside the heights' sums (in a bounds-only run the two longest steps, side by
+  // side). They are every storey's; where the heights then drop a storey (rare), they are built again below. An
+  // IncrementalAnalysis whose storeys' levels are the previous result's takes that result's bounds instead.
+  const bool same_levels = same_grid && previous->storeys.size() == all.size() &&
+                           std::equal(all.begin(), all.end(), previous->storeys.begin(),
+                                      [](const FloorCeiling* x, const Storey& y) { return *x == y.levels; });
+  const bool early_bounds = options.build_bounds && !options.find_areas && !same_levels;
+  std::atomic<std::size_t> features_left = all.size();
+  std::optional<AllBounds> every_storeys_bounds;
+  double every_storeys_bounds_ms = 0.0;
+  const auto build_early_bounds = [&] {
+    Stopwatch bounds_clock;
+    std::vector<const RoomFeatures*> every;
+    for (const RoomFeatures& f : storey_features) every.push_back(&f);
+    every_storeys_bounds = build_all_bounds(r.voxels.grid, every, options, caches ? &caches->bounds : nullptr);
+    every_storeys_bounds_ms = bounds_clock.lap();
+  };
   // Task 0, the main storey's, most likely on this thread, whose heap then holds what lives longest (worker_pool.h).
   detail::parallel_tasks(all.size() + 1, options.threads, [&](std::size_t k) {
     stop_point(options.stop);
@@ -338,6 +368,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
                                                      options.features, options.threads, options.stop, labels, memo,
                                                      change, previous_storey(*all[k]), area_features);
       }
+      if (early_bounds && --features_left == 0) build_early_bounds();
       return;
     }
     if (index_count > 0)
@@ -406,8 +437,17 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     if (same_input) {  // an IncrementalAnalysis keeps its options: the previous result has its bounds
       r.bounds = previous->bounds;
       r.room_bounds = previous->room_bounds;
+    } else if (every_storeys_bounds && r.storeys.size() == all.size()) {  // built beside the heights, every storey kept
+      r.bounds = std::move(every_storeys_bounds->bounds);
+      r.room_bounds = std::move(every_storeys_bounds->room_bounds);
+      r.timings.bounds = every_storeys_bounds_ms;
+      return;
     } else {
-      build_all_bounds(r, options, caches ? &caches->bounds : nullptr);
+      std::vector<const RoomFeatures*> kept;
+      for (std::size_t i = 0; i < r.storeys.size(); ++i) kept.push_back(&r.storey_features(i));
+      AllBounds built = build_all_bounds(r.voxels.grid, kept, options, caches ? &caches->bounds : nullptr);
+      r.bounds = std::move(built.bounds);
+      r.room_bounds = std::move(built.room_bounds);
     }
     r.timings.bounds = bounds_clock.lap();
   };

@@ -218,6 +218,13 @@ TEST(MinimumHeight, ALoneWallIsNoRoom) {
   EXPECT_NE(r.status_message.find("less than 1.50 m apart"), std::string::npos) << r.status_message;
   EXPECT_TRUE(r.storeys.empty());
   EXPECT_TRUE(r.areas.empty());
+  // A bounds-only run builds the bounds before the heights decide (beside their sums): none are returned.
+  AnalysisOptions bounds_only;
+  bounds_only.find_areas = false;
+  const AnalysisResult b = analyze(wall, bounds_only);
+  EXPECT_EQ(b.status, AnalysisStatus::NoFloorCeiling);
+  EXPECT_TRUE(b.bounds.indices.empty());
+  EXPECT_TRUE(b.room_bounds.empty());
 }
 
 TEST(MinimumHeight, ARoomOfOnePointSixMetresIsARoom) {

@@ -572,6 +572,42 @@ TEST(Bounds, TheRoomIsHollowAndTheFloorIsSolid) {
   EXPECT_EQ(volume[s.index(tx, l.floor + 3, tz)], 1);
 }
 
+// Without the areas, analyze() builds the bounds beside the heights' sums, for every storey the levels give, and
+// again without a storey the heights then drop (less than 1.5 m between its surfaces). The same meshes as a run
+// with the areas, which builds them after the heights: on rooms with furniture, two storeys, several rooms, a
+// sloped ceiling, and a house with an attic whose levels are 15 apart but whose surfaces are 1.42 m apart.
+TEST(AnalyzeBounds, BuiltBesideTheHeightsTheyEqualTheBoundsBuiltAfterThem) {
+  synth::HouseSpec attic_house = synth::two_storey_house();
+  synth::RoomSpec attic;
+  attic.name = attic_house.name;
+  attic.outline = attic_house.storeys[0].outline;
+  // At this grid's origin its floor and ceiling levels are 15 apart: the levels make it a third storey, which the
+  // heights drop (checked with a print in analyze(): three pairs of levels, two storeys kept).
+  attic.floor_y = 5.46f;
+  attic.ceiling_y = attic.floor_y + 1.42f;
+  attic.seed = 23;
+  attic_house.storeys.push_back(attic);
+  const std::pair<const char*, Scan> rooms[] = {
+      {"synthetic:thesis-room1", synth::generate_builtin_source("synthetic:thesis-room1")},
+      {"synthetic:house", synth::generate_builtin_source("synthetic:house")},
+      {"synthetic:flat", synth::generate_builtin_source("synthetic:flat")},
+      {"synthetic:loft", synth::generate_builtin_source("synthetic:loft")},
+      {"house with a low attic", synth::generate(attic_house)}};
+  for (const auto& [name, scan] : rooms) {
+    SCOPED_TRACE(name);
+    AnalysisOptions bounds_only;
+    bounds_only.find_areas = false;
+    const AnalysisResult a = analyze(scan, bounds_only), b = analyze(scan);
+    ASSERT_TRUE(a.ok());
+    ASSERT_TRUE(b.ok());
+    EXPECT_FALSE(a.bounds.indices.empty());
+    test::expect_same_bounds(a, b);
+    EXPECT_EQ(a.storeys.size(), b.storeys.size());
+  }
+  // The attic is dropped: two storeys are left of its three pairs of levels.
+  EXPECT_EQ(analyze(rooms[4].second).storeys.size(), 2u);
+}
+
 // A bounds-only run without the areas' features (AnalysisOptions::area_features off, as StartRoomBounds runs) skips
 // C, D, F and the openings and nothing the bounds read: the same bounds, room bounds, levels, heights, storeys and
 // rooms as with them, on rooms with furniture, two storeys, several rooms and a sloped ceiling. What reads the

@@ -222,22 +222,25 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     else for (const Sized& s : for_reach) own_floor_areas.push_back(place(s));
   };
   const auto finish = [&](std::size_t type) {
-    std::vector<Area>& areas = kept_areas[type];
+    // Made in the task's own vector and moved in after: the types' vectors lie side by side, and the types' tasks
+    // would pass their cache lines back and forth.
+    std::vector<Area> areas;
     areas.reserve(red[type].kept.size());
     for (const Sized& s : red[type].kept) areas.push_back(to_area(s, kAreaTypes[type], context));
     if (!cache) red[type].kept = {};
-    if (!params.grow) return;
-    if (const std::vector<Area>* same = cache ? cache->grown(type, areas, params) : nullptr) {
-      areas = *same;
-      return;
+    if (params.grow) {
+      if (const std::vector<Area>* same = cache ? cache->grown(type, areas, params) : nullptr) {
+        areas = *same;
+      } else if (!cache) {
+        grow_areas(areas, growth_rule(spec, features, params, type), params, stop);
+      } else {
+        GrowthRecord record;
+        grow_areas(areas, growth_rule(spec, features, params, type), params, stop, cache->growth_replay(type, params),
+                   &record);
+        cache->keep_grown(type, std::move(record), params);
+      }
     }
-    if (!cache) {
-      grow_areas(areas, growth_rule(spec, features, params, type), params, stop);
-      return;
-    }
-    GrowthRecord record;
-    grow_areas(areas, growth_rule(spec, features, params, type), params, stop, cache->growth_replay(type, params), &record);
-    cache->keep_grown(type, std::move(record), params);
+    kept_areas[type] = std::move(areas);
   };
   // Each search's candidates go once both their deduplication and their packing are done.
   std::array<std::array<std::atomic<int>, 3>, 4> candidate_users;

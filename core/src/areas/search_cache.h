@@ -40,7 +40,9 @@ class SearchCache {
                      const SizeRange& range, float fill, double dominant_deg, const std::stop_token& stop);
   // What find_areas derives from one type's searches before it turns them into areas in metres: a function of
   // the features they read, the parameters and, for squares, the room's main direction.
-  struct TypeReduction {
+  // On cache lines of its own (alignas): find_areas holds one per type side by side, and the types' tasks grow their
+  // vectors at once.
+  struct alignas(64) TypeReduction {
     std::vector<Sized> kept;       // packed, in find_areas's order
     std::vector<Sized> for_reach;  // deduplicated: V_Wall for walls, V_Floor for floors (reach); else empty
     std::size_t found = 0, deduplicated = 0;
@@ -83,7 +85,8 @@ class SearchCache {
   std::size_t bands_total() const { return total_; }
 
  private:
-  struct Kept {
+  // On cache lines of its own, as TypeReduction: one per search, and the searches' tasks run side by side.
+  struct alignas(64) Kept {
     std::uint64_t generation = 0;  // of the begin() whose features its pieces were found on; 0: none
     double min_d = 0, max_d = 0, height_ratio = 0, dominant_deg = 0;
     float fill = 0;

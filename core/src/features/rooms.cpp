@@ -40,7 +40,9 @@ RoomSplit split_rooms(const GridSpec& spec, const std::vector<std::uint8_t>& ins
   // Breadth-first from the queued columns over free unlabelled ones, each taking its parent's label.
   const auto spread = [&] {
     for (; head < queue.size(); ++head) {
-      const auto [c, x, z] = queue[head];
+      const std::size_t c = queue[head].column;  // named copies: `visit` captures them (clang before 16
+      // lets no lambda capture a structured binding)
+      const int x = queue[head].x, z = queue[head].z;
       const auto visit = [&](bool inside, std::size_t nc, int xn, int zn) {
         if (!inside || !free[nc] || label[nc] != kNoRoom) return;
         label[nc] = label[c];

@@ -53,7 +53,9 @@ Components label_components(int nx, int nz, const Member& member, const Joins& j
       queue.assign(1, {seed, seed_x, seed_z});
       std::array<int, 4> box{seed_x, seed_z, seed_x, seed_z};
       for (std::size_t head = 0; head < queue.size(); ++head) {
-        const auto [col, x, z] = queue[head];
+        // Named copies, not structured bindings: clang before 16 lets no lambda capture those.
+        const std::size_t col = queue[head].column;
+        const int x = queue[head].x, z = queue[head].z;
         box = {std::min(box[0], x), std::min(box[1], z), std::max(box[2], x), std::max(box[3], z)};
         const auto visit = [&](bool inside, std::size_t next, int xn, int zn) {
           if (!inside || out.label[next] >= 0 || !member(next) || !joins(col, next)) return;

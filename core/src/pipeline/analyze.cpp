@@ -48,12 +48,13 @@ void list_rooms(AnalysisResult& r) {
     const RoomSplit& split = r.storey_features(i).rooms;
     std::vector<glm::dvec2> sum(std::size_t(split.count), glm::dvec2(0.0));
     std::vector<std::size_t> cells(std::size_t(split.count), 0);
-    for (std::size_t c = 0; c < split.room.size(); ++c) {
-      if (split.room[c] == kNoRoom) continue;
-      const std::size_t k = std::size_t(split.room[c]);
-      sum[k] += glm::dvec2(double(c % std::size_t(s.nx)) + 0.5, double(c / std::size_t(s.nx)) + 0.5);
-      ++cells[k];
-    }
+    for (int z = 0; z < s.nz; ++z)
+      for (int x = 0; x < s.nx; ++x) {
+        const int room = split.room[s.column(x, z)];
+        if (room == kNoRoom) continue;
+        sum[std::size_t(room)] += glm::dvec2(double(x) + 0.5, double(z) + 0.5);
+        ++cells[std::size_t(room)];
+      }
     for (std::size_t k = 0; k < cells.size(); ++k) {
       const glm::dvec2 mean = sum[k] / double(std::max<std::size_t>(cells[k], 1));
       const Storey& storey = r.storeys[i];

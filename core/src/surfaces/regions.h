@@ -31,8 +31,8 @@ struct Components {
 };
 
 // The 4-connected components of the columns where `member(column)` holds, two neighbours joined where
-// `joins(column, neighbour)` holds (e.g. furniture levels at most one apart). A template, so that the tests inline:
-// through std::function, a room's split spent most of its cores' labelling in the calls.
+// `joins(column, neighbour)` holds (e.g. furniture levels at most one apart). A template, so that `member` and `joins`
+// inline: called through std::function, they took most of the time a room's split spent labelling its cores.
 template <class Member, class Joins>
 Components label_components(int nx, int nz, const Member& member, const Joins& joins) {
   Components out;

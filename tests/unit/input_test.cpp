@@ -154,6 +154,57 @@ TEST(PrepareInput, OutlierRangesAreTheExactQuantiles) {
   }
 }
 
+// A large scan's outlier ranges come from every stride-th vertex (a sample of about 16k): gathered beside the
+// vertices' bounds where every vertex is finite, or on its own from the finite ones at those places where one is
+// not. Either way they are the sample's exact quantiles, on any number of threads: outliers placed on sampled
+// vertices move the quantiles, and the vertices just inside and just past the ranges those give are told apart.
+TEST(PrepareInput, TheOutlierSampleOfALargeScanIsEveryStrideThVertex) {
+  constexpr std::size_t kSample = 16384;
+  for (const bool with_nan : {false, true}) {
+    std::mt19937 random(with_nan ? 8 : 7);
+    std::uniform_real_distribution<float> uniform(0.0f, 10.0f);
+    Scan scan;
+    const std::size_t n = 100003;  // a stride of 6, and a last sample past a whole multiple of the slices'
+    for (std::size_t i = 0; i < n; ++i) scan.vertices.push_back({uniform(random), uniform(random), uniform(random)});
+    const std::size_t stride = n / kSample;
+    ASSERT_EQ(stride, 6u);
+    // Far values on 100 sampled vertices raise the upper quantile of x; on unsampled ones they are outliers.
+    for (std::size_t j = 0; j < 100; ++j) scan.vertices[(50 + 97 * j) * stride].x = 40.0f + 0.1f * float(j);
+    for (std::size_t j = 0; j < 50; ++j) scan.vertices[(60 + 97 * j) * stride + 1].x = 1000.0f;
+    if (with_nan) scan.vertices[7 * stride].y = std::numeric_limits<float>::quiet_NaN();  // a sampled place
+    // The ranges from the sample: the finite vertices at multiples of the stride.
+    std::array<std::pair<float, float>, 3> ranges;
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<float> v;
+      for (std::size_t i = 0; i < n; i += stride)
+        if (std::isfinite(scan.vertices[i].y)) v.push_back(scan.vertices[i][axis]);
+      std::sort(v.begin(), v.end());
+      const std::size_t k = std::size_t(double(v.size() - 1) * kOutlierQuantile);
+      const float lo = v[k], hi = v[v.size() - 1 - k], margin = std::max(kOutlierMinMargin, hi - lo);
+      ranges[std::size_t(axis)] = {lo - margin, hi + margin};
+    }
+    // Two unsampled vertices on x's upper end: one at it (kept), one a float's step past it (an outlier).
+    scan.vertices[9 * stride + 2].x = ranges[0].second;
+    scan.vertices[9 * stride + 3].x = std::nextafter(ranges[0].second, INFINITY);
+    std::size_t outliers = 0;
+    for (const glm::vec3& p : scan.vertices) {
+      if (!std::isfinite(p.y)) continue;
+      bool out = false;
+      for (int axis = 0; axis < 3; ++axis)
+        out = out || p[axis] < ranges[std::size_t(axis)].first || p[axis] > ranges[std::size_t(axis)].second;
+      outliers += out;
+    }
+    ASSERT_GT(ranges[0].second, 20.0f);  // the sampled far values moved the quantile
+    ASSERT_EQ(outliers, 51u);
+    for (const unsigned threads : {1u, 2u, 3u}) {
+      const detail::InputView view = detail::view_input(scan, true, nullptr, threads);
+      EXPECT_EQ(view.checked.outlier_vertices, outliers) << with_nan << " " << threads;
+      EXPECT_EQ(view.checked.skipped_vertices, with_nan ? 1u : 0u) << threads;
+      EXPECT_EQ(view.checked.hi.x, ranges[0].second) << with_nan << " " << threads;
+    }
+  }
+}
+
 // An IncrementalAnalysis's input checks try the previous analysis's quantile bounds first (input_view.h): a guess
 // that serves leaves the ranges those of a search afresh, and one that does not (past every value, inside the
 // data, the wrong way round, from another scan) is replaced by the bounds sampled afresh, with the same ranges.

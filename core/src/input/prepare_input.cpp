@@ -110,11 +110,38 @@ std::pair<float, float> both_tails(std::span<float> v, std::size_t k, detail::Qu
   return {*lo, *hi};
 }
 
-// The [q, 1-q] quantiles of each axis over the kept vertices (`keep` empty: all), widened by the outlier margin.
-// Quantiles of an evenly strided sample of at most kQuantileSample vertices are as good for this and keep large
-// scans cheap. The sample is gathered in one pass (a strided read touches every cache line of the vertices), by
-// slices side by side where every vertex is kept; the axes' selections run side by side.
+// The [q, 1-q] quantiles of each axis over the kept vertices, widened by the outlier margin. Quantiles of an evenly
+// strided sample of at most kQuantileSample vertices are as good for this and keep large scans cheap.
 constexpr std::size_t kQuantileSample = 16384;
+// Each axis's values of that sample: vertex j * stride is sample j (of those kept, in order, where some are not).
+struct AxisSample {
+  // Not zeroed first: every value is written (a 76k-vertex scan's three are 0.23 MB, and their clearing was 1 % of
+  // an added object's update).
+  explicit AxisSample(std::size_t count) : stride(std::max<std::size_t>(1, count / kQuantileSample)), size((count + stride - 1) / stride) {
+    for (std::unique_ptr<float[]>& axis : values) axis = std::make_unique_for_overwrite<float[]>(size);
+  }
+  // The samples among vertices [begin, end) of `all` (every vertex kept).
+  void gather(std::span<const glm::vec3> all, std::size_t begin, std::size_t end) {
+    for (std::size_t j = (begin + stride - 1) / stride, i = j * stride; i < end; ++j, i += stride)
+      for (int axis = 0; axis < 3; ++axis) values[std::size_t(axis)][j] = all[i][axis];
+  }
+  std::size_t stride, size;
+  std::array<std::unique_ptr<float[]>, 3> values;
+};
+
+// One axis's range from its sample.
+std::pair<float, float> axis_range(const AxisSample& sample, int axis, detail::QuantileBounds* guess) {
+  const std::span<float> v(sample.values[std::size_t(axis)].get(), sample.size);
+  if (v.empty()) return {-INFINITY, INFINITY};
+  // The k-th smallest and the k-th largest.
+  const std::size_t k = std::size_t(double(v.size() - 1) * kOutlierQuantile);
+  const auto [lo, hi] = both_tails(v, k, guess);
+  const float margin = std::max(kOutlierMinMargin, hi - lo);
+  return {lo - margin, hi + margin};
+}
+
+// The ranges over the kept vertices (`keep` empty: all), the axes side by side. The sample is gathered in one pass
+// (a strided read touches every cache line of the vertices), by slices side by side where every vertex is kept.
 // `parts`: the vertices as consecutive parts (an IncrementalAnalysis's chunks), sampled as one array; `keep`
 // (indexed over all of them) only with one part.
 std::array<std::pair<float, float>, 3> robust_ranges(std::span<const std::span<const glm::vec3>> parts,
@@ -123,45 +150,31 @@ std::array<std::pair<float, float>, 3> robust_ranges(std::span<const std::span<c
   std::vector<std::size_t> part_end;  // where each part ends among all the vertices
   std::size_t count = 0;
   for (const std::span<const glm::vec3> part : parts) part_end.push_back(count += part.size());
-  // Each axis's sample, not zeroed first: every value is written (a 76k-vertex scan's three are 0.23 MB, and their
-  // clearing was 1 % of an added object's update).
-  const std::size_t stride = std::max<std::size_t>(1, count / kQuantileSample);
-  std::size_t sampled = (count + stride - 1) / stride;
-  std::array<std::unique_ptr<float[]>, 3> values;
-  for (std::unique_ptr<float[]>& axis : values) axis = std::make_unique_for_overwrite<float[]>(sampled);
-  if (keep.empty()) {  // every vertex kept (the usual scan): sample j is vertex j * stride, gathered side by side
-    detail::parallel_for(sampled, threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
+  AxisSample sample(count);
+  if (keep.empty()) {  // every vertex kept (the usual scan): gathered side by side
+    detail::parallel_for(sample.size, threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
       // The part holding the slice's first sample, then onward with the samples.
-      std::size_t part = std::size_t(std::upper_bound(part_end.begin(), part_end.end(), begin * stride) - part_end.begin());
+      std::size_t part = std::size_t(std::upper_bound(part_end.begin(), part_end.end(), begin * sample.stride) - part_end.begin());
       for (std::size_t j = begin; j < end; ++j) {
-        const std::size_t i = j * stride;
+        const std::size_t i = j * sample.stride;
         while (part_end[part] <= i) ++part;
         const glm::vec3& v = parts[part][i - (part_end[part] - parts[part].size())];
-        for (int axis = 0; axis < 3; ++axis) values[std::size_t(axis)][j] = v[axis];
+        for (int axis = 0; axis < 3; ++axis) sample.values[std::size_t(axis)][j] = v[axis];
       }
     });
   } else {
     const std::span<const glm::vec3> vertices = parts.front();
     std::size_t taken = 0;
-    for (std::size_t i = 0; i < vertices.size(); i += stride)
+    for (std::size_t i = 0; i < vertices.size(); i += sample.stride)
       if (keep[i]) {
-        for (int axis = 0; axis < 3; ++axis) values[std::size_t(axis)][taken] = vertices[i][axis];
+        for (int axis = 0; axis < 3; ++axis) sample.values[std::size_t(axis)][taken] = vertices[i][axis];
         ++taken;
       }
-    sampled = taken;
+    sample.size = taken;
   }
   std::array<std::pair<float, float>, 3> ranges;
   detail::parallel_tasks(3, threads, [&](std::size_t axis) {
-    const std::span<float> v(values[axis].get(), sampled);
-    if (v.empty()) {
-      ranges[axis] = {-INFINITY, INFINITY};
-      return;
-    }
-    // The k-th smallest and the k-th largest.
-    const std::size_t k = std::size_t(double(v.size() - 1) * kOutlierQuantile);
-    const auto [lo, hi] = both_tails(v, k, guess ? &guess->axes[axis] : nullptr);
-    const float margin = std::max(kOutlierMinMargin, hi - lo);
-    ranges[axis] = {lo - margin, hi + margin};
+    ranges[axis] = axis_range(sample, int(axis), guess ? &guess->axes[axis] : nullptr);
   });
   return ranges;
 }
@@ -242,39 +255,44 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
   check_sizes(scan.vertices.size(), scan.indices.size(), out);
   const std::uint32_t vertex_count = std::uint32_t(scan.vertices.size());
 
-  // The vertices by runs: the caller's, or one over them all. That run and the index check come from one pass
-  // over slices of both arrays, side by side.
+  // The vertices by runs: the caller's, or one over them all. That run comes from one pass over slices of the
+  // vertices, side by side. Where the outlier ranges may be wanted, the pass also gathers their sample, which
+  // serves where every vertex is finite (robust_ranges samples the kept ones otherwise), and the indices are
+  // checked beside the three axes' selections (two workers would otherwise take those one after the other);
+  // else in the same pass, by slices of the indices.
   const bool check_indices = known == nullptr || !known->indices_in_range;
   std::vector<detail::VertexRun> own;
   if (known == nullptr || !covers(known->runs, scan.vertices.size())) own.emplace_back();
-  if (check_indices || !own.empty()) {
-    constexpr std::size_t kGrain = 1 << 15;
-    const std::size_t count =
-        detail::parallel_slices(std::max(scan.vertices.size(), scan.indices.size()), threads, kGrain);
+  std::optional<AxisSample> sample;
+  if (!own.empty() && reject_outliers && scan.vertices.size() >= kOutlierMinVertices) sample.emplace(scan.vertices.size());
+  const bool indices_beside_ranges = check_indices && sample.has_value();
+  constexpr std::size_t kGrain = 1 << 15;
+  // An or of comparisons of indices [begin, end), which vectorizes (a max of unsigned does not on SSE2).
+  const auto any_out_of_range = [&](std::size_t begin, std::size_t end) {
+    std::uint32_t bad = 0;
+    for (std::size_t i = begin; i < end; ++i) bad |= std::uint32_t(scan.indices[i] >= vertex_count);
+    return std::uint8_t(bad);
+  };
+  std::vector<std::uint8_t> out_of_range;  // per slice or part of the indices
+  if ((check_indices && !indices_beside_ranges) || !own.empty()) {
+    const std::size_t count = detail::parallel_slices(
+        std::max(scan.vertices.size(), indices_beside_ranges ? 0 : scan.indices.size()), threads, kGrain);
     std::vector<detail::VertexRun> slices(count);
-    std::vector<std::uint8_t> out_of_range(count, 0);
+    out_of_range.assign(count, 0);
     detail::parallel_for(count, threads, 1, [&](std::size_t first, std::size_t last, std::size_t) {
       for (std::size_t w = first; w < last; ++w) {
         const auto slice = [&](std::size_t n) { return std::pair(n * w / count, n * (w + 1) / count); };
         if (!own.empty()) {
           const auto [begin, end] = slice(scan.vertices.size());
           slices[w] = detail::summarize_vertices(std::span(scan.vertices).subspan(begin, end - begin));
+          if (sample) sample->gather(scan.vertices, begin, end);
         }
-        if (check_indices) {
+        if (check_indices && !indices_beside_ranges) {
           const auto [begin, end] = slice(scan.indices.size());
-          std::uint32_t bad = 0;  // an or of comparisons, which vectorizes (a max of unsigned does not on SSE2)
-          for (std::size_t i = begin; i < end; ++i) bad |= std::uint32_t(scan.indices[i] >= vertex_count);
-          out_of_range[w] = std::uint8_t(bad);
+          out_of_range[w] = any_out_of_range(begin, end);
         }
       }
     });
-    // Where an index is out of range, the first one names the error.
-    if (std::find(out_of_range.begin(), out_of_range.end(), 1) != out_of_range.end())
-      for (std::size_t i = 0; i < scan.indices.size(); ++i)
-        if (scan.indices[i] >= vertex_count)
-          throw Error(ErrorCode::BadIndices, "index " + std::to_string(scan.indices[i]) + " of triangle " +
-                                                 std::to_string(i / 3) + " is out of range (" +
-                                                 std::to_string(scan.vertices.size()) + " vertices)");
     // In slice order, as one pass would (min and max keep the first of equal values, ±0 included).
     for (const detail::VertexRun& slice : slices) {
       if (own.empty()) break;
@@ -288,6 +306,30 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
   std::size_t finite_count = 0;
   for (const detail::VertexRun& run : runs) finite_count += run.finite;
   out.skipped_vertices = scan.vertices.size() - finite_count;
+  const bool ranges_wanted = reject_outliers && finite_count >= kOutlierMinVertices;
+
+  std::array<std::pair<float, float>, 3> range;
+  const bool ranges_from_sample = ranges_wanted && sample && out.skipped_vertices == 0;
+  if (indices_beside_ranges) {
+    const std::size_t parts = std::clamp<std::size_t>(scan.indices.size() / kGrain, 1, 4);
+    const std::size_t axes = ranges_from_sample ? 3 : 0;
+    out_of_range.assign(parts, 0);
+    detail::parallel_tasks(axes + parts, threads, [&](std::size_t task) {
+      if (task < axes) {
+        range[task] = axis_range(*sample, int(task), guess ? &guess->axes[task] : nullptr);
+        return;
+      }
+      const std::size_t part = task - axes, n = scan.indices.size();
+      out_of_range[part] = any_out_of_range(n * part / parts, n * (part + 1) / parts);
+    });
+  }
+  // Where an index is out of range, the first one names the error.
+  if (std::find(out_of_range.begin(), out_of_range.end(), 1) != out_of_range.end())
+    for (std::size_t i = 0; i < scan.indices.size(); ++i)
+      if (scan.indices[i] >= vertex_count)
+        throw Error(ErrorCode::BadIndices, "index " + std::to_string(scan.indices[i]) + " of triangle " +
+                                               std::to_string(i / 3) + " is out of range (" +
+                                               std::to_string(scan.vertices.size()) + " vertices)");
 
   // Which vertices are kept: made only once one is removed (the usual scan removes none).
   std::vector<std::uint8_t> keep;
@@ -298,9 +340,11 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
   };
   if (out.skipped_vertices != 0) make_keep();
 
-  if (reject_outliers && finite_count >= kOutlierMinVertices) {
-    const std::span<const glm::vec3> all(scan.vertices);
-    const std::array<std::pair<float, float>, 3> range = robust_ranges(std::span(&all, 1), keep, threads, guess);
+  if (ranges_wanted) {
+    if (!ranges_from_sample) {
+      const std::span<const glm::vec3> all(scan.vertices);
+      range = robust_ranges(std::span(&all, 1), keep, threads, guess);
+    }
     std::size_t first = 0;
     for (const detail::VertexRun& run : runs) {
       const bool inside = run_inside(run, range);

@@ -55,12 +55,16 @@ WorkerPool::WorkerPool(unsigned threads) {
 }
 
 WorkerPool::~WorkerPool() {
+  release();
+  threads_.clear();  // joins
+}
+
+void WorkerPool::release() {
   {
     const std::lock_guard lock(mutex_);
     ending_ = true;
   }
   work_.notify_all();
-  threads_.clear();  // joins
 }
 
 WorkerPool* WorkerPool::current() { return t_current; }

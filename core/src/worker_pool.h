@@ -31,6 +31,10 @@ class WorkerPool {
   // While the last of its jobs run elsewhere, the caller runs other batches' jobs.
   void run(std::size_t n, const std::function<void(std::size_t)>& job);
 
+  // No loop comes after those that ran: the threads end once idle, while the caller goes on (their join, in the
+  // destructor, then waits less). A loop that still comes runs on the caller alone.
+  void release();
+
   // The pool parallel.h's loops use on this thread: the innermost PoolScope's, or on a pool's own thread that
   // pool; null where there is none.
   static WorkerPool* current();

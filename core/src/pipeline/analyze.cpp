@@ -413,6 +413,9 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     if (r.storey_features(i).facets.size() > 1) whole_input();  // the facets past the first read the input
     r.storeys[i].ceiling_planes = detail::ceiling_planes(spec, in.vertices, in.indices, r.storey_features(i));
   }
+  // A run without the areas starts no loop after the features' (the bounds were built beside the heights): its
+  // threads end now, while this one lists the rooms.
+  if (own_workers && !options.find_areas) own_workers->release();
   list_rooms(r);
   // The areas (each storey's, side by side: one storey's search leaves a worker idle now and then, the next
   // fills it) and the bounds, which read the features alone, beside them: the area search's task graph leaves
@@ -452,10 +455,15 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     }
     r.timings.bounds = bounds_clock.lap();
   };
-  detail::parallel_tasks(2, options.threads, [&](std::size_t task) {
-    if (task == 0) find_all_areas();
-    else if (options.build_bounds) build_bounds();
-  });
+  if (!options.find_areas) {
+    if (options.build_bounds) build_bounds();
+  } else {
+    detail::parallel_tasks(2, options.threads, [&](std::size_t task) {
+      if (task == 0) find_all_areas();
+      else if (options.build_bounds) build_bounds();
+    });
+  }
+  if (own_workers) own_workers->release();
   for (std::uint32_t i = 0; i < storey_areas.size(); ++i) {
     AreaResult& found = storey_areas[i];
     for (Area& area : found.areas) area.storey = i;

@@ -48,11 +48,12 @@ void run_workers(std::size_t workers, Work&& work) {
 // thread go on with the next slice while a pool thread still wakes (some 50 us on this project's 2-core VM, as
 // much as a small loop's whole slice): an update of a few milliseconds ran six or so such loops.
 inline constexpr std::size_t kSlicesPerThread = 4;
-inline std::size_t parallel_slices(std::size_t n, unsigned threads, std::size_t min_grain) {
+inline std::size_t parallel_slices(std::size_t n, unsigned threads, std::size_t min_grain,
+                                   std::size_t per_thread = kSlicesPerThread) {
   const unsigned t = resolve_threads(threads);
   if (t <= 1) return 1;
   const std::size_t most = std::max<std::size_t>(1, n / std::max<std::size_t>(1, min_grain));
-  return std::min<std::size_t>(kSlicesPerThread * t, most);
+  return std::min<std::size_t>(per_thread * t, most);
 }
 
 // Calls body(begin, end, slice) for the parallel_slices(...) contiguous slices of [0, n), slice k being
@@ -78,6 +79,58 @@ void parallel_for(std::size_t n, unsigned threads, std::size_t min_grain, Body&&
     }
   };
   run_workers(std::min<std::size_t>(resolve_threads(threads), slices), run);
+  if (failure) std::rethrow_exception(failure);
+}
+
+// parallel_for over `slices` slices, each worker taking the slices of its own run of them in order, and then
+// those of the others' runs from their far ends: the workers stay in parts of [0, n) far apart until the last
+// few slices. For passes whose nearby items write near each other (a scan's triangles marking its grid: slices
+// taken in turn put both workers on the same cache lines), in slices small enough that the workers' last ones
+// end close together.
+template <class Body>
+void parallel_for_apart(std::size_t n, unsigned threads, std::size_t slices, Body&& body) {
+  const std::size_t workers = std::min<std::size_t>(resolve_threads(threads), slices);
+  if (workers <= 1 || slices > 0xffffffffu) {
+    for (std::size_t k = 0; k < slices; ++k) body(n * k / slices, n * (k + 1) / slices, k);
+    return;
+  }
+  const auto bound = [&](std::size_t k) { return n * k / slices; };
+  // A run's slices not yet taken, [front, back): front in the high 32 bits, back in the low. Each on its own
+  // cache line: its owner takes from it at every slice.
+  struct alignas(64) Run {
+    std::atomic<std::uint64_t> ends;
+  };
+  std::vector<Run> runs(workers);
+  for (std::size_t w = 0; w < workers; ++w) runs[w].ends = (std::uint64_t(slices * w / workers) << 32) | (slices * (w + 1) / workers);
+  // The next slice of `run` from its front or its back, or none left.
+  const auto take = [](Run& run, bool from_front, std::size_t& slice) {
+    std::uint64_t ends = run.ends.load(std::memory_order_relaxed);
+    for (;;) {
+      const std::uint64_t front = ends >> 32, back = ends & 0xffffffffu;
+      if (front >= back) return false;
+      const std::uint64_t next = from_front ? ((front + 1) << 32) | back : (front << 32) | (back - 1);
+      if (run.ends.compare_exchange_weak(ends, next, std::memory_order_relaxed)) {
+        slice = std::size_t(from_front ? front : back - 1);
+        return true;
+      }
+    }
+  };
+  std::atomic<bool> failed{false};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto work = [&](std::size_t w) {
+    try {
+      std::size_t k = 0;
+      while (!failed && take(runs[w], true, k)) body(bound(k), bound(k + 1), k);
+      for (std::size_t i = 1; i < workers; ++i)
+        while (!failed && take(runs[(w + i) % workers], false, k)) body(bound(k), bound(k + 1), k);
+    } catch (...) {
+      failed = true;  // no slice starts after a failure
+      const std::lock_guard lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+    }
+  };
+  run_workers(workers, work);
   if (failure) std::rethrow_exception(failure);
 }
 

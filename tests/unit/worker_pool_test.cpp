@@ -149,4 +149,56 @@ TEST(ParallelFor, AThreadHeldInOneSliceLeavesTheOthersToTheOtherThread) {
   EXPECT_EQ(others_ended, slices - 1);
 }
 
+// parallel_for_apart runs every slice once, with parallel_for's bounds, on any number of threads and slices; a
+// worker held in its first slice leaves the rest of its run to the others (taken from the far end); and a slice's
+// exception reaches the caller.
+TEST(ParallelForApart, EverySliceOnceAndAHeldWorkersRunTakenByTheOthers) {
+  using roomsense::detail::parallel_for_apart;
+  for (const unsigned threads : {1u, 2u, 3u, 5u}) {
+    WorkerPool pool(threads - 1);
+    const PoolScope scope(&pool);
+    for (const std::size_t n : {0u, 1u, 7u, 100u, 1001u})
+      for (const std::size_t slices : {1u, 2u, 3u, 7u, 32u}) {
+        std::vector<std::pair<std::size_t, std::size_t>> seen(slices, {n + 1, n + 1});
+        std::vector<std::atomic<int>> visits(slices);
+        parallel_for_apart(n, threads, slices, [&](std::size_t begin, std::size_t end, std::size_t slice) {
+          seen[slice] = {begin, end};
+          ++visits[slice];
+        });
+        for (std::size_t k = 0; k < slices; ++k) {
+          EXPECT_EQ(seen[k], std::pair(n * k / slices, n * (k + 1) / slices)) << n << " items, slice " << k;
+          EXPECT_EQ(visits[k].load(), 1) << n << " items, " << slices << " slices, slice " << k;
+        }
+      }
+  }
+  // Two workers, 16 slices: whichever holds slice 0 (the first of worker 0's run) waits until every other slice
+  // has ended, which only the other worker can do, its own run and then the rest of the first from its end.
+  WorkerPool pool(1);
+  const PoolScope scope(&pool);
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::vector<std::size_t> order;  // of the slices but 0, as they ended
+  bool waited_out = false;
+  parallel_for_apart(160, 2, 16, [&](std::size_t, std::size_t, std::size_t slice) {
+    std::unique_lock lock(mutex);
+    if (slice == 0) {
+      waited_out = !changed.wait_for(lock, std::chrono::seconds(10), [&] { return order.size() == 15; });
+      return;
+    }
+    order.push_back(slice);
+    changed.notify_all();
+  });
+  EXPECT_FALSE(waited_out);
+  const std::vector<std::size_t> expected = {8, 9, 10, 11, 12, 13, 14, 15, 7, 6, 5, 4, 3, 2, 1};
+  EXPECT_EQ(order, expected);
+  try {
+    parallel_for_apart(100, 2, 8, [&](std::size_t, std::size_t, std::size_t slice) {
+      if (slice == 5) throw std::runtime_error("slice 5");
+    });
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "slice 5");
+  }
+}
+
 }  // namespace

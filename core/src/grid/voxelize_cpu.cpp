@@ -265,6 +265,21 @@ void parallel_for_on([[maybe_unused]] bool sse41, std::size_t n, unsigned thread
   detail::parallel_for(n, threads, min_grain, body);
 }
 
+// detail::parallel_for_apart over `body`, built for SSE4.1 where `sse41`.
+template <class Body>
+void parallel_for_apart_on([[maybe_unused]] bool sse41, std::size_t n, unsigned threads, std::size_t slices,
+                           const Body& body) {
+#if ROOMSENSE_VOXEL_SSE41_COPY
+  if (sse41) {
+    detail::parallel_for_apart(n, threads, slices,
+                               [&](std::size_t begin, std::size_t end, std::size_t slice)
+                                   __attribute__((target("sse4.1"))) { body(begin, end, slice); });
+    return;
+  }
+#endif
+  detail::parallel_for_apart(n, threads, slices, body);
+}
+
 }  // namespace
 
 bool detail::voxel_sse41_copy() {
@@ -391,7 +406,9 @@ void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, 
   // the tests a scan does) could exceed the budget, the sum of TriangleScan's lower bounds decides, a room's few
   // large triangles each costing a plane in double.
   TestCounter counter(request);
-  const std::size_t slices = detail::parallel_slices(triangles, threads, 1 << 12);
+  // Slices of some 5,000 triangles of a room's scan (most of the stage's time), each worker in its own part of the
+  // scan: the workers' last slices end at most one of them apart.
+  const std::size_t slices = detail::parallel_slices(triangles, threads, 1 << 12, 16);
   std::vector<std::vector<std::size_t>> large(slices);
   std::vector<std::uint64_t> small_boxes(slices, 0), large_boxes(slices, 0);  // box voxels: one-voxel ones count 1
   const auto corners_of = [indices = request.indices.data()](std::size_t t) {
@@ -423,7 +440,7 @@ void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, 
     counter.flush(tests);
     small_boxes[slice] = boxes, large_boxes[slice] = large_box, large[slice] = std::move(own_large);
   };
-  parallel_for_on(sse41, triangles, threads, 1 << 12, small_triangles);
+  parallel_for_apart_on(sse41, triangles, threads, slices, small_triangles);
   std::vector<std::size_t> listed;
   for (std::vector<std::size_t>& part : large) listed.insert(listed.end(), part.begin(), part.end()), part = {};
   const auto sum = [](const std::vector<std::uint64_t>& v) { return std::accumulate(v.begin(), v.end(), std::uint64_t{0}); };

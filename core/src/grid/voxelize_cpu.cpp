@@ -62,9 +62,9 @@ class TestCounter {
 // a time (GCC's vector extensions), and a corner's voxel is marked without its index computed again.
 typedef std::int32_t CornerCell __attribute__((vector_size(16)));
 typedef float CornerPoint __attribute__((vector_size(16)));
+typedef std::uint32_t CornerIndex __attribute__((vector_size(16)));
 // box_index on the lanes at once, as clamp_index does it per axis: 0 below 0 (and for NaN), n - 1 from n - 1
 // on, else truncated.
-typedef std::uint32_t CornerIndex __attribute__((vector_size(16)));
 class CornerCellOf {
  public:
   explicit CornerCellOf(const GridSpec& s)
@@ -83,7 +83,8 @@ class CornerCellOf {
     return cell;
   }
   // operator() of the four vertices from `first`, into out[0..3]: the same operations per float on the vertices'
-  // lanes (vertex_lanes.h), the indices four at a time. A whole scan's corners cost a third of a single's.
+  // lanes (vertex_lanes.h), the indices four at a time. A scan's corners with SSE4.1 (a multiply of four 32-bit
+  // lanes): thesis-room1's 76k, 133 -> 108 us on one thread.
   [[gnu::always_inline]] void four(const glm::vec3* first, CornerCell* out) const {
     // Lanes x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3.
     CornerCell c[3];
@@ -408,7 +409,8 @@ void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, 
   TestCounter counter(request);
   // Slices of some 5,000 triangles of a room's scan (most of the stage's time), each worker in its own part of the
   // scan: the workers' last slices end at most one of them apart.
-  const std::size_t slices = detail::parallel_slices(triangles, threads, 1 << 12, 16);
+  constexpr std::size_t kSmallSlicesPerThread = 16;
+  const std::size_t slices = detail::parallel_slices(triangles, threads, 1 << 12, kSmallSlicesPerThread);
   std::vector<std::vector<std::size_t>> large(slices);
   std::vector<std::uint64_t> small_boxes(slices, 0), large_boxes(slices, 0);  // box voxels: one-voxel ones count 1
   const auto corners_of = [indices = request.indices.data()](std::size_t t) {

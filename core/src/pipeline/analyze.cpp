@@ -463,7 +463,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
       else if (options.build_bounds) build_bounds();
     });
   }
-  if (own_workers) own_workers->release();
+  if (own_workers) own_workers->release();  // no loop follows: the threads end while the areas are gathered
   for (std::uint32_t i = 0; i < storey_areas.size(); ++i) {
     AreaResult& found = storey_areas[i];
     for (Area& area : found.areas) area.storey = i;

@@ -14,6 +14,7 @@
 #include <glm/vec2.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -46,17 +47,23 @@ void list_rooms(AnalysisResult& r) {
   const double cell = double(s.voxel_size) * double(s.voxel_size);
   for (std::uint32_t i = 0; i < r.storeys.size(); ++i) {
     const RoomSplit& split = r.storey_features(i).rooms;
-    std::vector<glm::dvec2> sum(std::size_t(split.count), glm::dvec2(0.0));
+    if (split.count == 0) continue;
+    // The columns' centres (x + 1/2, z + 1/2) summed as whole x and z and half the count: the same sums (exact in
+    // a double either way), without a double per column.
+    std::vector<std::array<std::uint64_t, 2>> sum(std::size_t(split.count), {0, 0});
     std::vector<std::size_t> cells(std::size_t(split.count), 0);
-    for (int z = 0; z < s.nz; ++z)
+    for (int z = 0; z < s.nz; ++z) {
+      const int* row = split.room.data() + s.column(0, z);
       for (int x = 0; x < s.nx; ++x) {
-        const int room = split.room[s.column(x, z)];
+        const int room = row[x];
         if (room == kNoRoom) continue;
-        sum[std::size_t(room)] += glm::dvec2(double(x) + 0.5, double(z) + 0.5);
+        sum[std::size_t(room)][0] += std::uint64_t(x), sum[std::size_t(room)][1] += std::uint64_t(z);
         ++cells[std::size_t(room)];
       }
+    }
     for (std::size_t k = 0; k < cells.size(); ++k) {
-      const glm::dvec2 mean = sum[k] / double(std::max<std::size_t>(cells[k], 1));
+      const glm::dvec2 mean = (glm::dvec2(double(sum[k][0]), double(sum[k][1])) + 0.5 * double(cells[k])) /
+                              double(std::max<std::size_t>(cells[k], 1));
       const Storey& storey = r.storeys[i];
       r.rooms.push_back({i, float(double(cells[k]) * cell),
                          {s.origin.x + float(mean.x) * s.voxel_size, storey.floor_y, s.origin.z + float(mean.y) * s.voxel_size},

@@ -43,8 +43,8 @@ void run_workers(std::size_t workers, Work&& work) {
   work(std::size_t{0});
 }
 
-// How many slices parallel_for cuts [0, n) into: one on one thread; else up to kSlicesPerThread per thread, each
-// of at least min_grain items. More slices than threads, taken by whichever thread is free, let the calling
+// How many slices parallel_for cuts [0, n) into: one on one thread; else up to `per_thread` (kSlicesPerThread unless
+// a loop asks for more: parallel_for_apart's) per thread, each of at least min_grain items. More slices than threads, taken by whichever thread is free, let the calling
 // thread go on with the next slice while a pool thread still wakes (some 50 us on this project's 2-core VM, as
 // much as a small loop's whole slice): an update of a few milliseconds ran six or so such loops.
 inline constexpr std::size_t kSlicesPerThread = 4;

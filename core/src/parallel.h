@@ -44,9 +44,10 @@ void run_workers(std::size_t workers, Work&& work) {
 }
 
 // How many slices parallel_for cuts [0, n) into: one on one thread; else up to `per_thread` (kSlicesPerThread unless
-// a loop asks for more: parallel_for_apart's) per thread, each of at least min_grain items. More slices than threads, taken by whichever thread is free, let the calling
-// thread go on with the next slice while a pool thread still wakes (some 50 us on this project's 2-core VM, as
-// much as a small loop's whole slice): an update of a few milliseconds ran six or so such loops.
+// a loop asks for more: parallel_for_apart's) per thread, each of at least min_grain items. More slices than
+// threads, taken by whichever thread is free, let the calling thread go on with the next slice while a pool thread
+// still wakes (some 50 us on this project's 2-core VM, as much as a small loop's whole slice): an update of a few
+// milliseconds ran six or so such loops.
 inline constexpr std::size_t kSlicesPerThread = 4;
 inline std::size_t parallel_slices(std::size_t n, unsigned threads, std::size_t min_grain,
                                    std::size_t per_thread = kSlicesPerThread) {
@@ -89,12 +90,12 @@ void parallel_for(std::size_t n, unsigned threads, std::size_t min_grain, Body&&
 // end close together.
 template <class Body>
 void parallel_for_apart(std::size_t n, unsigned threads, std::size_t slices, Body&& body) {
+  const auto bound = [&](std::size_t k) { return n * k / slices; };
   const std::size_t workers = std::min<std::size_t>(resolve_threads(threads), slices);
   if (workers <= 1 || slices > 0xffffffffu) {
-    for (std::size_t k = 0; k < slices; ++k) body(n * k / slices, n * (k + 1) / slices, k);
+    for (std::size_t k = 0; k < slices; ++k) body(bound(k), bound(k + 1), k);
     return;
   }
-  const auto bound = [&](std::size_t k) { return n * k / slices; };
   // A run's slices not yet taken, [front, back): front in the high 32 bits, back in the low. Each on its own
   // cache line: its owner takes from it at every slice.
   struct alignas(64) Run {

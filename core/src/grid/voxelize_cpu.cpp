@@ -251,34 +251,19 @@ void scan_triangle(const TriangleScan& scan, const glm::vec3& a, const glm::vec3
 #define ROOMSENSE_INLINE_BODY
 #endif
 
-// detail::parallel_for over `body`, built for SSE4.1 where `sse41`.
-template <class Body>
-void parallel_for_on([[maybe_unused]] bool sse41, std::size_t n, unsigned threads, std::size_t min_grain,
-                     const Body& body) {
+// loop(body), `loop` taking a body of slices (detail::parallel_for or parallel_for_apart over it), the body built for
+// SSE4.1 where `sse41`.
+template <class Body, class Loop>
+void run_loop_on([[maybe_unused]] bool sse41, const Body& body, const Loop& loop) {
 #if ROOMSENSE_VOXEL_SSE41_COPY
   if (sse41) {
-    detail::parallel_for(n, threads, min_grain,
-                         [&](std::size_t begin, std::size_t end, std::size_t slice)
-                             __attribute__((target("sse4.1"))) { body(begin, end, slice); });
+    loop([&](std::size_t begin, std::size_t end, std::size_t slice) __attribute__((target("sse4.1"))) {
+      body(begin, end, slice);
+    });
     return;
   }
 #endif
-  detail::parallel_for(n, threads, min_grain, body);
-}
-
-// detail::parallel_for_apart over `body`, built for SSE4.1 where `sse41`.
-template <class Body>
-void parallel_for_apart_on([[maybe_unused]] bool sse41, std::size_t n, unsigned threads, std::size_t slices,
-                           const Body& body) {
-#if ROOMSENSE_VOXEL_SSE41_COPY
-  if (sse41) {
-    detail::parallel_for_apart(n, threads, slices,
-                               [&](std::size_t begin, std::size_t end, std::size_t slice)
-                                   __attribute__((target("sse4.1"))) { body(begin, end, slice); });
-    return;
-  }
-#endif
-  detail::parallel_for_apart(n, threads, slices, body);
+  loop(body);
 }
 
 }  // namespace
@@ -394,7 +379,7 @@ void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, 
       }
       for (; i < end; ++i) cells[i] = corner_cell(p[i]);
     };
-    parallel_for_on(sse41, p.size(), threads, 1 << 14, cells_of);
+    run_loop_on(sse41, cells_of, [&](const auto& body) { detail::parallel_for(p.size(), threads, 1 << 14, body); });
   }
   // The table's pointer held by value: through the unique_ptr, the marks' atomics would have GCC load it again
   // at every triangle.
@@ -442,7 +427,8 @@ void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, 
     counter.flush(tests);
     small_boxes[slice] = boxes, large_boxes[slice] = large_box, large[slice] = std::move(own_large);
   };
-  parallel_for_apart_on(sse41, triangles, threads, slices, small_triangles);
+  run_loop_on(sse41, small_triangles,
+              [&](const auto& body) { detail::parallel_for_apart(triangles, threads, slices, body); });
   std::vector<std::size_t> listed;
   for (std::vector<std::size_t>& part : large) listed.insert(listed.end(), part.begin(), part.end()), part = {};
   const auto sum = [](const std::vector<std::uint64_t>& v) { return std::accumulate(v.begin(), v.end(), std::uint64_t{0}); };

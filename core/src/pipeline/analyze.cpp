@@ -57,7 +57,9 @@ void list_rooms(AnalysisResult& r) {
       for (int x = 0; x < s.nx; ++x) {
         const int room = row[x];
         if (room == kNoRoom) continue;
-        sum[std::size_t(room)][0] += std::uint64_t(x), sum[std::size_t(room)][1] += std::uint64_t(z);
+        std::array<std::uint64_t, 2>& at = sum[std::size_t(room)];
+        at[0] += std::uint64_t(x);
+        at[1] += std::uint64_t(z);
         ++cells[std::size_t(room)];
       }
     }
@@ -469,8 +471,8 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
       if (task == 0) find_all_areas();
       else if (options.build_bounds) build_bounds();
     });
+    if (own_workers) own_workers->release();  // no loop follows: the threads end while the areas are gathered
   }
-  if (own_workers) own_workers->release();  // no loop follows: the threads end while the areas are gathered
   for (std::uint32_t i = 0; i < storey_areas.size(); ++i) {
     AreaResult& found = storey_areas[i];
     for (Area& area : found.areas) area.storey = i;

@@ -104,6 +104,28 @@ TEST(PrepareInput, RejectsAStrayVertexOneKilometreAway) {
   ASSERT_FALSE(r.warnings.empty());
 }
 
+// At 200 vertices, the fewest the outlier test takes, (n - 1) q rounds down to rank 0: the quantiles are taken at
+// rank 1 at least (input.h), so a lone stray vertex is not its own quantile. It was kept, and its 1,000 km made the
+// grid too large to analyse (TooMuchWork).
+TEST(PrepareInput, RejectsAStrayVertexAmongTheFewestTheTestTakes) {
+  Scan scan;
+  for (std::size_t i = 0; i + 1 < kOutlierMinVertices; ++i)
+    scan.vertices.push_back({float(i % 10) * 0.5f, float(i / 10 % 4) * 0.8f, float(i / 40) * 0.9f});
+  for (const glm::vec3 far : {glm::vec3(1.0e6f, 1.0f, 1.0f), glm::vec3(-1.0e6f, 1.0f, 1.0f)}) {
+    Scan stray = scan;
+    stray.vertices.push_back(far);
+    ASSERT_EQ(stray.vertices.size(), kOutlierMinVertices);
+    const PreparedInput in = prepare_input(stray);
+    EXPECT_EQ(in.outlier_vertices, 1u);
+    EXPECT_EQ(in.vertices.size(), kOutlierMinVertices - 1);
+    EXPECT_EQ(in.lo, glm::vec3(0.0f));
+    EXPECT_EQ(in.hi, glm::vec3(9 * 0.5f, 3 * 0.8f, 4 * 0.9f));
+  }
+  // Without a stray vertex, nothing is rejected: the ranges reach the margin past the data.
+  scan.vertices.push_back({2.0f, 1.0f, 2.0f});
+  EXPECT_EQ(prepare_input(scan).outlier_vertices, 0u);
+}
+
 // The outlier ranges are exact order statistics (input.h), found without sorting: against a full sort of
 // every vertex (at most 16384 vertices are all sampled), on axes with many equal values at the quantiles (a
 // scan's floor and walls), continuous ones, and vertices exactly at a range's end (kept) and just past it.

@@ -12,8 +12,9 @@
 namespace roomsense {
 
 // A vertex is an outlier when it lies more than max(kOutlierMinMargin, the robust span) beyond the
-// [0.5 %, 99.5 %] quantile range of its axis. One stray vertex 1 km away would otherwise make the grid
-// absurd; a corridor seen through a door (tens of percent of a room's span) stays.
+// [0.5 %, 99.5 %] quantile range of its axis (the k-th smallest and largest value, k = max(1, floor((n - 1) q))).
+// One stray vertex 1 km away would otherwise make the grid absurd; a corridor seen through a door (tens of percent
+// of a room's span) stays.
 inline constexpr float kOutlierMinMargin = 2.0f;  // metres
 inline constexpr double kOutlierQuantile = 0.005;
 inline constexpr std::size_t kOutlierMinVertices = 200;  // below this, quantiles mean little: keep all

@@ -133,8 +133,9 @@ struct AxisSample {
 std::pair<float, float> axis_range(const AxisSample& sample, int axis, detail::QuantileBounds* guess) {
   const std::span<float> v(sample.values[std::size_t(axis)].get(), sample.size);
   if (v.empty()) return {-INFINITY, INFINITY};
-  // The k-th smallest and the k-th largest.
-  const std::size_t k = std::size_t(double(v.size() - 1) * kOutlierQuantile);
+  // The k-th smallest and the k-th largest (from 0), k at least 1: at 200 vertices, the fewest the test takes,
+  // (n - 1) q rounds down to 0, and a lone stray vertex would be its own quantile, never rejected.
+  const std::size_t k = std::max<std::size_t>(1, std::size_t(double(v.size() - 1) * kOutlierQuantile));
   const auto [lo, hi] = both_tails(v, k, guess);
   const float margin = std::max(kOutlierMinMargin, hi - lo);
   return {lo - margin, hi + margin};

@@ -450,6 +450,35 @@ TEST(Incremental, CountsAfterAWholeVoxelizationEqualTheFullAnalysis) {
   expect_same(got, want, "the near box gone, the NaN vertex mended");
 }
 
+// A chunk voxelized again lists its marks from the cells of its vertices' box, and clears them there for the next
+// chunk. Vertices no triangle uses widen that box: a few beside a box (the box of every vertex serves), or two at
+// the room's far corners (then the box of the used vertices is found instead). Each chunk's voxels, and the next
+// chunk's of the same update, equal the full analysis's as they come, change and go.
+TEST(Incremental, ChunksWithUnusedVerticesEqualTheFullAnalysis) {
+  const Scan room = synth::generate_builtin_source("synthetic:default");
+  IncrementalAnalysis inc;
+  for (const auto& [id, tile] : split_into_blocks(room, 2.0f)) inc.set_chunk(id, tile);
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::vec3& v : room.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+  const auto with_unused = [](Scan chunk, std::initializer_list<glm::vec3> unused) {
+    chunk.vertices.insert(chunk.vertices.end(), unused);
+    return chunk;
+  };
+  const glm::vec3 mid = 0.5f * (lo + hi);
+  const Scan spanning = with_unused(box(mid, 0.3f), {lo, hi});
+  const Scan beside = with_unused(box(mid + glm::vec3(0.8f, 0.0f, 0.0f), 0.2f), {mid + glm::vec3(1.2f, 0.1f, 0.3f)});
+  inc.set_chunk(5, spanning);
+  inc.set_chunk(6, beside);
+  expect_same(inc.result(), analyze(inc.combined_scan()), "a box with the room's corners unused, one beside");
+  inc.set_chunk(5, with_unused(box(mid + glm::vec3(-0.7f, 0.0f, 0.4f), 0.3f), {hi, lo}));
+  inc.set_chunk(6, with_unused(box(mid + glm::vec3(0.9f, 0.0f, -0.5f), 0.2f), {mid}));
+  expect_same(inc.result(), analyze(inc.combined_scan()), "both moved");
+  inc.remove_chunk(5);
+  expect_same(inc.result(), analyze(inc.combined_scan()), "the spanning one gone");
+  inc.remove_chunk(6);
+  expect_same(inc.result(), analyze(inc.combined_scan()), "both gone");
+}
+
 // A result cancelled at any point (the voxels, the features, halfway through the area searches and their
 // reductions) leaves nothing half-kept: the next result, without a stop, equals the full analysis. The stops
 // come after delays spread over an update's time, so they land in every stage.

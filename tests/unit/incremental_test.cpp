@@ -423,16 +423,22 @@ Scan box(const glm::vec3& corner, float side) {
   return s;
 }
 
+// synthetic:default in 2 x 2 m blocks, each set on `inc` as a chunk; returns the room's box (lowest, highest corner).
+std::pair<glm::vec3, glm::vec3> default_room_in_blocks(IncrementalAnalysis& inc) {
+  const Scan room = synth::generate_builtin_source("synthetic:default");
+  for (const auto& [id, tile] : split_into_blocks(room, 2.0f)) inc.set_chunk(id, tile);
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::vec3& v : room.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+  return {lo, hi};
+}
+
 // The voxel stage counts levels and columns again only where chunks changed, from the previous result's counts,
 // which hold only where its grid came from the chunks the stage keeps. A result whose input checks removed a
 // vertex is voxelized whole (the stage keeps no chunk): a box dropped with it, alone in its columns, must
 // leave the next counts too.
 TEST(Incremental, CountsAfterAWholeVoxelizationEqualTheFullAnalysis) {
-  const Scan room = synth::generate_builtin_source("synthetic:default");
   IncrementalAnalysis inc;
-  for (const auto& [id, tile] : split_into_blocks(room, 2.0f)) inc.set_chunk(id, tile);
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (const glm::vec3& v : room.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+  const auto [lo, hi] = default_room_in_blocks(inc);
   // The far box holds the grid's extent; the near one stands in columns no other chunk reaches.
   inc.set_chunk(1001, box({hi.x + 2.0f, lo.y, lo.z}, 0.3f));
   inc.set_chunk(1002, box({hi.x + 0.8f, lo.y, lo.z}, 0.3f));
@@ -455,11 +461,8 @@ TEST(Incremental, CountsAfterAWholeVoxelizationEqualTheFullAnalysis) {
 // the room's far corners (then the box of the used vertices is found instead). Each chunk's voxels, and the next
 // chunk's of the same update, equal the full analysis's as they come, change and go.
 TEST(Incremental, ChunksWithUnusedVerticesEqualTheFullAnalysis) {
-  const Scan room = synth::generate_builtin_source("synthetic:default");
   IncrementalAnalysis inc;
-  for (const auto& [id, tile] : split_into_blocks(room, 2.0f)) inc.set_chunk(id, tile);
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (const glm::vec3& v : room.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+  const auto [lo, hi] = default_room_in_blocks(inc);
   const auto with_unused = [](Scan chunk, std::initializer_list<glm::vec3> unused) {
     chunk.vertices.insert(chunk.vertices.end(), unused);
     return chunk;

@@ -3,7 +3,8 @@
 // contact). An IncrementalAnalysis packs through the ranked path, which ranks them all. Both must keep the same
 // squares, size after size, on rooms off the grid's axes too, at any main direction. A replay finds each
 // rectangle's changed-region box from its shape's, exactly the box of its corners. A rotated square's contact
-// samples, found once for its shape, fall in the cells its own samples fall in wherever it lies.
+// samples, found once for its shape, fall in the cells its own samples fall in wherever it lies. Deduplication
+// (Eq. 3.44) keeps the first rectangle of each centre, to the grid's last column and level.
 #include "../../core/src/areas/reduce.h"
 #include "../../core/src/areas/search.h"
 #include "synthetic_fixture.h"
@@ -255,6 +256,57 @@ TEST(Packing, AReplaysBoxFromTheShapeIsTheBoxOfTheCorners) {
     EXPECT_EQ(got.lo, expected.lo) << "shape " << s;
     EXPECT_EQ(got.hi, expected.hi) << "shape " << s;
   }
+}
+
+// Eq. 3.42-3.44 on hand-made rectangles of an 8 x 4 x 8 grid: a centre on one voxel or between two (the box of
+// voxels it marks), at the grid's first and last columns and levels (a top's y_Actual one level above the grid,
+// a wall's centre half a level below it), each kept once; a centre past the grid is an error, not a write.
+TEST(Deduplication, KeepsTheFirstRectangleOfEachCentreToTheGridsEdges) {
+  GridSpec spec;
+  spec.nx = 8, spec.ny = 4, spec.nz = 8;
+  constexpr int kSquare = PackedCandidate::kSquare;
+  // Shapes: a 2-voxel square (centre on corner 1 + (1, 0, 1)), a 1-voxel square (centre between two voxels in x
+  // and z), and a wall 2 voxels wide and 1 high (centre between two levels).
+  const std::vector<Candidates::Shape> shapes = {{2, 0, kSquare}, {1, 0, kSquare}, {2, 0, 1}};
+  Candidates squares(spec, spec.ny + 1, {shapes[0], shapes[1]});
+  squares.push_back({0, 0, 0}, 0);  // centre voxel (1, 0, 1): kept
+  squares.push_back({0, 0, 0}, 1);  // voxels x, z in [0, 1]: (1, 0, 1) is marked, dropped
+  squares.push_back({1, 0, 1}, 1);  // x, z in [1, 2]: (1, 0, 1) marked, dropped
+  squares.push_back({2, 0, 2}, 1);  // x, z in [2, 3]: kept
+  squares.push_back({6, 4, 6}, 1);  // x, z in [6, 7] at level 4 = ny (y_Actual): kept
+  squares.push_back({6, 4, 6}, 0);  // voxel (7, 4, 7): marked, dropped
+  squares.push_back({5, 3, 5}, 0);  // voxel (6, 3, 6), a level below: kept
+  std::vector<glm::ivec3> kept;
+  const auto keep = [&](const Sized& s) { kept.push_back(s.packed.corner(0)); };
+  CentreDeduplicator dedup(spec);
+  EXPECT_EQ(dedup.add(squares, AreaSize::Large, keep), 4u);
+  EXPECT_EQ(kept, (std::vector<glm::ivec3>{{0, 0, 0}, {2, 0, 2}, {6, 4, 6}, {5, 3, 5}}));
+
+  // A later size's rectangles are dropped where an earlier size's centres are.
+  Candidates smaller(spec, spec.ny + 1, {shapes[1]});
+  smaller.push_back({2, 0, 2}, 0);  // as a kept one: dropped
+  smaller.push_back({3, 0, 3}, 0);  // x, z in [3, 4]: (3, 0, 3) marked, dropped
+  smaller.push_back({4, 0, 4}, 0);  // kept
+  kept.clear();
+  EXPECT_EQ(dedup.add(smaller, AreaSize::Medium, keep), 1u);
+  EXPECT_EQ(kept, (std::vector<glm::ivec3>{{4, 0, 4}}));
+
+  // A wall whose top is at level 0 has its centre between levels -1 and 0: kept, and the same centre once.
+  Candidates walls(spec, spec.ny, {shapes[2]});
+  walls.push_back({0, 0, 7}, 0);
+  walls.push_back({0, 0, 7}, 0);
+  walls.push_back({0, 3, 7}, 0);  // levels 2 and 3, the grid's last
+  kept.clear();
+  CentreDeduplicator wall_dedup(spec);
+  EXPECT_EQ(wall_dedup.add(walls, AreaSize::Large, keep), 2u);
+
+  // Centres past the grid: a square whose centre lies in column 8, a wall whose centre lies below level -1.
+  Candidates past_x(spec, spec.ny, {shapes[0]});
+  past_x.push_back({7, 0, 0}, 0);
+  EXPECT_THROW(CentreDeduplicator(spec).add(past_x, AreaSize::Large, keep), std::logic_error);
+  Candidates past_y(spec, spec.ny, {{2, 0, 5}});
+  past_y.push_back({0, 0, 0}, 0);
+  EXPECT_THROW(CentreDeduplicator(spec).add(past_y, AreaSize::Large, keep), std::logic_error);
 }
 
 }  // namespace

@@ -188,16 +188,22 @@ std::size_t CentreDeduplicator::add(const Candidates& rects, AreaSize size,
                                     const std::function<void(const Sized&)>& keep) {
   // A rectangle's centre voxels are corner 1's plus its shape's: corner_sum is 4 x corner 1 plus the shape's own
   // sum, and floor((4 c + s) / 4) = c + floor(s / 4). One voxel per axis, or two neighbours where the centre
-  // lies between them: a box from lo to hi, found once per shape.
+  // lies between them: a box from lo, found once per shape.
   struct CentreBox {
-    glm::ivec3 lo, hi;
+    glm::ivec3 lo;
+    int ex, ey, ez;  // the box's extent past lo on each axis: 0 or 1
+    // lo + corner 1 lies in [0, limit) on each axis, y one level higher (y_Actual), where the box lies in the
+    // grid's columns and levels.
+    unsigned limit_x, limit_y, limit_z;
   };
   std::vector<CentreBox> offsets;
+  const auto limit = [](int cells, int extent) { return unsigned(std::max(cells - extent, 0)); };
   for (const Candidates::Shape& shape : rects.shapes()) {
     const glm::ivec3 sum = PackedCandidate(glm::ivec3(0), shape.dx, shape.dz, shape.side).corner_sum();
     int x[2], y[2], z[2];
     const int nx = centre_voxels(sum.x, x), ny = centre_voxels(sum.y, y), nz = centre_voxels(sum.z, z);
-    offsets.push_back({{x[0], y[0], z[0]}, {x[nx - 1], y[ny - 1], z[nz - 1]}});
+    offsets.push_back({{x[0], y[0], z[0]}, nx - 1, ny - 1, nz - 1, limit(nx_, nx - 1),
+                       limit(int(levels_.size()), ny - 1), limit(nz_, nz - 1)});
   }
   const std::size_t row = std::size_t(nx_);
   std::size_t kept = 0;
@@ -207,25 +213,27 @@ std::size_t CentreDeduplicator::add(const Candidates& rects, AreaSize size,
     const PackedCandidate p = rects.decode(item);
     const glm::ivec3 c = p.corner(0);
     const CentreBox& o = offsets[item.shape];
-    const int x0 = c.x + o.lo.x, x1 = c.x + o.hi.x, z0 = c.z + o.lo.z, z1 = c.z + o.hi.z;
-    const int y0 = c.y + o.lo.y, y1 = c.y + o.hi.y;
-    // Centres lie within their corners' box, in the grid's columns and levels (one above for y_Actual).
-    if (x0 < 0 || x1 >= nx_ || z0 < 0 || z1 >= nz_ || y0 < -1 || std::size_t(y1 + 1) >= levels_.size())
+    const int x0 = c.x + o.lo.x, y0 = c.y + o.lo.y, z0 = c.z + o.lo.z;
+    // Centres lie within their corners' box, in the grid's columns and levels: one unsigned comparison an axis.
+    if (unsigned(x0) >= o.limit_x || unsigned(y0 + 1) >= o.limit_y || unsigned(z0) >= o.limit_z)
       throw std::logic_error("a rectangle's centre outside its grid");
-    bool marked = false;
-    for (int y = y0; y <= y1 && !marked; ++y) {
-      const std::optional<BitSet>& bits = levels_[std::size_t(y + 1)];
-      for (int z = z0; z <= z1 && bits && !marked; ++z) {
-        const std::size_t i = std::size_t(z) * row + std::size_t(x0);
-        marked = bits->test(i) || (x1 > x0 && bits->test(i + 1));
-      }
+    const std::size_t i = std::size_t(z0) * row + std::size_t(x0);
+    // The box's cells at a level: (x0, z0), and x0 + 1 and z0 + 1 where it reaches them.
+    const auto marked_at = [&](const BitSet& bits) {
+      const auto in_row = [&](std::size_t at) { return bits.test(at) || (o.ex != 0 && bits.test(at + 1)); };
+      return in_row(i) || (o.ez != 0 && in_row(i + row));
+    };
+    const std::optional<BitSet>& lower = levels_[std::size_t(y0 + 1)];
+    if (lower && marked_at(*lower)) continue;
+    if (o.ey != 0) {
+      const std::optional<BitSet>& upper = levels_[std::size_t(y0 + 2)];
+      if (upper && marked_at(*upper)) continue;
     }
-    if (marked) continue;
-    for (int y = y0; y <= y1; ++y) {
+    for (int y = y0; y <= y0 + o.ey; ++y) {
       std::optional<BitSet>& bits = levels_[std::size_t(y + 1)];
       if (!bits) bits.emplace(row * std::size_t(nz_));
-      for (int z = z0; z <= z1; ++z)
-        for (int x = x0; x <= x1; ++x) bits->set(std::size_t(z) * row + std::size_t(x));
+      for (int z = 0; z <= o.ez; ++z)
+        for (int x = 0; x <= o.ex; ++x) bits->set(i + std::size_t(z) * row + std::size_t(x));
     }
     keep({p, size});
     ++kept;

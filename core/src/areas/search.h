@@ -15,9 +15,10 @@ namespace roomsense::detail {
 struct NormalCounts {
   // Per column, one word for Eq. 3.25's test of a cell: where its counts start in prefix8/prefix16 (kNoNormal:
   // it has no normal), and flags: a wall column (no rectangle's cell may lie there) and one with a blocked
-  // voxel at some level.
+  // voxel at some level. The counts' first slot is all zeros, kNoNormal's: a column without a normal counts
+  // none without a test (the wall search reads tens of thousands of cells).
   static constexpr std::uint32_t kWallColumn = 1u << 31, kHasBlocked = 1u << 30, kStartBits = kHasBlocked - 1;
-  static constexpr std::uint32_t kNoNormal = kStartBits;
+  static constexpr std::uint32_t kNoNormal = 0;
   int y0 = 0, levels = 0;               // covers y in [y0, y0 + levels)
   std::vector<std::uint32_t> start;     // per column: where its counts start (kStartBits), and flags
   std::vector<std::uint8_t> prefix8;    // start + (y - y0 + 1): the column's voxels with a normal in [y0, y], when levels < 256
@@ -68,7 +69,6 @@ namespace normal_counts {
 // The counts in [span.from, span.to) of a column whose counts start at `start` (kNoNormal: none), in `prefix`.
 template <class Count>
 int count(const Count* prefix, std::uint32_t start, NormalCounts::Levels span) {
-  if (start == NormalCounts::kNoNormal) return 0;
   return int(prefix[start + span.to]) - int(prefix[start + span.from]);
 }
 inline int count(const NormalCounts& n, std::uint32_t start, NormalCounts::Levels span) {

@@ -24,14 +24,16 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   const std::size_t stride = std::size_t(n.levels + 1);
   const auto normals_of = [&](std::size_t col) { return features.normals.data() + col * std::size_t(spec.ny) + n.y0; };
   n.start.assign(spec.column_count(), NormalCounts::kNoNormal);
-  std::size_t slots = 0;
+  // Slot 0 is kNoNormal's zeros (where there are levels to count).
+  std::size_t slots = n.levels > 0 ? 1 : 0, with_normal = 0;
   for (std::size_t col = 0; col < spec.column_count() && n.levels > 0; ++col) {
     const std::uint8_t* f = normals_of(col);
     if (!std::any_of(f, f + n.levels, [](std::uint8_t v) { return v != 0; })) continue;
-    // Starts below kNoNormal: counts of 2^30 voxels, past any voxel budget the pipeline takes, would not fit.
-    if ((slots + 1) * stride >= NormalCounts::kNoNormal)
+    // Starts below 2^30 (kStartBits): counts of 2^30 voxels, past any voxel budget the pipeline takes, would not fit.
+    if ((slots + 1) * stride >= NormalCounts::kStartBits)
       throw Error(ErrorCode::GridTooLarge, "the wall search counts the normals of at most 2^30 - 2 voxels");
     n.start[col] = std::uint32_t(slots++ * stride);
+    ++with_normal;
   }
   const auto prefix_of = [&]<class Count>(std::vector<Count>& prefix) {
     prefix.assign(std::size_t(slots) * stride, 0);
@@ -46,7 +48,7 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   else prefix_of(n.prefix16);
   // The bit rows take 4 * 64 bits per (level, x) for every 64 z: at most the normals' own bytes from 32 z on.
   // Shallower grids (and rooms without normals) go without them.
-  n.z_words = slots > 0 && spec.nz >= 32 ? std::size_t(spec.nz + 63) / 64 : 0;
+  n.z_words = with_normal > 0 && spec.nz >= 32 ? std::size_t(spec.nz + 63) / 64 : 0;
   n.z_bits.assign(std::size_t(std::max(n.levels, 0)) * std::size_t(spec.nx) * 4 * n.z_words, 0);
   for (std::size_t col = 0; col < spec.column_count() && n.z_words > 0; ++col) {
     if (!n.has_normal(col)) continue;
@@ -124,12 +126,21 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
         in_lo = std::max(z_lo, 0), in_hi = std::min(z_hi, spec.nz - 1);
         missing += rows * long((z_hi - z_lo + 1) - std::max(in_hi - in_lo + 1, 0));
       }
+      // The run's voxels with a normal: a column without one counts none (its counts are slot 0's zeros), and
+      // the rare column a rectangle may not hold (a wall, or a blocked voxel in the span) is told by its flags.
       std::size_t col = spec.column(x1 + run.dx, in_lo);
+      int with_normal = 0;
       for (int z = in_lo; z <= in_hi; ++z, col += std::size_t(spec.nx)) {
-        int with_normal = 0;
-        if (!normals.usable(prefix, col, span, with_normal)) return false;
-        missing += rows - with_normal;
+        const std::uint32_t word = normals.start[col];
+        if (word & (NormalCounts::kWallColumn | NormalCounts::kHasBlocked)) {
+          int counted = 0;
+          if (!normals.usable(prefix, col, span, counted)) return false;
+          with_normal += counted;
+        } else {
+          with_normal += normal_counts::count(prefix, word, span);
+        }
       }
+      missing += rows * long(std::max(in_hi - in_lo + 1, 0)) - with_normal;
       if (double(missing) > may_miss) return false;
     }
     return true;

@@ -105,32 +105,51 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   std::vector<double> need(ring.size());
   for (std::size_t r = 0; r < ring.size(); ++r)
     need[r] = double(fill) * (std::floor(ring[r].d) + 1.0) * double(shapes[r].side + 1);
+  // Per ring offset, its covered cells as runs along x, one a row, where those are fewer than its runs along z
+  // (RingOffset::runs, one a column): a top nearer the x axis covers a few rows of many columns, and the test
+  // below costs more a run than a cell. Which runs it reads does not change its outcome (see there).
+  struct RowRun {
+    int dz, dx_lo, dx_hi;
+  };
+  std::vector<RowRun> row_runs;
+  std::vector<std::uint32_t> row_runs_end(ring.size());  // offset r's are [end of r - 1, end of r)
+  for (std::size_t r = 0; r < ring.size(); ++r) {
+    const RingOffset& o = ring[r];
+    const std::size_t begin = row_runs.size();
+    int z_lo = o.runs.front().dz_lo, z_hi = o.runs.front().dz_hi;
+    for (const CellRun& run : o.runs) z_lo = std::min(z_lo, run.dz_lo), z_hi = std::max(z_hi, run.dz_hi);
+    if (std::size_t(z_hi - z_lo + 1) < o.runs.size())
+      for (int z = z_lo; z <= z_hi; ++z) {
+        RowRun row{z, std::numeric_limits<int>::max(), std::numeric_limits<int>::min()};
+        int cells = 0;
+        for (const CellRun& run : o.runs)
+          if (z >= run.dz_lo && z <= run.dz_hi) row.dx_lo = std::min(row.dx_lo, run.dx), row.dx_hi = std::max(row.dx_hi, run.dx), ++cells;
+        if (cells == 0) continue;
+        if (cells != row.dx_hi - row.dx_lo + 1) {  // a row's cells apart (not a segment's): the columns' runs
+          row_runs.resize(begin);
+          break;
+        }
+        row_runs.push_back(row);
+      }
+    row_runs_end[r] = std::uint32_t(row_runs.size());
+  }
   // Eq. 3.25's test for one rectangle (ring offset r, top at y_top): no wall column among the cells the top
   // segment touches, and enough voxels with a normal in the rows [y1 - h, y1]. Gives up once too many voxels lack
-  // one. Beyond the thesis: no voxel before an opening (RoomFeatures::wall_blocked). `prefix`: the counts'
-  // (NormalCounts::usable).
+  // one; as no cell lowers the count of those, the cells may be read in any order. Beyond the thesis: no voxel
+  // before an opening (RoomFeatures::wall_blocked). `prefix`: the counts' (NormalCounts::usable).
   const auto valid_in = [&]<class Count>(const Count* prefix, int x1, int z1, std::size_t r, int y_top) {
     const RingOffset& o = ring[r];
     const int y_bottom = std::max(y_top - shapes[r].side, floor);
     const long rows = y_top - y_bottom + 1;
     const double may_miss = double(long(o.cells) * rows) - need[r];
     const NormalCounts::Levels span = normals.levels_of(y_bottom, y_top);
-    // Most rectangles lie inside the grid along z: no run of theirs to clip.
-    const bool inside = z1 + o.box_lo.y >= 0 && z1 + o.box_hi.y < spec.nz;
     long missing = 0;
-    for (const CellRun& run : o.runs) {
-      // The run's cells in the grid, column by column along z; those past its edge lack every voxel.
-      int in_lo = z1 + run.dz_lo, in_hi = z1 + run.dz_hi;
-      if (!inside) {
-        const int z_lo = in_lo, z_hi = in_hi;
-        in_lo = std::max(z_lo, 0), in_hi = std::min(z_hi, spec.nz - 1);
-        missing += rows * long((z_hi - z_lo + 1) - std::max(in_hi - in_lo + 1, 0));
-      }
-      // The run's voxels with a normal: a column without one counts none (its counts are slot 0's zeros), and
-      // the rare column a rectangle may not hold (a wall, or a blocked voxel in the span) is told by its flags.
-      std::size_t col = spec.column(x1 + run.dx, in_lo);
+    // `cells` cells from column `col` on, `step` columns apart: their voxels with a normal. A column without one
+    // counts none (its counts are slot 0's zeros); the rare column a rectangle may not hold (a wall, or a blocked
+    // voxel in the span) is told by its flags. False where one may not be held.
+    const auto add_run = [&](std::size_t col, int cells, std::size_t step) {
       int with_normal = 0;
-      for (int z = in_lo; z <= in_hi; ++z, col += std::size_t(spec.nx)) {
+      for (int k = 0; k < cells; ++k, col += step) {
         const std::uint32_t word = normals.start[col];
         if (word & (NormalCounts::kWallColumn | NormalCounts::kHasBlocked)) {
           int counted = 0;
@@ -140,7 +159,32 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
           with_normal += normal_counts::count(prefix, word, span);
         }
       }
-      missing += rows * long(std::max(in_hi - in_lo + 1, 0)) - with_normal;
+      missing += rows * long(cells) - with_normal;
+      return true;
+    };
+    const std::size_t rows_begin = r == 0 ? 0 : row_runs_end[r - 1], rows_end = row_runs_end[r];
+    if (rows_begin < rows_end) {  // row by row; a row past the grid's edge lacks every voxel
+      for (std::size_t k = rows_begin; k < rows_end; ++k) {
+        const RowRun& run = row_runs[k];
+        const int z = z1 + run.dz, cells = run.dx_hi - run.dx_lo + 1;
+        if (z < 0 || z >= spec.nz) missing += rows * long(cells);
+        else if (!add_run(spec.column(x1 + run.dx_lo, z), cells, 1)) return false;
+        if (double(missing) > may_miss) return false;
+      }
+      return true;
+    }
+    // Column by column; most rectangles lie inside the grid along z: no run of theirs to clip.
+    const bool inside = z1 + o.box_lo.y >= 0 && z1 + o.box_hi.y < spec.nz;
+    for (const CellRun& run : o.runs) {
+      // The run's cells in the grid; those past its edge lack every voxel.
+      int in_lo = z1 + run.dz_lo, in_hi = z1 + run.dz_hi;
+      if (!inside) {
+        const int z_lo = in_lo, z_hi = in_hi;
+        in_lo = std::max(z_lo, 0), in_hi = std::min(z_hi, spec.nz - 1);
+        missing += rows * long((z_hi - z_lo + 1) - std::max(in_hi - in_lo + 1, 0));
+      }
+      if (in_lo <= in_hi && !add_run(spec.column(x1 + run.dx, in_lo), in_hi - in_lo + 1, std::size_t(spec.nx)))
+        return false;
       if (double(missing) > may_miss) return false;
     }
     return true;

@@ -51,9 +51,15 @@ struct NormalCounts {
     std::size_t k = 0;
   };
   static ZRows z_rows(std::uint8_t first);
-  // Bits z in [z_from, z_from + 64) of the voxels at (x, y) whose normal Alg. 2 pairs with a first corner whose
-  // rows are `rows` (z_rows); 0 outside the grid.
-  std::uint64_t z_window(int nx, int x, int y, ZRows rows, int z_from) const;
+  // The bit rows `rows` (z_rows) of the voxels at (x, y); those at (x + dx, y) lie dx * column_words() further
+  // (a first corner's second corners are found column by column).
+  const std::uint64_t* z_rows_at(int nx, int x, int y, ZRows rows) const {
+    return z_bits.data() + ((std::size_t(y - y0) * std::size_t(nx) + std::size_t(x)) * 4 + rows.k) * z_words;
+  }
+  std::size_t column_words() const { return 4 * z_words; }
+  // Bits z in [z_from, z_from + 64) of the voxels whose rows start at `first_row` (z_rows_at) and whose normal
+  // Alg. 2 pairs with a first corner whose rows are `rows`; 0 outside the grid.
+  std::uint64_t z_window(const std::uint64_t* first_row, ZRows rows, int z_from) const;
 };
 NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features);
 // Normals the second corner of a wall rectangle may carry (Alg. 2) when the first carries `first`: the first
@@ -110,11 +116,9 @@ inline NormalCounts::ZRows NormalCounts::z_rows(std::uint8_t first) {
   return {1, std::size_t(std::countr_zero(unsigned(kAll & ~compatible)))};
 }
 
-inline std::uint64_t NormalCounts::z_window(int nx, int x, int y, ZRows rows, int z_from) const {
+inline std::uint64_t NormalCounts::z_window(const std::uint64_t* first_row, ZRows rows, int z_from) const {
   const int total = int(64 * z_words);
   if (rows.count == 0 || z_from >= total || z_from <= -64) return 0;
-  const std::uint64_t* first_row =
-      z_bits.data() + ((std::size_t(y - y0) * std::size_t(nx) + std::size_t(x)) * 4 + rows.k) * z_words;
   const auto window = [&](const std::uint64_t* row) {
     if (z_from < 0) return row[0] << -z_from;
     const std::size_t w = std::size_t(z_from / 64);

@@ -319,9 +319,11 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
         }
         const NormalCounts::ZRows rows = NormalCounts::z_rows(f1);
         if (rows.count == 0) continue;  // no normal a second corner may carry
+        const std::uint64_t* rows_here = normals.z_rows_at(spec.nx, x1, y1, rows);
         for (const RingWord& word : ring_words) {
           if (x1 + word.dx >= spec.nx) break;  // dx only grows
-          std::uint64_t seconds = word.offsets & normals.z_window(spec.nx, x1 + word.dx, y1, rows, z1 + word.dz_from);
+          const std::uint64_t* rows_there = rows_here + std::size_t(word.dx) * normals.column_words();
+          std::uint64_t seconds = word.offsets & normals.z_window(rows_there, rows, z1 + word.dz_from);
           for (; seconds != 0; seconds &= seconds - 1)
             try_rectangle(x1, y1, z1, word.first + word.rank[std::size_t(std::countr_zero(seconds))]);
         }

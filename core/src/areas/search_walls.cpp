@@ -25,7 +25,7 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   const auto normals_of = [&](std::size_t col) { return features.normals.data() + col * std::size_t(spec.ny) + n.y0; };
   n.start.assign(spec.column_count(), NormalCounts::kNoNormal);
   // Slot 0 is kNoNormal's zeros (where there are levels to count).
-  std::size_t slots = n.levels > 0 ? 1 : 0, with_normal = 0;
+  std::size_t slots = n.levels > 0 ? 1 : 0, columns_with_normal = 0;
   for (std::size_t col = 0; col < spec.column_count() && n.levels > 0; ++col) {
     const std::uint8_t* f = normals_of(col);
     if (!std::any_of(f, f + n.levels, [](std::uint8_t v) { return v != 0; })) continue;
@@ -33,7 +33,7 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
     if ((slots + 1) * stride >= NormalCounts::kStartBits)
       throw Error(ErrorCode::GridTooLarge, "the wall search counts the normals of at most 2^30 - 2 voxels");
     n.start[col] = std::uint32_t(slots++ * stride);
-    ++with_normal;
+    ++columns_with_normal;
   }
   const auto prefix_of = [&]<class Count>(std::vector<Count>& prefix) {
     prefix.assign(std::size_t(slots) * stride, 0);
@@ -48,7 +48,7 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   else prefix_of(n.prefix16);
   // The bit rows take 4 * 64 bits per (level, x) for every 64 z: at most the normals' own bytes from 32 z on.
   // Shallower grids (and rooms without normals) go without them.
-  n.z_words = with_normal > 0 && spec.nz >= 32 ? std::size_t(spec.nz + 63) / 64 : 0;
+  n.z_words = columns_with_normal > 0 && spec.nz >= 32 ? std::size_t(spec.nz + 63) / 64 : 0;
   n.z_bits.assign(std::size_t(std::max(n.levels, 0)) * std::size_t(spec.nx) * 4 * n.z_words, 0);
   for (std::size_t col = 0; col < spec.column_count() && n.z_words > 0; ++col) {
     if (!n.has_normal(col)) continue;

@@ -154,13 +154,13 @@ std::array<std::pair<float, float>, 3> robust_ranges(std::span<const std::span<c
   AxisSample sample(count);
   if (keep.empty()) {  // every vertex kept (the usual scan): gathered side by side
     detail::parallel_for(sample.size, threads, 4096, [&](std::size_t begin, std::size_t end, std::size_t) {
-      // The part holding the slice's first sample, then onward with the samples.
+      // The part holding the slice's first sample, then part by part: each one's samples a stride apart.
       std::size_t part = std::size_t(std::upper_bound(part_end.begin(), part_end.end(), begin * sample.stride) - part_end.begin());
-      for (std::size_t j = begin; j < end; ++j) {
-        const std::size_t i = j * sample.stride;
-        while (part_end[part] <= i) ++part;
-        const glm::vec3& v = parts[part][i - (part_end[part] - parts[part].size())];
-        for (int axis = 0; axis < 3; ++axis) sample.values[std::size_t(axis)][j] = v[axis];
+      for (std::size_t j = begin; j < end; ++part) {
+        const std::size_t part_begin = part_end[part] - parts[part].size();
+        const std::size_t part_samples_end = std::min(end, (part_end[part] + sample.stride - 1) / sample.stride);
+        for (std::size_t at = j * sample.stride - part_begin; j < part_samples_end; ++j, at += sample.stride)
+          for (int axis = 0; axis < 3; ++axis) sample.values[std::size_t(axis)][j] = parts[part][at][axis];
       }
     });
   } else {

@@ -35,10 +35,26 @@ std::vector<int> flood_tops(const VoxelGrid& grid, const FloorCeiling& levels, c
   std::vector<Run> runs;
   std::vector<std::uint8_t> open(s.column_count(), 0);
   std::vector<std::size_t> first(s.column_count() + 1, 0);  // runs of column c: [first[c], first[c + 1])
+  // Whether the levels [lo, hi] of a column are all empty, eight at a time, the last eight overlapping the others
+  // where the span is not a multiple of eight.
+  const auto empty_span = [lo, hi](const std::uint8_t* v) {
+    if (hi - lo + 1 < 8) return std::all_of(v + lo, v + hi + 1, [](std::uint8_t x) { return x == 0; });
+    std::uint64_t any = 0, word = 0;
+    for (int y = lo; y + 8 <= hi + 1; y += 8) {
+      std::memcpy(&word, v + y, sizeof word);
+      any |= word;
+    }
+    std::memcpy(&word, v + hi - 7, sizeof word);
+    return (any | word) == 0;
+  };
   for (std::size_t col = 0; col < s.column_count(); ++col) {
     first[col] = runs.size();
     if (!room[col]) continue;
     const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
+    if (empty_span(v)) {
+      open[col] = 1, highest[col] = hi;
+      continue;
+    }
     for (int y = lo; y <= hi;) {
       if (v[y]) {
         ++y;

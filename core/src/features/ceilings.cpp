@@ -61,16 +61,13 @@ std::vector<int> flood_tops(const VoxelGrid& grid, const FloorCeiling& levels, c
         continue;
       }
       const int y0 = y;
-      // Through the empty run eight voxels at a time: a room's columns are mostly one such run.
+      // Through the empty run eight voxels at a time (a column open but for an object's few levels is mostly one
+      // long run); a column with a solid voxel is never one run over [lo, hi].
       for (std::uint64_t word = 0; y + 8 <= hi + 1; y += 8) {
         std::memcpy(&word, v + y, sizeof word);
         if (word != 0) break;
       }
       while (y <= hi && !v[y]) ++y;
-      if (y0 == lo && y > hi) {
-        open[col] = 1, highest[col] = hi;
-        break;
-      }
       runs.push_back({y0, y - 1});
     }
   }

@@ -1,6 +1,7 @@
 // Beyond the thesis (issue 15): the ceiling per column (a roof's slope, a soffit, a beam), the storey's
 // ceiling raised to a pitched roof's ridge, and the facets of free ceiling the areas lie on.
 #include "roomsense/features.h"
+#include "bounds/column_levels.h"
 #include "surfaces/regions.h"
 
 #include <glm/mat3x3.hpp>
@@ -9,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <numbers>
 
 namespace roomsense {
@@ -35,23 +35,12 @@ std::vector<int> flood_tops(const VoxelGrid& grid, const FloorCeiling& levels, c
   std::vector<Run> runs;
   std::vector<std::uint8_t> open(s.column_count(), 0);
   std::vector<std::size_t> first(s.column_count() + 1, 0);  // runs of column c: [first[c], first[c + 1])
-  // Whether the levels [lo, hi] of a column are all empty, eight at a time, the last eight overlapping the others
-  // where the span is not a multiple of eight.
-  const auto empty_span = [lo, hi](const std::uint8_t* v) {
-    if (hi - lo + 1 < 8) return std::all_of(v + lo, v + hi + 1, [](std::uint8_t x) { return x == 0; });
-    std::uint64_t any = 0, word = 0;
-    for (int y = lo; y + 8 <= hi + 1; y += 8) {
-      std::memcpy(&word, v + y, sizeof word);
-      any |= word;
-    }
-    std::memcpy(&word, v + hi - 7, sizeof word);
-    return (any | word) == 0;
-  };
   for (std::size_t col = 0; col < s.column_count(); ++col) {
     first[col] = runs.size();
     if (!room[col]) continue;
     const std::uint8_t* v = grid.cells.data() + col * std::size_t(s.ny);
-    if (empty_span(v)) {
+    // Empty runs found eight levels at a time (column_levels.h): most columns are one run over [lo, hi].
+    if (detail::lowest_solid(v, lo, hi + 1) > hi) {
       open[col] = 1, highest[col] = hi;
       continue;
     }
@@ -61,13 +50,7 @@ std::vector<int> flood_tops(const VoxelGrid& grid, const FloorCeiling& levels, c
         continue;
       }
       const int y0 = y;
-      // Through the empty run eight voxels at a time (a column open but for an object's few levels is mostly one
-      // long run); a column with a solid voxel is never one run over [lo, hi].
-      for (std::uint64_t word = 0; y + 8 <= hi + 1; y += 8) {
-        std::memcpy(&word, v + y, sizeof word);
-        if (word != 0) break;
-      }
-      while (y <= hi && !v[y]) ++y;
+      y = detail::lowest_solid(v, y, hi + 1);
       runs.push_back({y0, y - 1});
     }
   }

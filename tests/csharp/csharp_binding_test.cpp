@@ -6,6 +6,7 @@
 #include "roomsense/roomsense.h"
 #include "roomsense/scanio.h"
 #include "rooms.h"
+#include "test_process.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -105,8 +106,7 @@ TEST(CSharpBinding, EqualsTheCApiOnASharedRoomUnderMono) {
   for (const auto& v : scan.vertices) xyz.insert(xyz.end(), {v.x, v.y, v.z});
   const std::vector<std::uint32_t>& indices = scan.indices;
 
-  const fs::path dir = fs::path(testing::TempDir()) / ("roomsense_csharp_" + std::to_string(getpid()));
-  fs::remove_all(dir);
+  const fs::path dir = roomsense::test::scratch_dir() / "csharp";
   fs::create_directories(dir);
   write_bytes(dir / "vertices.bin", xyz.data(), xyz.size());
   write_bytes(dir / "indices.bin", indices.data(), indices.size());

@@ -2,6 +2,7 @@
 #pragma once
 #include "layer_harness.h"
 #include "roomsense/analysis.h"
+#include "test_process.h"
 
 #include <nlohmann/json.hpp>
 
@@ -15,8 +16,6 @@
 #include <optional>
 #include <fstream>
 #include <string>
-#include <unistd.h>
-
 namespace layertest {
 
 // The getters against analyze()'s result, bit for bit.
@@ -81,8 +80,7 @@ inline void expect_identical(const Result& got, const roomsense::AnalysisResult&
 // Runs `roomsense analyze SOURCE --no-labels --json` and returns the document. Without labels: the layer sees
 // a capture through a runtime's mesh extensions, which carry none of the capture's anchors.
 inline nlohmann::json run_cli(const std::string& source) {
-  const std::filesystem::path out =
-      std::filesystem::path(::testing::TempDir()) / ("layer_cli_" + std::to_string(::getpid()) + ".json");
+  const std::filesystem::path out = roomsense::test::scratch_dir() / "layer_cli.json";
   const std::string command = std::string("'") + ROOMSENSE_CLI + "' analyze '" + source + "' --no-labels --backend cpu --json '" +
                               out.string() + "'";
   const int status = std::system(command.c_str());

@@ -1,9 +1,9 @@
 // Helpers of the passive-capture tests: a fresh folder per test process for ROOMSENSE_EXPORT_DIR, and what an
 // application received from the runtime, to compare a run with the layer against one without it.
 #pragma once
-#include <gtest/gtest.h>
+#include "test_process.h"
 
-#include <unistd.h>
+#include <gtest/gtest.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -13,9 +13,9 @@
 
 namespace layertest {
 
-// An empty folder of this test process (parallel ctest runs do not share it).
+// An empty folder of this test process (parallel ctest runs do not share it), removed as the process exits.
 inline std::filesystem::path temp_dir(const std::string& name) {
-  const auto dir = std::filesystem::path(::testing::TempDir()) / (name + "_" + std::to_string(::getpid()));
+  const auto dir = roomsense::test::scratch_dir() / name;
   std::filesystem::remove_all(dir);
   return dir;
 }

@@ -3,6 +3,7 @@
 // when the same manifest is found twice.
 #include "layer_harness.h"
 #include "roomsense/xr/loader_interface.h"
+#include "test_process.h"
 
 #include <dlfcn.h>
 
@@ -119,7 +120,7 @@ TEST(LayerLoading, TheFrameLoopAndSpacesGoStraightToTheRuntime) {
 // The same manifest in two search directories puts the layer into the chain twice; the copy nearest the
 // application works and the other is skipped, so nothing recurses and every result arrives once.
 TEST(LayerLoading, TheSameManifestInTwoSearchDirectories) {
-  const std::filesystem::path log = std::filesystem::path(::testing::TempDir()) / ("layer_dup_" + std::to_string(::getpid()) + ".log");
+  const std::filesystem::path log = roomsense::test::scratch_dir() / "layer_dup.log";
   ScopedEnv dirs("XDG_DATA_DIRS", std::string(ROOMSENSE_DUPLICATE_LAYER_DIR));
   ScopedEnv level("ROOMSENSE_LOG", std::string("info"));
   ScopedEnv file("ROOMSENSE_LOG_FILE", log.string());
@@ -139,7 +140,7 @@ TEST(LayerLoading, TheSameManifestInTwoSearchDirectories) {
 }
 
 TEST(LayerLoading, LogGoesToTheFileAtTheChosenLevel) {
-  const std::filesystem::path log = std::filesystem::path(::testing::TempDir()) / ("layer_log_" + std::to_string(::getpid()) + ".log");
+  const std::filesystem::path log = roomsense::test::scratch_dir() / "layer_log.log";
   {
     ScopedEnv level("ROOMSENSE_LOG", std::string("debug"));
     ScopedEnv file("ROOMSENSE_LOG_FILE", log.string());

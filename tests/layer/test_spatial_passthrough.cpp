@@ -6,6 +6,7 @@
 #include "spatial_client.h"  // first: the registry's declarations before the layer's header
 
 #include "rooms.h"
+#include "test_process.h"
 
 #include <nlohmann/json.hpp>
 
@@ -243,8 +244,7 @@ TEST(SpatialPassthrough, DemoWritesTheRuntimesPlanes) {
   const Seen want = read_scene(false);
 
   // As a user runs it: the test's layer directory (XDG_DATA_HOME) left out, the demo finds the layer beside itself.
-  const auto dir = std::filesystem::path(::testing::TempDir()) / ("spatial_demo_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
+  const auto dir = roomsense::test::scratch_dir() / "spatial_demo";
   std::filesystem::create_directories(dir);
   const std::string command = std::string("env -u XDG_DATA_HOME '") + ROOMSENSE_DEMO + "' --spatial-entities --runtime-extensions " +
                               kPlanesOnly + " --output '" + dir.string() + "' > '" + (dir / "stdout.txt").string() + "' 2>&1";

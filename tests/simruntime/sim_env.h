@@ -1,6 +1,8 @@
 // Test helpers: scoped environment variables (the runtime reads its options at xrCreateInstance) and a
 // small room written as OBJ, so that something runs without ../shared/rooms.
 #pragma once
+#include "test_process.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -32,7 +34,7 @@ class ScopedEnv {
 
 // A 4 x 2.5 x 3 m box room, floor and ceiling as grids of `n` x `n` quads (faces point into the room).
 inline std::filesystem::path write_box_room(const std::string& name, int n = 8) {
-  const std::filesystem::path path = std::filesystem::path(::testing::TempDir()) / name;
+  const std::filesystem::path path = roomsense::test::scratch_dir() / name;
   std::ofstream out(path);
   int base = 1;
   auto grid = [&](double y, bool up) {

@@ -1,5 +1,6 @@
 // Negative tests: the runtime's answers to invalid input, as the spec's return codes (through the loader).
 #include "sim_env.h"
+#include "test_process.h"
 #include "xr_harness.h"
 
 #include <gtest/gtest.h>
@@ -35,7 +36,7 @@ TEST(SimValidation, BadSceneFileOrOptionsFailInstanceCreation) {
     EXPECT_EQ(create_instance(&instance, {}), XR_ERROR_INITIALIZATION_FAILED);
   }
   {
-    const auto bad = std::filesystem::path(::testing::TempDir()) / "bad_capture.json";
+    const auto bad = roomsense::test::scratch_dir() / "bad_capture.json";
     std::ofstream(bad) << "{\"spatialEntities\": [ {\"locatable_META\": 3} ]}";
     ScopedEnv scene("ROOMSENSE_SIM_SCENE", bad.string());
     EXPECT_EQ(create_instance(&instance, {}), XR_ERROR_INITIALIZATION_FAILED);
@@ -280,7 +281,7 @@ TEST(SimValidation, SceneCompute) {
 
 TEST(SimValidation, Uint16OnlyWhenTheMeshFits) {
   // One chunk of more than 65536 vertices: a 300 x 300 grid.
-  const auto path = std::filesystem::path(::testing::TempDir()) / "big_grid.obj";
+  const auto path = roomsense::test::scratch_dir() / "big_grid.obj";
   {
     std::ofstream out(path);
     const int n = 300;

@@ -1,11 +1,13 @@
-// What the tests need of the OS, on POSIX systems and on Windows (the MinGW-w64 build, run under Wine):
-// per-process temporary file names, running a program with its stderr in a file, and FIFOs (POSIX only).
+// What the tests need of the OS, on POSIX systems and on Windows (the MinGW-w64 build, run under Wine): a temporary
+// folder per process, removed as it exits; running a program with its stderr in a file; FIFOs (POSIX only).
 #pragma once
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
+#include <system_error>
 
 #if defined(_WIN32)
 #  include <process.h>
@@ -24,15 +26,36 @@ inline constexpr bool kPosix = false;
 inline constexpr bool kPosix = true;
 #endif
 
-// A file name in gtest's temporary folder, unique to this process: ctest runs a binary's tests in parallel.
-inline std::string temp_path(const std::string& name) {
+// This process's folder in gtest's temporary folder, made at its first use and removed with all it holds when the
+// process exits: ctest runs each test in a process of its own, several at once, and a run leaves nothing behind
+// (about a hundred files and folders a run were left in /tmp before). A folder of a crashed run whose process id
+// this one reuses is emptied first.
+inline const std::filesystem::path& scratch_dir() {
+  struct Scratch {
+    std::filesystem::path dir;
+    Scratch() {
 #if defined(_WIN32)
-  const int pid = _getpid();
+      const int pid = _getpid();
 #else
-  const int pid = getpid();
+      const int pid = getpid();
 #endif
-  return testing::TempDir() + "/" + std::to_string(pid) + "_" + name;
+      dir = std::filesystem::path(testing::TempDir()) / ("roomsense_tests_" + std::to_string(pid));
+      std::filesystem::remove_all(dir);
+      std::filesystem::create_directories(dir);
+    }
+    Scratch(const Scratch&) = delete;
+    Scratch& operator=(const Scratch&) = delete;
+    ~Scratch() {
+      std::error_code ignored;  // a file still open elsewhere stays: nothing to report at exit
+      std::filesystem::remove_all(dir, ignored);
+    }
+  };
+  static const Scratch scratch;
+  return scratch.dir;
 }
+
+// A file name in scratch_dir(): ctest runs a binary's tests in parallel processes.
+inline std::string temp_path(const std::string& name) { return (scratch_dir() / name).string(); }
 
 // Runs `program args` with stderr written to `stderr_path` and stdout to `stdout_path` (empty: discarded);
 // returns its exit status, or -1 when it did not exit (a signal). `shell_prefix` runs first in the same POSIX

@@ -158,7 +158,7 @@ TEST(Cli, MalformedPlyFilesGetOneLineAndStatus1) {
 TEST(Cli, SaysWhatAScanPathIsWhenItIsNoFile) {
   const std::string fifo = temp_path("scan.fifo");
   std::remove(fifo.c_str());
-  const std::string dir = testing::TempDir();
+  const std::string dir = roomsense::test::scratch_dir().string();
   std::vector<std::pair<std::string, std::string>> cases{
       {dir, "it is a directory"}, {"/no/such/room.ply", "no such file"}, {dir + "/room.json", "no such file"}};
   if (roomsense::test::kPosix) {

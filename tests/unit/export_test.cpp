@@ -81,7 +81,7 @@ TEST(Export, GlbHasAValidContainerAndAccessors) {
   EXPECT_EQ(doc["accessors"][0]["count"].get<std::size_t>(), m.vertices.size());
   EXPECT_EQ(doc["accessors"][1]["count"].get<std::size_t>(), m.indices.size());
   EXPECT_EQ(doc["materials"].size(), 1u);
-  EXPECT_THROW(write_bounds(m, testing::TempDir() + "/bounds.stl"), Error);
+  EXPECT_THROW(write_bounds(m, test::temp_path("bounds.stl")), Error);
 }
 
 // Members added in the one pass print exactly as the document parsed, the member added and printed again (the

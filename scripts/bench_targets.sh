@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Issue 19's targets against this tree's roomsense_bench, as one table: each target, the case that measures it, the
-# median of ROUNDS runs, and whether it is met. Also prints the machine, the revision and the time, since shared
-# machines drift from hour to hour (bench/README.md): a table is a reading of one hour of one machine.
+# median of ROUNDS runs and their range (lowest to highest), and whether the median meets it. Also prints the
+# machine, the revision and the time, since shared machines drift from hour to hour (bench/README.md): a table is a
+# reading of one hour of one machine, and the range shows how much its minutes differed.
 # Usage: scripts/bench_targets.sh [ROUNDS] [MIN_TIME]
 #   ROUNDS: separate runs of the program (default 3); MIN_TIME: --benchmark_min_time (default 0.3).
 #   BUILD_DIR (environment): the build to run (default build/; set up and built by scripts/setup.sh where it is not
@@ -41,15 +42,17 @@ awk -v rounds="$rounds" '
     for (i = 1; i <= n[name]; ++i) if ((name, key, i) in v) x[++k] = v[name, key, i]
     if (k == 0) return -1
     for (i = 2; i <= k; ++i) for (j = i; j > 1 && x[j - 1] > x[j]; --j) { tmp = x[j]; x[j] = x[j - 1]; x[j - 1] = tmp }
+    lowest = x[1]; highest = x[k]  # the range of the runs, beside the median: minutes of a shared VM differ
     return k % 2 ? x[(k + 1) / 2] : (x[k / 2] + x[k / 2 + 1]) / 2
   }
   function row(target, name, key, limit, unit,   m) {
     m = median(name, key)
-    if (m < 0) { printf "| %s | `%s` | not run | |\n", target, name; return }
-    printf "| %s | `%s`%s | %.3g %s | %s |\n", target, name, key == "ms" ? "" : " " key, m, unit, m <= limit ? "yes" : "no"
+    if (m < 0) { printf "| %s | `%s` | not run | | |\n", target, name; return }
+    printf "| %s | `%s`%s | %.3g %s | %.3g-%.3g | %s |\n", target, name, key == "ms" ? "" : " " key, m, unit, lowest, highest,
+           m <= limit ? "yes" : "no"
   }
   END {
-    printf "| target (medians of %d runs) | case | measured | met |\n|---|---|---|---|\n", rounds
+    printf "| target (medians of %d runs) | case | measured | range of the runs | met |\n|---|---|---|---|---|\n", rounds
     row("understanding of thesis-room1 <= 5 ms", "understanding/synthetic:thesis-room1", "ms", 5, "ms")
     row("bounds of thesis-room1 <= 2 ms (a bounds-only run: StartRoomBounds)", "analyze_bounds/synthetic:thesis-room1", "ms", 2, "ms")
     row("(the bounds stage alone: I and its mesh)", "bounds/synthetic:thesis-room1", "ms", 2, "ms")
@@ -58,7 +61,7 @@ awk -v rounds="$rounds" '
     row("the two-storey house <= 30 ms", "analyze/synthetic:house", "ms", 30, "ms")
     row("the 50 x 50 m floor <= 1 s", "analyze_growth/hall_50x50", "ms", 1000, "ms")
     g = median("area_growth/hall_90x90", "grid_MB"); p = median("area_growth/hall_90x90", "peak_MB")
-    if (g > 0) printf "| the area search within 4x the grid (90 x 90 m) | `area_growth/hall_90x90` | %.1f MB, %.2fx the grid (%.2f MB) | %s |\n", p, p / g, g, p <= 4 * g ? "yes" : "no"
+    if (g > 0) printf "| the area search within 4x the grid (90 x 90 m) | `area_growth/hall_90x90` | %.1f MB, %.2fx the grid (%.2f MB) | %.1f-%.1f MB | %s |\n", p, p / g, g, lowest, highest, p <= 4 * g ? "yes" : "no"
     row("an added 1,960-triangle object <= 1 ms, p50", "update_object/synthetic:thesis-room1", "p50_ms", 1, "ms")
     row("the same, p90", "update_object/synthetic:thesis-room1", "p90_ms", 1, "ms")
     row("a re-sent block (9,200 triangles) <= 1 ms, p50", "update/synthetic:thesis-room1", "p50_ms", 1, "ms")

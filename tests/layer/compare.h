@@ -16,6 +16,7 @@
 #include <optional>
 #include <fstream>
 #include <string>
+
 namespace layertest {
 
 // The getters against analyze()'s result, bit for bit.

@@ -27,9 +27,8 @@ inline constexpr bool kPosix = true;
 #endif
 
 // This process's folder in gtest's temporary folder, made at its first use and removed with all it holds when the
-// process exits: ctest runs each test in a process of its own, several at once, and a run leaves nothing behind
-// (about a hundred files and folders a run were left in /tmp before). A folder of a crashed run whose process id
-// this one reuses is emptied first.
+// process exits: ctest runs each test in a process of its own, several at once, and a run leaves nothing behind.
+// A folder of a crashed run whose process id this one reuses is emptied first.
 inline const std::filesystem::path& scratch_dir() {
   struct Scratch {
     std::filesystem::path dir;

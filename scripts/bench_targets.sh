@@ -37,18 +37,27 @@ awk -v rounds="$rounds" '
     k = ++n[name]; scale = $3 == "ns" ? 1e-6 : $3 == "us" ? 1e-3 : $3 == "s" ? 1e3 : 1
     v[name, "ms", k] = $2 * scale
     for (i = 7; i <= NF; ++i) { split($i, kv, "="); v[name, kv[1], k] = kv[2] + 0 } }
-  function median(name, key,   x, i, j, k, tmp) {
+  # The values of a case over the runs into x[1..k], ascending; returns k.
+  function sorted(name, key, x,   i, j, k, tmp) {
     k = 0
     for (i = 1; i <= n[name]; ++i) if ((name, key, i) in v) x[++k] = v[name, key, i]
-    if (k == 0) return -1
     for (i = 2; i <= k; ++i) for (j = i; j > 1 && x[j - 1] > x[j]; --j) { tmp = x[j]; x[j] = x[j - 1]; x[j - 1] = tmp }
-    lowest = x[1]; highest = x[k]  # the range of the runs, beside the median: minutes of a shared VM differ
+    return k
+  }
+  function median(name, key,   x, k) {
+    k = sorted(name, key, x)
+    if (k == 0) return -1
     return k % 2 ? x[(k + 1) / 2] : (x[k / 2] + x[k / 2 + 1]) / 2
+  }
+  # Lowest to highest of the runs, beside the median: the minutes of a shared VM differ.
+  function range(name, key, format,   x, k) {
+    k = sorted(name, key, x)
+    return sprintf(format "-" format, x[1], x[k])
   }
   function row(target, name, key, limit, unit,   m) {
     m = median(name, key)
     if (m < 0) { printf "| %s | `%s` | not run | | |\n", target, name; return }
-    printf "| %s | `%s`%s | %.3g %s | %.3g-%.3g | %s |\n", target, name, key == "ms" ? "" : " " key, m, unit, lowest, highest,
+    printf "| %s | `%s`%s | %.3g %s | %s | %s |\n", target, name, key == "ms" ? "" : " " key, m, unit, range(name, key, "%.3g"),
            m <= limit ? "yes" : "no"
   }
   END {
@@ -61,7 +70,7 @@ awk -v rounds="$rounds" '
     row("the two-storey house <= 30 ms", "analyze/synthetic:house", "ms", 30, "ms")
     row("the 50 x 50 m floor <= 1 s", "analyze_growth/hall_50x50", "ms", 1000, "ms")
     g = median("area_growth/hall_90x90", "grid_MB"); p = median("area_growth/hall_90x90", "peak_MB")
-    if (g > 0) printf "| the area search within 4x the grid (90 x 90 m) | `area_growth/hall_90x90` | %.1f MB, %.2fx the grid (%.2f MB) | %.1f-%.1f MB | %s |\n", p, p / g, g, lowest, highest, p <= 4 * g ? "yes" : "no"
+    if (g > 0) printf "| the area search within 4x the grid (90 x 90 m) | `area_growth/hall_90x90` | %.1f MB, %.2fx the grid (%.2f MB) | %s MB | %s |\n", p, p / g, g, range("area_growth/hall_90x90", "peak_MB", "%.1f"), p <= 4 * g ? "yes" : "no"
     row("an added 1,960-triangle object <= 1 ms, p50", "update_object/synthetic:thesis-room1", "p50_ms", 1, "ms")
     row("the same, p90", "update_object/synthetic:thesis-room1", "p90_ms", 1, "ms")
     row("a re-sent block (9,200 triangles) <= 1 ms, p50", "update/synthetic:thesis-room1", "p50_ms", 1, "ms")

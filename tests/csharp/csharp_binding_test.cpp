@@ -9,7 +9,6 @@
 #include "test_process.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstddef>

@@ -1,7 +1,8 @@
 // SampleOwners (core/src/areas/sample_owners.h, internal): growth's owner of each sample cell, in tiles kept in
 // blocks that are added, never moved, as the areas grow past the tiles reserved for them. Checked against a
 // plain map on cells spread over many more tiles than were reserved, on both tile shapes; `lower`, which a replay's
-// growth uses to mark areas out of order, against the lowest value per cell.
+// growth uses to mark areas out of order, against the lowest value per cell; `lower_box` against `lower` of each
+// of its cells.
 #include "../../core/src/areas/sample_owners.h"
 
 #include <gtest/gtest.h>
@@ -54,6 +55,27 @@ TEST(SampleOwners, LowerLeavesEachCellsLowestOwnerWhateverTheOrder) {
   }
   for (const auto& [cell, value] : lowest)
     ASSERT_EQ(owners.find(glm::ivec3(std::get<0>(cell), std::get<1>(cell), std::get<2>(cell))), value);
+}
+
+TEST(SampleOwners, LowerBoxIsLowerOfEachOfItsCells) {
+  for (const glm::ivec3 shift : {glm::ivec3(3, 0, 3), glm::ivec3(2, 2, 2)}) {
+    SampleOwners boxes(shift), cells(shift);
+    std::mt19937 random(13);
+    std::uniform_int_distribution<int> corner(-40, 40), extent(0, 19), any_value(0, 300);
+    for (int n = 0; n < 300; ++n) {  // boxes across tiles' borders, below zero and above, overlapping
+      const glm::ivec3 lo(corner(random), corner(random) / 8, corner(random));
+      const glm::ivec3 hi = lo + glm::ivec3(extent(random), extent(random) / 8, extent(random));
+      const auto value = std::uint32_t(any_value(random));
+      boxes.lower_box(lo, hi, value);
+      for (int x = lo.x; x <= hi.x; ++x)
+        for (int y = lo.y; y <= hi.y; ++y)
+          for (int z = lo.z; z <= hi.z; ++z) cells.lower(glm::ivec3(x, y, z), value);
+    }
+    for (int x = -45; x <= 65; ++x)  // every cell a box may reach, and a margin no box does
+      for (int y = -8; y <= 10; ++y)
+        for (int z = -45; z <= 65; ++z)
+          ASSERT_EQ(boxes.find(glm::ivec3(x, y, z)), cells.find(glm::ivec3(x, y, z))) << x << " " << y << " " << z;
+  }
 }
 
 }  // namespace

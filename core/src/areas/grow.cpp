@@ -14,6 +14,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -130,6 +131,45 @@ void each_cell_by_runs(const Extent& e, float h, const std::array<bool, 3>& from
   side_runs(e, h, false, from_v, cell_of, [&](const SideRun& column) {
     for (const SideRun& row : rows) f(column.cell + row.cell, column.length * row.length);
   });
+}
+
+// Whether the cells given one after another (a side's runs, side_runs) are distinct cells along one axis, each next
+// to the one before: then they are every cell of the box from the first to the last.
+class CellLine {
+ public:
+  void add(const glm::ivec3& cell) {
+    if (count_++ > 0) {
+      const glm::ivec3 step = cell - last_;
+      const int axis = step.x != 0 ? 0 : step.y != 0 ? 1 : 2;
+      const bool unit = int(step.x != 0) + int(step.y != 0) + int(step.z != 0) == 1 && std::abs(step[axis]) == 1;
+      line_ = line_ && unit && (count_ == 2 || step == step_);
+      step_ = step;
+    } else {
+      first_ = cell;
+    }
+    last_ = cell;
+  }
+  bool line() const { return count_ > 0 && line_; }
+  glm::ivec3 lo() const { return glm::min(first_, last_); }
+  glm::ivec3 hi() const { return glm::max(first_, last_); }
+
+ private:
+  std::size_t count_ = 0;
+  bool line_ = true;
+  glm::ivec3 first_{0}, last_{0}, step_{0};
+};
+
+// The box of sample cells extent e's samples lie in, where e lies along the grid's axes (along_axes gave from_v)
+// and its samples' cells are every cell of a box: its rows' cells a line (CellLine) and its columns' too, each
+// cell a row's plus a column's (each_cell_by_runs). Else none.
+template <class CellOf>
+std::optional<std::pair<glm::ivec3, glm::ivec3>> cell_box(const Extent& e, float h, const std::array<bool, 3>& from_v,
+                                                          const CellOf& cell_of) {
+  CellLine rows, columns;
+  side_runs(e, h, true, from_v, cell_of, [&](const SideRun& row) { rows.add(row.cell); });
+  side_runs(e, h, false, from_v, cell_of, [&](const SideRun& column) { columns.add(column.cell); });
+  if (!rows.line() || !columns.line()) return std::nullopt;
+  return std::pair(rows.lo() + columns.lo(), rows.hi() + columns.hi());
 }
 
 // Calls f(cell, samples) for the cells `cell_of` gives extent e's samples: by runs where e lies along the grid's
@@ -394,8 +434,14 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
   std::optional<LazyMarks> lazy;
   std::optional<SampleOwners> strips;
   const auto mark_area = [&](std::uint32_t k) {
-    each_cell(lazy ? own_extents[k] : extents[k], h, [h](const glm::vec3& p) { return sample_cell(p, h); },
-              [&](const glm::ivec3& cell, int) { owner.lower(cell, k); });
+    const Extent& e = lazy ? own_extents[k] : extents[k];
+    const auto cell_of = [h](const glm::vec3& p) { return sample_cell(p, h); };
+    if (const std::optional<std::array<bool, 3>> from_v = along_axes(e))
+      if (const auto box = cell_box(e, h, *from_v, cell_of)) {
+        owner.lower_box(box->first, box->second, k);
+        return;
+      }
+    each_cell(e, h, cell_of, [&](const glm::ivec3& cell, int) { owner.lower(cell, k); });
   };
   const auto mark = [&](std::uint32_t k, const glm::vec3& p) { (strips ? *strips : owner).insert(sample_cell(p, h), k); };
   if (!own_extents.empty()) {

@@ -8,6 +8,7 @@
 #include "candidate.h"
 #include "../key_table.h"
 
+#include <glm/common.hpp>
 #include <glm/vec3.hpp>
 
 #include <algorithm>
@@ -51,10 +52,29 @@ class SampleOwners {
     std::uint32_t& owner = slot(cell);
     owner = std::min(owner, value);  // kAbsent is the highest value
   }
+  // lower() of every cell of the box [lo, hi] (inclusive), tile by tile: an area along the grid's axes is such a
+  // box, and cell by cell its samples were 3 % of a whole analysis of thesis-room1.
+  void lower_box(glm::ivec3 lo, glm::ivec3 hi, std::uint32_t value) {
+    const glm::ivec3 first = lo >> shift_, last = hi >> shift_;  // tiles: arithmetic shifts, below zero too
+    for (int tx = first.x; tx <= last.x; ++tx)
+      for (int ty = first.y; ty <= last.y; ++ty)
+        for (int tz = first.z; tz <= last.z; ++tz) {
+          const glm::ivec3 tile(tx, ty, tz);
+          const glm::ivec3 from = glm::max(lo, tile << shift_), to = glm::min(hi, ((tile + 1) << shift_) - 1);
+          std::uint32_t* const owners = tile_owners(from);
+          for (int x = from.x; x <= to.x; ++x)
+            for (int y = from.y; y <= to.y; ++y) {
+              std::uint32_t* const row = owners + offset(glm::ivec3(x, y, 0));  // z runs along a tile's owners
+              for (int z = from.z & mask_.z; z <= (to.z & mask_.z); ++z) row[z] = std::min(row[z], value);
+            }
+        }
+  }
 
  private:
   // The owner of cell, kAbsent where it has none; its tile made where it has none.
-  std::uint32_t& slot(glm::ivec3 cell) {
+  std::uint32_t& slot(glm::ivec3 cell) { return tile_owners(cell)[offset(cell)]; }
+  // The first of the owners of cell's tile, made where it has none.
+  std::uint32_t* tile_owners(glm::ivec3 cell) {
     const std::uint64_t key = tile_key(cell);
     std::uint32_t tile = tile_of(key);
     if (tile == KeyTable::kAbsent) {
@@ -64,7 +84,7 @@ class SampleOwners {
       std::fill_n(owners(tile), cells_, kAbsent);
       last_tile_ = tile;
     }
-    return owners(tile)[offset(cell)];
+    return owners(tile);
   }
 
   // Cells as pack_key sees them (21 bits an axis), so that two cells are one exactly when their keys are.

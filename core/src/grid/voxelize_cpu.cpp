@@ -402,33 +402,42 @@ void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, 
     const std::uint32_t* corner = indices + 3 * t;
     return std::array<std::uint32_t, 3>{corner[0], corner[1], corner[2]};
   };
-  const auto small_triangles = [&](std::size_t begin, std::size_t end, std::size_t slice) ROOMSENSE_INLINE_BODY {
-    std::uint64_t tests = 0, boxes = 0, large_box = 0;
-    std::vector<std::size_t> own_large;  // moved to large[slice] at the end: the slices' vectors share cache lines
-    for (std::size_t t = begin; t < end; ++t) {
-      const auto [i, j, k] = corners_of(t);
-      const CornerCell ca = cell_of(i), cb = cell_of(j), cc = cell_of(k);
-      const CornerCell lo = lowest(ca, cb, cc), hi = highest(ca, cb, cc), extent = hi - lo;
-      if ((extent[0] | extent[1] | extent[2]) < 2) {  // TriangleScan::small
-        mark_corners(ca, cb, cc, s, index_fits, voxels);
-        const int axes = extent[0] + extent[1] + extent[2];  // of two voxels; the box holds 2^axes
-        // The work counted stays a box's voxels (but one voxel's): the budget does not depend on what was marked.
-        if (axes > 1) test_small_box(TriangleScan(lo, hi), p[i], p[j], p[k], s, voxels, tests);
-        else if (axes == 1) tests += 2;
-        boxes += std::uint64_t{1} << axes;
-      } else {
-        own_large.push_back(t);
-        large_box += TriangleScan(lo, hi).box_volume();
+  // The pass below made once per way of finding a corner's cell (`corner_of`, the table's or the corner's own), not
+  // a branch between them at each of its three corners a triangle.
+  const auto small_triangles_by = [&](auto corner_of) {
+    return [&, corner_of](std::size_t begin, std::size_t end, std::size_t slice) ROOMSENSE_INLINE_BODY {
+      std::uint64_t tests = 0, boxes = 0, large_box = 0;
+      std::vector<std::size_t> own_large;  // moved to large[slice] at the end: the slices' vectors share cache lines
+      // Blocks of kFlushTriangles, the count flushed after each (at most 8 tests a triangle: kFlushEvery in all).
+      // The shared count's atomic add moves its cache line between the workers: every 256 triangles cost
+      // thesis-room1's pass 3 %.
+      constexpr std::size_t kFlushTriangles = TestCounter::kFlushEvery / 8;
+      for (std::size_t t = begin; t < end; ++t) {
+        if (t % kFlushTriangles == 0) counter.flush(tests);
+        const auto [i, j, k] = corners_of(t);
+        const CornerCell ca = corner_of(i), cb = corner_of(j), cc = corner_of(k);
+        const CornerCell lo = lowest(ca, cb, cc), hi = highest(ca, cb, cc), extent = hi - lo;
+        if ((extent[0] | extent[1] | extent[2]) < 2) {  // TriangleScan::small
+          mark_corners(ca, cb, cc, s, index_fits, voxels);
+          const int axes = extent[0] + extent[1] + extent[2];  // of two voxels; the box holds 2^axes
+          // The work counted stays a box's voxels (but one voxel's): the budget does not depend on what was marked.
+          if (axes > 1) test_small_box(TriangleScan(lo, hi), p[i], p[j], p[k], s, voxels, tests);
+          else if (axes == 1) tests += 2;
+          boxes += std::uint64_t{1} << axes;
+        } else {
+          own_large.push_back(t);
+          large_box += TriangleScan(lo, hi).box_volume();
+        }
       }
-      // Every 4096 triangles (at most 8 tests each): the shared count's atomic add moves its cache line between
-      // the workers, and every 256 cost thesis-room1's pass 3 %.
-      if (tests >= TestCounter::kFlushEvery || (t & 0xfff) == 0) counter.flush(tests);
-    }
-    counter.flush(tests);
-    small_boxes[slice] = boxes, large_boxes[slice] = large_box, large[slice] = std::move(own_large);
+      counter.flush(tests);
+      small_boxes[slice] = boxes, large_boxes[slice] = large_box, large[slice] = std::move(own_large);
+    };
   };
-  run_loop_on(sse41, small_triangles,
-              [&](const auto& body) { detail::parallel_for_apart(triangles, threads, slices, body); });
+  const auto small_triangles = [&](const auto& body) {
+    run_loop_on(sse41, body, [&](const auto& b) { detail::parallel_for_apart(triangles, threads, slices, b); });
+  };
+  if (cell_table) small_triangles(small_triangles_by([cell_table](std::uint32_t i) { return cell_table[i]; }));
+  else small_triangles(small_triangles_by([&corner_cell, &p](std::uint32_t i) { return corner_cell(p[i]); }));
   std::vector<std::size_t> listed;
   for (std::vector<std::size_t>& part : large) listed.insert(listed.end(), part.begin(), part.end()), part = {};
   const auto sum = [](const std::vector<std::uint64_t>& v) { return std::accumulate(v.begin(), v.end(), std::uint64_t{0}); };

@@ -6,6 +6,7 @@
 #include <glm/mat3x3.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace roomsense::detail {
@@ -27,11 +28,11 @@ float horizontal_area2(const glm::vec3& a, const glm::vec3& b, const glm::vec3& 
   return area2 > 0.0f && std::fabs(n.y) >= 0.9f * area2 ? area2 : 0.0f;
 }
 
-}  // namespace
-
-std::vector<BandSum> band_sums(std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,
-                               std::span<const BandLimits> bands) {
-  std::vector<BandSum> sums(bands.size());
+// band_sums over `bands`: a std::array where their count is known (a storey's floor and ceiling: two), held in
+// registers rather than read from memory at every triangle; else the caller's span.
+template <class Bands>
+void add_band_sums(std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices, const Bands& bands,
+                   std::vector<BandSum>& sums) {
   for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
     const glm::vec3 &a = vertices[indices[t]], &b = vertices[indices[t + 1]], &c = vertices[indices[t + 2]];
     const float cy = (a.y + b.y + c.y) / 3.0f;
@@ -44,6 +45,15 @@ std::vector<BandSum> band_sums(std::span<const glm::vec3> vertices, std::span<co
       sums[k].weight.add(area2);
     }
   }
+}
+
+}  // namespace
+
+std::vector<BandSum> band_sums(std::span<const glm::vec3> vertices, std::span<const std::uint32_t> indices,
+                               std::span<const BandLimits> bands) {
+  std::vector<BandSum> sums(bands.size());
+  if (bands.size() == 2) add_band_sums(vertices, indices, std::array{bands[0], bands[1]}, sums);
+  else add_band_sums(vertices, indices, bands, sums);
   return sums;
 }
 

@@ -413,6 +413,21 @@ class SquarePacker::NonTileCounts {
         along_z_[z_at(x, z + 1)] = along_z_[z_at(x, z)] + not_tile;
       }
   }
+  // contact() of a square along the axes, corners' box `b`, where the cells around it lie in the grid: along each
+  // edge the next row or column out counted twice but its cell at the edge's lower end, once (contact's loop
+  // below, edge by edge), by prefix differences alone.
+  // None for a box of no area (contact's loop passes over its edges of no length) or one next to the grid's edge.
+  std::optional<int> around(const AxisBox& b) const {
+    if (b.hi_x <= b.lo_x || b.hi_z <= b.lo_z || b.lo_x < 1 || b.lo_z < 1 || b.hi_x + 1 >= nx_ || b.hi_z + 1 >= nz_)
+      return std::nullopt;
+    const auto in_row = [&](int x0, int x1, int z) { return along_x_[x_at(x1 + 1, z)] - along_x_[x_at(x0, z)]; };
+    const auto in_column = [&](int x, int z0, int z1) { return along_z_[z_at(x, z1 + 1)] - along_z_[z_at(x, z0)]; };
+    const int twice = in_row(b.lo_x, b.hi_x, b.lo_z - 1) + in_row(b.lo_x, b.hi_x, b.hi_z + 1) +
+                      in_column(b.lo_x - 1, b.lo_z, b.hi_z) + in_column(b.hi_x + 1, b.lo_z, b.hi_z);
+    const int once = in_row(b.lo_x, b.lo_x, b.lo_z - 1) + in_row(b.lo_x, b.lo_x, b.hi_z + 1) +
+                     in_row(b.lo_x - 1, b.lo_x - 1, b.lo_z) + in_row(b.hi_x + 1, b.hi_x + 1, b.lo_z);
+    return 2 * twice - once;
+  }
   // Cells (x0..x1, z) or (x, z0..z1), inclusive, lo <= hi.
   int row(int x0, int x1, int z) const {
     if (z < 0 || z >= nz_) return x1 - x0 + 1;
@@ -512,6 +527,9 @@ SquarePacker::~SquarePacker() = default;
 
 // Contact: unusable cells just outside the square's edges, sampled every half voxel.
 int SquarePacker::contact(const Candidate& c) {
+  if (runs_)
+    if (const std::optional<AxisBox> b = axis_box(c))
+      if (const std::optional<int> n = runs_->around(*b)) return *n;
   int n = 0;
   const glm::ivec3 e1 = c.corners[1] - c.corners[0];
   if (e1.x != 0 && e1.z != 0)
@@ -692,7 +710,14 @@ std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
     for (std::size_t k = 0; k < order.size(); ++k) {
       if (k % kStopEvery == 0) stop_point(stop_);
       const std::uint32_t i = items[order[k]];
-      const Candidate c = squares[i].unpack();
+      // Its middle sample first, as above: taken by a square kept earlier in this step (a large floor's squares
+      // mostly lie on those before them), it refuses the square without the rest of its samples.
+      const Candidates::Item& item = squares.item(i);
+      const PackedCandidate square = squares.decode(item);
+      const ShapeFacts& f = facts[item.shape];
+      const glm::ivec3 p1 = square.corner(0);
+      if (f.has_middle && middle_taken(p1.y, 2L * p1.x + f.middle_x, 2L * p1.z + f.middle_z)) continue;
+      const Candidate c = square.unpack();
       if (!free(c)) continue;
       take(c);
       kept.push_back(i);

@@ -203,19 +203,20 @@ inline void test_small_box(const TriangleScan& scan, const glm::vec3& a, const g
 // test_small_box for a box two voxels wide along two axes and one along the third (`extent` 1, 1 and 0 in some
 // order; `lo` its first voxel): its four voxels from the first by strides, without the loops over three axes.
 // Most of a room's triangles that need a test have such a box.
-inline void test_box_of_four(const CornerCell& lo, const CornerCell& extent, const glm::vec3& a, const glm::vec3& b,
-                             const glm::vec3& c, const GridSpec& s, std::uint8_t* voxels, std::uint64_t& tests) {
+[[gnu::always_inline]] inline void test_box_of_four(const CornerCell& lo, const CornerCell& extent, const glm::vec3& a,
+                                                   const glm::vec3& b, const glm::vec3& c, const GridSpec& s,
+                                                   std::uint8_t* voxels, std::uint64_t& tests) {
   const int u = extent[0] != 0 ? 0 : 1, v = extent[2] != 0 ? 2 : 1;  // the two axes two voxels wide
   const std::size_t stride[3] = {std::size_t(s.ny), 1, std::size_t(s.nx) * std::size_t(s.ny)};  // GridSpec::index's
   std::uint8_t* const first = voxels + s.index(lo[0], lo[1], lo[2]);
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) {
-      std::uint8_t& voxel = first[std::size_t(i) * stride[u] + std::size_t(j) * stride[v]];
-      if (marked(voxel)) continue;
-      int cell[3] = {lo[0], lo[1], lo[2]};
-      cell[u] += i, cell[v] += j;
-      if (triangle_overlaps_voxel(a, b, c, cell[0], cell[1], cell[2])) mark(voxel);
-    }
+  const std::size_t step[4] = {0, stride[u], stride[v], stride[u] + stride[v]};
+  for (int k = 0; k < 4; ++k) {
+    std::uint8_t& voxel = first[step[k]];
+    if (marked(voxel)) continue;  // nearly always: the corners' cells, or a neighbour triangle's
+    int cell[3] = {lo[0], lo[1], lo[2]};
+    cell[u] += k & 1, cell[v] += k >> 1;
+    if (triangle_overlaps_voxel(a, b, c, cell[0], cell[1], cell[2])) mark(voxel);
+  }
   tests += 4;
 }
 

@@ -415,8 +415,8 @@ class SquarePacker::NonTileCounts {
   }
   // contact() of a square along the axes, corners' box `b`, where the cells around it lie in the grid: along each
   // edge the next row or column out counted twice but its cell at the edge's lower end, once (contact's loop
-  // below, edge by edge), by prefix differences alone.
-  // None for a box of no area (contact's loop passes over its edges of no length) or one next to the grid's edge.
+  // below, edge by edge), by prefix differences alone. None for a box of no area (the loop passes over edges of no
+  // length) or one next to the grid's edge.
   std::optional<int> around(const AxisBox& b) const {
     if (b.hi_x <= b.lo_x || b.hi_z <= b.lo_z || b.lo_x < 1 || b.lo_z < 1 || b.hi_x + 1 >= nx_ || b.hi_z + 1 >= nz_)
       return std::nullopt;

@@ -56,11 +56,12 @@ class SampleOwners {
   // box, and cell by cell its samples were 3 % of a whole analysis of thesis-room1.
   void lower_box(glm::ivec3 lo, glm::ivec3 hi, std::uint32_t value) {
     const glm::ivec3 first = lo >> shift_, last = hi >> shift_;  // tiles: arithmetic shifts, below zero too
+    const glm::ivec3 side = glm::ivec3(1) << shift_;                // a tile's cells a side (no shift of a negative)
     for (int tx = first.x; tx <= last.x; ++tx)
       for (int ty = first.y; ty <= last.y; ++ty)
         for (int tz = first.z; tz <= last.z; ++tz) {
           const glm::ivec3 tile(tx, ty, tz);
-          const glm::ivec3 from = glm::max(lo, tile << shift_), to = glm::min(hi, ((tile + 1) << shift_) - 1);
+          const glm::ivec3 from = glm::max(lo, tile * side), to = glm::min(hi, (tile + 1) * side - 1);
           std::uint32_t* const owners = tile_owners(from);
           for (int x = from.x; x <= to.x; ++x)
             for (int y = from.y; y <= to.y; ++y) {

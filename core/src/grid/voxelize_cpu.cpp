@@ -423,13 +423,13 @@ void detail::voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, 
     return std::array<std::uint32_t, 3>{corner[0], corner[1], corner[2]};
   };
   // The pass below made once per way of finding a corner's cell (`corner_of`, the table's or the corner's own), not
-  // a branch between them at each of its three corners a triangle.
+  // a branch between the two at each of a triangle's three corners.
   const auto small_triangles_by = [&](auto corner_of) {
     return [&, corner_of](std::size_t begin, std::size_t end, std::size_t slice) ROOMSENSE_INLINE_BODY {
       std::uint64_t tests = 0, boxes = 0, large_box = 0;
       std::vector<std::size_t> own_large;  // moved to large[slice] at the end: the slices' vectors share cache lines
-      // Blocks of kFlushTriangles, the count flushed after each (at most 8 tests a triangle: kFlushEvery in all).
-      // The shared count's atomic add moves its cache line between the workers: every 256 triangles cost
+      // The count flushed every kFlushTriangles triangles (at most 8 tests each: kFlushEvery), not more often:
+      // the shared count's atomic add moves its cache line between the workers, and every 256 cost
       // thesis-room1's pass 3 %.
       constexpr std::size_t kFlushTriangles = TestCounter::kFlushEvery / 8;
       for (std::size_t t = begin; t < end; ++t) {

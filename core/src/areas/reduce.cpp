@@ -420,27 +420,28 @@ class SquarePacker::NonTileCounts {
   std::optional<int> around(const AxisBox& b) const {
     if (b.hi_x <= b.lo_x || b.hi_z <= b.lo_z || b.lo_x < 1 || b.lo_z < 1 || b.hi_x + 1 >= nx_ || b.hi_z + 1 >= nz_)
       return std::nullopt;
-    const auto in_row = [&](int x0, int x1, int z) { return along_x_[x_at(x1 + 1, z)] - along_x_[x_at(x0, z)]; };
-    const auto in_column = [&](int x, int z0, int z1) { return along_z_[z_at(x, z1 + 1)] - along_z_[z_at(x, z0)]; };
-    const int twice = in_row(b.lo_x, b.hi_x, b.lo_z - 1) + in_row(b.lo_x, b.hi_x, b.hi_z + 1) +
-                      in_column(b.lo_x - 1, b.lo_z, b.hi_z) + in_column(b.hi_x + 1, b.lo_z, b.hi_z);
-    const int once = in_row(b.lo_x, b.lo_x, b.lo_z - 1) + in_row(b.lo_x, b.lo_x, b.hi_z + 1) +
-                     in_row(b.lo_x - 1, b.lo_x - 1, b.lo_z) + in_row(b.hi_x + 1, b.hi_x + 1, b.lo_z);
+    const int twice = row_in_grid(b.lo_x, b.hi_x, b.lo_z - 1) + row_in_grid(b.lo_x, b.hi_x, b.hi_z + 1) +
+                      column_in_grid(b.lo_x - 1, b.lo_z, b.hi_z) + column_in_grid(b.hi_x + 1, b.lo_z, b.hi_z);
+    const int once = row_in_grid(b.lo_x, b.lo_x, b.lo_z - 1) + row_in_grid(b.lo_x, b.lo_x, b.hi_z + 1) +
+                     row_in_grid(b.lo_x - 1, b.lo_x - 1, b.lo_z) + row_in_grid(b.hi_x + 1, b.hi_x + 1, b.lo_z);
     return 2 * twice - once;
   }
   // Cells (x0..x1, z) or (x, z0..z1), inclusive, lo <= hi.
   int row(int x0, int x1, int z) const {
     if (z < 0 || z >= nz_) return x1 - x0 + 1;
     const int a = std::clamp(x0, 0, nx_), b = std::clamp(x1 + 1, 0, nx_);
-    return (x1 - x0 + 1) - (b - a) + along_x_[x_at(b, z)] - along_x_[x_at(a, z)];
+    return (x1 - x0 + 1) - (b - a) + row_in_grid(a, b - 1, z);
   }
   int column(int x, int z0, int z1) const {
     if (x < 0 || x >= nx_) return z1 - z0 + 1;
     const int a = std::clamp(z0, 0, nz_), b = std::clamp(z1 + 1, 0, nz_);
-    return (z1 - z0 + 1) - (b - a) + along_z_[z_at(x, b)] - along_z_[z_at(x, a)];
+    return (z1 - z0 + 1) - (b - a) + column_in_grid(x, a, b - 1);
   }
 
  private:
+  // row() and column() of cells in the grid (none where the end lies one before the start): prefix differences.
+  int row_in_grid(int x0, int x1, int z) const { return along_x_[x_at(x1 + 1, z)] - along_x_[x_at(x0, z)]; }
+  int column_in_grid(int x, int z0, int z1) const { return along_z_[z_at(x, z1 + 1)] - along_z_[z_at(x, z0)]; }
   std::size_t x_at(int x, int z) const { return std::size_t(z) * std::size_t(nx_ + 1) + std::size_t(x); }
   std::size_t z_at(int x, int z) const { return std::size_t(x) * std::size_t(nz_ + 1) + std::size_t(z); }
   int nx_, nz_;
@@ -686,6 +687,12 @@ std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
     for (std::size_t step = 0; step < kSteps; ++step) step_begin[step + 1] += step_begin[step];
     by_step = order_by_bucket(squares.size(), kSteps, [&](std::size_t i) { return std::size_t(step_of[i]); });
   }
+  // Whether the square's middle sample (its shape's facts) is taken: then it is not free.
+  const auto middle_is_taken = [&](const Candidates::Item& item, const PackedCandidate& square) {
+    const ShapeFacts& f = facts[item.shape];
+    const glm::ivec3 p1 = square.corner(0);
+    return f.has_middle && middle_taken(p1.y, 2L * p1.x + f.middle_x, 2L * p1.z + f.middle_z);
+  };
   std::vector<std::size_t> kept;
   std::vector<std::uint32_t> contacts;  // of a step's squares still free, as they lie in by_step
   for (std::size_t step = 0; step < kSteps; ++step) {
@@ -697,9 +704,7 @@ std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
       if (k % kStopEvery == 0) stop_point(stop_);
       const Candidates::Item& item = squares.item(items[k]);
       const PackedCandidate square = squares.decode(item);
-      const ShapeFacts& f = facts[item.shape];
-      const glm::ivec3 p1 = square.corner(0);
-      if (f.has_middle && middle_taken(p1.y, 2L * p1.x + f.middle_x, 2L * p1.z + f.middle_z)) continue;
+      if (middle_is_taken(item, square)) continue;
       items[contacts.size()] = items[k];
       contacts.push_back(std::min(std::uint32_t(contact(square.unpack())), kContactMask));
       max_contact = std::max(max_contact, contacts.back());
@@ -714,9 +719,7 @@ std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
       // mostly lie on those before them), it refuses the square without the rest of its samples.
       const Candidates::Item& item = squares.item(i);
       const PackedCandidate square = squares.decode(item);
-      const ShapeFacts& f = facts[item.shape];
-      const glm::ivec3 p1 = square.corner(0);
-      if (f.has_middle && middle_taken(p1.y, 2L * p1.x + f.middle_x, 2L * p1.z + f.middle_z)) continue;
+      if (middle_is_taken(item, square)) continue;
       const Candidate c = square.unpack();
       if (!free(c)) continue;
       take(c);

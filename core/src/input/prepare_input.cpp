@@ -280,7 +280,8 @@ bool check_input(const Scan& scan, bool reject_outliers, PreparedInput& out, con
         std::max(scan.vertices.size(), indices_beside_ranges ? 0 : scan.indices.size()), threads, kGrain);
     std::vector<detail::VertexRun> slices(count);
     out_of_range.assign(count, 0);
-    detail::parallel_for(count, threads, 1, [&](std::size_t first, std::size_t last, std::size_t) {
+    // Each worker its own part of the arrays, as the passes after take them (to_grid_units_into).
+    detail::parallel_for_apart(count, threads, count, [&](std::size_t first, std::size_t last, std::size_t) {
       for (std::size_t w = first; w < last; ++w) {
         const auto slice = [&](std::size_t n) { return std::pair(n * w / count, n * (w + 1) / count); };
         if (!own.empty()) {

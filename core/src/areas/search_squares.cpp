@@ -32,15 +32,14 @@ class BoxCounts {
   BoxCounts(const GridSpec& spec)
       : nx_(spec.nx), nz_(spec.nz),
         sums_(std::make_unique_for_overwrite<Count[]>(std::size_t(nx_ + 1) * std::size_t(nz_ + 1))) {}
-  // value(column): the column's own count (a bool for 0 or 1).
+  // value(x, z): the column's own count (a bool for 0 or 1).
   template <class Value>
-  void fill(const GridSpec& spec, const CellBox& region, Value value) {
+  void fill(const CellBox& region, Value value) {
     const glm::ivec2 lo = region.lo, hi = region.hi;
     for (int x = lo.x; x <= hi.x + 1; ++x) at(x, lo.y) = 0;
     for (int z = lo.y; z <= hi.y; ++z) {
       at(lo.x, z + 1) = 0;
-      for (int x = lo.x; x <= hi.x; ++x)
-        at(x + 1, z + 1) = at(x, z + 1) + at(x + 1, z) - at(x, z) + Count(value(spec.column(x, z)));
+      for (int x = lo.x; x <= hi.x; ++x) at(x + 1, z + 1) = at(x, z + 1) + at(x + 1, z) - at(x, z) + Count(value(x, z));
     }
   }
   // Inlined everywhere: the search calls it from a loop GCC otherwise leaves it outside of (a call per box).
@@ -236,10 +235,11 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
                                               {z1 + pad, z1 + o->dz + pad, z1 + o->dz + o->dx + pad, z1 + o->dx + pad}});
       reads[std::size_t(p)].push_back({glm::ivec2(x1, z1) + o->box_lo, glm::ivec2(x1, z1) + o->box_hi});
     }
-  // One row of centres: those still open for a square at this level (here) or one level up (above), and the
-  // orientation each found.
+  // One row of centres: those still open for a square at this level (here) or one level up (above), those open
+  // before its orientations were tested (a centre open then and not now found its square), and the orientation
+  // each found.
   constexpr std::uint32_t kNone = 0xffffffffu;
-  std::vector<std::uint64_t> open_here, open_above;
+  std::vector<std::uint64_t> open_here, open_above, opened_here, opened_above;
   std::vector<std::uint32_t> found_here, found_above;
   // From the previous search (BandedSearch::previous): per row, each previous square's (orientation, centre),
   // and the centres past their previous square, whose every orientation is tested.
@@ -306,6 +306,9 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     }
   }
   CellBox cleared;  // the rows of the bits set since they were last cleared
+  // Per column of a layer's region: a first corner, a tile (a first corner, or raised: one level up, §3.3.4), a wall.
+  enum CellKind : std::uint8_t { kFirst = 1, kTile = 2, kRaised = 4, kWall = 8 };
+  std::vector<std::uint8_t> kinds;
   // Beyond the thesis (issue 19), furniture's search after a change (BandedSearch::previous): a layer finds what it
   // found where its tiles are as they were (BandedSearch::levels_changed) and the layer below it found what it
   // found (whose rising squares' centres this layer's own squares skip). Each layer's previous squares in the
@@ -373,24 +376,33 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       region.lo = glm::max(region.lo, lo - corner_reach - 1);
       region.hi = glm::min(region.hi, hi + corner_reach + 1);
     }
-    // Corner 1 must be a tile of this level; the other cells may also be one level higher (§3.3.4).
-    const auto is_first = [&](std::size_t col) { return layer_of(col) == layer; };
-    const auto raised = [&](std::size_t col) { return surface == Surface::Furniture && features.furniture[col] == y1 + 1; };
-    const auto is_tile = [&](std::size_t col) { return is_first(col) || raised(col); };
+    // Corner 1 must be a tile of this level; the other cells may also be one level higher (§3.3.4). Each of the
+    // region's columns told once (CellKind), then read by the bits and the three tables.
+    const int region_width = region.hi.x - region.lo.x + 1;
+    kinds.resize(std::size_t(region_width) * std::size_t(region.hi.y - region.lo.y + 1));
     first_bits.clear(cleared.lo.y + pad, cleared.hi.y + pad);
     tile_bits.clear(cleared.lo.y + pad, cleared.hi.y + pad);
     cleared = region;  // what the bits hold next
     for (int z = region.lo.y; z <= region.hi.y; ++z)
       for (int x = region.lo.x; x <= region.hi.x; ++x) {
         const std::size_t col = spec.column(x, z);
-        if (is_tile(col)) tile_bits.set(x + pad, z + pad);
-        if (is_first(col)) first_bits.set(x + pad, z + pad);
+        const bool first = layer_of(col) == layer;
+        const bool raised = surface == Surface::Furniture && features.furniture[col] == y1 + 1;
+        kinds[std::size_t(z - region.lo.y) * std::size_t(region_width) + std::size_t(x - region.lo.x)] =
+            std::uint8_t((first ? kFirst : 0) | (first || raised ? kTile : 0) | (raised ? kRaised : 0) |
+                         (features.walls[col] != 0 ? kWall : 0));
+        if (first || raised) tile_bits.set(x + pad, z + pad);
+        if (first) first_bits.set(x + pad, z + pad);
       }
-    box_bad.fill(spec, region, [&](std::size_t col) {  // walls are never tiles
-      return BadCells::of(features.walls[col] != 0, !is_tile(col));
+    const auto kind = [&](int x, int z) {
+      return kinds[std::size_t(z - region.lo.y) * std::size_t(region_width) + std::size_t(x - region.lo.x)];
+    };
+    box_bad.fill(region, [&](int x, int z) {  // walls are never tiles
+      const std::uint8_t k = kind(x, z);
+      return BadCells::of((k & kWall) != 0, (k & kTile) == 0);
     });
-    box_first.fill(spec, region, is_first);
-    if (surface == Surface::Furniture) box_raised.fill(spec, region, raised);
+    box_first.fill(region, [&](int x, int z) { return (kind(x, z) & kFirst) != 0; });
+    if (surface == Surface::Furniture) box_raised.fill(region, [&](int x, int z) { return (kind(x, z) & kRaised) != 0; });
     CentreSet& here = centres[std::size_t(layer)];
     CentreSet& above = centres[std::size_t(layer + 1)];
     const bool may_rise = surface == Surface::Furniture;
@@ -521,8 +533,10 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
         if (!here.contains(sum)) open_here[std::size_t(i / 64)] |= bit;
         if (may_rise && !above.contains(sum)) open_above[std::size_t(i / 64)] |= bit;
       }
-      found_here.assign(std::size_t(centres_in_row), kNone);
-      found_above.assign(std::size_t(centres_in_row), kNone);
+      opened_here = open_here, opened_above = open_above;
+      // Read only where a centre found its square: not cleared.
+      if (found_here.size() < std::size_t(centres_in_row))
+        found_here.resize(std::size_t(centres_in_row)), found_above.resize(std::size_t(centres_in_row));
       if (from_previous) past.assign(words, 0);
       std::size_t next = 0;  // the first event not yet taken
       for (std::size_t i = 0; i < orientations.size(); ++i) {
@@ -578,21 +592,27 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
           i = events[next].first - 1;
         }
       }
-      for (int i = 0; i < centres_in_row; ++i) {
-        const std::uint32_t h = found_here[std::size_t(i)], a = found_above[std::size_t(i)];
-        if (h == kNone && a == kNone) continue;
-        const int hx = hx_first + i, cx = 2 * hx + p;
-        const glm::ivec3 sum(2 * cx, 0, 2 * cz);
-        const auto add = [&](std::uint32_t orientation, bool rises) {
-          const CornerCells& k = cells[orientation];  // corner 1 from the centre's cell, padded
-          const int x1 = hx + k.x[0] - pad, z1 = hz + k.z[0] - pad;
-          if (rises) above.insert(sum);
-          const int y = rises ? y1 + 1 : y1;  // y_Actual, Eq. 3.41
-          out.push_back(glm::ivec3(x1, y, z1), first_shape[std::size_t(p)] + orientation);
-        };
-        if (h != kNone && (a == kNone || h < a)) add(h, false);
-        if (a != kNone) add(a, true);
-        if (h != kNone && a != kNone && h > a) add(h, false);
+      // The centres that found a square, in order along the row (most of a row's found none).
+      for (std::size_t w = 0; w < words; ++w) {
+        const std::uint64_t here_found = opened_here[w] & ~open_here[w], above_found = opened_above[w] & ~open_above[w];
+        for (std::uint64_t found = here_found | above_found; found != 0; found &= found - 1) {
+          const int b = std::countr_zero(found);
+          const int i = int(64 * w) + b;
+          const std::uint32_t h = (here_found >> b) & 1 ? found_here[std::size_t(i)] : kNone;
+          const std::uint32_t a = (above_found >> b) & 1 ? found_above[std::size_t(i)] : kNone;
+          const int hx = hx_first + i, cx = 2 * hx + p;
+          const glm::ivec3 sum(2 * cx, 0, 2 * cz);
+          const auto add = [&](std::uint32_t orientation, bool rises) {
+            const CornerCells& k = cells[orientation];  // corner 1 from the centre's cell, padded
+            const int x1 = hx + k.x[0] - pad, z1 = hz + k.z[0] - pad;
+            if (rises) above.insert(sum);
+            const int y = rises ? y1 + 1 : y1;  // y_Actual, Eq. 3.41
+            out.push_back(glm::ivec3(x1, y, z1), first_shape[std::size_t(p)] + orientation);
+          };
+          if (h != kNone && (a == kNone || h < a)) add(h, false);
+          if (a != kNone) add(a, true);
+          if (h != kNone && a != kNone && h > a) add(h, false);
+        }
       }
     }
     if constexpr (kBanded)

@@ -86,9 +86,11 @@ class PaddedBits {
   void set(int x, int z) { words_[std::size_t(z) * row_words_ + std::size_t(x / 64)] |= std::uint64_t{1} << (x % 64); }
   std::uint64_t word(int x, int z) const {  // x, z >= 0
     const std::uint64_t* w = words_.data() + std::size_t(z) * row_words_ + std::size_t(unsigned(x) / 64);
-    const unsigned shift = unsigned(x) % 64;
-    // Without a branch on the shift (which varies from corner to corner): for 0, (w[1] << 1) << 63 is 0.
-    return (w[0] >> shift) | ((w[1] << 1) << (63 - shift));
+    // The two words as one of 128 bits, shifted: one double-word shift (x86's shrd), without a branch on the shift
+    // (which varies from corner to corner).
+    __extension__ typedef unsigned __int128 TwoWords;
+    const TwoWords both = TwoWords{w[1]} << 64 | w[0];
+    return std::uint64_t(both >> (unsigned(x) % 64));
   }
 
  private:

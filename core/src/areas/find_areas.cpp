@@ -128,16 +128,12 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   std::array<const SearchCache::TypeReduction*, 4> reused{};
   if (cache) reused[0] = cache->unchanged_type(0, params, 0.0);
   // §3.3: task t searches type t / 3 in size t % 3. Each writes only its own slot.
-  // For the wall searches only: freed after them.
-  NormalCounts normals = reused[0] ? NormalCounts() : count_normals(spec, features);
-  // The corners a search starts from, for its cost estimate: voxels with a normal, or tiles.
+  // For the wall searches only (made below, beside the square rings): freed after them.
+  NormalCounts normals;
+  // The corners a search starts from, for its cost estimate: voxels with a normal (once they are counted), or tiles.
   const auto count_if = [](const auto& v, auto pred) { return double(std::count_if(v.begin(), v.end(), pred)); };
-  double with_normal = 0;  // from the prefix counts, not another pass over F
-  for (std::size_t col = 0; col < spec.column_count() && normals.levels > 0; ++col)
-    with_normal += normals.count(col, normals.y0, normals.y0 + normals.levels - 1);
-  const std::array<double, 4> starts = {
-      with_normal,
-      count_if(features.free_floor, [](std::uint8_t t) { return t != 0; }),
+  std::array<double, 4> starts = {
+      0.0, count_if(features.free_floor, [](std::uint8_t t) { return t != 0; }),
       count_if(features.free_ceiling, [](std::uint8_t t) { return t != 0; }),
       count_if(features.furniture, [](int c) { return c != kNoFurniture; })};
   std::array<std::array<Candidates, 3>, 4> found;
@@ -162,12 +158,19 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
     return range_of(type, size).min_d <= room;
   };
   // The three square types of a size search one ring of corner offsets (an IncrementalAnalysis's searches keep
-  // their own): made by a task of its own, or by the first search that needs it before that task ran.
+  // their own): a whole analysis's, of each size some square search takes, made before the graph.
   std::array<std::vector<RingOffset>, 3> square_rings;
-  std::array<std::once_flag, 3> square_ring_made;
-  const auto make_square_ring = [&](std::size_t size) {
-    std::call_once(square_ring_made[size], [&] { square_rings[size] = ring_offsets(range_of(1, size), Shape::Square); });
-  };
+  // The normals' counts, which the wall searches (the graph's first tasks) wait for, on one thread, and the square
+  // rings, which need nothing, beside them on the other.
+  parallel_tasks(2, threads, [&](std::size_t task) {
+    if (task == 0 && !reused[0]) normals = count_normals(spec, features);
+    for (std::size_t size = 0; size < kAreaSizes.size() && task == 1 && !cache; ++size)
+      if (fits(1, size) && (pairs(1, size) <= kAreaSearchBudget || pairs(2, size) <= kAreaSearchBudget ||
+                            pairs(3, size) <= kAreaSearchBudget))
+        square_rings[size] = ring_offsets(range_of(1, size), Shape::Square);
+  });
+  for (std::size_t col = 0; col < spec.column_count() && normals.levels > 0; ++col)  // from the counts, not F again
+    starts[0] += normals.count(col, normals.y0, normals.y0 + normals.levels - 1);
   const auto search = [&](std::size_t t) {
     const std::size_t type = t / 3, size = t % 3;
     if (reused[type]) return;
@@ -187,7 +190,6 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       return;
     }
     const Surface surface = type == 1 ? Surface::Floor : type == 2 ? Surface::Ceiling : Surface::Furniture;
-    make_square_ring(size);
     found[type][size] = search_squares(spec, features, surface, range, params.horizontal_fill, dominant_deg, stop,
                                        {nullptr, nullptr, &square_rings[size]});
   };
@@ -368,15 +370,6 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
       [&] { search(0); },            [&] { search(1); },            [&] { search(2); },
       [&] { deduplicate_walls(0); }, [&] { deduplicate_walls(1); }, [&] { deduplicate_walls(2); },
       [&] { pack_walls(0); },        [&] { pack_walls(1); },        [&] { pack_walls(2); }};
-  // The square rings, which need nothing, after the walls' tasks: a thread waiting for the last wall search makes
-  // them (a whole analysis's searches only; a size no square search takes has none).
-  for (std::size_t size = 0; size < kAreaSizes.size() && !cache; ++size) {
-    if (!fits(1, size) ||
-        (pairs(1, size) > kAreaSearchBudget && pairs(2, size) > kAreaSearchBudget && pairs(3, size) > kAreaSearchBudget))
-      continue;
-    after.emplace_back();
-    tasks.push_back([&make_square_ring, size] { make_square_ring(size); });
-  }
   std::array<std::size_t, 3> square_types = {1, 2, 3};
   std::stable_sort(square_types.begin(), square_types.end(),
                    [&](std::size_t a, std::size_t b) { return search_cost(a) > search_cost(b); });

@@ -163,8 +163,11 @@ AreaResult detail::find_areas(const VoxelGrid& grid, const RoomFeatures& feature
   // The normals' counts, which the wall searches (the graph's first tasks) wait for, on one thread, and the square
   // rings, which need nothing, beside them on the other (an IncrementalAnalysis's searches have their own).
   parallel_tasks(cache ? 1 : 2, threads, [&](std::size_t task) {
-    if (task == 0 && !reused[0]) normals = count_normals(spec, features);
-    for (std::size_t size = 0; size < kAreaSizes.size() && task == 1; ++size)
+    if (task == 0) {
+      if (!reused[0]) normals = count_normals(spec, features);
+      return;
+    }
+    for (std::size_t size = 0; size < kAreaSizes.size(); ++size)  // the sizes some square search takes
       if (fits(1, size) && (pairs(1, size) <= kAreaSearchBudget || pairs(2, size) <= kAreaSearchBudget ||
                             pairs(3, size) <= kAreaSearchBudget))
         square_rings[size] = ring_offsets(range_of(1, size), Shape::Square);

@@ -382,6 +382,9 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     // region's columns told once (CellKind), then read by the bits and the three tables.
     const int region_width = region.hi.x - region.lo.x + 1;
     kinds.resize(std::size_t(region_width) * std::size_t(region.hi.y - region.lo.y + 1));
+    const auto kind = [&](int x, int z) -> std::uint8_t& {
+      return kinds[std::size_t(z - region.lo.y) * std::size_t(region_width) + std::size_t(x - region.lo.x)];
+    };
     first_bits.clear(cleared.lo.y + pad, cleared.hi.y + pad);
     tile_bits.clear(cleared.lo.y + pad, cleared.hi.y + pad);
     cleared = region;  // what the bits hold next
@@ -390,15 +393,11 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
         const std::size_t col = spec.column(x, z);
         const bool first = layer_of(col) == layer;
         const bool raised = surface == Surface::Furniture && features.furniture[col] == y1 + 1;
-        kinds[std::size_t(z - region.lo.y) * std::size_t(region_width) + std::size_t(x - region.lo.x)] =
-            std::uint8_t((first ? kFirst : 0) | (first || raised ? kTile : 0) | (raised ? kRaised : 0) |
-                         (features.walls[col] != 0 ? kWall : 0));
+        kind(x, z) = std::uint8_t((first ? kFirst : 0) | (first || raised ? kTile : 0) | (raised ? kRaised : 0) |
+                                  (features.walls[col] != 0 ? kWall : 0));
         if (first || raised) tile_bits.set(x + pad, z + pad);
         if (first) first_bits.set(x + pad, z + pad);
       }
-    const auto kind = [&](int x, int z) {
-      return kinds[std::size_t(z - region.lo.y) * std::size_t(region_width) + std::size_t(x - region.lo.x)];
-    };
     box_bad.fill(region, [&](int x, int z) {  // walls are never tiles
       const std::uint8_t k = kind(x, z);
       return BadCells::of((k & kWall) != 0, (k & kTile) == 0);

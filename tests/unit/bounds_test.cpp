@@ -122,6 +122,42 @@ TEST(MeshVolume, AnyNumberOfThreadsGivesTheSameMesh) {
   }
 }
 
+// An IncrementalAnalysis's edge contacts (mesh_memo.h's EdgeContactMemo): a volume filled with the memo of the
+// volume before it, which asks again only the blocks beside a changed column, is filled as without it. Edits add
+// and clear boxes of diagonal voxels (contacts to fill), raise and lower the solid box's levels (all asked again)
+// and change nothing at all; the memo's grid changes once.
+TEST(FillEdgeContacts, AMemoFillsEachEditedVolumeAsFillingItAfresh) {
+  std::mt19937 rng(5);
+  GridSpec s = make_grid_spec({0, 0, 0}, {3.0f, 1.2f, 2.6f}, 0.1f);
+  std::vector<std::uint8_t> volume(s.voxel_count(), 0);
+  detail::EdgeContactMemo memo;
+  std::uniform_int_distribution<int> pick(0, 1 << 20);
+  std::size_t filled_some = 0;
+  for (int edit = 0; edit < 80; ++edit) {
+    if (edit == 40) {  // another grid: the memo starts again
+      s = make_grid_spec({0, 0, 0}, {2.2f, 1.0f, 3.1f}, 0.1f);
+      volume.assign(s.voxel_count(), 0);
+    }
+    if (edit % 9 != 8) {  // every ninth edit changes nothing
+      const int w = 1 + pick(rng) % 5, d = 1 + pick(rng) % 5, h = 1 + pick(rng) % 4;
+      const int x0 = pick(rng) % (s.nx - w + 1), z0 = pick(rng) % (s.nz - d + 1);
+      // Mostly in the middle levels; every fifth edit at the grid's top or bottom, moving the solid box's levels.
+      const int y0 = edit % 5 == 4 ? (edit % 10 == 4 ? 0 : s.ny - h) : 2 + pick(rng) % (s.ny - h - 3);
+      const bool clear = edit % 4 == 3;
+      for (int z = z0; z < z0 + d; ++z)
+        for (int x = x0; x < x0 + w; ++x)
+          for (int y = y0; y < y0 + h; ++y)
+            volume[s.index(x, y, z)] = clear ? 0 : std::uint8_t((x + y + z) % 2 == 0 || pick(rng) % 3 == 0);
+    }
+    std::vector<std::uint8_t> afresh = volume, with_memo = volume;
+    fill_edge_contacts(s, afresh);
+    detail::fill_edge_contacts(s, with_memo, 2, &memo);
+    ASSERT_EQ(with_memo, afresh) << "edit " << edit;
+    filled_some += afresh != volume ? 1 : 0;
+  }
+  EXPECT_GT(filled_some, 40u);  // the edits leave contacts to fill
+}
+
 // An IncrementalAnalysis's bounds (mesh_memo.h): a volume meshed with the memo of the volume before it, which
 // replays the slices and keeps the surface corners where nothing changed, gives the mesh meshing it afresh gives,
 // point for point, also after a cancelled one. Boxes are added and cleared, small (the corners beside them found

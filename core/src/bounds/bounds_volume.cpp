@@ -14,6 +14,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 namespace roomsense {
@@ -347,12 +348,58 @@ std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, const FloorCeilin
 }
 
 void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, unsigned threads) {
+  detail::fill_edge_contacts(s, volume, threads, nullptr);
+}
+
+namespace {
+
+// The solid box's levels (SolidBox's lo[1] and hi[1]) through `memo`: each column's lowest and highest solid levels
+// found again only where `changed` (empty: everywhere), kept in the memo, and their extremes.
+std::pair<int, int> solid_levels(const GridSpec& s, const std::vector<std::uint8_t>& volume, unsigned threads,
+                                 const std::vector<std::uint8_t>& changed, detail::EdgeContactMemo& memo) {
+  const std::size_t ny = std::size_t(s.ny), columns = s.column_count();
+  const auto levels_of = [&](std::size_t col) {
+    const std::uint8_t* v = volume.data() + col * ny;
+    const int first = lowest_solid(v, 0, s.ny);
+    memo.lowest[col] = first;
+    memo.highest[col] = first == s.ny ? -1 : highest_solid(v, first, s.ny - 1);
+  };
+  if (changed.empty()) {
+    memo.lowest.resize(columns), memo.highest.resize(columns);
+    detail::parallel_for(columns, threads, std::size_t(s.nx) * detail::kRowGrain,
+                         [&](std::size_t begin, std::size_t end, std::size_t) {
+                           for (std::size_t col = begin; col < end; ++col) levels_of(col);
+                         });
+  } else {
+    for (std::size_t col = 0; col < columns; ++col)
+      if (changed[col]) levels_of(col);
+  }
+  int lo = s.ny, hi = -1;
+  for (std::size_t col = 0; col < columns; ++col) lo = std::min(lo, int(memo.lowest[col])), hi = std::max(hi, int(memo.highest[col]));
+  return {lo, hi};
+}
+
+}  // namespace
+
+void detail::fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, unsigned threads,
+                                EdgeContactMemo* memo) {
   // Only levels that hold a solid voxel (and the one above them) can form a contact: the solid box's.
   const detail::StagePool pool(threads);
   const std::size_t ny = std::size_t(s.ny);
   using detail::kRowGrain;
-  const detail::SolidBox solid = detail::solid_box(s, volume, threads);
-  const int y_lo = solid.lo[1], y_hi = solid.hi[1];
+  // With a memo of this grid's last volume: the columns that changed since (nothing else is found again).
+  const bool from_memo = memo != nullptr && memo->spec == s && memo->volume.size() == volume.size() &&
+                         memo->may_fill.size() == s.column_count() && memo->lowest.size() == s.column_count();
+  const std::vector<std::uint8_t> changed =
+      from_memo ? detail::changed_columns(ny, memo->volume, volume) : std::vector<std::uint8_t>();
+  if (memo) memo->spec = GridSpec{};  // valid again once it holds this volume's all
+  int y_lo = 0, y_hi = -1;
+  if (memo) {
+    std::tie(y_lo, y_hi) = solid_levels(s, volume, threads, changed, *memo);
+  } else {
+    const detail::SolidBox solid = detail::solid_box(s, volume, threads);
+    y_lo = solid.lo[1], y_hi = solid.hi[1];
+  }
   if (y_hi < 0) return;
   const int y_end = std::min(y_hi + 1, s.ny - 1);
   // A 2x2 block around an edge holds cells p, q (one diagonal) and r, t (the other). When one diagonal is
@@ -435,11 +482,35 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, un
   // The blocks that can fill in the volume as given, found side by side: the first pass, in order, visits only
   // those and the blocks with a column it filled earlier. Any other block still holds what it held when it was
   // found unable to fill, so skipping it changes nothing.
-  std::vector<std::uint8_t> may_fill(s.column_count(), 0);
-  detail::parallel_for(std::size_t(s.nz), threads, kRowGrain, [&](std::size_t z_begin, std::size_t z_end, std::size_t) {
-    for (int z = int(z_begin); z < int(z_end); ++z)
-      for (int x = 0; x < s.nx; ++x) may_fill[s.column(x, z)] = can_fill(block_at(x, z, columns_at(x, z))) ? 1 : 0;
-  });
+  // With the memo's, over the same levels: those of the blocks with a column that changed found again.
+  std::vector<std::uint8_t> may_fill;
+  if (from_memo && memo->y_lo == y_lo && memo->y_hi == y_hi) {
+    may_fill = memo->may_fill;
+    std::vector<std::uint8_t> again(s.column_count(), 0);  // the blocks (x - 1 or x, z - 1 or z) of a changed (x, z)
+    for (int z = 0; z < s.nz; ++z)
+      for (int x = 0; x < s.nx; ++x)
+        if (changed[s.column(x, z)])
+          for (int bz = std::max(z - 1, 0); bz <= z; ++bz)
+            for (int bx = std::max(x - 1, 0); bx <= x; ++bx) again[s.column(bx, bz)] = 1;
+    for (int z = 0; z < s.nz; ++z)
+      for (int x = 0; x < s.nx; ++x)
+        if (again[s.column(x, z)]) may_fill[s.column(x, z)] = can_fill(block_at(x, z, columns_at(x, z))) ? 1 : 0;
+  } else {
+    may_fill.assign(s.column_count(), 0);
+    detail::parallel_for(std::size_t(s.nz), threads, kRowGrain, [&](std::size_t z_begin, std::size_t z_end, std::size_t) {
+      for (int z = int(z_begin); z < int(z_end); ++z)
+        for (int x = 0; x < s.nx; ++x) may_fill[s.column(x, z)] = can_fill(block_at(x, z, columns_at(x, z))) ? 1 : 0;
+    });
+  }
+  if (memo) {  // the volume as given, before the passes below fill it
+    if (from_memo) {
+      for (std::size_t col = 0; col < changed.size(); ++col)
+        if (changed[col]) std::copy_n(volume.begin() + std::ptrdiff_t(col * ny), ny, memo->volume.begin() + std::ptrdiff_t(col * ny));
+    } else {
+      memo->volume = volume;
+    }
+    memo->may_fill = may_fill, memo->y_lo = y_lo, memo->y_hi = y_hi, memo->spec = s;
+  }
   // Which columns a pass filled in: a later pass visits only the blocks with such a column (earlier in this
   // pass or anywhere in the last), by the same reasoning: the passes fill exactly what full passes would.
   std::vector<std::uint8_t> filled_last = std::move(may_fill), filled_now(s.column_count(), 0);
@@ -612,7 +683,7 @@ BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& 
                                                                 memo ? &memo->room_volume : nullptr,
                                                                 changed ? &*changed : nullptr);
   in.cells = std::move(part.cells);
-  fill_edge_contacts(crop, volume, threads);
+  detail::fill_edge_contacts(crop, volume, threads, memo ? &memo->contacts : nullptr);
   BoundsMesh mesh = detail::mesh_volume(crop, volume, threads, std::move(stop), memo);
   if (memo) memo->room = std::move(in), memo->room_mesh = mesh;
   return mesh;
@@ -627,7 +698,7 @@ BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> sto
 BoundsMesh detail::build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,
                                 const BoundsParams& params, unsigned threads, std::stop_token stop, MeshMemo* memo) {
   std::vector<std::uint8_t> volume = detail::bounds_volume(grid, storeys, params, threads, stop, memo);
-  fill_edge_contacts(grid.spec, volume, threads);
+  detail::fill_edge_contacts(grid.spec, volume, threads, memo ? &memo->contacts : nullptr);
   return detail::mesh_volume(grid.spec, volume, threads, std::move(stop), memo);
 }
 

@@ -27,6 +27,18 @@ struct StoreyVolumeMemo {
   std::vector<std::uint8_t> volume;
 };
 
+// What fill_edge_contacts kept of the volume it filled last: that volume as it was given (before the fill), each
+// column's lowest and highest solid level, and which blocks of four columns could fill in it. Whether a block can
+// fill is a function of its four columns (over the solid box's levels) alone, so the next volume asks it again
+// only of the blocks with a column that changed, as long as the solid box keeps its levels.
+struct EdgeContactMemo {
+  GridSpec spec{};
+  std::vector<std::uint8_t> volume;
+  std::vector<std::int32_t> lowest, highest;  // per column: ny and -1 where it holds no solid voxel
+  int y_lo = 0, y_hi = -1;                    // the solid box's levels that may_fill was found over
+  std::vector<std::uint8_t> may_fill;
+};
+
 // What mesh_volume kept of the volume it meshed last: the volume, and each slice's polygons (their points and
 // triangles). A slice between two voxel layers that are as they were meshes as it did (its mask, and the surface
 // corners in its plane, come from those two layers alone), so mesh_volume meshes again only the slices through
@@ -60,6 +72,7 @@ class MeshMemo {
   GridSpec volume_spec{};
   std::vector<std::uint8_t> volume_cells;
   std::vector<StoreyVolumeMemo> storey_volumes;
+  EdgeContactMemo contacts;  // build_bounds's or build_room_bounds's, of the volume this memo meshes
 
  private:
   friend BoundsMesh mesh_volume(const GridSpec&, const std::vector<std::uint8_t>&, unsigned, std::stop_token,
@@ -73,6 +86,9 @@ BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& vo
                        std::stop_token stop, MeshMemo* memo);
 BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys, const BoundsParams& params,
                         unsigned threads, std::stop_token stop, MeshMemo* memo);
+// fill_edge_contacts (bounds.h), through `memo` where it is not null (EdgeContactMemo): the same volume it would
+// fill without.
+void fill_edge_contacts(const GridSpec& spec, std::vector<std::uint8_t>& volume, unsigned threads, EdgeContactMemo* memo);
 // bounds_volume (bounds.h), each storey's volume derived again only where the cells changed since the volume
 // `memo` kept (StoreyVolumeMemo), where it is not null; keeps this one's.
 std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,

@@ -123,14 +123,16 @@ TEST(MeshVolume, AnyNumberOfThreadsGivesTheSameMesh) {
 }
 
 // An IncrementalAnalysis's edge contacts (mesh_memo.h's EdgeContactMemo): a volume filled with the memo of the
-// volume before it, which asks again only the blocks beside a changed column, is filled as without it. Edits add
-// and clear boxes of diagonal voxels (contacts to fill), raise and lower the solid box's levels (all asked again)
-// and change nothing at all; the memo's grid changes once.
+// volume before it, which asks again only the blocks beside a changed column, is filled as without it; the box and
+// the columns it tells mesh_volume (FilledVolume) are the filled volume's, and the mesh made with them and the mesh
+// memo is the mesh made afresh. Edits add and clear boxes of diagonal voxels (contacts to fill, and fills that
+// reach past the edit or go), raise and lower the solid box's levels (all asked again) and change nothing at all;
+// the memo's grid changes once.
 TEST(FillEdgeContacts, AMemoFillsEachEditedVolumeAsFillingItAfresh) {
   std::mt19937 rng(5);
   GridSpec s = make_grid_spec({0, 0, 0}, {3.0f, 1.2f, 2.6f}, 0.1f);
   std::vector<std::uint8_t> volume(s.voxel_count(), 0);
-  detail::EdgeContactMemo memo;
+  detail::MeshMemo memo;
   std::uniform_int_distribution<int> pick(0, 1 << 20);
   std::size_t filled_some = 0;
   for (int edit = 0; edit < 80; ++edit) {
@@ -151,8 +153,12 @@ TEST(FillEdgeContacts, AMemoFillsEachEditedVolumeAsFillingItAfresh) {
     }
     std::vector<std::uint8_t> afresh = volume, with_memo = volume;
     fill_edge_contacts(s, afresh);
-    detail::fill_edge_contacts(s, with_memo, 2, &memo);
+    const detail::FilledVolume filled = detail::fill_edge_contacts(s, with_memo, 2, &memo.contacts);
     ASSERT_EQ(with_memo, afresh) << "edit " << edit;
+    EXPECT_EQ(filled.box, detail::solid_box(s, afresh, 1)) << "edit " << edit;
+    const BoundsMesh meshed = detail::mesh_volume(s, with_memo, 2, {}, &memo, &filled), fresh = mesh_volume(s, afresh);
+    ASSERT_EQ(meshed.vertices, fresh.vertices) << "edit " << edit;
+    ASSERT_EQ(meshed.indices, fresh.indices) << "edit " << edit;
     filled_some += afresh != volume ? 1 : 0;
   }
   EXPECT_GT(filled_some, 40u);  // the edits leave contacts to fill

@@ -14,7 +14,6 @@
 #include <functional>
 #include <limits>
 #include <optional>
-#include <tuple>
 #include <utility>
 
 namespace roomsense {
@@ -353,10 +352,10 @@ void fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, un
 
 namespace {
 
-// The solid box's levels (SolidBox's lo[1] and hi[1]) through `memo`: each column's lowest and highest solid levels
-// found again only where `changed` (empty: everywhere), kept in the memo, and their extremes.
-std::pair<int, int> solid_levels(const GridSpec& s, const std::vector<std::uint8_t>& volume, unsigned threads,
-                                 const std::vector<std::uint8_t>& changed, detail::EdgeContactMemo& memo) {
+// The solid box (SolidBox) through `memo`: each column's lowest and highest solid levels found again only where
+// `changed` (empty: everywhere), kept in the memo, and their extremes.
+detail::SolidBox solid_box_of_columns(const GridSpec& s, const std::vector<std::uint8_t>& volume, unsigned threads,
+                                      const std::vector<std::uint8_t>& changed, detail::EdgeContactMemo& memo) {
   const std::size_t ny = std::size_t(s.ny), columns = s.column_count();
   const auto levels_of = [&](std::size_t col) {
     const std::uint8_t* v = volume.data() + col * ny;
@@ -374,33 +373,39 @@ std::pair<int, int> solid_levels(const GridSpec& s, const std::vector<std::uint8
     for (std::size_t col = 0; col < columns; ++col)
       if (changed[col]) levels_of(col);
   }
-  int lo = s.ny, hi = -1;
-  for (std::size_t col = 0; col < columns; ++col) lo = std::min(lo, int(memo.lowest[col])), hi = std::max(hi, int(memo.highest[col]));
-  return {lo, hi};
+  detail::SolidBox box{{s.nx, s.ny, s.nz}, {-1, -1, -1}};
+  for (int z = 0; z < s.nz; ++z)
+    for (int x = 0; x < s.nx; ++x) {
+      const std::size_t col = s.column(x, z);
+      if (memo.highest[col] < 0) continue;
+      box.lo[0] = std::min(box.lo[0], x), box.hi[0] = std::max(box.hi[0], x);
+      box.lo[1] = std::min(box.lo[1], int(memo.lowest[col])), box.hi[1] = std::max(box.hi[1], int(memo.highest[col]));
+      box.lo[2] = std::min(box.lo[2], z), box.hi[2] = std::max(box.hi[2], z);
+    }
+  return box;
 }
 
 }  // namespace
 
-void detail::fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, unsigned threads,
-                                EdgeContactMemo* memo) {
+detail::FilledVolume detail::fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& volume, unsigned threads,
+                                                EdgeContactMemo* memo) {
   // Only levels that hold a solid voxel (and the one above them) can form a contact: the solid box's.
   const detail::StagePool pool(threads);
   const std::size_t ny = std::size_t(s.ny);
   using detail::kRowGrain;
   // With a memo of this grid's last volume: the columns that changed since (nothing else is found again).
   const bool from_memo = memo != nullptr && memo->spec == s && memo->volume.size() == volume.size() &&
-                         memo->may_fill.size() == s.column_count() && memo->lowest.size() == s.column_count();
+                         memo->may_fill.size() == s.column_count() && memo->lowest.size() == s.column_count() &&
+                         memo->filled.size() == s.column_count();
   const std::vector<std::uint8_t> changed =
       from_memo ? detail::changed_columns(ny, memo->volume, volume) : std::vector<std::uint8_t>();
   if (memo) memo->spec = GridSpec{};  // valid again once it holds this volume's all
-  int y_lo = 0, y_hi = -1;
-  if (memo) {
-    std::tie(y_lo, y_hi) = solid_levels(s, volume, threads, changed, *memo);
-  } else {
-    const detail::SolidBox solid = detail::solid_box(s, volume, threads);
-    y_lo = solid.lo[1], y_hi = solid.hi[1];
-  }
-  if (y_hi < 0) return;
+  // The box is the filled volume's too: a fill puts voxels in a block whose other diagonal is solid, at its
+  // levels (an edge along y) or between them (along x or z), so within the box of that diagonal.
+  FilledVolume out;
+  out.box = memo ? solid_box_of_columns(s, volume, threads, changed, *memo) : detail::solid_box(s, volume, threads);
+  const int y_lo = out.box.lo[1], y_hi = out.box.hi[1];
+  if (y_hi < 0) return out;
   const int y_end = std::min(y_hi + 1, s.ny - 1);
   // A 2x2 block around an edge holds cells p, q (one diagonal) and r, t (the other). When one diagonal is
   // solid and the other empty, the empty pair is filled. Filling only adds solid voxels, so the loop ends;
@@ -509,8 +514,9 @@ void detail::fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& vo
     } else {
       memo->volume = volume;
     }
-    memo->may_fill = may_fill, memo->y_lo = y_lo, memo->y_hi = y_hi, memo->spec = s;
+    memo->may_fill = may_fill, memo->y_lo = y_lo, memo->y_hi = y_hi;
   }
+  std::vector<std::uint8_t> filled_any(memo ? s.column_count() : 0, 0);  // the columns of the blocks that filled
   // Which columns a pass filled in: a later pass visits only the blocks with such a column (earlier in this
   // pass or anywhere in the last), by the same reasoning: the passes fill exactly what full passes would.
   std::vector<std::uint8_t> filled_last = std::move(may_fill), filled_now(s.column_count(), 0);
@@ -541,11 +547,21 @@ void detail::fill_edge_contacts(const GridSpec& s, std::vector<std::uint8_t>& vo
         if (filled) {
           changed = true;
           filled_now[col] = filled_now[col_x] = filled_now[col_z] = filled_now[col_xz] = 1;
+          if (memo) filled_any[col] = filled_any[col_x] = filled_any[col_z] = filled_any[col_xz] = 1;
         }
       }
     filled_last.swap(filled_now);
     std::fill(filled_now.begin(), filled_now.end(), std::uint8_t{0});
   }
+  if (memo) {
+    if (from_memo) {  // where this filled volume may differ from the last one
+      out.may_differ = changed;
+      for (std::size_t col = 0; col < out.may_differ.size(); ++col) out.may_differ[col] |= memo->filled[col] | filled_any[col];
+    }
+    memo->filled = std::move(filled_any);
+    memo->spec = s;
+  }
+  return out;
 }
 
 BoundsMesh build_bounds(const VoxelGrid& grid, const FloorCeiling& levels, int y_end,
@@ -683,8 +699,8 @@ BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& 
                                                                 memo ? &memo->room_volume : nullptr,
                                                                 changed ? &*changed : nullptr);
   in.cells = std::move(part.cells);
-  detail::fill_edge_contacts(crop, volume, threads, memo ? &memo->contacts : nullptr);
-  BoundsMesh mesh = detail::mesh_volume(crop, volume, threads, std::move(stop), memo);
+  const detail::FilledVolume filled = detail::fill_edge_contacts(crop, volume, threads, memo ? &memo->contacts : nullptr);
+  BoundsMesh mesh = detail::mesh_volume(crop, volume, threads, std::move(stop), memo, &filled);
   if (memo) memo->room = std::move(in), memo->room_mesh = mesh;
   return mesh;
 }
@@ -698,8 +714,8 @@ BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> sto
 BoundsMesh detail::build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,
                                 const BoundsParams& params, unsigned threads, std::stop_token stop, MeshMemo* memo) {
   std::vector<std::uint8_t> volume = detail::bounds_volume(grid, storeys, params, threads, stop, memo);
-  detail::fill_edge_contacts(grid.spec, volume, threads, memo ? &memo->contacts : nullptr);
-  return detail::mesh_volume(grid.spec, volume, threads, std::move(stop), memo);
+  const detail::FilledVolume filled = detail::fill_edge_contacts(grid.spec, volume, threads, memo ? &memo->contacts : nullptr);
+  return detail::mesh_volume(grid.spec, volume, threads, std::move(stop), memo, &filled);
 }
 
 }  // namespace roomsense

@@ -2,7 +2,7 @@
 // lowest byte of a word; and the box of a volume's solid voxels, found with them.
 #pragma once
 #include "roomsense/grid.h"
-#include "parallel.h"
+#include "../parallel.h"
 
 #include <algorithm>
 #include <bit>

@@ -2,6 +2,7 @@
 // meshed again only where the volume changed.
 #pragma once
 #include "roomsense/bounds.h"
+#include "column_levels.h"
 
 #include <cstdint>
 #include <memory>
@@ -37,6 +38,15 @@ struct EdgeContactMemo {
   std::vector<std::int32_t> lowest, highest;  // per column: ny and -1 where it holds no solid voxel
   int y_lo = 0, y_hi = -1;                    // the solid box's levels that may_fill was found over
   std::vector<std::uint8_t> may_fill;
+  std::vector<std::uint8_t> filled;  // per column: whether the passes filled a voxel of it
+};
+
+// What fill_edge_contacts tells mesh_volume of the volume it filled: its solid box, and the columns where it may
+// differ from the volume the memo filled last (the columns that changed before the fill, or that either fill
+// reached; the others are equal), empty where that is not known.
+struct FilledVolume {
+  SolidBox box{};
+  std::vector<std::uint8_t> may_differ;
 };
 
 // What mesh_volume kept of the volume it meshed last: the volume, and each slice's polygons (their points and
@@ -76,19 +86,22 @@ class MeshMemo {
 
  private:
   friend BoundsMesh mesh_volume(const GridSpec&, const std::vector<std::uint8_t>&, unsigned, std::stop_token,
-                                MeshMemo*);
+                                MeshMemo*, const FilledVolume*);
   std::unique_ptr<State> state_;
 };
 
 // mesh_volume, build_bounds and build_room_bounds (bounds.h), served by `memo` where it is not null: they read
 // it, and keep this volume's slices in it once they finish.
+// `filled`, where not null, is what fill_edge_contacts told of `volume` (through memo->contacts where there is a
+// memo): its solid box is not found again, nor its columns compared where they cannot differ.
 BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& volume, unsigned threads,
-                       std::stop_token stop, MeshMemo* memo);
+                       std::stop_token stop, MeshMemo* memo, const FilledVolume* filled = nullptr);
 BoundsMesh build_bounds(const VoxelGrid& grid, std::span<const BoundsStorey> storeys, const BoundsParams& params,
                         unsigned threads, std::stop_token stop, MeshMemo* memo);
 // fill_edge_contacts (bounds.h), through `memo` where it is not null (EdgeContactMemo): the same volume it would
 // fill without.
-void fill_edge_contacts(const GridSpec& spec, std::vector<std::uint8_t>& volume, unsigned threads, EdgeContactMemo* memo);
+FilledVolume fill_edge_contacts(const GridSpec& spec, std::vector<std::uint8_t>& volume, unsigned threads,
+                                EdgeContactMemo* memo);
 // bounds_volume (bounds.h), each storey's volume derived again only where the cells changed since the volume
 // `memo` kept (StoreyVolumeMemo), where it is not null; keeps this one's.
 std::vector<std::uint8_t> bounds_volume(const VoxelGrid& grid, std::span<const BoundsStorey> storeys,

@@ -519,15 +519,20 @@ struct VolumeChanges {
   std::array<std::vector<std::uint8_t>, 3> layers;
   std::vector<std::size_t> columns;  // GridSpec::column, ascending
 };
+// `may_differ`, where not null: the columns outside it are equal (FilledVolume).
 VolumeChanges volume_changes(const GridSpec& s, const std::vector<std::uint8_t>& before,
-                             const std::vector<std::uint8_t>& after) {
+                             const std::vector<std::uint8_t>& after, const std::vector<std::uint8_t>* may_differ) {
   VolumeChanges changed{{std::vector<std::uint8_t>(std::size_t(s.nx), 0), std::vector<std::uint8_t>(std::size_t(s.ny), 0),
                          std::vector<std::uint8_t>(std::size_t(s.nz), 0)},
                         {}};
   const std::size_t ny = std::size_t(s.ny);
-  const std::vector<std::uint8_t> differs = detail::changed_columns(ny, before, after);
+  const auto differ = [&](std::size_t col) {
+    return !std::equal(before.begin() + std::ptrdiff_t(col * ny), before.begin() + std::ptrdiff_t((col + 1) * ny),
+                       after.begin() + std::ptrdiff_t(col * ny));
+  };
+  const std::vector<std::uint8_t> differs = may_differ ? *may_differ : detail::changed_columns(ny, before, after);
   for (std::size_t col = 0; col < s.column_count(); ++col) {
-    if (!differs[col]) continue;
+    if (!differs[col] || (may_differ && !differ(col))) continue;
     const std::uint8_t *a = before.data() + col * ny, *b = after.data() + col * ny;
     changed.columns.push_back(col);
     changed.layers[0][col % std::size_t(s.nx)] = changed.layers[2][col / std::size_t(s.nx)] = 1;
@@ -559,8 +564,11 @@ BoundsMesh mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& vo
 }
 
 BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint8_t>& volume, unsigned threads,
-                               std::stop_token stop, MeshMemo* memo) {
-  const Box box = solid_box(spec, volume, threads);
+                               std::stop_token stop, MeshMemo* memo, const FilledVolume* filled) {
+  const Box box = filled ? filled->box : solid_box(spec, volume, threads);
+  // Where the volume may differ from the memo's (its other columns are equal), where that is known.
+  const std::vector<std::uint8_t>* may_differ =
+      filled && filled->may_differ.size() == spec.column_count() ? &filled->may_differ : nullptr;
   if (box.hi[0] < box.lo[0]) {
     if (memo) memo->state_.reset();
     return {};
@@ -573,7 +581,7 @@ BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint
           ? previous.get()
           : nullptr;
   VolumeChanges changed;
-  if (kept) changed = volume_changes(spec, kept->volume, volume);
+  if (kept) changed = volume_changes(spec, kept->volume, volume, may_differ);
   auto next = memo ? std::make_unique<MeshMemo::State>() : nullptr;
   // Every slice replayed: no corner is read.
   const bool all_kept = kept != nullptr && changed.columns.empty();
@@ -622,7 +630,14 @@ BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint
     }
   if (memo) {
     if (previous) next->volume = std::move(previous->volume);  // its storage, not a new allocation
-    next->volume.assign(volume.begin(), volume.end());
+    if (previous && previous->spec == spec && next->volume.size() == volume.size() && may_differ) {
+      const std::size_t ny = std::size_t(spec.ny);
+      for (std::size_t col = 0; col < may_differ->size(); ++col)
+        if ((*may_differ)[col])
+          std::copy_n(volume.begin() + std::ptrdiff_t(col * ny), ny, next->volume.begin() + std::ptrdiff_t(col * ny));
+    } else {
+      next->volume.assign(volume.begin(), volume.end());
+    }
     next->spec = spec, next->box = box;
     if (corners) next->corners = std::move(corners);
     memo->state_ = std::move(next);

@@ -229,7 +229,8 @@ void flatten_small_plateaus(const GridSpec& s, const std::vector<std::uint8_t>& 
 
 // The volume of one storey over `room`'s columns (the storey's B, or a room's part of it). With a memo of the
 // storey's previous volume (StoreyVolumeMemo) and the columns whose cells changed since (`changed`, per column),
-// where the storey read the same else: that volume written again only where it changed; kept in the memo.
+// where the storey read the same levels and parameters (its room and ceilings may have changed too): that volume
+// written again only where it changed; kept in the memo.
 std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStorey& storey,
                                         const std::vector<std::uint8_t>& room, const BoundsParams& params,
                                         unsigned threads, const std::stop_token& stop,
@@ -243,7 +244,7 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
   const std::vector<int>& ceilings = storey.ceiling != nullptr ? *storey.ceiling : no_ceiling;
   const bool replay = memo != nullptr && changed != nullptr && memo->spec == s && memo->levels == levels &&
                       memo->y_end == storey.y_end && memo->min_plateau_area_bits == min_plateau_bits &&
-                      memo->room == room && memo->ceiling == ceilings;
+                      memo->room.size() == room.size() && memo->ceiling.size() == ceilings.size();
   // Beyond the thesis: under a ceiling lower than I_Ceiling (a roof's slope, a soffit) the column's free space
   // ends at it; G looks no higher, and H is at most it.
   const auto ceiling_of = [&](std::size_t col) {
@@ -263,9 +264,11 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
     if (room[col] && ceiling < levels.ceiling) h[col] = std::min(h[col], std::max(ceiling, levels.floor + 1));
   };
   if (replay) {
+    // A column's G and H read its cells, whether it is the room's and its ceiling: found again where one changed.
     g = memo->g_found, h = memo->h_found;
     for (std::size_t col = 0; col < s.column_count(); ++col)
-      if ((*changed)[col]) find_g_h(col);
+      if ((*changed)[col] || memo->room[col] != room[col] || (!ceilings.empty() && memo->ceiling[col] != ceilings[col]))
+        find_g_h(col);
   } else {
     g.resize(s.column_count()), h.resize(s.column_count());
     // Slices of kColumnGrain: at 4096 columns a slice, a room of thesis-room1's 4,331 columns was one slice, G and H
@@ -328,9 +331,9 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
   if (memo) {
     if (!replay) {  // what the storey read; a replay read the same
       memo->spec = s, memo->levels = levels, memo->y_end = storey.y_end, memo->min_plateau_area_bits = min_plateau_bits;
-      memo->room = room, memo->ceiling = ceilings;
       memo->volume = volume;
     }
+    memo->room = room, memo->ceiling = ceilings;
     memo->g_found = std::move(g_found), memo->h_found = std::move(h_found);
     memo->g = std::move(g), memo->h = std::move(h);
   }
@@ -664,16 +667,17 @@ BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& 
   crop.origin = s.lattice_to_world(float(x0), 0.0f, float(z0));
   // The room's inputs: the grid's and the masks' crops (a row of the crop's columns is one run of the grid's bytes).
   MeshMemo::RoomInputs in{crop,
-                          std::vector<std::uint8_t>(crop.voxel_count()),
+                          {},  // the cells, row after row below: not zeroed first (every room, every update)
                           std::vector<std::uint8_t>(crop.column_count()),
                           std::vector<std::uint8_t>(crop.column_count()),
                           std::vector<int>(crop.column_count(), storey.levels.ceiling),
                           storey.levels,
                           storey.y_end,
                           std::bit_cast<std::uint32_t>(params.min_plateau_area)};
+  in.cells.reserve(crop.voxel_count());
   for (int z = 0; z < crop.nz; ++z) {
-    std::copy_n(grid.column_data(x0, z + z0), std::size_t(crop.nx) * std::size_t(s.ny),
-                in.cells.begin() + std::ptrdiff_t(crop.column(0, z) * std::size_t(s.ny)));
+    const std::uint8_t* row = grid.column_data(x0, z + z0);
+    in.cells.insert(in.cells.end(), row, row + std::size_t(crop.nx) * std::size_t(s.ny));
     for (int x = 0; x < crop.nx; ++x) {
       const std::size_t from = s.column(x + x0, z + z0), to = crop.column(x, z);
       in.room[to] = room_columns[from];

@@ -14,7 +14,8 @@ namespace roomsense::detail {
 
 // What build_bounds kept of one storey's volume (bounds_volume.cpp): what it read but the grid's cells, G and H
 // (Eq. 3.60, 3.61) as the columns gave them and as flattened, and the volume with its plane holes filled. The
-// next volume finds G and H again only in the columns whose cells changed, and writes again only the columns
+// next volume finds G and H again only in the columns whose cells, room or ceiling changed (a column's G and H
+// read those alone), and writes again only the columns
 // whose flattened G or H changed and their neighbours: each column of the volume, its filled holes included, is
 // a function of its own and its four neighbours' G and H.
 struct StoreyVolumeMemo {

@@ -284,7 +284,15 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
                            ? std::ceil(double(params.min_plateau_area) / (double(s.voxel_size) * s.voxel_size) - 1e-4)
                            : 0.0;
   const int min_cells = int(std::min(cells, double(s.column_count())));
-  detail::parallel_tasks(2, threads, [&](std::size_t i) { flatten_small_plateaus(s, room, min_cells, i == 0 ? g : h); });
+  // Flattening reads the room and the heights as found alone: where a replay found the previous ones, its result is
+  // the previous one (a change that reached G alone, or H, or neither: the other storeys of a home).
+  const bool same_room = replay && memo->room == room;
+  const bool same[2] = {same_room && g == memo->g_found, same_room && h == memo->h_found};
+  detail::parallel_tasks(2, threads, [&](std::size_t i) {
+    std::vector<int>& heights = i == 0 ? g : h;
+    if (same[i]) heights = i == 0 ? memo->g : memo->h;
+    else flatten_small_plateaus(s, room, min_cells, heights);
+  });
   stop_point(stop);
   // I (Eq. 3.62) of a column from G and H, into levels [floor, ceiling] that hold nothing.
   const auto write_column = [&](std::vector<std::uint8_t>& volume, std::size_t col) {

@@ -116,6 +116,15 @@ struct AnalysisCaches {
   // The horizontal counts (storeys.h) of analysis number horizontal_serial's grid.
   std::vector<std::uint32_t> horizontal;
   std::uint64_t horizontal_serial = 0;
+  // The column counts (count_columns) on each storey's levels that analysis number counts_serial counted itself
+  // (those the voxel stage did not): a home's storeys are counted again only in the columns that changed.
+  struct StoreyCounts {
+    FloorCeiling levels{};
+    std::vector<std::uint32_t> counts;
+    std::vector<std::uint8_t> any;
+  };
+  std::vector<StoreyCounts> storey_counts;
+  std::uint64_t counts_serial = 0;
   CombinedScan combined;
   ChunkBandSums band_sums;  // of `combined`
   ChunkLabelVoxels label_voxels;  // of `combined`

@@ -273,6 +273,29 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   // Every storey's levels, the main one first.
   std::vector<FloorCeiling*> all{&storeys.main};
   for (FloorCeiling& other : storeys.others) all.push_back(&other);
+  // count_columns on a storey's levels: counted once an analysis (the main storey's again below where no ridge raised
+  // it); in an IncrementalAnalysis, the previous analysis's counts on them counted again where the voxels changed,
+  // where it counted them.
+  std::vector<detail::AnalysisCaches::StoreyCounts> storey_counts;
+  const auto count_storey = [&](const FloorCeiling& fc, std::vector<std::uint32_t>& counts, std::vector<std::uint8_t>& any) {
+    for (const detail::AnalysisCaches::StoreyCounts& done : storey_counts)
+      if (done.levels == fc) {
+        counts = done.counts, any = done.any;
+        return;
+      }
+    const detail::AnalysisCaches::StoreyCounts* kept = nullptr;
+    for (std::size_t k = 0; caches && !changed.empty() && caches->counts_serial + 1 == serial && k < caches->storey_counts.size(); ++k)
+      if (caches->storey_counts[k].levels == fc && caches->storey_counts[k].counts.size() == spec.column_count())
+        kept = &caches->storey_counts[k];
+    if (kept) {
+      counts = kept->counts, any = kept->any;
+      for (std::size_t col = 0; col < changed.size(); ++col)
+        if (changed[col]) counts[col] = count_column(r.voxels.grid, col, fc), any[col] = counts[col] > 0 ? 1 : 0;
+    } else {
+      count_columns(r.voxels.grid, fc, counts, any, options.threads);
+    }
+    storey_counts.push_back({fc, counts, any});
+  };
   std::vector<bool> raised;
   {
     std::vector<std::uint32_t> counts;
@@ -283,7 +306,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
         if (other->floor_peak > fc->ceiling_peak) upper = std::min(upper, other->floor_peak);
       // The voxel stage counted the columns on its own levels: the main storey's, but where storeys moved them.
       const bool counted = *fc == *r.voxels.levels;
-      if (!counted) count_columns(r.voxels.grid, *fc, counts, any, options.threads);
+      if (!counted) count_storey(*fc, counts, any);
       const auto up = raised_ceiling(r.voxels.grid, *fc, detect_room(spec, counted ? r.voxels.column_any : any), upper);
       if (up) *fc = *up;
       raised.push_back(up.has_value());
@@ -291,8 +314,9 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   }
   if (storeys.main != *r.voxels.levels) {
     r.voxels.levels = storeys.main;
-    count_columns(r.voxels.grid, r.voxels.levels, r.voxels.column_counts, r.voxels.column_any, options.threads);
+    count_storey(storeys.main, r.voxels.column_counts, r.voxels.column_any);
   }
+  if (caches) caches->storey_counts = std::move(storey_counts), caches->counts_serial = serial;
   const FloorCeiling& levels = *r.voxels.levels;
   // Each storey's floor and ceiling heights: the sums over the triangles in their bands, in one pass over the
   // triangles shared by the two workers, or from each chunk's sums where the scan is in chunks and the input

@@ -520,8 +520,7 @@ detail::FilledVolume detail::fill_edge_contacts(const GridSpec& s, std::vector<s
   }
   if (memo) {  // the volume as given, before the passes below fill it
     if (from_memo) {
-      for (std::size_t col = 0; col < changed.size(); ++col)
-        if (changed[col]) std::copy_n(volume.begin() + std::ptrdiff_t(col * ny), ny, memo->volume.begin() + std::ptrdiff_t(col * ny));
+      detail::copy_columns(ny, volume, memo->volume, changed);
     } else {
       memo->volume = volume;
     }

@@ -15,7 +15,7 @@ namespace roomsense::detail {
 // What build_bounds kept of one storey's volume (bounds_volume.cpp): what it read but the grid's cells, G and H
 // (Eq. 3.60, 3.61) as the columns gave them and as flattened, and the volume with its plane holes filled. The
 // next volume finds G and H again only in the columns whose cells, room or ceiling changed (a column's G and H
-// read those alone), and writes again only the columns
+// read those alone), flattens them again only where they or the room changed, and writes again only the columns
 // whose flattened G or H changed and their neighbours: each column of the volume, its filled holes included, is
 // a function of its own and its four neighbours' G and H.
 struct StoreyVolumeMemo {
@@ -39,7 +39,7 @@ struct EdgeContactMemo {
   std::vector<std::int32_t> lowest, highest;  // per column: ny and -1 where it holds no solid voxel
   int y_lo = 0, y_hi = -1;                    // the solid box's levels that may_fill was found over
   std::vector<std::uint8_t> may_fill;
-  std::vector<std::uint8_t> filled;  // per column: whether the passes filled a voxel of it
+  std::vector<std::uint8_t> filled;  // per column: whether it is one of a block the passes filled in
 };
 
 // What fill_edge_contacts tells mesh_volume of the volume it filled: its solid box, and the columns where it may

@@ -531,7 +531,8 @@ VolumeChanges volume_changes(const GridSpec& s, const std::vector<std::uint8_t>&
     return !std::equal(before.begin() + std::ptrdiff_t(col * ny), before.begin() + std::ptrdiff_t((col + 1) * ny),
                        after.begin() + std::ptrdiff_t(col * ny));
   };
-  const std::vector<std::uint8_t> differs = may_differ ? *may_differ : detail::changed_columns(ny, before, after);
+  const std::vector<std::uint8_t> compared = may_differ ? std::vector<std::uint8_t>() : detail::changed_columns(ny, before, after);
+  const std::vector<std::uint8_t>& differs = may_differ ? *may_differ : compared;
   for (std::size_t col = 0; col < s.column_count(); ++col) {
     if (!differs[col] || (may_differ && !differ(col))) continue;
     const std::uint8_t *a = before.data() + col * ny, *b = after.data() + col * ny;
@@ -639,10 +640,7 @@ BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint
   if (memo) {
     if (previous) next->volume = std::move(previous->volume);  // its storage, not a new allocation
     if (previous && previous->spec == spec && next->volume.size() == volume.size() && may_differ) {
-      const std::size_t ny = std::size_t(spec.ny);
-      for (std::size_t col = 0; col < may_differ->size(); ++col)
-        if ((*may_differ)[col])
-          std::copy_n(volume.begin() + std::ptrdiff_t(col * ny), ny, next->volume.begin() + std::ptrdiff_t(col * ny));
+      detail::copy_columns(std::size_t(spec.ny), volume, next->volume, *may_differ);
     } else {
       next->volume.assign(volume.begin(), volume.end());
     }

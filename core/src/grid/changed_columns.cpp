@@ -32,4 +32,10 @@ std::vector<std::uint8_t> changed_columns(const VoxelGrid& a, const VoxelGrid& b
   return changed_columns(std::size_t(a.spec.ny), a.cells, b.cells);
 }
 
+void copy_columns(std::size_t ny, std::span<const std::uint8_t> from, std::span<std::uint8_t> to,
+                  std::span<const std::uint8_t> which) {
+  for (std::size_t col = 0; col < which.size(); ++col)
+    if (which[col]) std::copy_n(from.begin() + std::ptrdiff_t(col * ny), ny, to.begin() + std::ptrdiff_t(col * ny));
+}
+
 }  // namespace roomsense::detail

@@ -15,5 +15,8 @@ namespace roomsense::detail {
 std::vector<std::uint8_t> changed_columns(std::size_t ny, std::span<const std::uint8_t> a, std::span<const std::uint8_t> b);
 // The same for two grids of one GridSpec.
 std::vector<std::uint8_t> changed_columns(const VoxelGrid& a, const VoxelGrid& b);
+// Copies the columns of `from` that `which` marks (1 per column) into `to`, grids of `ny` levels and one size.
+void copy_columns(std::size_t ny, std::span<const std::uint8_t> from, std::span<std::uint8_t> to,
+                  std::span<const std::uint8_t> which);
 
 }  // namespace roomsense::detail

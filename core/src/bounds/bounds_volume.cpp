@@ -502,15 +502,12 @@ detail::FilledVolume detail::fill_edge_contacts(const GridSpec& s, std::vector<s
   std::vector<std::uint8_t> may_fill;
   if (from_memo && memo->y_lo == y_lo && memo->y_hi == y_hi) {
     may_fill = memo->may_fill;
-    std::vector<std::uint8_t> again(s.column_count(), 0);  // the blocks (x - 1 or x, z - 1 or z) of a changed (x, z)
     for (int z = 0; z < s.nz; ++z)
-      for (int x = 0; x < s.nx; ++x)
-        if (changed[s.column(x, z)])
-          for (int bz = std::max(z - 1, 0); bz <= z; ++bz)
-            for (int bx = std::max(x - 1, 0); bx <= x; ++bx) again[s.column(bx, bz)] = 1;
-    for (int z = 0; z < s.nz; ++z)
-      for (int x = 0; x < s.nx; ++x)
-        if (again[s.column(x, z)]) may_fill[s.column(x, z)] = can_fill(block_at(x, z, columns_at(x, z))) ? 1 : 0;
+      for (int x = 0; x < s.nx; ++x) {
+        const std::array<std::size_t, 4> cols = columns_at(x, z);
+        if (changed[cols[0]] | changed[cols[1]] | changed[cols[2]] | changed[cols[3]])
+          may_fill[cols[0]] = can_fill(block_at(x, z, cols)) ? 1 : 0;
+      }
   } else {
     may_fill.assign(s.column_count(), 0);
     detail::parallel_for(std::size_t(s.nz), threads, kRowGrain, [&](std::size_t z_begin, std::size_t z_end, std::size_t) {

@@ -563,6 +563,12 @@ std::uint32_t count_column(const VoxelGrid& grid, std::size_t column, const Floo
   return n;
 }
 
+void detail::count_columns_again(const VoxelGrid& grid, const FloorCeiling& levels, std::span<const std::uint8_t> which,
+                                 std::vector<std::uint32_t>& counts, std::vector<std::uint8_t>& any) {
+  for (std::size_t col = 0; col < which.size(); ++col)
+    if (which[col]) counts[col] = count_column(grid, col, levels), any[col] = counts[col] > 0 ? 1 : 0;
+}
+
 VoxelStageResult CpuVoxelStage::run(const VoxelizeRequest& request) {
   VoxelStageResult r;
   const detail::StagePool pool(threads_);

@@ -25,4 +25,9 @@ void voxelize_cpu_into(const VoxelizeRequest& request, VoxelGrid& grid, unsigned
 // other waited).
 void to_grid_units_into(std::span<const glm::vec3> world, const GridSpec& spec, unsigned threads, glm::vec3* out);
 
+// count_columns's counts and flags of the columns `which` marks (1 per column), counted again into counts and any,
+// which hold the counts on these levels of a grid that differs from this one only there.
+void count_columns_again(const VoxelGrid& grid, const FloorCeiling& levels, std::span<const std::uint8_t> which,
+                         std::vector<std::uint32_t>& counts, std::vector<std::uint8_t>& any);
+
 }  // namespace roomsense::detail

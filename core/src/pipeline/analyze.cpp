@@ -284,13 +284,12 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
         return;
       }
     const detail::AnalysisCaches::StoreyCounts* kept = nullptr;
-    for (std::size_t k = 0; caches && !changed.empty() && caches->counts_serial + 1 == serial && k < caches->storey_counts.size(); ++k)
-      if (caches->storey_counts[k].levels == fc && caches->storey_counts[k].counts.size() == spec.column_count())
-        kept = &caches->storey_counts[k];
+    if (caches && !changed.empty() && caches->counts_serial + 1 == serial)
+      for (const detail::AnalysisCaches::StoreyCounts& last : caches->storey_counts)
+        if (last.levels == fc && last.counts.size() == spec.column_count()) kept = &last;
     if (kept) {
       counts = kept->counts, any = kept->any;
-      for (std::size_t col = 0; col < changed.size(); ++col)
-        if (changed[col]) counts[col] = count_column(r.voxels.grid, col, fc), any[col] = counts[col] > 0 ? 1 : 0;
+      detail::count_columns_again(r.voxels.grid, fc, changed, counts, any);
     } else {
       count_columns(r.voxels.grid, fc, counts, any, options.threads);
     }

@@ -10,6 +10,7 @@
 #include "roomsense/incremental.h"
 
 #include "analysis_caches.h"
+#include "../grid/voxelize_cpu.h"
 #include "../parallel.h"
 
 #include "roomsense/content_hash.h"
@@ -201,11 +202,7 @@ class IncrementalAnalysis::ChunkVoxelStage final : public VoxelStage {
     }
     r.column_counts = previous->column_counts;
     r.column_any = previous->column_any;
-    for (std::size_t col = 0; col < touched.size(); ++col) {
-      if (!touched[col]) continue;
-      r.column_counts[col] = count_column(r.grid, col, *r.levels);
-      r.column_any[col] = r.column_counts[col] > 0 ? 1 : 0;
-    }
+    detail::count_columns_again(r.grid, *r.levels, touched, r.column_counts, r.column_any);
   }
 
   unsigned threads_;

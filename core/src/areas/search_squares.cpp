@@ -10,6 +10,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -274,39 +275,93 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
                             : CellBox{glm::max(searched.lo - corner_reach, glm::ivec2(0)),
                                       glm::min(searched.hi + corner_reach, glm::ivec2(spec.nx - 1, spec.nz - 1))};
   }
-  // Per layer of several, its first corners, and past the last layer the tiles one level above it, counted by a
-  // whole search's scan below (a search by bands scans part of the grid, and skips no layer).
-  std::vector<std::size_t> layer_tiles(std::size_t(std::max(layers, 0)) + 1, 0);
-  // Whether no centre anywhere can pass the inner box's test below: the layer's tiles (its first corners and,
-  // for furniture, the level above's) are fewer than an inner box of at least floor(2 inner_half) cells a side
-  // needs. Most furniture tops hold no large square.
-  const auto no_square = [&](int layer) {
-    if (kBanded || layers == 1 || inner_half < 0.0) return false;
-    const double side = std::floor(2.0 * inner_half);
-    const std::size_t tiles = layer_tiles[std::size_t(layer)] +
-                              (surface == Surface::Furniture ? layer_tiles[std::size_t(layer) + 1] : 0);
-    return side * side - double(tiles) > most_missing;
-  };
-  for (int z = scan.lo.y; z <= scan.hi.y; ++z) {
-    if (layers == 1) {  // a floor's, a flat ceiling's: the row's first and last first corner alone
-      int first = scan.lo.x, last = scan.hi.x;
-      while (first <= last && layer_of(spec.column(first, z)) != 0) ++first;
-      if (first > last) continue;
-      while (layer_of(spec.column(last, z)) != 0) --last;
-      CellBox& b = first_box[0];
-      b.lo = glm::min(b.lo, glm::ivec2(first, z)), b.hi = glm::max(b.hi, glm::ivec2(last, z));
-      continue;
+  // Where a layer of several has too few tiles for any square (no_square, below): a valid square holds all but
+  // BadCells::most(may_miss) of its cells as tiles (Eq. 3.30-3.38; the tiles of a furniture square's level and the
+  // level above), at least `least_tiles` for the offsets that can be valid at all, within the box of cells its offset
+  // reads (RingOffset::box_lo), `square_rows` rows and `square_columns` columns at most. Those boxes lie within
+  // `reads_reach` of the centre's cell.
+  std::uint64_t least_tiles = std::numeric_limits<std::uint64_t>::max();
+  int square_rows = 0, square_columns = 0, reads_reach = 0;
+  for (int p = 0; p < 2; ++p)
+    for (std::size_t i = 0; i < by_parity[std::size_t(p)].size(); ++i) {
+      const Reads& r = reads[std::size_t(p)][i];
+      reads_reach = std::max({reads_reach, -r.lo.x, -r.lo.y, r.hi.x, r.hi.y});
+      const RingOffset& o = *by_parity[std::size_t(p)][i];
+      const double may_miss = double(o.cells) - double(fill) * (o.d + 1.0) * (o.d + 1.0);
+      if (may_miss < 0.0) continue;  // never valid (valid() below)
+      least_tiles = std::min(least_tiles, std::uint64_t(o.cells) - std::min(std::uint64_t(o.cells), BadCells::most(may_miss)));
+      square_rows = std::max(square_rows, r.hi.y - r.lo.y + 1);
+      square_columns = std::max(square_columns, r.hi.x - r.lo.x + 1);
     }
-    for (int x = scan.lo.x; x <= scan.hi.x; ++x) {
+  // The tiles are counted over the scan's box grown to hold every cell a square around a centre searched reads (by
+  // bands; the grid's whole otherwise).
+  const CellBox count_box = scan.empty() ? scan
+                                         : CellBox{glm::max(scan.lo - std::max(reads_reach - corner_reach, 0), glm::ivec2(0)),
+                                                   glm::min(scan.hi + std::max(reads_reach - corner_reach, 0),
+                                                            glm::ivec2(spec.nx - 1, spec.nz - 1))};
+  // Per layer of several, and past the last layer the tiles one level above it: its first corners in each row and
+  // in each column of count_box, counted by the scan below.
+  const bool counts_tiles = layers > 1 && !count_box.empty();
+  const int count_rows = counts_tiles ? count_box.hi.y - count_box.lo.y + 1 : 0;
+  const int count_columns = counts_tiles ? count_box.hi.x - count_box.lo.x + 1 : 0;
+  std::vector<std::uint32_t> row_tiles(std::size_t(layers + 1) * std::size_t(count_rows), 0);
+  std::vector<std::uint32_t> column_tiles(std::size_t(layers + 1) * std::size_t(count_columns), 0);
+  // The most tiles of a layer (its first corners and, for furniture, the level above's) in `run` rows (or columns)
+  // in a row of count_box's: `counts` and `lines` are row_tiles and count_rows, or column_tiles and count_columns.
+  const auto most_in_run = [&](const std::vector<std::uint32_t>& counts, int lines, int layer, int run) {
+    const std::uint32_t* own = counts.data() + std::size_t(layer) * std::size_t(lines);
+    const std::uint32_t* above = surface == Surface::Furniture ? own + lines : nullptr;
+    const auto at = [&](int k) { return own[k] + (above ? above[k] : 0u); };
+    std::uint32_t sum = 0, most = 0;
+    for (int k = 0; k < lines; ++k) {
+      sum += at(k);
+      if (k >= run) sum -= at(k - run);
+      most = std::max(most, sum);
+    }
+    return most;
+  };
+  // Whether no centre searched can hold a square at the layer, so that the layer is not searched: where no
+  // square_rows rows (or square_columns columns) in a row hold least_tiles of its tiles; or where none of
+  // floor(2 inner_half) + 1 hold the tiles the inner box below needs (w x h cells, each at least floor(2 inner_half)
+  // and at most one more, all but most_missing of them tiles). Most furniture tops hold no large square; and by
+  // bands, a change away from every large top does not search the large squares' layers (on a HoloLens 2 home, a
+  // re-sent block's large furniture search had found none, at up to a millisecond).
+  const auto no_square = [&](int layer) {
+    if (!counts_tiles) return false;
+    const auto most = [&](int rows, int columns) {
+      return std::min(most_in_run(row_tiles, count_rows, layer, rows), most_in_run(column_tiles, count_columns, layer, columns));
+    };
+    if (least_tiles != std::numeric_limits<std::uint64_t>::max() && most(square_rows, square_columns) < least_tiles) return true;
+    if (inner_half < 0.0) return false;
+    const double side = std::floor(2.0 * inner_half);
+    return side * side - double(most(int(side) + 1, int(side) + 1)) > most_missing;
+  };
+  const auto count_tile = [&](int layer, int x, int z) {
+    ++row_tiles[std::size_t(layer) * std::size_t(count_rows) + std::size_t(z - count_box.lo.y)];
+    ++column_tiles[std::size_t(layer) * std::size_t(count_columns) + std::size_t(x - count_box.lo.x)];
+  };
+  // A floor's, a flat ceiling's first corners: each row's first and last alone.
+  for (int z = scan.lo.y; z <= scan.hi.y && layers == 1; ++z) {
+    int first = scan.lo.x, last = scan.hi.x;
+    while (first <= last && layer_of(spec.column(first, z)) != 0) ++first;
+    if (first > last) continue;
+    while (layer_of(spec.column(last, z)) != 0) --last;
+    CellBox& b = first_box[0];
+    b.lo = glm::min(b.lo, glm::ivec2(first, z)), b.hi = glm::max(b.hi, glm::ivec2(last, z));
+  }
+  // Several layers' first corners within the scan's box, and their tiles within count_box (which holds it).
+  const auto in_scan = [&](int x, int z) { return x >= scan.lo.x && x <= scan.hi.x && z >= scan.lo.y && z <= scan.hi.y; };
+  for (int z = count_box.lo.y; z <= count_box.hi.y && layers > 1; ++z)
+    for (int x = count_box.lo.x; x <= count_box.hi.x; ++x) {
       const std::size_t col = spec.column(x, z);
       const int layer = layer_of(col);
-      if (!kBanded && surface == Surface::Furniture && features.furniture[col] == y_to + 1) ++layer_tiles.back();
+      if (surface == Surface::Furniture && features.furniture[col] == y_to + 1) count_tile(layers, x, z);
       if (layer < 0 || layer >= layers) continue;
-      if (!kBanded) ++layer_tiles[std::size_t(layer)];
+      count_tile(layer, x, z);
+      if (!in_scan(x, z)) continue;
       CellBox& b = first_box[std::size_t(layer)];
       b.lo = glm::min(b.lo, glm::ivec2(x, z)), b.hi = glm::max(b.hi, glm::ivec2(x, z));
     }
-  }
   CellBox cleared;  // the rows of the bits set since they were last cleared
   // Per column of a layer's region: a first corner, a tile (a first corner, or raised: one level up, §3.3.4), a wall.
   enum CellKind : std::uint8_t { kFirst = 1, kTile = 2, kRaised = 4, kWall = 8 };

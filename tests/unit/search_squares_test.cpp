@@ -1,8 +1,9 @@
 // search_squares (core/src/areas/search_squares.cpp, internal) skips a layer of several (furniture's levels) where
-// no centre can hold a square: too few of the layer's tiles lie in any run of rows, or of columns, that the inner box
-// every square holds (Eq. 3.30-3.38's fill over it) would span. Skipping must never lose a square: a top is searched
-// alone, where the rule may skip its layer, and beside a large top at the same level far off, which keeps every
-// run full and the layer searched; the small top's squares must be the same in both.
+// no centre can hold a square: where no run of rows (or of columns) as long as a square's cells span holds the tiles
+// the fewest-tiled valid square needs (Eq. 3.30-3.38: all but the cells its fill may miss), or no run as long as the
+// inner box every square holds spans holds that box's. Skipping must never lose a square: a top is searched alone,
+// where the rule may skip its layer, and beside a large top at the same level far off, which keeps every run full
+// and the layer searched; the small top's squares must be the same in both.
 #include "../../core/src/areas/search.h"
 
 #include "roomsense/features.h"
@@ -31,7 +32,9 @@ TEST(SquareSearch, ALayerIsSkippedOnlyWhereItHoldsNoSquare) {
     for (int z = lo.y; z <= hi.y; ++z)
       for (int x = lo.x; x <= hi.x; ++x) f.furniture[s.column(x, z)] = level;
   };
-  const SizeRange range{10.0, 12.0};  // the rule's inner box: floor(2 (10 / 2 sqrt 2 - 0.5)) = 6 cells a side
+  // Squares 10 to 12 voxels a side: the fewest-tiled valid one needs about 0.95 x 11² tiles; the inner box is
+  // floor(2 (10 / 2 sqrt 2 - 0.5)) = 6 cells a side.
+  const SizeRange range{10.0, 12.0};
   const glm::ivec2 small_lo(8, 8);
   std::size_t found_on_small = 0;
   // Tops from too small for any square to large enough for several, square and long, some with holes.
@@ -59,7 +62,7 @@ TEST(SquareSearch, ALayerIsSkippedOnlyWhereItHoldsNoSquare) {
         found_on_small += alone.size();
       }
     }
-  EXPECT_GT(found_on_small, 0u);  // the tops near the rule's edge hold squares, and the rule kept them
+  EXPECT_GT(found_on_small, 0u);  // the tops past the rule's edge hold squares, and the rule kept them
 }
 
 }  // namespace

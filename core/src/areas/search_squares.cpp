@@ -201,10 +201,11 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     return spans;
   };
   const std::vector<glm::ivec2> inner_x = inner_spans(spec.nx), inner_z = inner_spans(spec.nz);
+  // Eq. 3.30-3.38: the cells a square of offset o may leave unsuitable and still be valid; negative where none is.
+  const auto may_miss_of = [&](const RingOffset& o) { return double(o.cells) - double(fill) * (o.d + 1.0) * (o.d + 1.0); };
   double most_missing = -1.0;
   for (const auto& parity : by_parity)
-    for (const RingOffset* o : parity)
-      most_missing = std::max(most_missing, double(o->cells) - double(fill) * (o->d + 1.0) * (o->d + 1.0));
+    for (const RingOffset* o : parity) most_missing = std::max(most_missing, may_miss_of(*o));
   const int corner_reach = roomsense::detail::corner_reach(size);
   // Per layer, the centres that already have a square at its level: those of the layer below's squares that rise
   // into it (y_actual for furniture, Eq. 3.41). A layer's own squares at its level need no mark: each centre is
@@ -287,7 +288,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       const Reads& r = reads[std::size_t(p)][i];
       reads_reach = std::max({reads_reach, -r.lo.x, -r.lo.y, r.hi.x, r.hi.y});
       const RingOffset& o = *by_parity[std::size_t(p)][i];
-      const double may_miss = double(o.cells) - double(fill) * (o.d + 1.0) * (o.d + 1.0);
+      const double may_miss = may_miss_of(o);
       if (may_miss < 0.0) continue;  // never valid (valid() below)
       least_tiles = std::min(least_tiles, std::uint64_t(o.cells) - std::min(std::uint64_t(o.cells), BadCells::most(may_miss)));
       square_rows = std::max(square_rows, r.hi.y - r.lo.y + 1);
@@ -482,7 +483,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
     // suitable; otherwise count them, giving up once more cells are unsuitable than the 95 % allow. Returns
     // whether it is valid, and in `rises` whether a cell is one level higher (y_Actual, Eq. 3.41).
     const auto valid = [&](int x1, int z1, const RingOffset& o, bool& rises) {
-      const double may_miss = double(o.cells) - double(fill) * (o.d + 1.0) * (o.d + 1.0);
+      const double may_miss = may_miss_of(o);
       if (may_miss < 0.0) return false;
       const std::uint64_t most_bad = BadCells::most(may_miss);
       rises = false;

@@ -284,9 +284,13 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
         return;
       }
     const detail::AnalysisCaches::StoreyCounts* kept = nullptr;
-    if (caches && !changed.empty() && caches->counts_serial + 1 == serial)
-      for (const detail::AnalysisCaches::StoreyCounts& last : caches->storey_counts)
-        if (last.levels == fc && last.counts.size() == spec.column_count()) kept = &last;
+    if (caches && !changed.empty() && caches->counts_serial + 1 == serial) {
+      const auto& last = caches->storey_counts;
+      const auto same = std::find_if(last.begin(), last.end(), [&](const detail::AnalysisCaches::StoreyCounts& c) {
+        return c.levels == fc && c.counts.size() == spec.column_count();
+      });
+      if (same != last.end()) kept = &*same;
+    }
     if (kept) {
       counts = kept->counts, any = kept->any;
       detail::count_columns_again(r.voxels.grid, fc, changed, counts, any);

@@ -273,6 +273,89 @@ TEST(PrepareInput, QuantileGuessesChangeTheWorkNotTheRanges) {
   }
 }
 
+// An IncrementalAnalysis's input checks keep each chunk's share of the outlier sample (QuantileGuess::parts): where
+// the bounds serve, a chunk's tails are read again only where it changed or moved to a new place in the sample. Parts
+// grow, shrink, move and change under one guess, and a vertex at the upper range's end (kept) and a float's step past
+// it (an outlier) are told apart as the whole scan's sample tells them, every step.
+TEST(PrepareInput, PartSamplesKeptBetweenChecksGiveTheSameOutliers) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> uniform(0.0f, 10.0f);
+  std::uniform_int_distribution<int> size_of(1500, 4500);
+  // `high`: a part with many values past the rest on x, which moves the upper quantile past the bounds kept.
+  const auto make_part = [&](int high = 12) {
+    std::vector<glm::vec3> part(std::size_t(size_of(random)));
+    for (glm::vec3& v : part) v = {uniform(random), uniform(random), uniform(random)};
+    // A few values past the rest on x, sampled or not by where the part lies: the upper quantile moves with them.
+    const std::size_t n = std::min(part.size(), std::size_t(high));
+    for (std::size_t j = 0; j < n; ++j) part[j * part.size() / n].x = 10.0f + 0.5f * uniform(random);
+    return part;
+  };
+  std::vector<std::vector<glm::vec3>> parts(30);
+  std::vector<detail::PartKey> keys(parts.size());
+  std::uint64_t version = 0;
+  for (std::size_t p = 0; p < parts.size(); ++p) parts[p] = make_part(), keys[p] = {100 + p, ++version};
+  detail::QuantileGuess kept;
+  std::size_t tails_reused = 0, served = 0, bounds_moved = 0;
+  for (int step = 0; step < 24; ++step) {
+    // A part in front, one in the middle or the last changes (its size too: the parts after it move in the sample).
+    const std::size_t p = step % 3 == 0 ? 0 : step % 3 == 1 ? parts.size() / 2 : parts.size() - 1;
+    if (step > 0) parts[p] = make_part(step == 12 ? 5000 : 12), keys[p].hash = ++version;
+    std::size_t count = 0;
+    for (const auto& part : parts) count += part.size();
+    const std::size_t stride = count / 16384;
+    ASSERT_GE(stride, 3u);
+    // The whole scan's ranges of x: its sample's quantiles.
+    std::vector<float> v;
+    std::size_t at = 0;
+    for (const auto& part : parts)
+      for (const glm::vec3& q : part) v.push_back(q.x), ++at;
+    std::vector<float> sample;
+    for (std::size_t i = 0; i < v.size(); i += stride) sample.push_back(v[i]);
+    std::sort(sample.begin(), sample.end());
+    const std::size_t k = std::max<std::size_t>(1, std::size_t(double(sample.size() - 1) * kOutlierQuantile));
+    const float lo = sample[k], hi = sample[sample.size() - 1 - k];
+    const float upper = hi + std::max(kOutlierMinMargin, hi - lo);
+    // The probe: the last part's last vertex that the sample does not take, at the range's end or just past it.
+    std::vector<glm::vec3>& last = parts.back();
+    std::size_t probe = last.size() - 1;
+    while ((count - last.size() + probe) % stride == 0) --probe;
+    const glm::vec3 before = last[probe];
+    for (const bool past : {false, true}) {
+      last[probe].x = past ? std::nextafter(upper, INFINITY) : upper;
+      keys.back().hash = ++version;
+      std::vector<std::span<const glm::vec3>> spans;
+      detail::KnownInput known;
+      known.indices_in_range = true;
+      for (const auto& part : parts) spans.emplace_back(part), known.runs.push_back(detail::summarize_vertices(part));
+      const detail::QuantileGuess kept_before = kept;
+      const std::optional<PreparedInput> with_parts = detail::check_parts(spans, 0, true, known, 2, &kept, keys);
+      detail::QuantileGuess fresh;
+      const std::optional<PreparedInput> without = detail::check_parts(spans, 0, true, known, 2, &fresh);
+      EXPECT_EQ(with_parts.has_value(), !past) << step;
+      EXPECT_EQ(without.has_value(), !past) << step;
+      // Where the bounds served, every part's tails of every axis were summed; those of a part that neither
+      // changed nor moved were the kept ones (against the bounds kept: not after the bounds moved).
+      bounds_moved += kept_before.axes != kept.axes && step > 0;
+      if (kept_before.axes == kept.axes && step > 0) {
+        ++served;
+        ASSERT_EQ(kept.parts.size(), parts.size());
+        for (std::size_t q = 0; q + 1 < parts.size(); ++q) {
+          const detail::PartSample& now = kept.parts.at(keys[q].id).front();
+          for (const auto& tails : now.tails) EXPECT_TRUE(tails.has_value()) << step << " " << q;
+          if (kept_before.parts.count(keys[q].id))
+            for (const detail::PartSample& was : kept_before.parts.at(keys[q].id))
+              tails_reused += was.hash == now.hash && was.first == now.first && was.tails[0] && now.tails[0] &&
+                              was.tails[0]->lower == now.tails[0]->lower && was.tails[0]->below == now.tails[0]->below;
+        }
+      }
+    }
+    last[probe] = before;
+  }
+  EXPECT_GT(tails_reused, 200u);
+  EXPECT_GT(served, 30u);
+  EXPECT_GT(bounds_moved, 0u);
+}
+
 // A large scan's input checks run on slices side by side (analyze's threads): the first bad index still names
 // the error, and the non-finite vertices and bounds are counted over every slice.
 TEST(PrepareInput, ChecksOnSeveralThreadsNameTheFirstBadIndex) {

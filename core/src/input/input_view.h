@@ -5,6 +5,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <map>
 #include <optional>
 #include <span>
 #include <utility>
@@ -45,8 +47,34 @@ struct KnownInput {
 // two: the selection tries them before it samples bounds afresh. The values' counts decide whether they serve,
 // so a guess changes the work, never the ranges.
 using QuantileBounds = std::optional<std::pair<float, float>>;
+// One axis's sampled values against bounds low <= high (QuantileBounds): how many lie below low, above high and at
+// each, and the values below and above, in sample order (where more lie past a bound than the selection gathers,
+// some of them).
+struct SampleTails {
+  float low = 0.0f, high = 0.0f;
+  std::uint32_t below = 0, above = 0, low_ties = 0, high_ties = 0;
+  std::vector<float> lower, upper;
+};
+// A part's share of the outlier sample (every stride-th vertex of the parts end to end, from its vertex `first` on):
+// each axis's tails against the bounds last tried there, where known.
+struct PartSample {
+  std::uint64_t hash = 0;
+  std::size_t stride = 0, first = 0;
+  std::array<std::optional<SampleTails>, 3> tails;
+};
+// A part's name and content (an IncrementalAnalysis's chunk id and hash): a part kept under the same id and hash
+// holds the same vertices.
+struct PartKey {
+  std::uint64_t id = 0, hash = 0;
+};
 struct QuantileGuess {
   std::array<QuantileBounds, 3> axes;
+  // Where check_parts is given the parts' keys: by part id, its samples at the last few places the sample took it
+  // from (a part moves in the sample where one before it changes its vertex count: an object set down and taken
+  // away moves the rest by turns), the latest first. Where the bounds serve, an analysis reads the vertices of the
+  // parts that changed or moved to a new place, not a sample of every part's: a strided read of a room's every chunk
+  // was a tenth of an added object's update (cache misses, not instructions).
+  std::map<std::uint64_t, std::vector<PartSample>> parts;
 };
 
 // prepare_input's checks and errors; the views are valid while `scan` and the result live. `known`, where not
@@ -59,8 +87,9 @@ InputView view_input(const Scan& scan, bool reject_outliers, const KnownInput* k
 // indices, all known in range, and a run per part (`known`): its errors, and where nothing is to be removed its
 // counts and bounds, with the outlier ranges view_input finds (their sample walks the parts as one array). Where a
 // vertex is to be removed (not finite, or an outlier), std::nullopt: view_input of the whole scan renumbers.
+// `keys`, a key per part where given, with a guess: the guess's part samples serve and are kept (QuantileGuess).
 std::optional<PreparedInput> check_parts(std::span<const std::span<const glm::vec3>> parts, std::size_t index_count,
                                          bool reject_outliers, const KnownInput& known, unsigned threads = 1,
-                                         QuantileGuess* guess = nullptr);
+                                         QuantileGuess* guess = nullptr, std::span<const PartKey> keys = {});
 
 }  // namespace roomsense::detail

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,6 +23,60 @@ constexpr std::uint32_t kExponentBits = 0x7f800000u;
 bool finite(float f) { return (std::bit_cast<std::uint32_t>(f) & kExponentBits) != kExponentBits; }
 bool finite(const glm::vec3& v) { return int(finite(v.x)) + int(finite(v.y)) + int(finite(v.z)) == 3; }
 
+// How many values of a sample lie below `low`, above `high`, and at each.
+struct TailCounts {
+  std::uint32_t below = 0, above = 0, low_ties = 0, high_ties = 0;  // 32 bits: four lanes to a register
+  TailCounts& operator+=(const TailCounts& o) {
+    below += o.below, above += o.above, low_ties += o.low_ties, high_ties += o.high_ties;
+    return *this;
+  }
+};
+TailCounts count_tails(std::span<const float> v, float low, float high) {
+  TailCounts c;
+  for (const float x : v) {
+    c.below += x < low;
+    c.above += x > high;
+    c.low_ties += x == low;
+    c.high_ties += x == high;
+  }
+  return c;
+}
+
+// The k-th smallest and largest of a sample from its counts against bounds low <= high: where more than k but at
+// most `most` values lie past a bound, the k-th of those (`gather(lower, upper)` gives the values below low and
+// above high, at least their counts' many, those first); where more than k lie past a bound only with its ties, the
+// bound; else none.
+template <class Gather>
+void pick_tails(const TailCounts& c, float low, float high, std::size_t k, std::size_t most, Gather gather,
+                std::optional<float>& lo, std::optional<float>& hi) {
+  const bool gather_below = c.below > k && c.below <= most, gather_above = c.above > k && c.above <= most;
+  std::vector<float> lower, upper;
+  if (gather_below || gather_above) gather(lower, upper);
+  if (gather_below) {
+    std::nth_element(lower.begin(), lower.begin() + std::ptrdiff_t(k), lower.begin() + std::ptrdiff_t(c.below));
+    lo = lower[k];
+  } else if (c.below <= k && c.below + c.low_ties > k) {
+    lo = low;
+  }
+  if (gather_above) {
+    std::nth_element(upper.begin(), upper.begin() + std::ptrdiff_t(k), upper.begin() + std::ptrdiff_t(c.above),
+                     std::greater<float>());
+    hi = upper[k];
+  } else if (c.above <= k && c.above + c.high_ties > k) {
+    hi = high;
+  }
+}
+
+// both_tails's bounds are first sampled from every kStride-th value of the sample, at about twice k's share of it;
+// a guess serves where each tail has at most twice the values past it that those leave.
+constexpr std::size_t kStride = 8;
+std::size_t sample_rank_of(std::size_t k) { return 2 * (k / kStride) + 8; }
+std::size_t guess_most_of(std::size_t k) { return 2 * (sample_rank_of(k) + 1) * kStride; }
+// Whether both_tails tries bounds (a guess, then sampled ones) on n values, for rank k.
+bool tries_bounds(std::size_t n, std::size_t k) {
+  return n >= 64 * kStride && 4 * sample_rank_of(k) < n / kStride && n <= std::numeric_limits<std::uint32_t>::max();
+}
+
 // The k-th smallest and the k-th largest value (from 0) of `v`, as std::nth_element finds them. For a k near the
 // ends, bounds from every 8th value first; then one pass counts the values past each bound and at it (it
 // vectorizes), and a second gathers the few past a bound where more than k are. Where more than k values lie
@@ -31,25 +86,16 @@ bool finite(const glm::vec3& v) { return int(finite(v.x)) + int(finite(v.y)) + i
 // chunk); the counts decide whether they serve, so a guess changes the work, never the values. It receives the
 // bounds that served.
 std::pair<float, float> both_tails(std::span<float> v, std::size_t k, detail::QuantileBounds* guess) {
-  constexpr std::size_t kStride = 8;
-  const std::size_t n = v.size(), sample_rank = 2 * (k / kStride) + 8;  // about twice k's share of the sample
+  const std::size_t n = v.size(), sample_rank = sample_rank_of(k);
   std::optional<float> lo, hi;
   // lo and hi from bounds low <= high: those of them that `most` or fewer values past a bound give.
   const auto from_bounds = [&](float low_bound, float high_bound, std::size_t most) {
-    std::uint32_t below = 0, above = 0, low_ties = 0, high_ties = 0;  // 32 bits: four lanes to a register
-    for (const float x : v) {
-      below += x < low_bound;
-      above += x > high_bound;
-      low_ties += x == low_bound;
-      high_ties += x == high_bound;
-    }
-    const bool gather_below = below > k && below <= most, gather_above = above > k && above <= most;
     // The values past either bound, where more than k lie past one: by blocks of 16, most of which hold none of
     // them, a test of the block (it vectorizes), then its values without a branch (each written, then kept by
     // moving on: where they lie in a block is not predictable), into one slot more than there are.
-    std::vector<float> lower, upper;
-    if (gather_below || gather_above) {
-      lower.resize(std::size_t(below) + 1), upper.resize(std::size_t(above) + 1);
+    const TailCounts counts = count_tails(v, low_bound, high_bound);
+    pick_tails(counts, low_bound, high_bound, k, most, [&](std::vector<float>& lower, std::vector<float>& upper) {
+      lower.resize(std::size_t(counts.below) + 1), upper.resize(std::size_t(counts.above) + 1);
       constexpr std::size_t kBlock = 16;
       float* l = lower.data();
       float* u = upper.data();
@@ -64,25 +110,11 @@ std::pair<float, float> both_tails(std::span<float> v, std::size_t k, detail::Qu
           *u = x, u += x > high_bound;
         }
       }
-    }
-    if (gather_below) {
-      std::nth_element(lower.begin(), lower.begin() + std::ptrdiff_t(k), lower.begin() + std::ptrdiff_t(below));
-      lo = lower[k];
-    } else if (below <= k && below + low_ties > k) {
-      lo = low_bound;
-    }
-    if (gather_above) {
-      std::nth_element(upper.begin(), upper.begin() + std::ptrdiff_t(k), upper.begin() + std::ptrdiff_t(above),
-                       std::greater<float>());
-      hi = upper[k];
-    } else if (above <= k && above + high_ties > k) {
-      hi = high_bound;
-    }
+    }, lo, hi);
   };
-  if (n >= 64 * kStride && 4 * sample_rank < n / kStride && n <= std::numeric_limits<std::uint32_t>::max()) {
-    // A guess serves where each tail has at most about twice the values past it that the sample's bounds leave.
+  if (tries_bounds(n, k)) {
     if (guess && *guess && (*guess)->first <= (*guess)->second) {
-      from_bounds((*guess)->first, (*guess)->second, 2 * (sample_rank + 1) * kStride);
+      from_bounds((*guess)->first, (*guess)->second, guess_most_of(k));
       if (!lo || !hi) lo.reset(), hi.reset();
     }
     if (!lo) {
@@ -110,14 +142,24 @@ std::pair<float, float> both_tails(std::span<float> v, std::size_t k, detail::Qu
   return {*lo, *hi};
 }
 
+// The rank of the quantiles in a sample of n values, at least 1: at 200 vertices, the fewest the test takes, (n - 1) q
+// rounds down to 0, and a lone stray vertex would be its own quantile, never rejected.
+std::size_t quantile_rank(std::size_t n) { return std::max<std::size_t>(1, std::size_t(double(n - 1) * kOutlierQuantile)); }
+// An axis's outlier range from its quantiles, widened by the outlier margin.
+std::pair<float, float> widened(float lo, float hi) {
+  const float margin = std::max(kOutlierMinMargin, hi - lo);
+  return {lo - margin, hi + margin};
+}
+
 // The [q, 1-q] quantiles of each axis over the kept vertices, widened by the outlier margin. Quantiles of an evenly
 // strided sample of at most kQuantileSample vertices are as good for this and keep large scans cheap.
 constexpr std::size_t kQuantileSample = 16384;
+std::size_t stride_of(std::size_t count) { return std::max<std::size_t>(1, count / kQuantileSample); }
 // Each axis's values of that sample: vertex j * stride is sample j (of those kept, in order, where some are not).
 struct AxisSample {
   // Not zeroed first: every value is written (a 76k-vertex scan's three are 0.23 MB, and their clearing was 1 % of
   // an added object's update).
-  explicit AxisSample(std::size_t count) : stride(std::max<std::size_t>(1, count / kQuantileSample)), size((count + stride - 1) / stride) {
+  explicit AxisSample(std::size_t count) : stride(stride_of(count)), size((count + stride - 1) / stride) {
     for (std::unique_ptr<float[]>& axis : values) axis = std::make_unique_for_overwrite<float[]>(size);
   }
   // The samples among vertices [begin, end) of `all` (every vertex kept).
@@ -133,12 +175,8 @@ struct AxisSample {
 std::pair<float, float> axis_range(const AxisSample& sample, int axis, detail::QuantileBounds* guess) {
   const std::span<float> v(sample.values[std::size_t(axis)].get(), sample.size);
   if (v.empty()) return {-INFINITY, INFINITY};
-  // The k-th smallest and the k-th largest (from 0), k at least 1: at 200 vertices, the fewest the test takes,
-  // (n - 1) q rounds down to 0, and a lone stray vertex would be its own quantile, never rejected.
-  const std::size_t k = std::max<std::size_t>(1, std::size_t(double(v.size() - 1) * kOutlierQuantile));
-  const auto [lo, hi] = both_tails(v, k, guess);
-  const float margin = std::max(kOutlierMinMargin, hi - lo);
-  return {lo - margin, hi + margin};
+  const auto [lo, hi] = both_tails(v, quantile_rank(v.size()), guess);
+  return widened(lo, hi);
 }
 
 // The ranges over the kept vertices (`keep` empty: all), the axes side by side. The sample is gathered in one pass
@@ -177,6 +215,73 @@ std::array<std::pair<float, float>, 3> robust_ranges(std::span<const std::span<c
   detail::parallel_tasks(3, threads, [&](std::size_t axis) {
     ranges[axis] = axis_range(sample, int(axis), guess ? &guess->axes[axis] : nullptr);
   });
+  return ranges;
+}
+
+// robust_ranges of parts with keys (every vertex kept), from the guess's part samples (QuantileGuess::parts) where
+// the guess's bounds serve on every axis: a part's tails are read again only where it is new, changed, or at a place
+// in the sample not kept, and the tails of all are summed. Where a guess does not serve, none: robust_ranges samples
+// them all (and finds the bounds again). Keeps each part's samples in the guess either way.
+std::optional<std::array<std::pair<float, float>, 3>> ranges_from_part_samples(
+    std::span<const std::span<const glm::vec3>> parts, std::span<const detail::PartKey> keys, detail::QuantileGuess& guess) {
+  constexpr std::size_t kPlacesKept = 4;
+  std::size_t count = 0;
+  for (const std::span<const glm::vec3> part : parts) count += part.size();
+  const std::size_t stride = stride_of(count), n = (count + stride - 1) / stride, k = quantile_rank(n);
+  // Each part's sample at its place now: the guess's where its content and place are as before.
+  std::map<std::uint64_t, std::vector<detail::PartSample>> kept = std::move(guess.parts);
+  guess.parts.clear();
+  std::vector<detail::PartSample*> samples;
+  samples.reserve(parts.size());
+  std::size_t begin = 0;  // the part's first vertex among all
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    const std::size_t first = (stride - begin % stride) % stride;
+    begin += parts[p].size();
+    const auto [at, added] = guess.parts.try_emplace(keys[p].id);
+    if (!added) return std::nullopt;  // two parts under one id: neither's is known
+    std::vector<detail::PartSample>& places = at->second;
+    places.push_back({keys[p].hash, stride, first, {}});
+    if (const auto it = kept.find(keys[p].id); it != kept.end())
+      for (detail::PartSample& before : it->second) {
+        if (before.hash != keys[p].hash || before.stride != stride) continue;
+        if (before.first == first) places.front() = std::move(before);
+        else if (places.size() < kPlacesKept) places.push_back(std::move(before));
+      }
+    samples.push_back(&places.front());
+  }
+  if (!tries_bounds(n, k)) return std::nullopt;
+  std::array<std::pair<float, float>, 3> ranges;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    const detail::QuantileBounds& bounds = guess.axes[axis];
+    if (!bounds || bounds->first > bounds->second) return std::nullopt;
+    const float low = bounds->first, high = bounds->second;
+    const std::size_t most = guess_most_of(k);
+    TailCounts total;
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+      std::optional<detail::SampleTails>& tails = samples[p]->tails[axis];
+      if (!tails || tails->low != low || tails->high != high) {
+        // A part's values past a bound are gathered only as long as the whole sample's may be (at most `most`).
+        tails = detail::SampleTails{low, high, 0, 0, 0, 0, {}, {}};
+        for (std::size_t i = samples[p]->first; i < parts[p].size(); i += stride) {
+          const float x = parts[p][i][int(axis)];
+          tails->below += x < low, tails->above += x > high, tails->low_ties += x == low, tails->high_ties += x == high;
+          if (x < low && tails->lower.size() <= most) tails->lower.push_back(x);
+          if (x > high && tails->upper.size() <= most) tails->upper.push_back(x);
+        }
+      }
+      total += {tails->below, tails->above, tails->low_ties, tails->high_ties};
+    }
+    std::optional<float> lo, hi;
+    pick_tails(total, low, high, k, most, [&](std::vector<float>& lower, std::vector<float>& upper) {
+      for (const detail::PartSample* sample : samples) {
+        const detail::SampleTails& tails = *sample->tails[axis];
+        lower.insert(lower.end(), tails.lower.begin(), tails.lower.end());
+        upper.insert(upper.end(), tails.upper.begin(), tails.upper.end());
+      }
+    }, lo, hi);
+    if (!lo || !hi) return std::nullopt;
+    ranges[axis] = widened(*lo, *hi);
+  }
   return ranges;
 }
 
@@ -457,7 +562,7 @@ VertexRun summarize_vertices(std::span<const glm::vec3> vertices) {
 
 std::optional<PreparedInput> check_parts(std::span<const std::span<const glm::vec3>> parts, std::size_t index_count,
                                          bool reject_outliers, const KnownInput& known, unsigned threads,
-                                         QuantileGuess* guess) {
+                                         QuantileGuess* guess, std::span<const PartKey> keys) {
   PreparedInput out;
   std::size_t vertex_count = 0;
   for (const std::span<const glm::vec3> part : parts) vertex_count += part.size();
@@ -470,7 +575,9 @@ std::optional<PreparedInput> check_parts(std::span<const std::span<const glm::ve
   }
   if (finite_count != vertex_count) return std::nullopt;  // a vertex to skip: check_input renumbers
   if (reject_outliers && finite_count >= kOutlierMinVertices) {
-    const std::array<std::pair<float, float>, 3> range = robust_ranges(parts, {}, threads, guess);
+    std::optional<std::array<std::pair<float, float>, 3>> from_parts;
+    if (guess && keys.size() == parts.size()) from_parts = ranges_from_part_samples(parts, keys, *guess);
+    const std::array<std::pair<float, float>, 3> range = from_parts ? *from_parts : robust_ranges(parts, {}, threads, guess);
     for (const VertexRun& run : known.runs)
       if (!run_inside(run, range)) return std::nullopt;  // an outlier: check_input renumbers
   }

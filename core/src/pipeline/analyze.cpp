@@ -190,8 +190,11 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     std::vector<std::span<const glm::vec3>> parts;
     parts.reserve(chunks->chunks.size());
     for (const Scan* chunk : chunks->chunks) parts.emplace_back(chunk->vertices);
+    std::vector<detail::PartKey> keys;
+    keys.reserve(chunks->placed.size());
+    for (const CombinedScan::Placed& p : chunks->placed) keys.push_back({p.id, p.hash});
     parts_checked = detail::check_parts(parts, chunks->end.index, options.reject_outliers, chunks->known,
-                                        options.threads, &caches->quantiles);
+                                        options.threads, &caches->quantiles, keys);
   }
   if (parts_checked) in.checked = std::move(*parts_checked);
   else in = detail::view_input(chunks ? chunks->whole(options.threads) : scan, options.reject_outliers,

@@ -4,6 +4,7 @@
 // Open addressing with linear probing, so a lookup is a multiply and a probe or two, and an insert allocates only
 // when the table doubles (std::unordered_map allocated a node per entry).
 #pragma once
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <vector>
@@ -39,6 +40,11 @@ class KeyTable {
   }
 
   std::size_t size() const { return size_; }
+  // No key, its slots kept: a table made again each update (the bounds mesh's vertices) allocates no fresh pages.
+  void clear() {
+    std::fill(keys_.begin(), keys_.end(), kEmpty);
+    size_ = 0;
+  }
   // Room for n keys without growing.
   void reserve(std::size_t n) {
     std::size_t slots = keys_.empty() ? 1024 : keys_.size();
@@ -99,6 +105,7 @@ class FirstIndex {
   static constexpr std::uint32_t kAbsent = KeyTable::kAbsent;
 
   void reserve(std::size_t n) { table_.reserve(n); }
+  void clear() { table_.clear(); }
   bool empty() const { return table_.size() == 0; }
   // The first index of the value `is` tells equal, whose hash is `hash`; kAbsent where there is none.
   template <class Is>

@@ -327,8 +327,10 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
           holes.fills(x, z, fill);
         }
     for (const std::size_t i : fill) kept[i] = 1;
-    volume = kept;
+    volume = std::exchange(memo->spare, {});
+    volume.assign(kept.begin(), kept.end());
   } else {
+    if (memo) volume = std::exchange(memo->spare, {});
     volume.assign(s.voxel_count(), 0);
     detail::parallel_for(s.column_count(), threads, detail::kColumnGrain, [&](std::size_t begin, std::size_t end, std::size_t) {
       for (std::size_t col = begin; col < end; ++col) write_column(volume, col);
@@ -604,8 +606,12 @@ std::vector<std::uint8_t> detail::bounds_volume(const VoxelGrid& grid, std::span
                                                    memo ? &memo->storey_volumes[k] : nullptr, changed ? &*changed : nullptr);
     // By iterators: a loop over volume[i] reloads the vector's size and data after each byte it stores (a byte
     // may alias them), and is not vectorized.
-    if (volume.empty()) volume = std::move(part);
-    else std::transform(volume.begin(), volume.end(), part.begin(), volume.begin(), std::bit_or<>());
+    if (volume.empty()) {
+      volume = std::move(part);
+    } else {
+      std::transform(volume.begin(), volume.end(), part.begin(), volume.begin(), std::bit_or<>());
+      if (memo) memo->storey_volumes[k].give_back(std::move(part));
+    }
     stop_point(stop);
   }
   if (volume.empty()) volume.assign(grid.spec.voxel_count(), 0);
@@ -678,6 +684,8 @@ BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& 
                           storey.levels,
                           storey.y_end,
                           std::bit_cast<std::uint32_t>(params.min_plateau_area)};
+  if (memo) in.cells = std::exchange(memo->spare_cells, {});  // its storage: a room's crop is a megabyte
+  in.cells.clear();
   in.cells.reserve(crop.voxel_count());
   for (int z = 0; z < crop.nz; ++z) {
     const std::uint8_t* row = grid.column_data(x0, z + z0);
@@ -693,8 +701,12 @@ BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& 
   // cells changed: the room's volume is derived again there alone (StoreyVolumeMemo).
   std::optional<std::vector<std::uint8_t>> changed;
   if (memo) {
-    if (memo->room == in) return memo->room_mesh;
+    if (memo->room == in) {
+      memo->spare_cells = std::move(in.cells);
+      return memo->room_mesh;
+    }
     if (memo->room && memo->room->crop == crop) changed = detail::changed_columns(std::size_t(s.ny), memo->room->cells, in.cells);
+    if (memo->room) memo->spare_cells = std::move(memo->room->cells);
     memo->room.reset();  // kept again below, once the mesh is built
   }
   VoxelGrid part;
@@ -709,7 +721,10 @@ BoundsMesh detail::build_room_bounds(const VoxelGrid& grid, const BoundsStorey& 
   in.cells = std::move(part.cells);
   const detail::FilledVolume filled = detail::fill_edge_contacts(crop, volume, threads, memo ? &memo->contacts : nullptr);
   BoundsMesh mesh = detail::mesh_volume(crop, volume, threads, std::move(stop), memo, &filled);
-  if (memo) memo->room = std::move(in), memo->room_mesh = mesh;
+  if (memo) {
+    memo->room_volume.give_back(std::move(volume));
+    memo->room = std::move(in), memo->room_mesh = mesh;
+  }
   return mesh;
 }
 
@@ -723,7 +738,9 @@ BoundsMesh detail::build_bounds(const VoxelGrid& grid, std::span<const BoundsSto
                                 const BoundsParams& params, unsigned threads, std::stop_token stop, MeshMemo* memo) {
   std::vector<std::uint8_t> volume = detail::bounds_volume(grid, storeys, params, threads, stop, memo);
   const detail::FilledVolume filled = detail::fill_edge_contacts(grid.spec, volume, threads, memo ? &memo->contacts : nullptr);
-  return detail::mesh_volume(grid.spec, volume, threads, std::move(stop), memo, &filled);
+  BoundsMesh mesh = detail::mesh_volume(grid.spec, volume, threads, std::move(stop), memo, &filled);
+  if (memo && !memo->storey_volumes.empty()) memo->storey_volumes.front().give_back(std::move(volume));
+  return mesh;
 }
 
 }  // namespace roomsense

@@ -27,6 +27,11 @@ struct StoreyVolumeMemo {
   std::uint32_t min_plateau_area_bits = 0;  // BoundsParams, bit for bit
   std::vector<int> g_found, h_found, g, h;
   std::vector<std::uint8_t> volume;
+  // The storage of the volume this memo gave out last, handed back once read (give_back): the next volume is
+  // written into it. A home's volume is a megabyte, allocated and freed each update: fresh pages, each a page
+  // fault on this project's VM (a SU_Apartment update took 333 of them).
+  std::vector<std::uint8_t> spare;
+  void give_back(std::vector<std::uint8_t>&& storage) { spare = std::move(storage); }
 };
 
 // What fill_edge_contacts kept of the volume it filled last: that volume as it was given (before the fill), each
@@ -77,6 +82,7 @@ class MeshMemo {
     bool operator==(const RoomInputs&) const = default;
   };
   std::optional<RoomInputs> room;  // where the mesh below is a room's
+  std::vector<std::uint8_t> spare_cells;  // the storage of the room's cells before `room`'s (StoreyVolumeMemo::spare)
   BoundsMesh room_mesh;
   StoreyVolumeMemo room_volume;  // the room's volume, derived again only where its crop's cells changed
   // build_bounds's: the grid it read (its spec and cells), and each storey's volume.

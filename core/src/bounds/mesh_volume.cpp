@@ -552,6 +552,7 @@ struct detail::MeshMemo::State {
   Box box{};
   std::array<std::vector<SliceRecord>, 3> slices;  // per axis (kAxes), per slice
   std::optional<SurfaceCorners> corners;           // of `volume`, where found
+  MeshBuilder::MeshPoints index;  // the vertices' index the mesh was built with: its storage, for the next one
 };
 
 detail::MeshMemo::MeshMemo() = default;
@@ -625,6 +626,10 @@ BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint
   });
   BoundsMesh mesh;
   MeshBuilder::MeshPoints index;
+  if (previous) {  // its storage (a home's index is a megabyte: fresh pages each update, each a page fault)
+    index = std::move(previous->index);
+    index.first.clear(), index.points.clear();
+  }
   // Room for every part's points at once (at most that many vertices): grown part by part, the index was
   // built again at each doubling (a home's mesh: 1.7 M instructions an update).
   std::size_t points = 0, indices = 0;
@@ -646,6 +651,7 @@ BoundsMesh detail::mesh_volume(const GridSpec& spec, const std::vector<std::uint
     }
     next->spec = spec, next->box = box;
     if (corners) next->corners = std::move(corners);
+    next->index = std::move(index);
     memo->state_ = std::move(next);
   }
   return mesh;

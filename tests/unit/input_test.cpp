@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <set>
 #include <limits>
 
 namespace roomsense {
@@ -282,8 +283,8 @@ TEST(PrepareInput, PartSamplesKeptBetweenChecksGiveTheSameOutliers) {
   std::uniform_real_distribution<float> uniform(0.0f, 10.0f);
   std::uniform_int_distribution<int> size_of(1500, 4500);
   // `high`: a part with many values past the rest on x, which moves the upper quantile past the bounds kept.
-  const auto make_part = [&](int high = 12) {
-    std::vector<glm::vec3> part(std::size_t(size_of(random)));
+  const auto make_part = [&](int high = 12, std::size_t size = 0) {
+    std::vector<glm::vec3> part(size != 0 ? size : std::size_t(size_of(random)));
     for (glm::vec3& v : part) v = {uniform(random), uniform(random), uniform(random)};
     // A few values past the rest on x, sampled or not by where the part lies: the upper quantile moves with them.
     const std::size_t n = std::min(part.size(), std::size_t(high));
@@ -295,15 +296,19 @@ TEST(PrepareInput, PartSamplesKeptBetweenChecksGiveTheSameOutliers) {
   std::uint64_t version = 0;
   for (std::size_t p = 0; p < parts.size(); ++p) parts[p] = make_part(), keys[p] = {100 + p, ++version};
   detail::QuantileGuess kept;
-  std::size_t tails_reused = 0, served = 0, bounds_moved = 0;
+  std::size_t tails_reused = 0, reused_across_strides = 0, served = 0, bounds_moved = 0;
+  std::set<std::size_t> strides;  // the sample's: a part's tails are kept at each
   for (int step = 0; step < 24; ++step) {
     // A part in front, one in the middle or the last changes (its size too: the parts after it move in the sample).
     const std::size_t p = step % 3 == 0 ? 0 : step % 3 == 1 ? parts.size() / 2 : parts.size() - 1;
     if (step > 0) parts[p] = make_part(step == 12 ? 5000 : 12), keys[p].hash = ++version;
+    // From step 16 the last part is large every other step: the sample's stride changes by turns.
+    if (step >= 16) parts.back() = make_part(12, step % 2 == 0 ? 20000 : 2000), keys.back().hash = ++version;
     std::size_t count = 0;
     for (const auto& part : parts) count += part.size();
     const std::size_t stride = count / 16384;
     ASSERT_GE(stride, 3u);
+    strides.insert(stride);
     // The whole scan's ranges of x: its sample's quantiles.
     std::vector<float> v;
     std::size_t at = 0;
@@ -342,10 +347,17 @@ TEST(PrepareInput, PartSamplesKeptBetweenChecksGiveTheSameOutliers) {
         for (std::size_t q = 0; q + 1 < parts.size(); ++q) {
           const detail::PartSample& now = kept.parts.at(keys[q].id).front();
           for (const auto& tails : now.tails) EXPECT_TRUE(tails.has_value()) << step << " " << q;
-          if (kept_before.parts.count(keys[q].id))
-            for (const detail::PartSample& was : kept_before.parts.at(keys[q].id))
-              tails_reused += was.hash == now.hash && was.first == now.first && was.tails[0] && now.tails[0] &&
-                              was.tails[0]->lower == now.tails[0]->lower && was.tails[0]->below == now.tails[0]->below;
+          if (!kept_before.parts.count(keys[q].id)) continue;
+          const std::vector<detail::PartSample>& places = kept_before.parts.at(keys[q].id);
+          for (std::size_t w = 0; w < places.size(); ++w) {
+            const detail::PartSample& was = places[w];
+            const bool reused = was.hash == now.hash && was.stride == now.stride && was.first == now.first &&
+                                was.tails[0] && now.tails[0] && was.tails[0]->lower == now.tails[0]->lower &&
+                                was.tails[0]->below == now.tails[0]->below;
+            tails_reused += reused;
+            // Kept from before the last check's stride (its first place is another stride's).
+            reused_across_strides += reused && w > 0 && places.front().stride != now.stride;
+          }
         }
       }
     }
@@ -354,6 +366,8 @@ TEST(PrepareInput, PartSamplesKeptBetweenChecksGiveTheSameOutliers) {
   EXPECT_GT(tails_reused, 200u);
   EXPECT_GT(served, 30u);
   EXPECT_GT(bounds_moved, 0u);
+  EXPECT_GE(strides.size(), 2u);
+  EXPECT_GT(reused_across_strides, 30u);
 }
 
 // A large scan's input checks run on slices side by side (analyze's threads): the first bad index still names

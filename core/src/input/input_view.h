@@ -69,9 +69,9 @@ struct PartKey {
 };
 struct QuantileGuess {
   std::array<QuantileBounds, 3> axes;
-  // Where check_parts is given the parts' keys: by part id, its samples at the last few places the sample took it
-  // from (a part moves in the sample where one before it changes its vertex count: an object set down and taken
-  // away moves the rest by turns), the latest first. Where the bounds serve, an analysis reads the vertices of the
+  // Where check_parts is given the parts' keys: by part id, its samples at the last few places and strides the
+  // sample took it at (a part moves in the sample where one before it changes its vertex count, and the stride
+  // changes with the count: an object set down and taken away moves the rest by turns), the latest first. Where the bounds serve, an analysis reads the vertices of the
   // parts that changed or moved to a new place, not a sample of every part's: a strided read of a room's every chunk
   // was a tenth of an added object's update (cache misses, not instructions).
   std::map<std::uint64_t, std::vector<PartSample>> parts;

@@ -243,8 +243,8 @@ std::optional<std::array<std::pair<float, float>, 3>> ranges_from_part_samples(
     places.push_back({keys[p].hash, stride, first, {}});
     if (const auto it = kept.find(keys[p].id); it != kept.end())
       for (detail::PartSample& before : it->second) {
-        if (before.hash != keys[p].hash || before.stride != stride) continue;
-        if (before.first == first) places.front() = std::move(before);
+        if (before.hash != keys[p].hash) continue;
+        if (before.stride == stride && before.first == first) places.front() = std::move(before);
         else if (places.size() < kPlacesKept) places.push_back(std::move(before));
       }
     samples.push_back(&places.front());
@@ -261,13 +261,15 @@ std::optional<std::array<std::pair<float, float>, 3>> ranges_from_part_samples(
       std::optional<detail::SampleTails>& tails = samples[p]->tails[axis];
       if (!tails || tails->low != low || tails->high != high) {
         // A part's values past a bound are gathered only as long as the whole sample's may be (at most `most`).
-        tails = detail::SampleTails{low, high, 0, 0, 0, 0, {}, {}};
+        detail::SampleTails t{low, high, 0, 0, 0, 0, {}, {}};
+        const glm::vec3* v = parts[p].data();
         for (std::size_t i = samples[p]->first; i < parts[p].size(); i += stride) {
-          const float x = parts[p][i][int(axis)];
-          tails->below += x < low, tails->above += x > high, tails->low_ties += x == low, tails->high_ties += x == high;
-          if (x < low && tails->lower.size() <= most) tails->lower.push_back(x);
-          if (x > high && tails->upper.size() <= most) tails->upper.push_back(x);
+          const float x = v[i][int(axis)];
+          t.below += x < low, t.above += x > high, t.low_ties += x == low, t.high_ties += x == high;
+          if (x < low && t.lower.size() <= most) t.lower.push_back(x);
+          if (x > high && t.upper.size() <= most) t.upper.push_back(x);
         }
+        tails = std::move(t);
       }
       total += {tails->below, tails->above, tails->low_ties, tails->high_ties};
     }

@@ -300,7 +300,8 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
     for (int y = levels.floor; y <= g[col]; ++y) out[y] = 1;
     for (int y = h[col]; y <= levels.ceiling; ++y) out[y] = 1;
   };
-  std::vector<std::uint8_t> volume;
+  // Into the storage of the volume the memo gave out last, where it has one (StoreyVolumeMemo::spare).
+  std::vector<std::uint8_t> volume = memo ? std::exchange(memo->spare, {}) : std::vector<std::uint8_t>();
   if (replay) {
     // The columns whose G or H changed, and their neighbours, written again with their holes, into the memo's
     // volume (a stop before the end leaves the memo without cells: bounds_volume).
@@ -327,10 +328,8 @@ std::vector<std::uint8_t> storey_volume(const VoxelGrid& grid, const BoundsStore
           holes.fills(x, z, fill);
         }
     for (const std::size_t i : fill) kept[i] = 1;
-    volume = std::exchange(memo->spare, {});
     volume.assign(kept.begin(), kept.end());
   } else {
-    if (memo) volume = std::exchange(memo->spare, {});
     volume.assign(s.voxel_count(), 0);
     detail::parallel_for(s.column_count(), threads, detail::kColumnGrain, [&](std::size_t begin, std::size_t end, std::size_t) {
       for (std::size_t col = begin; col < end; ++col) write_column(volume, col);

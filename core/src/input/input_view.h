@@ -47,12 +47,21 @@ struct KnownInput {
 // two: the selection tries them before it samples bounds afresh. The values' counts decide whether they serve,
 // so a guess changes the work, never the ranges.
 using QuantileBounds = std::optional<std::pair<float, float>>;
-// One axis's sampled values against bounds low <= high (QuantileBounds): how many lie below low, above high and at
-// each, and the values below and above, in sample order (where more lie past a bound than the selection gathers,
-// some of them).
-struct SampleTails {
+// How many values of a sample lie below `low`, above `high`, and at each.
+struct TailCounts {
+  std::uint32_t below = 0, above = 0, low_ties = 0, high_ties = 0;  // 32 bits: four lanes to a register
+  void add(float x, float low, float high) {
+    below += x < low, above += x > high, low_ties += x == low, high_ties += x == high;
+  }
+  TailCounts& operator+=(const TailCounts& o) {
+    below += o.below, above += o.above, low_ties += o.low_ties, high_ties += o.high_ties;
+    return *this;
+  }
+};
+// One axis's sampled values against bounds low <= high (QuantileBounds): their counts, and the values below and
+// above, in sample order (where more lie past a bound than the selection gathers, some of them).
+struct SampleTails : TailCounts {
   float low = 0.0f, high = 0.0f;
-  std::uint32_t below = 0, above = 0, low_ties = 0, high_ties = 0;
   std::vector<float> lower, upper;
 };
 // A part's share of the outlier sample (every stride-th vertex of the parts end to end, from its vertex `first` on):

@@ -23,22 +23,10 @@ constexpr std::uint32_t kExponentBits = 0x7f800000u;
 bool finite(float f) { return (std::bit_cast<std::uint32_t>(f) & kExponentBits) != kExponentBits; }
 bool finite(const glm::vec3& v) { return int(finite(v.x)) + int(finite(v.y)) + int(finite(v.z)) == 3; }
 
-// How many values of a sample lie below `low`, above `high`, and at each.
-struct TailCounts {
-  std::uint32_t below = 0, above = 0, low_ties = 0, high_ties = 0;  // 32 bits: four lanes to a register
-  TailCounts& operator+=(const TailCounts& o) {
-    below += o.below, above += o.above, low_ties += o.low_ties, high_ties += o.high_ties;
-    return *this;
-  }
-};
+using detail::TailCounts;
 TailCounts count_tails(std::span<const float> v, float low, float high) {
   TailCounts c;
-  for (const float x : v) {
-    c.below += x < low;
-    c.above += x > high;
-    c.low_ties += x == low;
-    c.high_ties += x == high;
-  }
+  for (const float x : v) c.add(x, low, high);
   return c;
 }
 
@@ -250,28 +238,28 @@ std::optional<std::array<std::pair<float, float>, 3>> ranges_from_part_samples(
     samples.push_back(&places.front());
   }
   if (!tries_bounds(n, k)) return std::nullopt;
+  const std::size_t most = guess_most_of(k);
   std::array<std::pair<float, float>, 3> ranges;
   for (std::size_t axis = 0; axis < 3; ++axis) {
     const detail::QuantileBounds& bounds = guess.axes[axis];
     if (!bounds || bounds->first > bounds->second) return std::nullopt;
     const float low = bounds->first, high = bounds->second;
-    const std::size_t most = guess_most_of(k);
     TailCounts total;
     for (std::size_t p = 0; p < parts.size(); ++p) {
       std::optional<detail::SampleTails>& tails = samples[p]->tails[axis];
       if (!tails || tails->low != low || tails->high != high) {
         // A part's values past a bound are gathered only as long as the whole sample's may be (at most `most`).
-        detail::SampleTails t{low, high, 0, 0, 0, 0, {}, {}};
+        detail::SampleTails t{{}, low, high, {}, {}};
         const glm::vec3* v = parts[p].data();
         for (std::size_t i = samples[p]->first; i < parts[p].size(); i += stride) {
           const float x = v[i][int(axis)];
-          t.below += x < low, t.above += x > high, t.low_ties += x == low, t.high_ties += x == high;
+          t.add(x, low, high);
           if (x < low && t.lower.size() <= most) t.lower.push_back(x);
           if (x > high && t.upper.size() <= most) t.upper.push_back(x);
         }
         tails = std::move(t);
       }
-      total += {tails->below, tails->above, tails->low_ties, tails->high_ties};
+      total += *tails;
     }
     std::optional<float> lo, hi;
     pick_tails(total, low, high, k, most, [&](std::vector<float>& lower, std::vector<float>& upper) {

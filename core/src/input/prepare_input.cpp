@@ -216,25 +216,32 @@ std::optional<std::array<std::pair<float, float>, 3>> ranges_from_part_samples(
   std::size_t count = 0;
   for (const std::span<const glm::vec3> part : parts) count += part.size();
   const std::size_t stride = stride_of(count), n = (count + stride - 1) / stride, k = quantile_rank(n);
-  // Each part's sample at its place now: the guess's where its content and place are as before.
-  std::map<std::uint64_t, std::vector<detail::PartSample>> kept = std::move(guess.parts);
-  guess.parts.clear();
+  // The guess's parts are those given: the others dropped. Two parts under one id: neither's is known.
+  std::vector<std::uint64_t> ids(keys.size());
+  for (std::size_t p = 0; p < keys.size(); ++p) ids[p] = keys[p].id;
+  std::sort(ids.begin(), ids.end());
+  if (std::adjacent_find(ids.begin(), ids.end()) != ids.end()) {
+    guess.parts.clear();
+    return std::nullopt;
+  }
+  std::erase_if(guess.parts, [&](const auto& part) { return !std::binary_search(ids.begin(), ids.end(), part.first); });
+  // Each part's sample at its place now, first among its places: the one kept where its content and place are as
+  // before, else a new one; then the others kept for its content, in their order. Updated in place: a node and its
+  // places' storage each part, made anew every update, were some 90 allocations of an added object's update.
   std::vector<detail::PartSample*> samples;
   samples.reserve(parts.size());
   std::size_t begin = 0;  // the part's first vertex among all
   for (std::size_t p = 0; p < parts.size(); ++p) {
     const std::size_t first = (stride - begin % stride) % stride;
     begin += parts[p].size();
-    const auto [at, added] = guess.parts.try_emplace(keys[p].id);
-    if (!added) return std::nullopt;  // two parts under one id: neither's is known
-    std::vector<detail::PartSample>& places = at->second;
-    places.push_back({keys[p].hash, stride, first, {}});
-    if (const auto it = kept.find(keys[p].id); it != kept.end())
-      for (detail::PartSample& before : it->second) {
-        if (before.hash != keys[p].hash) continue;
-        if (before.stride == stride && before.first == first) places.front() = std::move(before);
-        else if (places.size() < kPlacesKept) places.push_back(std::move(before));
-      }
+    std::vector<detail::PartSample>& places = guess.parts[keys[p].id];
+    std::erase_if(places, [&](const detail::PartSample& before) { return before.hash != keys[p].hash; });
+    const auto here = std::find_if(places.begin(), places.end(), [&](const detail::PartSample& before) {
+      return before.stride == stride && before.first == first;
+    });
+    if (here != places.end()) std::rotate(places.begin(), here, here + 1);
+    else places.insert(places.begin(), {keys[p].hash, stride, first, {}});
+    if (places.size() > kPlacesKept) places.resize(kPlacesKept);
     samples.push_back(&places.front());
   }
   if (!tries_bounds(n, k)) return std::nullopt;

@@ -641,15 +641,18 @@ bool SquarePacker::free(const Candidate& c) {
     return true;
   });
 }
-// Whether a square's middle sample (x, z), at `level`, is taken at a level within the tolerance: then it is not
-// free.
-inline bool SquarePacker::middle_taken(int level, long x, long z) const {
-  for (int y = level - level_tolerance_; y <= level + level_tolerance_; ++y)
+// Whether the middle sample of `square`, of the shape whose facts are `f`, is taken at a level within the
+// tolerance: then it is not free.
+inline bool SquarePacker::middle_taken(const ShapeFacts& f, const PackedCandidate& square) const {
+  if (!f.has_middle) return false;
+  const glm::ivec3 p1 = square.corner(0);
+  const long x = 2L * p1.x + f.middle_x, z = 2L * p1.z + f.middle_z;
+  for (int y = p1.y - level_tolerance_; y <= p1.y + level_tolerance_; ++y)
     if (taken_->test(y, z, x)) return true;
   return false;
 }
 
-// What pack_fresh reads of a square that its shape alone decides. Corner 1 moves a square whole, and its middle
+// What pack_fresh (and a replay, of the squares it tests) reads of a square that its shape alone decides. Corner 1 moves a square whole, and its middle
 // sample by twice that (middle_sample: floor((4 p1 + q) / 2) = 2 p1 + floor(q / 2)), inside it or not alike.
 SquarePacker::ShapeFacts SquarePacker::shape_facts(const Candidates::Shape& shape) {
   const PackedCandidate at_origin(glm::ivec3(0), shape.dx, shape.dz, shape.side);
@@ -687,12 +690,6 @@ std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
     for (std::size_t step = 0; step < kSteps; ++step) step_begin[step + 1] += step_begin[step];
     by_step = order_by_bucket(squares.size(), kSteps, [&](std::size_t i) { return std::size_t(step_of[i]); });
   }
-  // Whether the square's middle sample (its shape's facts) is taken: then it is not free.
-  const auto middle_is_taken = [&](const Candidates::Item& item, const PackedCandidate& square) {
-    const ShapeFacts& f = facts[item.shape];
-    const glm::ivec3 p1 = square.corner(0);
-    return f.has_middle && middle_taken(p1.y, 2L * p1.x + f.middle_x, 2L * p1.z + f.middle_z);
-  };
   std::vector<std::size_t> kept;
   std::vector<std::uint32_t> contacts;  // of a step's squares still free, as they lie in by_step
   for (std::size_t step = 0; step < kSteps; ++step) {
@@ -704,7 +701,7 @@ std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
       if (k % kStopEvery == 0) stop_point(stop_);
       const Candidates::Item& item = squares.item(items[k]);
       const PackedCandidate square = squares.decode(item);
-      if (middle_is_taken(item, square)) continue;
+      if (middle_taken(facts[item.shape], square)) continue;  // taken: refused at its turn, whatever its contact
       items[contacts.size()] = items[k];
       contacts.push_back(std::min(std::uint32_t(contact(square.unpack())), kContactMask));
       max_contact = std::max(max_contact, contacts.back());
@@ -719,7 +716,7 @@ std::vector<std::size_t> SquarePacker::pack_fresh(const Candidates& squares) {
       // mostly lie on those before them), it refuses the square without the rest of its samples.
       const Candidates::Item& item = squares.item(i);
       const PackedCandidate square = squares.decode(item);
-      if (middle_is_taken(item, square)) continue;
+      if (middle_taken(facts[item.shape], square)) continue;
       const Candidate c = square.unpack();
       if (!free(c)) continue;
       take(c);
@@ -749,7 +746,6 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const Pac
     }
     max_step = std::max(max_step, ranks[i] >> kContactBits), max_contact = std::max(max_contact, ranks[i] & kContactMask);
   }
-  if (ranks_out) *ranks_out = ranks;
   // Bucket step * (max_contact + 1) + (max_contact - contact): step ascending, contact descending.
   const std::size_t contacts = std::size_t(max_contact) + 1, buckets = (std::size_t(max_step) + 1) * contacts;
   const auto bucket_of = [&](std::uint32_t rank) {
@@ -757,6 +753,7 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const Pac
   };
   const std::vector<std::uint32_t> order =
       order_by_bucket(squares.size(), buckets, [&](std::size_t i) { return bucket_of(ranks[i]); });
+  if (ranks_out) *ranks_out = std::move(ranks);  // the caller's, once ordered: no copy
   ranks = {};
   // A size packed without a replay changes what is unknown: the sizes after it cannot replay either.
   if (!replay) replayable_ = false;
@@ -765,6 +762,8 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const Pac
     for (const Candidate& c : replay->gone) changed_.add(ChangedRegion::around(c));
   const std::vector<ChangedRegion::Box> shape_boxes = replay ? ChangedRegion::around_shapes(squares.shapes())
                                                              : std::vector<ChangedRegion::Box>();
+  // The shapes' facts, found for a shape when a square of it is first tested (most squares replay untested).
+  std::vector<std::optional<ShapeFacts>> facts(squares.shapes().size());
   std::vector<std::size_t> kept;
   for (std::size_t k = 0; k < order.size(); ++k) {
     if (k % kStopEvery == 0) stop_point(stop_);
@@ -775,6 +774,16 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const Pac
         replay ? std::optional(ChangedRegion::around(square, shape_boxes[item.shape])) : std::nullopt;
     const std::optional<bool> previous = around ? previous_decision(replay, i, *around, changed_) : std::nullopt;
     if (previous && !*previous) continue;  // refused as before: its corners are not needed
+    // Tested: its middle sample first, as pack_fresh does. Most squares tested again lie on one kept before them,
+    // and one taken sample refuses them without the rest.
+    if (!previous) {
+      std::optional<ShapeFacts>& f = facts[item.shape];
+      if (!f) f = shape_facts(squares.shapes()[item.shape]);
+      if (middle_taken(*f, square)) {
+        if (around) note_decision(replay, i, *around, false, changed_);
+        continue;
+      }
+    }
     const Candidate c = square.unpack();
     const bool is_free = previous ? *previous : free(c);
     if (around && !previous) note_decision(replay, i, *around, is_free, changed_);

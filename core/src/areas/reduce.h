@@ -217,7 +217,7 @@ class SquarePacker {
   };
   ShapeFacts shape_facts(const Candidates::Shape& shape);
   // Inlined: pack_fresh asks it of most squares, and GCC otherwise calls it.
-  [[gnu::always_inline]] bool middle_taken(int level, long x, long z) const;
+  [[gnu::always_inline]] bool middle_taken(const ShapeFacts& f, const PackedCandidate& square) const;
   void take(const Candidate& c);
   std::vector<std::size_t> pack_fresh(const Candidates& squares);
 

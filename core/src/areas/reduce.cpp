@@ -652,8 +652,9 @@ inline bool SquarePacker::middle_taken(const ShapeFacts& f, const PackedCandidat
   return false;
 }
 
-// What pack_fresh (and a replay, of the squares it tests) reads of a square that its shape alone decides. Corner 1 moves a square whole, and its middle
-// sample by twice that (middle_sample: floor((4 p1 + q) / 2) = 2 p1 + floor(q / 2)), inside it or not alike.
+// What pack_fresh (and a replay, of the squares it tests) reads of a square that its shape alone decides. Corner 1
+// moves a square whole, and its middle sample by twice that (middle_sample: floor((4 p1 + q) / 2) = 2 p1 +
+// floor(q / 2)), inside it or not alike.
 SquarePacker::ShapeFacts SquarePacker::shape_facts(const Candidates::Shape& shape) {
   const PackedCandidate at_origin(glm::ivec3(0), shape.dx, shape.dz, shape.side);
   const std::optional<std::array<long, 2>> middle = middle_sample(at_origin);
@@ -774,21 +775,16 @@ std::vector<std::size_t> SquarePacker::pack(const Candidates& squares, const Pac
         replay ? std::optional(ChangedRegion::around(square, shape_boxes[item.shape])) : std::nullopt;
     const std::optional<bool> previous = around ? previous_decision(replay, i, *around, changed_) : std::nullopt;
     if (previous && !*previous) continue;  // refused as before: its corners are not needed
-    // Tested: its middle sample first, as pack_fresh does. Most squares tested again lie on one kept before them,
-    // and one taken sample refuses them without the rest.
     if (!previous) {
+      // Tested: its middle sample first, as pack_fresh does. Most squares tested again lie on one kept before them,
+      // and one taken sample refuses them without the rest.
       std::optional<ShapeFacts>& f = facts[item.shape];
       if (!f) f = shape_facts(squares.shapes()[item.shape]);
-      if (middle_taken(*f, square)) {
-        if (around) note_decision(replay, i, *around, false, changed_);
-        continue;
-      }
+      const bool is_free = !middle_taken(*f, square) && free(square.unpack());
+      if (around) note_decision(replay, i, *around, is_free, changed_);
+      if (!is_free) continue;
     }
-    const Candidate c = square.unpack();
-    const bool is_free = previous ? *previous : free(c);
-    if (around && !previous) note_decision(replay, i, *around, is_free, changed_);
-    if (!is_free) continue;
-    take(c);
+    take(square.unpack());
     kept.push_back(i);
   }
   std::sort(kept.begin(), kept.end());  // the output keeps the search's order

@@ -216,7 +216,7 @@ class SquarePacker {
     long middle_x = 0, middle_z = 0;  // the middle sample of the square whose corner 1 is (0, 0, 0)
   };
   ShapeFacts shape_facts(const Candidates::Shape& shape);
-  // Inlined: pack_fresh asks it of most squares, and GCC otherwise calls it.
+  // Inlined: pack_fresh asks it of most squares (a replay, of those it tests), and GCC otherwise calls it.
   [[gnu::always_inline]] bool middle_taken(const ShapeFacts& f, const PackedCandidate& square) const;
   void take(const Candidate& c);
   std::vector<std::size_t> pack_fresh(const Candidates& squares);

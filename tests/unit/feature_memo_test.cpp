@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <stdexcept>
 
 namespace roomsense {
@@ -152,6 +153,108 @@ TEST(FeatureMemo, EqualsTheFeaturesDerivedWholeAsFurnitureAndWallsComeAndGo) {
   m.compare_against(boxed);
   m.features(boxed, m.serial() + 7);
   EXPECT_EQ(memo.columns.inputs.derived(), columns);
+}
+
+// The ceiling's flood through the memo (CeilingSteps: only the clusters of columns a change reaches flooded again)
+// equals the whole flood, over random boxes that come and go: furniture on the floor, hollow boxes (shut in: no
+// part of the flood), soffits and beams that lower the ceiling, shelves in mid-air, and columns leaving the room.
+TEST(FeatureMemo, CeilingFloodEqualsTheWholeFloodAsBoxesComeAndGo) {
+  const test::AnalysedRoom& analysed = test::analysed(synth::default_room());
+  const VoxelGrid& original = analysed.result.voxels.grid;
+  const GridSpec& s = original.spec;
+  const FloorCeiling levels = analysed.result.features->levels;
+  const std::vector<std::uint8_t> original_room = analysed.result.features->room;
+  const int cap = levels.ceiling;
+  detail::CeilingSteps memo;
+  VoxelGrid grid = original, previous = original;
+  std::vector<std::uint8_t> room = original_room;
+  std::uint64_t serial = 0;
+  std::size_t lowered = 0;  // steps whose ceiling differs from the room's own
+  const std::vector<int> plain = column_ceilings(original, levels, original_room, cap);
+  const auto check = [&](const std::string& step) {
+    SCOPED_TRACE(step);
+    const std::vector<std::uint8_t> changed = detail::changed_columns(previous, grid);
+    const detail::GridChange change{serial, serial + 1, serial > 0 ? &changed : nullptr};
+    const std::vector<int> got = detail::column_ceilings(grid, levels, room, cap, &memo, change);
+    const std::vector<int> want = column_ceilings(grid, levels, room, cap);
+    ASSERT_EQ(got, want);
+    if (got != plain) ++lowered;
+    ++serial;
+    previous = grid;
+  };
+  check("the room");
+  std::mt19937 random(19);
+  const auto between = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(random); };
+  struct Box {
+    glm::ivec3 lo, hi;
+  };
+  std::vector<Box> boxes;  // added, not yet taken away
+  const auto restore = [&](const Box& b) {
+    for (int z = b.lo.z; z <= b.hi.z; ++z)
+      for (int x = b.lo.x; x <= b.hi.x; ++x)
+        for (int y = b.lo.y; y <= b.hi.y; ++y) grid.cells[s.index(x, y, z)] = original.cells[s.index(x, y, z)];
+  };
+  for (int step = 0; step < 80; ++step) {
+    const int kind = between(0, 5);
+    if (kind == 0 && !boxes.empty()) {  // one taken away (the voxels of the room as they were)
+      const std::size_t k = std::size_t(between(0, int(boxes.size()) - 1));
+      restore(boxes[k]);
+      boxes.erase(boxes.begin() + std::ptrdiff_t(k));
+      check("step " + std::to_string(step) + ": a box taken away");
+      continue;
+    }
+    if (kind == 1) {  // columns leave the room, or come back
+      const int x = between(0, s.nx - 4), z = between(0, s.nz - 4);
+      for (int dz = 0; dz < 3; ++dz)
+        for (int dx = 0; dx < 3; ++dx) {
+          const std::size_t col = s.column(x + dx, z + dz);
+          room[col] = room[col] == original_room[col] ? std::uint8_t(!original_room[col]) : original_room[col];
+        }
+      check("step " + std::to_string(step) + ": the room changed");
+      continue;
+    }
+    const int w = between(1, 8), d = between(1, 8);
+    const int x = between(0, s.nx - w - 1), z = between(0, s.nz - d - 1);
+    Box b{{x, 0, z}, {x + w, 0, z + d}};
+    if (kind == 2) b.lo.y = levels.floor + 1, b.hi.y = levels.floor + between(1, 12);            // furniture
+    if (kind == 3) b.lo.y = cap - between(2, 10), b.hi.y = cap;                                 // a soffit or beam
+    if (kind == 4) b.lo.y = levels.floor + between(4, 20), b.hi.y = b.lo.y + between(0, 3);     // a shelf
+    if (kind == 5 || kind == 0) b.lo.y = levels.floor + 1, b.hi.y = levels.floor + between(4, 12);  // hollow
+    b.hi.y = std::min(b.hi.y, s.ny - 1);
+    for (int zz = b.lo.z; zz <= b.hi.z; ++zz)
+      for (int xx = b.lo.x; xx <= b.hi.x; ++xx)
+        for (int y = b.lo.y; y <= b.hi.y; ++y) {
+          const bool shell = xx == b.lo.x || xx == b.hi.x || zz == b.lo.z || zz == b.hi.z || y == b.lo.y || y == b.hi.y;
+          if (kind != 5 && kind != 0) grid.cells[s.index(xx, y, zz)] = 1;
+          else if (shell) grid.cells[s.index(xx, y, zz)] = 1;
+        }
+    boxes.push_back(b);
+    check("step " + std::to_string(step) + ": a box of kind " + std::to_string(kind) + " added");
+  }
+  EXPECT_GT(lowered, 10u);  // the boxes reached the ceiling: the flood's result changed, not only its runs
+  // Two columns A and D, each with furniture below and a beam above, walled in by pillars: the runs between are
+  // shut in. D cleared opens them: A, which did not change, now reaches to its beam, as a neighbour of a change.
+  for (const Box& b : boxes) restore(b);
+  boxes.clear();
+  room = original_room;
+  check("the room again");
+  const int ax = s.nx / 2, az = s.nz / 2, lo = levels.floor + 1, hi = cap - 1;
+  for (int x = ax - 1; x <= ax + 2; ++x)
+    for (int z = az - 1; z <= az + 1; ++z)
+      for (int y = lo; y <= hi; ++y) {
+        const bool inner = z == az && (x == ax || x == ax + 1);
+        grid.cells[s.index(x, y, z)] = !inner || y <= lo + 3 || y >= hi - 3 ? 1 : 0;
+      }
+  check("A and D shut in");
+  const std::vector<int> shut = memo.ceiling;
+  for (int y = lo; y <= hi; ++y) grid.cells[s.index(ax + 1, y, az)] = 0;
+  check("D cleared");
+  EXPECT_EQ(memo.ceiling[s.column(ax, az)], hi - 3);
+  EXPECT_NE(memo.ceiling[s.column(ax, az)], shut[s.column(ax, az)]);
+  // A grid the memo did not read before this one (an analysis between them failed): flooded whole, and equal.
+  previous = original;
+  serial += 5;
+  check("after a gap");
 }
 
 TEST(FeatureMemo, KeepsNoResultADeriveFailedFor) {

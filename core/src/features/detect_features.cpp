@@ -67,7 +67,7 @@ RoomFeatures detect_features(const VoxelGrid& grid, const FloorCeiling& levels,
     const std::uint8_t* v = grid.cells.data() + c * std::size_t(grid.spec.ny);
     if (!f.room[c]) f.room[c] = std::any_of(v + f.levels.floor_peak, v + f.levels.floor, [](std::uint8_t x) { return x != 0; });
   }
-  f.ceiling = column_ceilings(grid, f.levels, f.room, f.levels.ceiling);
+  f.ceiling = column_ceilings(grid, f.levels, f.room, f.levels.ceiling, memo ? &memo->ceilings : nullptr, change);
   const std::size_t facet_columns = std::size_t(std::max(1.0f, std::ceil(params.min_ceiling_facet / (s * s) - 1e-3f)));
   const std::vector<int> over_walls = through(
       memo ? &memo->over_walls : nullptr,

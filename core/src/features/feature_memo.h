@@ -4,8 +4,9 @@
 // those as they were (furniture added, a wall refined within its columns) finds each such step's result kept
 // instead of deriving it again. The steps that read a column, or the columns a reach away along the axes
 // (furniture tops, free tiles, wall normals, openings: column_steps.h), are derived again only near the columns
-// whose voxels or entries changed. Either is reused only for inputs equal to those it was derived from, so every
-// result is the step's own.
+// whose voxels or entries changed; the flood under the ceiling, only in the clusters of columns a change reaches
+// (CeilingSteps). Each is reused only for inputs equal to those it was derived from, so every result is the
+// step's own.
 #pragma once
 #include "roomsense/features.h"
 
@@ -132,6 +133,33 @@ struct OpeningSteps {
   ColumnInputs<Scalars, std::vector<std::uint8_t>> inputs;  // the inside
 };
 
+// The flood under the ceiling (column_ceilings, raised_ceiling): each column's runs of empty levels, and the
+// highest level the flood reaches in it.
+struct FloodRuns {
+  struct Run {
+    int y0, y1;
+  };
+  std::vector<std::uint8_t> open;   // per column: empty over every level the flood reads (it lists no runs)
+  std::vector<std::size_t> first;   // the runs of column c: [first[c], first[c + 1])
+  std::vector<Run> runs;
+  std::vector<int> highest;         // per column: the highest level the flood reaches, or -1
+};
+
+// column_ceilings of the latest analysis: its flood, and the ceiling that gave. A part of the flood is a function
+// of the runs of one cluster of columns that hold runs (4-connected) and of which columns beside it are open, so
+// a change floods again only the clusters that hold, or lie beside, a column whose voxels or room changed.
+struct CeilingSteps {
+  struct Scalars {
+    GridSpec spec;
+    FloorCeiling levels;
+    int cap = 0;
+    bool operator==(const Scalars&) const = default;
+  };
+  ColumnInputs<Scalars, std::vector<std::uint8_t>> inputs;  // the room B
+  FloodRuns flood;
+  std::vector<int> ceiling;
+};
+
 // One storey's steps, each with the inputs detect_features gives it.
 struct FeatureMemo {
   using Columns = std::vector<std::uint8_t>;
@@ -140,10 +168,16 @@ struct FeatureMemo {
   StepMemo<Columns, GridSpec, Columns, Columns, int> enclosed;                      // detect_enclosed
   StepMemo<CeilingFacets, GridSpec, FloorCeiling, Levels, Columns, std::size_t> facets;
   StepMemo<RoomSplit, GridSpec, Columns, Columns, float, float> rooms;  // split_rooms
+  CeilingSteps ceilings;
   ColumnSteps columns;
   NormalSteps normals;
   OpeningSteps openings;
 };
+
+// column_ceilings (features.h), through `memo` where not null: the flood derived again only in the clusters of
+// columns a change can reach (CeilingSteps).
+std::vector<int> column_ceilings(const VoxelGrid& grid, const FloorCeiling& levels, const std::vector<std::uint8_t>& room,
+                                 int cap, CeilingSteps* memo, const GridChange& change);
 
 // detect_features (features.h), through `memo` where not null: its whole-storey steps kept where their inputs
 // are, its local steps derived again only near the columns `change` and their entries say changed. `previous`:

@@ -391,6 +391,7 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
         storey_features[k] = *same;
         // The grid is the previous one: what the memo's column steps derived from that still holds.
         if (memo) {
+          memo->ceilings.inputs.same_grid(change);
           memo->columns.inputs.same_grid(change);
           memo->normals.inputs.same_grid(change);
           memo->openings.inputs.same_grid(change);

@@ -2,6 +2,7 @@
 // the area can see past the walls, in the X-Z plane, with line of sight by segment intersection (Eq. 3.59).
 #include "../parallel.h"
 #include "classify.h"
+#include "list_match.h"
 #include "../key_table.h"
 
 #include <glm/geometric.hpp>
@@ -300,22 +301,16 @@ struct ReachView::State {
   bool known = false;        // the memo's areas were seen against these walls and parameters
   bool same_floors = false;  // and these floors, in this order
   std::vector<ReachMemo::FloorKey> keys;  // with a memo: the floors'
-  // Where known and the floors differ: the floors the memo's did not have, and the memo's that are still there. A
-  // change moves the floors near it alone, so the lists share a first and a last part, each in place: the keys
-  // between are compared by a hash. (V_Floor holds a centre once, Eq. 3.44, so a key names one floor; were one
-  // repeated, a floor could be taken for added or gone, and its areas searched again, never misread.)
+  // Where known and the floors differ: the floors the memo's did not have, and where the memo's still are. A change
+  // moves the floors near it alone, and the lists keep their order (list_match.h). (V_Floor holds a centre once,
+  // Eq. 3.44, so a key names one floor; a floor taken for added or gone has its areas searched again, never
+  // misread.)
   std::vector<std::size_t> added;
-  std::size_t same_first = 0, same_last = 0;  // the parts' lengths
-  std::vector<ReachMemo::FloorKey> middle;  // keys[same_first, size - same_last)
-  std::optional<KeyIndex<ReachMemo::FloorKey>> middle_now;
+  std::vector<std::uint32_t> now_at;  // per floor of the memo: its index in `floors`, or FirstIndex::kAbsent
   // The index in `floors` of the memo's floor `before` (its key `key`), if it is still there.
   std::uint32_t now_of(std::uint32_t before, const ReachMemo::FloorKey& key) const {
-    const std::size_t n_before = memo->floors.size();
-    std::size_t at = FirstIndex::kAbsent;
-    if (before < same_first) at = before;
-    else if (before < n_before && n_before - before <= same_last) at = keys.size() - (n_before - before);
-    else if (const std::uint32_t i = middle_now->find(key); i != FirstIndex::kAbsent) at = same_first + i;
-    return at < keys.size() && keys[at] == key ? std::uint32_t(at) : FirstIndex::kAbsent;
+    const std::uint32_t at = before < now_at.size() ? now_at[before] : FirstIndex::kAbsent;
+    return at < keys.size() && keys[at] == key ? at : FirstIndex::kAbsent;
   }
   // The floors' buckets, made by the first search: where the memo decides every area (a re-sent chunk), none.
   std::once_flag index_made;
@@ -338,18 +333,14 @@ ReachView::ReachView(const std::vector<ReachFloor>& floors, const std::vector<Re
   v.same_floors = v.known && v.keys == memo->floors;
   if (!v.known || v.same_floors) return;
   const std::vector<ReachMemo::FloorKey>& before = memo->floors;
-  const std::size_t shorter = std::min(before.size(), v.keys.size());
-  while (v.same_first < shorter && before[v.same_first] == v.keys[v.same_first]) ++v.same_first;
-  while (v.same_first + v.same_last < shorter &&
-         before[before.size() - 1 - v.same_last] == v.keys[v.keys.size() - 1 - v.same_last])
-    ++v.same_last;
-  v.middle.assign(v.keys.begin() + std::ptrdiff_t(v.same_first), v.keys.end() - std::ptrdiff_t(v.same_last));
-  v.middle_now.emplace(v.middle);
-  const std::vector<ReachMemo::FloorKey> middle_before(before.begin() + std::ptrdiff_t(v.same_first),
-                                                       before.end() - std::ptrdiff_t(v.same_last));
-  const KeyIndex in_before(middle_before);
-  for (std::size_t i = 0; i < v.middle.size(); ++i)
-    if (in_before.find(v.middle[i]) == FirstIndex::kAbsent) v.added.push_back(v.same_first + i);
+  const std::vector<std::uint32_t> was_at = match_in_order(
+      std::span<const ReachMemo::FloorKey>(before), std::span<const ReachMemo::FloorKey>(v.keys),
+      [](const ReachMemo::FloorKey& a, const ReachMemo::FloorKey& b) { return a == b; },
+      [](const ReachMemo::FloorKey& key) { return hash_of(key); });
+  v.now_at.assign(before.size(), FirstIndex::kAbsent);
+  for (std::size_t i = 0; i < was_at.size(); ++i)
+    if (was_at[i] == FirstIndex::kAbsent) v.added.push_back(i);
+    else v.now_at[was_at[i]] = std::uint32_t(i);
 }
 
 ReachView::~ReachView() = default;

@@ -3,6 +3,7 @@
 // it found before; and what a square's centre reads lies within that reach of its cell, so a centre no changed
 // column is within reach of finds what it found before.
 #include "search_cache.h"
+#include "list_match.h"
 
 #include "../key_table.h"
 
@@ -518,27 +519,16 @@ const std::vector<Reach>& SearchCache::place_for_reach(Placed<Reach>& kept, cons
     kept.generation = generation_;
     return kept.areas;
   }
-  // The previous rectangles by their numbers, made at the first that is not where it was (the lists mostly
-  // keep their order).
-  FirstIndex where;
-  const auto hash_of = [](const Sized& s) { return s.packed.hash() ^ std::uint64_t(s.size); };
-  const auto find = [&](const Sized& s) {
-    if (where.empty()) {
-      where.reserve(kept.rectangles.size());
-      for (std::uint32_t j = 0; j < kept.rectangles.size(); ++j)
-        where.insert(hash_of(kept.rectangles[j]), j, [&](std::uint32_t i) { return same(kept.rectangles[i], kept.rectangles[j]); });
-    }
-    return where.find(hash_of(s), [&](std::uint32_t i) { return same(kept.rectangles[i], s); });
-  };
+  // Each rectangle's place in the previous list, where it was there (the lists keep their order: list_match.h).
+  const std::vector<std::uint32_t> before =
+      known ? match_in_order(std::span<const Sized>(kept.rectangles), std::span<const Sized>(for_reach), same,
+                             [](const Sized& s) { return s.packed.hash() ^ std::uint64_t(s.size); })
+            : std::vector<std::uint32_t>(for_reach.size(), FirstIndex::kAbsent);
   std::vector<Reach> out;
   out.reserve(for_reach.size());
-  std::size_t at = 0;  // where the previous list goes on
-  for (const Sized& s : for_reach) {
-    std::uint32_t j = FirstIndex::kAbsent;
-    if (known && !kept.rectangles.empty()) {
-      j = at < kept.rectangles.size() && same(kept.rectangles[at], s) ? std::uint32_t(at) : find(s);
-      if (j != FirstIndex::kAbsent) at = std::size_t(j) + 1;
-    }
+  for (std::size_t k = 0; k < for_reach.size(); ++k) {
+    const Sized& s = for_reach[k];
+    const std::uint32_t j = before[k];
     const bool reuse = j != FirstIndex::kAbsent && (!changed || !changed->touches(ChangedRegion::around(s.c())));
     out.push_back(reuse ? kept.areas[j] : place(s));
   }

@@ -232,15 +232,16 @@ TEST(FeatureMemo, CeilingFloodEqualsTheWholeFloodAsBoxesComeAndGo) {
     check("step " + std::to_string(step) + ": a box of kind " + std::to_string(kind) + " added");
   }
   EXPECT_GT(lowered, 10u);  // the boxes reached the ceiling: the flood's result changed, not only its runs
-  // Two columns A and D, each with furniture below and a beam above, walled in by pillars: the runs between are
-  // shut in. D cleared opens them: A, which did not change, now reaches to its beam, as a neighbour of a change.
+  // Two columns A and D, each with furniture below and a beam above, walled in by pillars two deep: the runs
+  // between are shut in. D cleared opens them: A, which did not change, now reaches to its beam, as a neighbour of
+  // a change; and the pillar before A, which the flood does not reach, takes its ceiling from A's.
   for (const Box& b : boxes) restore(b);
   boxes.clear();
   room = original_room;
   check("the room again");
   const int ax = s.nx / 2, az = s.nz / 2, lo = levels.floor + 1, hi = cap - 1;
-  for (int x = ax - 1; x <= ax + 2; ++x)
-    for (int z = az - 1; z <= az + 1; ++z)
+  for (int x = ax - 2; x <= ax + 3; ++x)
+    for (int z = az - 2; z <= az + 2; ++z)
       for (int y = lo; y <= hi; ++y) {
         const bool inner = z == az && (x == ax || x == ax + 1);
         grid.cells[s.index(x, y, z)] = !inner || y <= lo + 3 || y >= hi - 3 ? 1 : 0;
@@ -251,6 +252,8 @@ TEST(FeatureMemo, CeilingFloodEqualsTheWholeFloodAsBoxesComeAndGo) {
   check("D cleared");
   EXPECT_EQ(memo.ceiling[s.column(ax, az)], hi - 3);
   EXPECT_NE(memo.ceiling[s.column(ax, az)], shut[s.column(ax, az)]);
+  EXPECT_EQ(memo.ceiling[s.column(ax, az - 1)], hi - 3);
+  EXPECT_EQ(shut[s.column(ax, az - 1)], cap);
   // A grid the memo did not read before this one (an analysis between them failed): flooded whole, and equal.
   previous = original;
   serial += 5;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <numbers>
 #include <optional>
 #include <span>
@@ -198,19 +199,17 @@ void update_flood(CeilingSteps& memo, const VoxelGrid& grid, const std::vector<s
   }
   std::sort(cluster.begin(), cluster.end());
   // Every column flooded again (the changed and the clusters'), with its highest level before.
-  std::vector<std::uint32_t> again(cluster);
-  again.insert(again.end(), changed.begin(), changed.end());
-  std::sort(again.begin(), again.end());
-  again.erase(std::unique(again.begin(), again.end()), again.end());
+  std::vector<std::uint32_t> again;
+  std::set_union(cluster.begin(), cluster.end(), changed.begin(), changed.end(), std::back_inserter(again));
   std::vector<int> before(again.size());
   for (std::size_t i = 0; i < again.size(); ++i) {
     before[i] = f.highest[again[i]];
     f.highest[again[i]] = f.open[again[i]] ? l.hi : -1;
   }
   flood_parts(f, cluster, s, l);
+  const auto ceiling_again = [&](std::size_t col) { memo.ceiling[col] = column_ceiling(s, f.highest, cap, col); };
   for (std::size_t i = 0; i < again.size(); ++i) {
     if (f.highest[again[i]] == before[i]) continue;
-    const auto ceiling_again = [&](std::size_t col) { memo.ceiling[col] = column_ceiling(s, f.highest, cap, col); };
     ceiling_again(again[i]);
     each_neighbour(again[i], ceiling_again);
   }

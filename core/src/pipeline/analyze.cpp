@@ -456,10 +456,11 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   // A run without the areas starts no loop after the features' (the bounds were built beside the heights): its
   // threads end now, while this one lists the rooms.
   if (own_workers && !options.find_areas) own_workers->release();
-  list_rooms(r);
+  if (!options.find_areas) list_rooms(r);
   // The areas (each storey's, side by side: one storey's search leaves a worker idle now and then, the next
   // fills it) and the bounds, which read the features alone, beside them: the area search's task graph leaves
-  // a worker idle at times, the bounds' meshes fill it.
+  // a worker idle at times, the bounds' meshes fill it. The rooms are listed there too, before the bounds: the
+  // area search does not read them, and an update's search is its critical path.
   std::vector<AreaResult> storey_areas(options.find_areas ? r.storeys.size() : 0);
   if (caches)
     while (caches->storeys.size() < storey_areas.size()) caches->storeys.push_back(std::make_unique<SearchCache>());
@@ -499,8 +500,12 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     if (options.build_bounds) build_bounds();
   } else {
     detail::parallel_tasks(2, options.threads, [&](std::size_t task) {
-      if (task == 0) find_all_areas();
-      else if (options.build_bounds) build_bounds();
+      if (task == 0) {
+        find_all_areas();
+        return;
+      }
+      list_rooms(r);
+      if (options.build_bounds) build_bounds();
     });
     if (own_workers) own_workers->release();  // no loop follows: the threads end while the areas are gathered
   }

@@ -23,7 +23,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -95,18 +97,21 @@ Scan object_at(const GridSpec& grid, float floor_y, std::size_t turn) {
                    0.4f, 14);
 }
 
-// Each iteration: `change` (one chunk set or removed), then the new result; the percentiles of those times,
-// and how many chunks an update voxelized and what share of the area searches' bands it searched.
-template <class Change>
-void time_updates(benchmark::State& state, IncrementalAnalysis& inc, Change change) {
+// Each iteration: `change` (one chunk set or removed) of what `arrive` gave, then the new result; the percentiles of
+// those times, and how many chunks an update voxelized and what share of the area searches' bands it searched.
+// `arrive` runs before the clock: the chunk as the runtime hands it over (made, or copied from the room's blocks),
+// which is not the update's cost; `change` moves it in.
+template <class Arrive, class Change>
+void time_updates(benchmark::State& state, IncrementalAnalysis& inc, Arrive arrive, Change change) {
   std::vector<double> ms;
   // The result's own stage times, for where an update's time goes: the areas' (search, reduction and reach
   // together) and the bounds' overlap (analyze.cpp), so neither adds to the other.
   std::array<std::vector<double>, 5> stages;
   double revoxelized = 0, bands_searched = 0, bands = 0;
   for (auto _ : state) {
+    auto arrived = arrive();
     const auto start = std::chrono::steady_clock::now();
-    change();
+    change(std::move(arrived));
     const StageTimings& t = inc.result().timings;
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     const std::array<double, 5> stage = {t.prepare, t.voxelize, t.features, t.areas + t.reduce + t.classify, t.bounds};
@@ -302,11 +307,13 @@ int main(int argc, char** argv) {
       IncrementalAnalysis inc;
       first_result(state, inc, *versions);
       std::size_t turn = 0;
-      time_updates(state, inc, [&] {
-        const auto& [id, two] = (*versions)[turn % versions->size()];
-        inc.set_chunk(id, two[(turn / versions->size()) % 2]);
-        ++turn;
-      });
+      time_updates(
+          state, inc,
+          [&] {
+            const auto& [id, two] = (*versions)[turn % versions->size()];
+            return std::pair(id, two[(turn++ / versions->size()) % 2]);
+          },
+          [&](std::pair<std::uint64_t, Scan> block) { inc.set_chunk(block.first, std::move(block.second)); });
       double block_triangles = 0;
       for (const auto& [id, two] : *versions) block_triangles += double(two[1].indices.size() / 3);
       state.counters["blocks"] = double(versions->size());
@@ -324,11 +331,16 @@ int main(int argc, char** argv) {
       // copies every block into the combined scan again (incremental.h), the most an added chunk costs there.
       constexpr std::uint64_t kObject = std::uint64_t{1} << 62;
       std::size_t turn = 0;
-      time_updates(state, inc, [&] {
-        if (turn % 2 == 0) inc.set_chunk(kObject, object_at(grid, floor_y, turn));
-        else inc.remove_chunk(kObject);
-        ++turn;
-      });
+      time_updates(
+          state, inc,
+          [&] {  // added on even turns, else removed
+            const std::size_t t = turn++;
+            return t % 2 == 0 ? std::optional(object_at(grid, floor_y, t)) : std::nullopt;
+          },
+          [&](std::optional<Scan> object) {
+            if (object) inc.set_chunk(kObject, std::move(*object));
+            else inc.remove_chunk(kObject);
+          });
       state.counters["object_triangles"] = double(box_chunk({}, 0.4f, 14).indices.size() / 3);
       counters(state, room);
     })->Iterations(48);
@@ -360,12 +372,16 @@ int main(int argc, char** argv) {
       const float floor_y = first.floor_y;
       std::size_t turn = 0;
       layer::MeshPiece object;
-      time_updates(state, inc, [&] {
-        const Scan box = object_at(grid, floor_y, turn);
-        object = {box.vertices, box.indices};
-        compute(turn % 2 == 0 ? &object : nullptr);
-        ++turn;
-      });
+      time_updates(
+          state, inc,
+          [&] {  // the runtime's buffers of the object, on even turns
+            const std::size_t t = turn++;
+            if (t % 2 != 0) return false;
+            Scan box = object_at(grid, floor_y, t);
+            object = {std::move(box.vertices), std::move(box.indices)};
+            return true;
+          },
+          [&](bool added) { compute(added ? &object : nullptr); });
       counters(state, room);
     })->Iterations(48);
 #endif

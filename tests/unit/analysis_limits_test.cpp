@@ -191,9 +191,9 @@ TEST(Cancellation, AStopDuringTheAreaSearchReturnsPromptlyOnAnyThreadCount) {
       // A stop meant to come during the search comes after it where the unstopped search was measured in a slower
       // minute than this one (a shared machine, two builds beside it: the 30 % stop once came late): then the same
       // again with half the delay, a few times, down to a stop that comes at once, which no search outruns.
-      auto delay = unstopped * percent / 100;
-      for (int attempt = 0;; ++attempt, delay /= 2) {
-        if (attempt == 6) delay = delay.zero();
+      constexpr int kAtOnce = 6;  // the attempt whose stop comes at once
+      for (int attempt = 0;; ++attempt) {
+        const auto delay = attempt < kAtOnce ? unstopped * percent / 100 / (1 << attempt) : unstopped.zero();
         std::stop_source stop;
         std::chrono::steady_clock::time_point stopped = std::chrono::steady_clock::now();
         std::jthread stopper([&] {
@@ -210,7 +210,7 @@ TEST(Cancellation, AStopDuringTheAreaSearchReturnsPromptlyOnAnyThreadCount) {
         }
         stopper.join();
         if (finished) {
-          ASSERT_LT(attempt, 6) << "finished though stopped at once, " << threads << " threads, " << percent << " %";
+          ASSERT_LT(attempt, kAtOnce) << "finished though stopped at once, " << threads << " threads, " << percent << " %";
           continue;
         }
         EXPECT_LT(std::chrono::steady_clock::now() - stopped, std::chrono::seconds(3)) << threads << " threads";

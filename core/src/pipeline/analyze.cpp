@@ -456,7 +456,6 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
   // A run without the areas starts no loop after the features' (the bounds were built beside the heights): its
   // threads end now, while this one lists the rooms.
   if (own_workers && !options.find_areas) own_workers->release();
-  if (!options.find_areas) list_rooms(r);
   // The areas (each storey's, side by side: one storey's search leaves a worker idle now and then, the next
   // fills it) and the bounds, which read the features alone, beside them: the area search's task graph leaves
   // a worker idle at times, the bounds' meshes fill it. The rooms are listed there too, before the bounds: the
@@ -496,16 +495,16 @@ AnalysisResult detail::analyze(const Scan& scan, const AnalysisOptions& options,
     }
     r.timings.bounds = bounds_clock.lap();
   };
-  if (!options.find_areas) {
+  const auto rooms_and_bounds = [&] {
+    list_rooms(r);
     if (options.build_bounds) build_bounds();
+  };
+  if (!options.find_areas) {
+    rooms_and_bounds();
   } else {
     detail::parallel_tasks(2, options.threads, [&](std::size_t task) {
-      if (task == 0) {
-        find_all_areas();
-        return;
-      }
-      list_rooms(r);
-      if (options.build_bounds) build_bounds();
+      if (task == 0) find_all_areas();
+      else rooms_and_bounds();
     });
     if (own_workers) own_workers->release();  // no loop follows: the threads end while the areas are gathered
   }

@@ -162,12 +162,26 @@ XrResult Analyzer::compute(const XrRoomComputeInfoEXTX& info) {
   if (state_ == XR_ROOM_COMPUTE_STATE_RUNNING_EXTX) return XR_ERROR_CALL_ORDER_INVALID;
   job.submitted = submitted_;
   if (latest_) job.skip_hash = latest_->input_hash;
-  // The previous worker published its result (the state is not RUNNING) and touches nothing of ours any
-  // more, so joining it here, under the lock, cannot wait on us.
-  if (worker_.joinable()) worker_.join();
-  worker_ = std::jthread([this](std::stop_token stop, Job j) { run(stop, std::move(j)); }, std::move(job));
+  // Started before anything changes: a thread that cannot start leaves the analyzer as it was (the error goes to
+  // the application), not RUNNING with no worker. It takes the job once this lock is released.
+  if (!worker_.joinable()) worker_ = std::jthread([this](std::stop_token stop) { serve(stop); });
+  pending_ = std::move(job);
   state_ = XR_ROOM_COMPUTE_STATE_RUNNING_EXTX;  // the worker publishes under this lock, so only after this
+  work_.notify_one();
   return XR_SUCCESS;
+}
+
+void Analyzer::serve(std::stop_token stop) {
+  for (;;) {
+    Job job;
+    {
+      std::unique_lock lock(mutex_);
+      if (!work_.wait(lock, stop, [&] { return pending_.has_value(); })) return;  // stop requested
+      job = std::move(*pending_);
+      pending_.reset();
+    }
+    run(stop, std::move(job));
+  }
 }
 
 XrRoomComputeStateEXTX Analyzer::state() {

@@ -1,6 +1,7 @@
 // One XrRoomAnalyzerEXTX: the meshes submitted to it, its compute state, the latest completed result, and
-// the worker thread that runs each compute (the runtime query, then the core pipeline). Getters never wait
-// for the worker: they read the latest result, which the worker swaps in whole.
+// the worker thread that runs its computes one after another (the runtime query, then the core pipeline),
+// started at the first compute and kept until the analyzer shuts down. Getters never wait for the worker: they
+// read the latest result, which the worker swaps in whole.
 #pragma once
 #include "chunk_feed.h"
 #include "chunk_ids.h"
@@ -67,22 +68,27 @@ class Analyzer {
     std::optional<std::uint64_t> skip_hash;  // the latest result's input_hash
   };
   void run(std::stop_token stop, Job job);
+  // The worker: each job compute() leaves in pending_, until a stop is requested.
+  void serve(std::stop_token stop);
 
   std::shared_ptr<SessionState> session_;
   Settings settings_;
 
   std::mutex mutex_;  // guards everything below
   std::condition_variable_any done_;  // notified when a compute ends
+  std::condition_variable_any work_;  // notified when compute() leaves a job
+  std::optional<Job> pending_;        // the compute the worker has yet to take
   bool shut_ = false;
   XrRoomComputeStateEXTX state_ = XR_ROOM_COMPUTE_STATE_NONE_EXTX;
   std::vector<std::shared_ptr<const MeshPiece>> submitted_;
   std::shared_ptr<const RoomResult> latest_;
-  // The analyses' chunks and each mesh's chunk id, touched only by the worker: one runs at a time, and start()
-  // joins the previous one first.
+  // The analyses' chunks and each mesh's chunk id, touched only by the worker.
   std::optional<IncrementalAnalysis> incremental_;
   ChunkIds chunk_ids_;
   ChunkFeed feed_;  // what incremental_ was given under each chunk id
   std::unique_ptr<VoxelStage> stage_;  // a Vulkan stage, kept for the next analyses (worker only, as above)
+  // One thread for every compute, not one each: starting a thread took some 75 us on this project's VM, half of
+  // an unchanged room's compute as an application sees it (bench/README.md).
   std::jthread worker_;
 };
 

@@ -12,6 +12,8 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <string>
 #include <thread>
 
 namespace {
@@ -63,6 +65,39 @@ TEST(LayerLifecycle, GettersOnSeveralThreadsWhileAComputeRuns) {
   EXPECT_EQ(failures.load(), 0);
   EXPECT_GT(results.load(), 0);
   std::printf("[ figures  ] %d reads before the first result, %d full reads\n", early.load(), results.load());
+}
+
+// One worker thread serves every compute of an analyzer, from the first until the analyzer ends: an application
+// that computes every few frames starts no thread each time. The process's threads are read right after each
+// compute starts (a compute over changed meshes analyses for a millisecond and more, so a thread of its own would
+// still be running): after the first, no compute brings a thread the first did not have (it starts the worker,
+// and the analysis its own threads, kept too).
+TEST(LayerLifecycle, AnAnalyzersComputesShareOneThread) {
+#ifndef __linux__
+  GTEST_SKIP() << "reads the process's threads from /proc/self/task";
+#else
+  const auto threads = [] {
+    std::set<std::string> ids;
+    for (const auto& entry : std::filesystem::directory_iterator("/proc/self/task")) ids.insert(entry.path().filename());
+    return ids;
+  };
+  App app;
+  const XrRoomAnalyzerEXTX a = app.analyzer();
+  const Room room("synthetic:thesis-room1");
+  app.submit(a, room.vertices, room.indices);
+  app.start(a, false);
+  std::set<std::string> first = threads();
+  ASSERT_EQ(app.wait(a), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+  first.merge(threads());
+  for (int round = 0; round < 5; ++round) {
+    const float x = -1.0f + 0.3f * float(round);  // a standing 0.2 m square: the meshes changed, an analysis runs
+    app.submit(a, {{x, 1.0f, 0.5f}, {x + 0.2f, 1.0f, 0.5f}, {x + 0.2f, 1.2f, 0.5f}, {x, 1.2f, 0.5f}}, {0, 2, 1, 0, 3, 2});
+    app.start(a, false);
+    const std::set<std::string> now = threads();
+    ASSERT_EQ(app.wait(a), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX) << "round " << round;
+    for (const std::string& id : now) EXPECT_EQ(first.count(id), 1u) << "round " << round << ": thread " << id << " is new";
+  }
+#endif
 }
 
 TEST(LayerLifecycle, InstanceDestroyedAndCreatedAgain) {

@@ -21,6 +21,7 @@
 #include <benchmark/benchmark.h>
 
 #include "headless_session.h"
+#include "percentiles.h"
 
 #include <algorithm>
 #include <chrono>
@@ -28,6 +29,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -123,13 +125,8 @@ void layer_compute(benchmark::State& state, const char* extension, Room room) {
       state.ResumeTiming();
     }
   }
-  const auto percentiles = [&](std::vector<double>& values, const std::string& prefix) {
-    std::sort(values.begin(), values.end());
-    state.counters[prefix + "p50_ms"] = 1e3 * values[values.size() / 2];
-    state.counters[prefix + "p90_ms"] = 1e3 * values[values.size() * 9 / 10];
-  };
-  percentiles(seconds, "");
-  if (!place_seconds.empty()) percentiles(place_seconds, "place_");
+  roomsense::bench::set_percentiles(state, std::move(seconds));
+  roomsense::bench::set_percentiles(state, std::move(place_seconds), "place_");
   if (room == Room::Scanning) state.counters["failed"] = double(failed);
   unsetenv("ROOMSENSE_SIM_SCAN_SECONDS");
 }

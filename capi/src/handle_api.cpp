@@ -58,6 +58,23 @@ static_assert(RS_AREA_TYPE_NONE == 0 && RS_AREA_TYPE_WALL == int(roomsense::Area
 
 namespace roomsense::capi {
 
+// The placement queries of a result, built at the first query (on the asking thread, outside the job's lock;
+// concurrent queries wait for the one build), as the layer's are: built at every compute, their index took some
+// 0.45 ms of an update's 1 ms on thesis-room1 through this API (bench/README.md), for engines that may never query.
+class LazyQueries {
+ public:
+  explicit LazyQueries(std::shared_ptr<const AnalysisResult> analysis) : analysis_(std::move(analysis)) {}
+  const RoomQueries& get() const {
+    std::call_once(once_, [&] { queries_ = RoomQueries(*analysis_); });
+    return queries_;
+  }
+
+ private:
+  std::shared_ptr<const AnalysisResult> analysis_;
+  mutable std::once_flag once_;
+  mutable RoomQueries queries_;
+};
+
 // A finished compute, already in C form. The default is an internal failure, what a job that threw holds.
 struct HandleOutput {
   rs_result status = RS_ERROR_INTERNAL;
@@ -74,8 +91,12 @@ struct HandleOutput {
     std::vector<std::uint32_t> indices;
   };
   std::vector<Mesh> room_bounds;  // one per room
-  RoomQueries queries;  // immutable and shared: copied out of the lock and queried there
+  std::shared_ptr<const LazyQueries> queries;  // a successful result's; shared: copied out of the lock, queried there
 };
+
+// What an analyzer's job holds: its output, shared with the chunks' kept one (Chunks::last). Null where the job's
+// work threw: it reads as the default HandleOutput, an internal failure.
+using SharedOutput = std::shared_ptr<const HandleOutput>;
 
 namespace {
 
@@ -138,7 +159,8 @@ rs_result to_result(ErrorCode code) {
   return RS_ERROR_INTERNAL;
 }
 
-HandleOutput convert(const AnalysisResult& r) {
+HandleOutput convert(std::shared_ptr<const AnalysisResult> analysis) {
+  const AnalysisResult& r = *analysis;
   HandleOutput out;
   const GridSpec& spec = r.voxels.grid.spec;
   rs_layout& l = out.layout;
@@ -187,37 +209,38 @@ HandleOutput convert(const AnalysisResult& r) {
   l.area_count = static_cast<std::uint32_t>(out.areas.size());
   l.bounds_vertex_count = static_cast<std::uint32_t>(r.bounds.vertices.size());
   l.bounds_index_count = static_cast<std::uint32_t>(out.bounds_indices.size());
-  out.queries = RoomQueries(r);
+  out.queries = std::make_shared<const LazyQueries>(std::move(analysis));
   out.status = RS_SUCCESS;
   return out;
 }
 
-// Runs analysis() and converts its result; errors become the output's status and message.
-template <class Analysis>
-HandleOutput run_guarded(Analysis&& analysis) {
+// Runs make() (an analysis and its conversion); errors become the output's status and message.
+template <class Make>
+SharedOutput run_guarded(Make&& make) {
+  const auto failed = [](HandleOutput out) { return std::make_shared<const HandleOutput>(std::move(out)); };
   try {
-    return convert(analysis());
+    return make();
   } catch (const Error& e) {
     HandleOutput out;
     out.status = to_result(e.code());
     out.message = e.what();
-    return out;
+    return failed(std::move(out));
   } catch (const std::bad_alloc&) {
     HandleOutput out;
     out.status = RS_ERROR_OUT_OF_MEMORY;
     out.message = "out of memory";
-    return out;
+    return failed(std::move(out));
   } catch (const std::exception& e) {
     HandleOutput out;
     out.message = std::string("internal error: ") + e.what();
-    return out;
+    return failed(std::move(out));
   }
 }
 
-HandleOutput run(Scan& scan, const SourceFrame& frame, const AnalysisOptions& options) {
+SharedOutput run(Scan& scan, const SourceFrame& frame, const AnalysisOptions& options) {
   return run_guarded([&] {
     convert_to_roomsense_frame(scan, frame);
-    return analyze(scan, options);
+    return std::make_shared<const HandleOutput>(convert(std::make_shared<const AnalysisResult>(analyze(scan, options))));
   });
 }
 
@@ -228,6 +251,7 @@ struct Chunks {
   std::map<std::uint64_t, std::optional<Scan>> pending;  // the latest change per id (nullopt: remove)
   std::set<std::uint64_t> ids;  // held once the pending changes apply
   std::optional<IncrementalAnalysis> analysis;
+  SharedOutput last;  // the output of analysis's latest result, where it was converted (worker only)
 };
 
 }  // namespace
@@ -239,7 +263,7 @@ struct rs_analyzer {
   roomsense::AnalysisOptions options;
   roomsense::SourceFrame frame;
   roomsense::capi::Chunks chunks;
-  roomsense::capi::Job<roomsense::capi::HandleOutput> job;  // last: its worker stops before the rest goes
+  roomsense::capi::Job<roomsense::capi::SharedOutput> job;  // last: its worker stops before the rest goes
 };
 
 namespace roomsense::capi {
@@ -250,11 +274,13 @@ namespace {
 template <class F>
 rs_result with_ready_output(rs_analyzer* analyzer, bool failed_too, F&& f) {
   if (analyzer == nullptr) return RS_ERROR_HANDLE_INVALID;
-  return analyzer->job.inspect([&](JobPhase phase, const HandleOutput* out) -> rs_result {
+  return analyzer->job.inspect([&](JobPhase phase, const SharedOutput* held) -> rs_result {
     if (phase == JobPhase::Running) return RS_ERROR_NOT_READY;
-    if (phase == JobPhase::Idle || out == nullptr) return RS_ERROR_NO_RESULT;
-    if (out->status != RS_SUCCESS && !failed_too) return out->status;
-    return f(*out);
+    if (phase == JobPhase::Idle || held == nullptr) return RS_ERROR_NO_RESULT;
+    const HandleOutput threw;
+    const HandleOutput& out = *held ? **held : threw;
+    if (out.status != RS_SUCCESS && !failed_too) return out.status;
+    return f(out);
   });
 }
 
@@ -300,21 +326,21 @@ rs_result guarded(auto&& body) {
 
 // The queries of the last successful compute, or why there are none; `out` stays empty then, so that a query
 // on it still checks its arguments (core throws BadParameter) before the state is reported.
-rs_result ready_queries(rs_analyzer* analyzer, RoomQueries& out) {
+rs_result ready_queries(rs_analyzer* analyzer, std::shared_ptr<const LazyQueries>& out) {
   return with_ready_output(analyzer, false, [&](const HandleOutput& o) {
     out = o.queries;
     return RS_SUCCESS;
   });
 }
 
-// One placement query: `ask` runs on the last result's RoomQueries, copied out of the lock, and `write` stores
-// its answer. `ask` runs even when there is no result (on empty queries), so that bad arguments are reported
-// before the state, as everywhere in this API; core throws BadParameter for them.
+// One placement query: `ask` runs on the last result's queries, copied out of the lock (and built there at the
+// first query), and `write` stores its answer. `ask` runs even when there is no result (on empty queries), so
+// that bad arguments are reported before the state, as everywhere in this API; core throws BadParameter for them.
 rs_result answer(rs_analyzer* analyzer, auto&& ask, auto&& write) {
   return guarded([&] {
-    RoomQueries queries;
+    std::shared_ptr<const LazyQueries> queries;
     const rs_result state = ready_queries(analyzer, queries);
-    auto found = ask(std::as_const(queries));
+    auto found = ask(queries ? queries->get() : RoomQueries());
     if (state != RS_SUCCESS) return state;
     return write(found);
   });
@@ -562,10 +588,17 @@ rs_result rs_analyzer_compute_chunks(rs_analyzer* analyzer) {
               if (chunk) chunks.analysis->set_chunk(id, std::move(*chunk));
               else chunks.analysis->remove_chunk(id);
             }
-            return roomsense::capi::run_guarded([&] {
+            chunks.last = roomsense::capi::run_guarded([&] {
               chunks.analysis->set_stop(std::move(stop));
-              return chunks.analysis->result();
+              const roomsense::AnalysisResult& result = chunks.analysis->result();
+              // No chunk changed: the last output, where it succeeded, not converted again (its query index
+              // alone takes some 0.4 ms on a 78k-vertex room, bench/README.md).
+              if (chunks.analysis->reused_result() && chunks.last && chunks.last->status == RS_SUCCESS)
+                return chunks.last;
+              return std::make_shared<const roomsense::capi::HandleOutput>(
+                  roomsense::capi::convert(std::make_shared<const roomsense::AnalysisResult>(result)));
             });
+            return chunks.last;
           },
           /*replace_result=*/true);
       return started ? RS_SUCCESS : RS_ERROR_BUSY;
@@ -577,10 +610,10 @@ rs_result rs_analyzer_compute_chunks(rs_analyzer* analyzer) {
 
 namespace {
 
-rs_state state_of(JobPhase phase, const HandleOutput* o) {
+rs_state state_of(JobPhase phase, const SharedOutput* held) {
   if (phase == JobPhase::Running) return RS_STATE_RUNNING;
-  if (phase == JobPhase::Idle || o == nullptr) return RS_STATE_IDLE;
-  return o->status == RS_SUCCESS ? RS_STATE_READY : RS_STATE_FAILED;
+  if (phase == JobPhase::Idle || held == nullptr) return RS_STATE_IDLE;
+  return *held && (*held)->status == RS_SUCCESS ? RS_STATE_READY : RS_STATE_FAILED;
 }
 
 }  // namespace

@@ -2,11 +2,15 @@
 // read its result under a lock, clear it. The thesis API keeps two of these in function-local statics;
 // each rs_analyzer owns one.
 //
+// The worker is started by the first start() and serves every computation after it until clear() (or the
+// destructor) ends it: starting a thread per computation took some 75 us on this project's VM, more than an
+// unchanged room's update through the handle API (bench/README.md).
+//
 // Two locks: `control_` serialises whoever starts, joins or clears (the only ones touching thread_), and
-// `mutex_` guards the phase and the result, which the worker sets once at its end. The worker takes only
-// `mutex_`, so joining it while holding `control_` cannot deadlock. The destructor and clear() ask the
-// worker to stop (its work gets a std::stop_token; the analysis returns within ~100 ms) and join it: the
-// worker never outlives the Job it writes to.
+// `mutex_` guards the phase, the result and the work handed over, which the worker takes and sets. The worker
+// takes only `mutex_`, so joining it while holding `control_` cannot deadlock. The destructor and clear() ask
+// the worker to stop (its work gets the worker's std::stop_token; the analysis returns within ~100 ms) and
+// join it: the worker never outlives the Job it writes to.
 #pragma once
 #include <chrono>
 #include <condition_variable>
@@ -31,36 +35,24 @@ class Job {
   Job& operator=(const Job&) = delete;
   ~Job() { clear(); }
 
-  // Runs work() on a new thread and keeps what it returns. Starts nothing and returns false while the job
-  // runs, or while it holds a result and replace_result is false. Throws std::system_error when no thread
-  // can be started; the job is then Idle.
+  // Hands work() to the worker (started here the first time) and keeps what it returns. Starts nothing and
+  // returns false while the job runs, or while it holds a result and replace_result is false. Throws
+  // std::system_error when no worker can be started; the job is then as it was.
   bool start(std::function<Result(std::stop_token)> work, bool replace_result) {
     std::lock_guard control(control_);
     {
       std::lock_guard lock(mutex_);
       if (phase_ == JobPhase::Running || (phase_ == JobPhase::Done && !replace_result)) return false;
     }
-    if (thread_.joinable()) thread_.join();  // the previous worker, finished or about to return
+    // Started before anything changes; it waits for the work below, under mutex_.
+    if (!thread_.joinable()) thread_ = std::jthread([this](std::stop_token stop) { serve(stop); });
     {
       std::lock_guard lock(mutex_);
       result_.reset();
+      pending_ = std::move(work);
       phase_ = JobPhase::Running;
     }
-    try {
-      thread_ = std::jthread([this, work = std::move(work)](std::stop_token stop) {
-        Result result;
-        try {
-          result = work(stop);
-        } catch (...) {
-          result = Result{};
-        }
-        finish(std::move(result));
-      });
-    } catch (...) {
-      std::lock_guard lock(mutex_);
-      phase_ = JobPhase::Idle;
-      throw;
-    }
+    work_.notify_one();
     return true;
   }
 
@@ -97,7 +89,8 @@ class Job {
     return std::forward<F>(f)(phase_, result_ ? &*result_ : static_cast<Result*>(nullptr));
   }
 
-  // Stops a running worker, drops the result, and makes the job Idle.
+  // Stops a running computation, ends the worker (the next start() starts one again), drops the result, and
+  // makes the job Idle.
   void clear() {
     std::lock_guard control(control_);
     thread_.request_stop();
@@ -106,11 +99,33 @@ class Job {
     {
       std::lock_guard lock(mutex_);
       old.swap(result_);
+      pending_ = nullptr;
       phase_ = JobPhase::Idle;
     }
   }
 
  private:
+  // The worker: each work start() hands over, until a stop is requested. A stop that comes while work runs
+  // ends that work (it returns, or throws Cancelled: the job then holds the failed result) and then the worker.
+  void serve(std::stop_token stop) {
+    for (;;) {
+      std::function<Result(std::stop_token)> work;
+      {
+        std::unique_lock lock(mutex_);
+        if (!work_.wait(lock, stop, [this] { return pending_ != nullptr; })) return;  // stop requested
+        work.swap(pending_);
+      }
+      Result result;
+      try {
+        result = work(stop);
+      } catch (...) {
+        result = Result{};
+      }
+      work = nullptr;  // what it holds (the caller's scan) goes before the result is published
+      finish(std::move(result));
+    }
+  }
+
   void finish(Result&& result) {
     {
       std::lock_guard lock(mutex_);
@@ -122,9 +137,11 @@ class Job {
 
   std::mutex control_;
   mutable std::mutex mutex_;
-  mutable std::condition_variable cv_;
+  mutable std::condition_variable cv_;     // notified when a computation ends
+  std::condition_variable_any work_;       // notified when start() hands over work
   JobPhase phase_ = JobPhase::Idle;
   std::optional<Result> result_;
+  std::function<Result(std::stop_token)> pending_;  // the work the worker has yet to take
   std::jthread thread_;
 };
 

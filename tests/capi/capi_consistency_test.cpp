@@ -16,8 +16,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <map>
 #include <set>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -590,6 +592,67 @@ TEST(CapiChunks, ARoomInChunksIsTheRoomWhole) {
   ASSERT_EQ(computed_chunks(chunked), RS_STATE_READY);
   expect_same_areas(areas_of(chunked), whole(held));
   rs_analyzer_destroy(chunked);
+}
+
+
+// The process's threads by id, from /proc/self/task.
+std::set<std::string> process_threads() {
+  std::set<std::string> ids;
+#ifdef __linux__
+  for (const auto& entry : std::filesystem::directory_iterator("/proc/self/task")) ids.insert(entry.path().filename());
+#endif
+  return ids;
+}
+
+// An analyzer's computes share one worker (capi/src/job.h): after its first compute, a compute of changed chunks
+// brings no thread the first had not, read right after each starts (a thread per compute was new each time).
+TEST(CapiChunks, AnAnalyzersComputesShareOneThread) {
+#ifndef __linux__
+  GTEST_SKIP() << "reads the process's threads from /proc/self/task";
+#endif
+  const Scan scan = synth::generate(synth::default_room());
+  rs_analyzer* analyzer = nullptr;
+  ASSERT_EQ(rs_analyzer_create(nullptr, &analyzer), RS_SUCCESS);
+  for (const auto& [id, chunk] : split_into_blocks(scan))
+    ASSERT_EQ(rs_analyzer_set_chunk(analyzer, id, &chunk.vertices[0].x, uint32_t(chunk.vertices.size()),
+                                    chunk.indices.data(), uint32_t(chunk.indices.size())),
+              RS_SUCCESS);
+  ASSERT_EQ(rs_analyzer_compute_chunks(analyzer), RS_SUCCESS);
+  std::set<std::string> first = process_threads();
+  rs_state state = RS_STATE_IDLE;
+  ASSERT_EQ(rs_analyzer_wait(analyzer, RS_WAIT_INFINITE, &state), RS_SUCCESS);
+  ASSERT_EQ(state, RS_STATE_READY);
+  first.merge(process_threads());
+  for (int round = 0; round < 5; ++round) {
+    const float x = -1.0f + 0.3f * float(round);  // a standing 0.2 m square: the chunks changed, an analysis runs
+    const float xyz[12] = {x, 1.0f, 0.5f, x + 0.2f, 1.0f, 0.5f, x + 0.2f, 1.2f, 0.5f, x, 1.2f, 0.5f};
+    const uint32_t indices[6] = {0, 2, 1, 0, 3, 2};
+    ASSERT_EQ(rs_analyzer_set_chunk(analyzer, uint64_t{1} << 62, xyz, 4, indices, 6), RS_SUCCESS);
+    ASSERT_EQ(rs_analyzer_compute_chunks(analyzer), RS_SUCCESS);
+    const std::set<std::string> now = process_threads();
+    ASSERT_EQ(rs_analyzer_wait(analyzer, RS_WAIT_INFINITE, &state), RS_SUCCESS);
+    ASSERT_EQ(state, RS_STATE_READY) << "round " << round;
+    for (const std::string& id : now) EXPECT_EQ(first.count(id), 1u) << "round " << round << ": thread " << id << " is new";
+  }
+  rs_analyzer_destroy(analyzer);
+}
+
+// The thesis API's jobs live in statics: CleanUp ends the job's worker, so that no thread of the library is left
+// waiting between jobs, and a job after it starts one again.
+TEST(CapiChunks, ThesisCleanUpEndsItsWorker) {
+#ifndef __linux__
+  GTEST_SKIP() << "reads the process's threads from /proc/self/task";
+#endif
+  const std::vector<float> flat = flat_vertices(synth::generate(synth::default_room()));
+  for (int round = 0; round < 2; ++round) {
+    const std::set<std::string> before = process_threads();
+    int code = -1, size = 0;
+    finished_understanding(flat, code, size);
+    EXPECT_EQ(code, 0) << "round " << round;
+    EXPECT_GT(process_threads().size(), before.size()) << "round " << round << ": the finished job's worker waits";
+    EXPECT_EQ(RoomCreator::CleanUpRoomUnderstanding(), 0);
+    EXPECT_EQ(process_threads(), before) << "round " << round << ": a thread outlived CleanUp";
+  }
 }
 
 }  // namespace

@@ -120,7 +120,8 @@ ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_create(const rs_analyzer_options* op
  * 100 ms whatever the compute is doing. NULL is ignored. */
 ROOMSENSE_CAPI_EXPORT void rs_analyzer_destroy(rs_analyzer* analyzer);
 
-/* Starts analysing a scan on a worker thread and returns at once. The scan is copied before the call
+/* Starts analysing a scan on the analyzer's worker thread (started at its first compute and kept until
+ * rs_analyzer_destroy) and returns at once. The scan is copied before the call
  * returns. xyz: vertex_count vertices, 3 floats each. indices: index_count triangle indices, 3 per
  * triangle, or NULL with index_count 0 for a point cloud (the thesis's input). NaN/Inf vertices are
  * skipped, far outliers rejected. A new compute replaces the previous result.
@@ -140,7 +141,7 @@ ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_compute(rs_analyzer* analyzer, const
  * the chunks changed since the last one (while the grid's extent stays), derives again only what the change
  * can reach (the area searches near it; features when the voxels changed; the bounds meshes through the voxel
  * layers that changed; the input checks and surface heights of the changed chunks), and when nothing changed
- * it keeps the previous result at once. rs_analyzer_compute does not touch the chunks. */
+ * it keeps the previous result, already in C form, at once. rs_analyzer_compute does not touch the chunks. */
 ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_set_chunk(rs_analyzer* analyzer, uint64_t chunk_id, const float* xyz,
                                                       uint32_t vertex_count, const uint32_t* indices,
                                                       uint32_t index_count);
@@ -293,7 +294,8 @@ ROOMSENSE_CAPI_EXPORT rs_result rs_analyzer_get_message(rs_analyzer* analyzer, u
  * copying the room, from any thread, at the same time as the getters. Each answer is deterministic for the
  * same query and seed. Like the getters they return RS_ERROR_NOT_READY while a compute runs, RS_ERROR_NO_RESULT
  * before the first and the failure's code after a failed one. A query the room cannot satisfy is not an error:
- * it finds nothing and says why. */
+ * it finds nothing and says why. The first query of a result builds the room's index for them (about 0.5 ms
+ * on a 78k-vertex room), on the thread that asks; queries asked meanwhile wait for that one build. */
 
 /* The surfaces a query may use. The values are those of the extension's XrRoomSurfaceFlagsEXTX. */
 typedef enum rs_surface_bits {

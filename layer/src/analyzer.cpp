@@ -304,7 +304,7 @@ void Analyzer::run(std::stop_token stop, Job job) {
     if (stop.stop_requested()) return;
     const auto elapsed = std::chrono::steady_clock::now() - job.started;
     result = std::make_shared<RoomResult>(
-        make_room_result(analysis, sources, std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count(), stop));
+        make_room_result(analysis, sources, std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count()));
     result->input_hash = input_hash;
     log_info("analysis completed: " + std::to_string(sources.runtime_meshes) + " runtime, " +
              std::to_string(sources.app_read_meshes) + " app-read and " + std::to_string(sources.submitted_meshes) +

@@ -45,9 +45,14 @@ const char* space_name(XrReferenceSpaceType type) {
   }
 }
 
-const RoomQueries& LazyResultParts::queries(const std::vector<Surface>& surfaces) const {
+const std::vector<Surface>& LazyResultParts::surfaces() const {
+  std::call_once(surfaces_once_, [&] { surfaces_ = extract_surfaces(*analysis_); });
+  return surfaces_;
+}
+
+const RoomQueries& LazyResultParts::queries() const {
   std::call_once(queries_once_, [&] {
-    queries_ = analysis_->ok() ? RoomQueries(*analysis_, surfaces) : RoomQueries(*analysis_);
+    queries_ = analysis_->ok() ? RoomQueries(*analysis_, surfaces()) : RoomQueries(*analysis_);
   });
   return queries_;
 }
@@ -68,7 +73,7 @@ const std::string& LazyResultParts::json() const {
 }
 
 RoomResult make_room_result(std::shared_ptr<const AnalysisResult> analysis, const MeshSources& sources,
-                            XrDuration duration, const std::stop_token& stop) {
+                            XrDuration duration) {
   const AnalysisResult& r = *analysis;
   RoomResult out;
   out.floor_y = r.floor_y;
@@ -104,7 +109,6 @@ RoomResult make_room_result(std::shared_ptr<const AnalysisResult> analysis, cons
   out.input_vertices = clamp32(r.input.vertices);
   out.input_triangles = clamp32(r.input.triangles);
   out.duration = duration;
-  out.surfaces = extract_surfaces(r, {}, stop);
   out.lazy = std::make_shared<const LazyResultParts>(std::move(analysis), sources, duration);
   return out;
 }

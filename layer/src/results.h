@@ -12,7 +12,6 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
-#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -33,22 +32,24 @@ struct MeshSources {
 };
 
 // What only some applications ask of a result, built at the first ask (on the asking thread; concurrent asks wait
-// for the one build): the placement queries' index and the JSON. Built at every compute, they took most of a
-// compute after an update of thesis-room1: 22.6 ms p50 through the layer on Magic Leap, 3.4 ms without them
-// (bench/README.md, stop 63).
+// for the one build): the placement queries' index, the JSON and the surfaces the spatial-entity API serves.
+// Built at every compute, the first two took most of a compute after an update of thesis-room1: 22.6 ms p50
+// through the layer on Magic Leap, 3.4 ms without them (bench/README.md, stop 63); the surfaces some 0.1 ms of
+// the 0.57 ms left (stop 94).
 class LazyResultParts {
  public:
   LazyResultParts(std::shared_ptr<const AnalysisResult> analysis, MeshSources sources, XrDuration duration)
       : analysis_(std::move(analysis)), sources_(std::move(sources)), duration_(duration) {}
-  // `surfaces`: the result's own (RoomResult::surfaces), already extracted, so the index does not extract them again.
-  const RoomQueries& queries(const std::vector<Surface>& surfaces) const;
+  const std::vector<Surface>& surfaces() const;
+  const RoomQueries& queries() const;  // on surfaces(), not extracted again
   const std::string& json() const;
 
  private:
   std::shared_ptr<const AnalysisResult> analysis_;
   MeshSources sources_;
   XrDuration duration_ = 0;
-  mutable std::once_flag queries_once_, json_once_;
+  mutable std::once_flag surfaces_once_, queries_once_, json_once_;
+  mutable std::vector<Surface> surfaces_;
   mutable RoomQueries queries_;
   mutable std::string json_;
 };
@@ -69,19 +70,19 @@ struct RoomResult {
   XrVector3f bounds_min{0, 0, 0}, bounds_max{0, 0, 0};
   std::uint32_t input_vertices = 0, input_triangles = 0;
   XrDuration duration = 0;
-  std::vector<Surface> surfaces;  // the planes the standard spatial-entity API serves (spatial/)
   std::uint64_t input_hash = 0;   // of the meshes and labels analysed (Analyzer::compute)
   std::shared_ptr<const LazyResultParts> lazy;
+  // The planes the standard spatial-entity API serves (spatial/).
+  const std::vector<Surface>& surfaces() const { return lazy->surfaces(); }
   // Placement queries, raycasts, random points (queries.cpp).
-  const RoomQueries& queries() const { return lazy->queries(surfaces); }
+  const RoomQueries& queries() const { return lazy->queries(); }
   // roomsense.analysis/1, with an "openxr" member saying where the meshes came from.
   const std::string& json() const { return lazy->json(); }
 };
 
-// A stop request throws Error(Cancelled) (the surfaces are extracted here). The result keeps `analysis` for the
-// parts built at first use.
+// The result keeps `analysis` for the parts built at first use (LazyResultParts).
 RoomResult make_room_result(std::shared_ptr<const AnalysisResult> analysis, const MeshSources& sources,
-                            XrDuration duration, const std::stop_token& stop = {});
+                            XrDuration duration);
 
 // Writes analysis.json and bounds.obj into `dir` (created when missing). Failures are logged, never thrown.
 void export_files(const std::string& dir, const RoomResult& result, const BoundsMesh& bounds);

@@ -58,7 +58,19 @@ class MetaSource final : public MeshSource {
  private:
   std::vector<XrSpaceQueryResultFB> find_mesh_spaces(XrSession session, std::stop_token stop) const;
   bool enable(XrSpace space, XrSpaceComponentTypeFB component, std::stop_token stop) const;
-  MeshPiece read_mesh(XrSpace space) const;
+  // The runtime's arrays of the mesh read last, kept from one query to the next (under read_mutex_: a session's
+  // analyzers query from their own threads). The global mesh has no version, so every query reads it whole;
+  // fresh buffers of its size (2.6 MB for thesis-room1) took a page fault per 4 KiB each time, some 11 ms of an
+  // unchanged room's compute on this project's VM (bench/README.md, stop 94).
+  struct ReadBuffers {
+    std::vector<XrVector3f> vertices;
+    std::vector<std::uint32_t> indices;
+    std::size_t vertex_count = 0, index_count = 0;  // of the last read; the vectors only grow
+  };
+  // Reads the space's triangle mesh into `into`.
+  void read_mesh(XrSpace space, ReadBuffers& into) const;
+  std::mutex read_mutex_;
+  ReadBuffers read_;
 };
 
 // Calls `step` until it returns true (PollPause between calls), for at most runtime_timeout(); false when stopped.
@@ -134,27 +146,24 @@ bool MetaSource::enable(XrSpace space, XrSpaceComponentTypeFB component, std::st
   });
 }
 
-MeshPiece MetaSource::read_mesh(XrSpace space) const {
+void MetaSource::read_mesh(XrSpace space, ReadBuffers& into) const {
   const auto get = xr_struct<XrSpaceTriangleMeshGetInfoMETA>(XR_TYPE_SPACE_TRIANGLE_MESH_GET_INFO_META);
   auto mesh = xr_struct<XrSpaceTriangleMeshMETA>(XR_TYPE_SPACE_TRIANGLE_MESH_META);
+  into.vertex_count = into.index_count = 0;
   check(xrGetSpaceTriangleMeshMETA(space, &get, &mesh), "xrGetSpaceTriangleMeshMETA");
   if (mesh.vertexCountOutput > kMaxRuntimeBufferElements || mesh.indexCountOutput > kMaxRuntimeBufferElements)
     throw std::runtime_error("xrGetSpaceTriangleMeshMETA reported " + std::to_string(mesh.vertexCountOutput) + " vertices and " +
                              std::to_string(mesh.indexCountOutput) + " indices, over the limit");
-  std::vector<XrVector3f> vertices(mesh.vertexCountOutput);
-  std::vector<std::uint32_t> indices(mesh.indexCountOutput);
+  if (into.vertices.size() < mesh.vertexCountOutput) into.vertices.resize(mesh.vertexCountOutput);
+  if (into.indices.size() < mesh.indexCountOutput) into.indices.resize(mesh.indexCountOutput);
   mesh.vertexCapacityInput = mesh.vertexCountOutput;
-  mesh.vertices = vertices.data();
+  mesh.vertices = into.vertices.data();
   mesh.indexCapacityInput = mesh.indexCountOutput;
-  mesh.indices = indices.data();
-  if (!vertices.empty() || !indices.empty()) check(xrGetSpaceTriangleMeshMETA(space, &get, &mesh), "xrGetSpaceTriangleMeshMETA");
-  vertices.resize(std::min<std::size_t>(vertices.size(), mesh.vertexCountOutput));
-  indices.resize(std::min<std::size_t>(indices.size(), mesh.indexCountOutput));
-  MeshPiece piece;  // broken triangles are dropped by checked_chunks
-  piece.vertices.reserve(vertices.size());
-  for (const XrVector3f& v : vertices) piece.vertices.emplace_back(v.x, v.y, v.z);
-  piece.indices = std::move(indices);
-  return piece;
+  mesh.indices = into.indices.data();
+  if (mesh.vertexCapacityInput > 0 || mesh.indexCapacityInput > 0)
+    check(xrGetSpaceTriangleMeshMETA(space, &get, &mesh), "xrGetSpaceTriangleMeshMETA");
+  into.vertex_count = std::min<std::size_t>(mesh.vertexCapacityInput, mesh.vertexCountOutput);
+  into.index_count = std::min<std::size_t>(mesh.indexCapacityInput, mesh.indexCountOutput);
 }
 
 std::vector<SourceChunk> MetaSource::run_query(const QueryContext& context, std::stop_token stop) {
@@ -174,11 +183,20 @@ std::vector<SourceChunk> MetaSource::run_query(const QueryContext& context, std:
     }
     SourceChunk chunk;
     chunk.id = chunk_id(found.uuid);
-    chunk.mesh = read_mesh(found.space);
-    chunk.change = content_hash(chunk.mesh);  // the mesh as served, in its own space: it has no version to read first
-    if (std::optional<SourceChunk> kept = served_before(context, chunk.id, chunk.change, location.pose)) {
-      out.push_back(std::move(*kept));  // not moved, checked or keyed again
-      continue;
+    {
+      std::lock_guard lock(read_mutex_);
+      read_mesh(found.space, read_);
+      // The mesh as served, in its own space: it has no version to read first.
+      chunk.change = content_hash(read_.vertices.data(), read_.vertex_count, read_.indices.data(), read_.index_count);
+      if (std::optional<SourceChunk> kept = served_before(context, chunk.id, chunk.change, location.pose)) {
+        out.push_back(std::move(*kept));  // not moved, checked or keyed again
+        continue;
+      }
+      // Broken triangles are dropped by checked_chunks.
+      chunk.mesh.vertices.reserve(read_.vertex_count);
+      for (std::size_t i = 0; i < read_.vertex_count; ++i)
+        chunk.mesh.vertices.emplace_back(read_.vertices[i].x, read_.vertices[i].y, read_.vertices[i].z);
+      chunk.mesh.indices.assign(read_.indices.begin(), read_.indices.begin() + std::ptrdiff_t(read_.index_count));
     }
     chunk.placed = location.pose;
     transform_in_place(chunk.mesh.vertices, to_rigid(chunk.placed));

@@ -137,8 +137,9 @@ const ServedEntity* EntitySet::find(XrSpatialEntityIdEXT id) const {
 
 EntitySet build_entity_set(const RoomResult& result, const EntitySet& previous) {
   std::vector<ServedEntity> fresh;
-  fresh.reserve(result.surfaces.size() + result.areas.size() + 1);
-  for (const Surface& s : result.surfaces) fresh.push_back(plane_of(s));
+  const std::vector<Surface>& surfaces = result.surfaces();
+  fresh.reserve(surfaces.size() + result.areas.size() + 1);
+  for (const Surface& s : surfaces) fresh.push_back(plane_of(s));
   for (std::size_t i = 0; i < result.areas.size(); ++i) fresh.push_back(area_of(result.areas[i], result.area_locations[i]));
   if (!result.bounds_indices.empty()) {
     ServedEntity room;

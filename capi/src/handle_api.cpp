@@ -60,7 +60,8 @@ namespace roomsense::capi {
 
 // The placement queries of a result, built at the first query (on the asking thread, outside the job's lock;
 // concurrent queries wait for the one build), as the layer's are: built at every compute, their index took some
-// 0.45 ms of an update's 1 ms on thesis-room1 through this API (bench/README.md), for engines that may never query.
+// 0.45 ms of an update's 1.4 ms on thesis-room1 through this API (bench/README.md, stop 94), for engines that
+// may never query.
 class LazyQueries {
  public:
   explicit LazyQueries(std::shared_ptr<const AnalysisResult> analysis) : analysis_(std::move(analysis)) {}
@@ -591,8 +592,8 @@ rs_result rs_analyzer_compute_chunks(rs_analyzer* analyzer) {
             chunks.last = roomsense::capi::run_guarded([&] {
               chunks.analysis->set_stop(std::move(stop));
               const roomsense::AnalysisResult& result = chunks.analysis->result();
-              // No chunk changed: the last output, where it succeeded, not converted again (its query index
-              // alone takes some 0.4 ms on a 78k-vertex room, bench/README.md).
+              // No chunk changed: the last output, where it succeeded, with the query index a query may have built
+              // for it, rather than a new conversion (and a new index at the next query: 0.45 ms on thesis-room1).
               if (chunks.analysis->reused_result() && chunks.last && chunks.last->status == RS_SUCCESS)
                 return chunks.last;
               return std::make_shared<const roomsense::capi::HandleOutput>(

@@ -3,8 +3,8 @@
 // each rs_analyzer owns one.
 //
 // The worker is started by the first start() and serves every computation after it until clear() (or the
-// destructor) ends it: starting a thread per computation took some 75 us on this project's VM, more than an
-// unchanged room's update through the handle API (bench/README.md).
+// destructor) ends it: starting a thread per computation took some 75 us on this project's VM, three times an
+// unchanged room's compute of chunks through the handle API (bench/README.md, stop 94).
 //
 // Two locks: `control_` serialises whoever starts, joins or clears (the only ones touching thread_), and
 // `mutex_` guards the phase, the result and the work handed over, which the worker takes and sets. The worker

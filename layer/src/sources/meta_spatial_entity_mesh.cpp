@@ -60,8 +60,9 @@ class MetaSource final : public MeshSource {
   bool enable(XrSpace space, XrSpaceComponentTypeFB component, std::stop_token stop) const;
   // The runtime's arrays of the mesh read last, kept from one query to the next (under read_mutex_: a session's
   // analyzers query from their own threads). The global mesh has no version, so every query reads it whole;
-  // fresh buffers of its size (2.6 MB for thesis-room1) took a page fault per 4 KiB each time, some 11 ms of an
-  // unchanged room's compute on this project's VM (bench/README.md, stop 94).
+  // fresh buffers of its size (2.6 MB for thesis-room1) took a page fault per 4 KiB whenever the allocator had
+  // given such blocks back to the system, some 10 ms of an unchanged room's compute on this project's VM
+  // (bench/README.md, stop 94).
   struct ReadBuffers {
     std::vector<XrVector3f> vertices;
     std::vector<std::uint32_t> indices;

@@ -8,6 +8,7 @@
 #include "roomsense/incremental.h"
 #include "roomsense/queries.h"
 #include "roomsense/synthetic.h"
+#include "test_process.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -16,7 +17,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <map>
 #include <set>
 #include <string>
@@ -594,22 +594,12 @@ TEST(CapiChunks, ARoomInChunksIsTheRoomWhole) {
   rs_analyzer_destroy(chunked);
 }
 
-
-// The process's threads by id, from /proc/self/task.
-std::set<std::string> process_threads() {
-  std::set<std::string> ids;
-#ifdef __linux__
-  for (const auto& entry : std::filesystem::directory_iterator("/proc/self/task")) ids.insert(entry.path().filename());
-#endif
-  return ids;
-}
+using test::process_threads;
 
 // An analyzer's computes share one worker (capi/src/job.h): after its first compute, a compute of changed chunks
 // brings no thread the first had not, read right after each starts (a thread per compute was new each time).
 TEST(CapiChunks, AnAnalyzersComputesShareOneThread) {
-#ifndef __linux__
-  GTEST_SKIP() << "reads the process's threads from /proc/self/task";
-#endif
+  if (!test::kThreadsListed) GTEST_SKIP() << "reads the process's threads from /proc/self/task";
   const Scan scan = synth::generate(synth::default_room());
   rs_analyzer* analyzer = nullptr;
   ASSERT_EQ(rs_analyzer_create(nullptr, &analyzer), RS_SUCCESS);
@@ -640,9 +630,7 @@ TEST(CapiChunks, AnAnalyzersComputesShareOneThread) {
 // The thesis API's jobs live in statics: CleanUp ends the job's worker, so that no thread of the library is left
 // waiting between jobs, and a job after it starts one again.
 TEST(CapiChunks, ThesisCleanUpEndsItsWorker) {
-#ifndef __linux__
-  GTEST_SKIP() << "reads the process's threads from /proc/self/task";
-#endif
+  if (!test::kThreadsListed) GTEST_SKIP() << "reads the process's threads from /proc/self/task";
   const std::vector<float> flat = flat_vertices(synth::generate(synth::default_room()));
   for (int round = 0; round < 2; ++round) {
     const std::set<std::string> before = process_threads();

@@ -6,6 +6,7 @@
 #include "layer_harness.h"
 #include "synthetic_room.h"
 #include "roomsense/synthetic.h"
+#include "test_process.h"
 
 #include <gtest/gtest.h>
 
@@ -73,14 +74,8 @@ TEST(LayerLifecycle, GettersOnSeveralThreadsWhileAComputeRuns) {
 // still be running): after the first, no compute brings a thread the first did not have (it starts the worker,
 // and the analysis its own threads, kept too).
 TEST(LayerLifecycle, AnAnalyzersComputesShareOneThread) {
-#ifndef __linux__
-  GTEST_SKIP() << "reads the process's threads from /proc/self/task";
-#else
-  const auto threads = [] {
-    std::set<std::string> ids;
-    for (const auto& entry : std::filesystem::directory_iterator("/proc/self/task")) ids.insert(entry.path().filename());
-    return ids;
-  };
+  if (!roomsense::test::kThreadsListed) GTEST_SKIP() << "reads the process's threads from /proc/self/task";
+  const auto threads = roomsense::test::process_threads;
   App app;
   const XrRoomAnalyzerEXTX a = app.analyzer();
   const Room room("synthetic:thesis-room1");
@@ -97,7 +92,6 @@ TEST(LayerLifecycle, AnAnalyzersComputesShareOneThread) {
     ASSERT_EQ(app.wait(a), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX) << "round " << round;
     for (const std::string& id : now) EXPECT_EQ(first.count(id), 1u) << "round " << round << ": thread " << id << " is new";
   }
-#endif
 }
 
 TEST(LayerLifecycle, InstanceDestroyedAndCreatedAgain) {

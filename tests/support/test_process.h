@@ -1,11 +1,13 @@
 // What the tests need of the OS, on POSIX systems and on Windows (the MinGW-w64 build, run under Wine): a temporary
-// folder per process, removed as it exits; running a program with its stderr in a file; FIFOs (POSIX only).
+// folder per process, removed as it exits; running a program with its stderr in a file; FIFOs (POSIX only); the
+// process's threads (Linux only).
 #pragma once
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <system_error>
 
@@ -85,6 +87,21 @@ inline bool make_fifo(const std::string& path) {
 #else
   return mkfifo(path.c_str(), 0600) == 0;
 #endif
+}
+
+// The process's threads by id, from /proc/self/task (Linux; empty elsewhere): the tests of worker threads kept from
+// one compute to the next.
+inline constexpr bool kThreadsListed =
+#if defined(__linux__)
+    true;
+#else
+    false;
+#endif
+inline std::set<std::string> process_threads() {
+  std::set<std::string> ids;
+  if constexpr (kThreadsListed)
+    for (const auto& entry : std::filesystem::directory_iterator("/proc/self/task")) ids.insert(entry.path().filename().string());
+  return ids;
 }
 
 }  // namespace roomsense::test

@@ -20,4 +20,4 @@ cmake --build "$build_dir" -j"$(nproc)" --target capi_concurrency_test layer_con
 export TSAN_OPTIONS="suppressions=$PWD/tests/tsan.supp second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
 export ROOMSENSE_BACKEND=cpu
 export XDG_CACHE_HOME="$PWD/$build_dir/.cache"
-ctest --test-dir "$build_dir" -L concurrency --output-on-failure -j"$(nproc)"
+ctest --test-dir "$build_dir" -L concurrency --output-on-failure -j"$(nproc)" --timeout 300

@@ -14,8 +14,8 @@ echo "== windows: the tests of core, the C APIs, the CLI and the layer DLL under
 # output: PlyReader.MissingVertexLinesAreAnError, Areas.SearchingNothingFindsNothing) or a program the test
 # starts (Cli.HugeNumbersArePrintedCompactly: cmd.exe's "not recognized" for roomsense.exe). Each passed alone
 # and in a hundred repeats and more. A test runs again after a failure, three times at most; one that fails
-# three times fails the build.
-ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" --repeat until-pass:3 |
+# three times fails the build. A test that hangs fails after 180 s (the slowest takes some 30 s under Wine).
+ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" --repeat until-pass:3 --timeout 180 |
   grep -vE '^ +Start |^ *[0-9]+/[0-9]+ Test +#'
 echo "== windows: what the DLLs export and need, and the layer's registration (the checks' own words)"
 ctest --test-dir "$build_dir" -R '^(capi\.exported_symbols|capi\.shared_dependencies|windows\.)' -V |

@@ -11,6 +11,10 @@
 // takes only `mutex_`, so joining it while holding `control_` cannot deadlock. The destructor and clear() ask
 // the worker to stop (its work gets the worker's std::stop_token; the analysis returns within ~100 ms) and
 // join it: the worker never outlives the Job it writes to.
+//
+// The idle worker waits on a std::condition_variable for work or `ending_`, never on a stop token: waiting on one
+// registers a std::stop_callback, and the MinGW-w64 GCC 12 libstdc++ that builds the Windows DLL can lose the
+// wake-up its removal waits for (its atomic wait without a futex), which hung rs_analyzer_destroy under Wine.
 #pragma once
 #include <chrono>
 #include <condition_variable>
@@ -93,6 +97,11 @@ class Job {
   // makes the job Idle.
   void clear() {
     std::lock_guard control(control_);
+    {
+      std::lock_guard lock(mutex_);
+      ending_ = true;
+    }
+    work_.notify_one();
     thread_.request_stop();
     if (thread_.joinable()) thread_.join();
     std::optional<Result> old;
@@ -101,18 +110,20 @@ class Job {
       old.swap(result_);
       pending_ = nullptr;
       phase_ = JobPhase::Idle;
+      ending_ = false;
     }
   }
 
  private:
-  // The worker: each work start() hands over, until a stop is requested. A stop that comes while work runs
-  // ends that work (it returns, or throws Cancelled: the job then holds the failed result) and then the worker.
+  // The worker: each work start() hands over, until clear() ends it. A stop that comes while work runs ends that
+  // work (it returns, or throws Cancelled: the job then holds the failed result) and then the worker.
   void serve(std::stop_token stop) {
     for (;;) {
       std::function<Result(std::stop_token)> work;
       {
         std::unique_lock lock(mutex_);
-        if (!work_.wait(lock, stop, [this] { return pending_ != nullptr; })) return;  // stop requested
+        work_.wait(lock, [this] { return ending_ || pending_ != nullptr; });
+        if (ending_) return;
         work.swap(pending_);
       }
       Result result;
@@ -138,7 +149,8 @@ class Job {
   std::mutex control_;
   mutable std::mutex mutex_;
   mutable std::condition_variable cv_;     // notified when a computation ends
-  std::condition_variable_any work_;       // notified when start() hands over work
+  std::condition_variable work_;           // notified when start() hands over work, or clear() ends the worker
+  bool ending_ = false;                     // set by clear() while it ends the worker
   JobPhase phase_ = JobPhase::Idle;
   std::optional<Result> result_;
   std::function<Result(std::stop_token)> pending_;  // the work the worker has yet to take

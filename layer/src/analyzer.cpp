@@ -128,9 +128,12 @@ Analyzer::~Analyzer() {
   std::jthread worker;
   {
     std::lock_guard lock(mutex_);
+    shut_ = true;
     worker = std::move(worker_);
   }
-  // ~jthread requests stop and joins.
+  work_.notify_all();
+  done_.notify_all();
+  // ~jthread requests stop (a running compute returns) and joins.
 }
 
 XrResult Analyzer::submit(MeshPiece mesh) {
@@ -141,9 +144,9 @@ XrResult Analyzer::submit(MeshPiece mesh) {
   return XR_SUCCESS;
 }
 
-XrRoomComputeStateEXTX Analyzer::wait(std::stop_token stop) {
+XrRoomComputeStateEXTX Analyzer::wait() {
   std::unique_lock lock(mutex_);
-  done_.wait(lock, stop, [&] { return state_ != XR_ROOM_COMPUTE_STATE_RUNNING_EXTX; });
+  done_.wait(lock, [&] { return shut_ || state_ != XR_ROOM_COMPUTE_STATE_RUNNING_EXTX; });
   return state_;
 }
 
@@ -176,7 +179,8 @@ void Analyzer::serve(std::stop_token stop) {
     Job job;
     {
       std::unique_lock lock(mutex_);
-      if (!work_.wait(lock, stop, [&] { return pending_.has_value(); })) return;  // stop requested
+      work_.wait(lock, [&] { return shut_ || pending_.has_value(); });
+      if (shut_) return;
       job = std::move(*pending_);
       pending_.reset();
     }
@@ -202,6 +206,8 @@ void Analyzer::shut_down() {
     shut_ = true;
     worker = std::move(worker_);
   }
+  work_.notify_all();
+  done_.notify_all();
   if (worker.joinable()) {
     worker.request_stop();
     worker.join();

@@ -47,8 +47,8 @@ class Analyzer {
   // frames, and the layer's own periodic analyses (spatial/), then cost the runtime's query and a hash.
   XrResult compute(const XrRoomComputeInfoEXTX& info);
 
-  // Waits until no compute runs (or `stop` is requested); the state it ends in.
-  XrRoomComputeStateEXTX wait(std::stop_token stop);
+  // Waits until no compute runs or the analyzer shuts down; the state it ends in.
+  XrRoomComputeStateEXTX wait();
 
   XrRoomComputeStateEXTX state();
   std::shared_ptr<const RoomResult> latest();  // null before the first completed compute
@@ -68,17 +68,20 @@ class Analyzer {
     std::optional<std::uint64_t> skip_hash;  // the latest result's input_hash
   };
   void run(std::stop_token stop, Job job);
-  // The worker: each job compute() leaves in pending_, until a stop is requested.
+  // The worker: each job compute() leaves in pending_, until the analyzer shuts down.
   void serve(std::stop_token stop);
 
   std::shared_ptr<SessionState> session_;
   Settings settings_;
 
+  // The worker and wait() block on std::condition_variable, never on a stop token: a wait on one registers a
+  // std::stop_callback, whose removal can hang in the MinGW-w64 GCC 12 libstdc++ of the Windows DLL (it waits on
+  // an atomic, and that wait can lose its wake-up without a futex). shut_ wakes them instead.
   std::mutex mutex_;  // guards everything below
-  std::condition_variable_any done_;  // notified when a compute ends
-  std::condition_variable_any work_;  // notified when compute() leaves a job
-  std::optional<Job> pending_;        // the compute the worker has yet to take
-  bool shut_ = false;
+  std::condition_variable done_;  // notified when a compute ends, and at the shut-down
+  std::condition_variable work_;  // notified when compute() leaves a job, and at the shut-down
+  std::optional<Job> pending_;    // the compute the worker has yet to take
+  bool shut_ = false;             // set by shut_down() and the destructor: the worker ends, wait() returns
   XrRoomComputeStateEXTX state_ = XR_ROOM_COMPUTE_STATE_NONE_EXTX;
   std::vector<std::shared_ptr<const MeshPiece>> submitted_;
   std::shared_ptr<const RoomResult> latest_;

@@ -132,6 +132,7 @@ void export_captured(SessionState& session, std::stop_token stop) {
 
 void request_export(const std::shared_ptr<SessionState>& session) {
   std::lock_guard lock(session->mutex);
+  if (session->export_ending) return;  // the session's shut-down exports what is left
   session->export_pending = true;
   if (!session->export_worker.joinable()) {
     SessionState* s = session.get();  // the session outlives the worker: shut_down_session joins it
@@ -139,7 +140,8 @@ void request_export(const std::shared_ptr<SessionState>& session) {
       for (;;) {
         {
           std::unique_lock lock(s->mutex);
-          if (!s->export_wake.wait(lock, stop, [s] { return s->export_pending; })) return;
+          s->export_wake.wait(lock, [s] { return s->export_ending || s->export_pending; });
+          if (s->export_ending) return;
           s->export_pending = false;
         }
         export_captured(*s, stop);

@@ -40,6 +40,14 @@ std::vector<std::shared_ptr<Analyzer>> forget_session_locked(Registry& r, XrSess
   return analyzers;
 }
 
+SessionState::~SessionState() {
+  {
+    std::lock_guard lock(mutex);
+    export_ending = true;
+  }
+  export_wake.notify_all();
+}
+
 void shut_down_session(SessionState& session, const std::vector<std::shared_ptr<Analyzer>>& analyzers) {
   // The spatial-entity API's handles of the session, then the analysis behind them.
   forget_spatial_session(session.handle);
@@ -54,8 +62,10 @@ void shut_down_session(SessionState& session, const std::vector<std::shared_ptr<
   std::jthread exporter;
   {
     std::lock_guard lock(session.mutex);
+    session.export_ending = true;
     exporter = std::move(session.export_worker);
   }
+  session.export_wake.notify_all();
   if (exporter.joinable()) {
     exporter.request_stop();
     exporter.join();

@@ -68,6 +68,11 @@ struct CapturedMesh {
 };
 
 struct SessionState {
+  SessionState() = default;
+  SessionState(const SessionState&) = delete;
+  SessionState& operator=(const SessionState&) = delete;
+  ~SessionState();  // ends an export worker that shut_down_session did not (sets export_ending; the member joins)
+
   XrSession handle = XR_NULL_HANDLE;
   std::shared_ptr<InstanceState> instance;
   XrSystemId system = XR_NULL_SYSTEM_ID;
@@ -84,8 +89,10 @@ struct SessionState {
   std::uint64_t capture_generation = 0;   // bumped by every capture
   std::uint64_t exported_generation = 0;  // what the last export-only analysis saw
   // Export-only analyses (ROOMSENSE_EXPORT_DIR for an application without the extension) run here.
-  std::condition_variable_any export_wake;
+  // The worker waits for export_pending or export_ending, not on its stop token (why: Analyzer's mutex_).
+  std::condition_variable export_wake;
   bool export_pending = false;
+  bool export_ending = false;  // set when the session shuts down: the worker ends
   std::jthread export_worker;
   std::shared_ptr<SpatialService> spatial;  // created with the layer's first spatial context
 };

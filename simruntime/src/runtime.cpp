@@ -23,8 +23,7 @@ void Runtime::push_state(SessionState& session, std::uint64_t session_id, XrSess
 void Runtime::destroy_observer(std::uint64_t id, Graveyard& graveyard) {
   auto it = observers.find(id);
   if (it == observers.end()) return;
-  it->second->worker.request_stop();
-  it->second->job->wake.notify_all();
+  it->second->end_compute();
   for (auto s = scenes.begin(); s != scenes.end();) s = s->second->observer == id ? scenes.erase(s) : std::next(s);
   graveyard.observers.push_back(std::move(it->second));
   observers.erase(it);

@@ -95,7 +95,10 @@ struct SpaceState {
 // Shared between an observer and its compute thread.
 struct ComputeJob {
   std::mutex mutex;
-  std::condition_variable_any wake;
+  // The compute's pause ends on `ending`, not on a stop token: a wait on one registers a std::stop_callback,
+  // whose removal can hang in MinGW-w64's GCC 12 libstdc++ (layer/src/analyzer.h says why).
+  std::condition_variable wake;
+  bool ending = false;  // set when the observer goes
   XrSceneComputeStateMSFT state = XR_SCENE_COMPUTE_STATE_NONE_MSFT;
   std::shared_ptr<const SceneData> result;  // of the last successful compute
 };
@@ -104,7 +107,20 @@ struct ObserverState {
   std::uint64_t session = 0;
   XrTime first_compute = 0;  // what its components' updateTime says: the room has not changed since
   std::shared_ptr<ComputeJob> job = std::make_shared<ComputeJob>();
-  std::jthread worker;  // joined (after a stop request) when the observer goes away
+  std::jthread worker;  // joined when the observer goes away
+
+  ObserverState() = default;
+  ObserverState(const ObserverState&) = delete;
+  ObserverState& operator=(const ObserverState&) = delete;
+  ~ObserverState() { end_compute(); }  // then the worker is joined
+  // Ends a compute's pause (its delay, or a fault's UPDATING for ever); the compute then ends at once.
+  void end_compute() {
+    {
+      std::lock_guard lock(job->mutex);
+      job->ending = true;
+    }
+    job->wake.notify_all();
+  }
 };
 
 struct SceneState {

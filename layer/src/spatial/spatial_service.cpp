@@ -74,15 +74,15 @@ void SpatialService::shut_down() {
     std::lock_guard lock(mutex_);
     if (shut_) return;
     shut_ = true;
+    worker_.request_stop();  // under the lock: the worker sees it with shut_, after any wait below
     worker = std::move(worker_);
     analyzer = analyzer_;
   }
-  if (worker.joinable()) {
-    worker.request_stop();
-    worker.join();
-  }
-  // The analyzer owns the space (its base_space): its shut_down releases it.
+  wake_.notify_all();
+  // The analyzer's shut-down ends a compute the worker waits for (Analyzer::wait), and releases the space (its
+  // base_space); the worker, its stop requested, touches neither after that wait.
   if (analyzer) analyzer->shut_down();
+  if (worker.joinable()) worker.join();
 }
 
 // The runtime's clock now, or the latest frame time; 0 while neither is known.
@@ -104,14 +104,14 @@ void SpatialService::run(std::stop_token stop) {
       if (!said_clock) log_info("spatial entities: waiting for a frame time to locate the runtime's meshes");
       said_clock = true;
       std::unique_lock lock(mutex_);
-      wake_.wait_for(lock, stop, kClockWait, [] { return false; });
+      wake_.wait_for(lock, kClockWait, [&] { return shut_; });
       continue;
     }
     auto info = xr_struct<XrRoomComputeInfoEXTX>(XR_TYPE_ROOM_COMPUTE_INFO_EXTX);
     info.time = time;
     info.includeRuntimeMeshes = XR_TRUE;
     XrRoomComputeStateEXTX state = XR_ROOM_COMPUTE_STATE_FAILED_EXTX;
-    if (XR_SUCCEEDED(analyzer_->compute(info))) state = analyzer_->wait(stop);
+    if (XR_SUCCEEDED(analyzer_->compute(info))) state = analyzer_->wait();
     if (stop.stop_requested()) return;
     const std::shared_ptr<const RoomResult> latest = analyzer_->latest();
     {
@@ -128,8 +128,8 @@ void SpatialService::run(std::stop_token stop) {
     }
     // The next look at the runtime's meshes: after the interval, and only while a context wants them.
     std::unique_lock lock(mutex_);
-    wake_.wait_for(lock, stop, interval, [] { return false; });
-    wake_.wait(lock, stop, [&] { return contexts_ > 0; });
+    wake_.wait_for(lock, interval, [&] { return shut_; });
+    wake_.wait(lock, [&] { return shut_ || contexts_ > 0; });
   }
 }
 

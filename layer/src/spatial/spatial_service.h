@@ -48,7 +48,8 @@ class SpatialService {
 
   std::shared_ptr<SessionState> session_;
   std::mutex mutex_;  // guards everything below
-  std::condition_variable_any wake_;
+  // The worker's pauses end on shut_, not on its stop token (why: Analyzer's mutex_, analyzer.h).
+  std::condition_variable wake_;
   bool shut_ = false;
   int contexts_ = 0;
   XrSpace space_ = XR_NULL_HANDLE;

@@ -55,12 +55,13 @@ XrResult resolve_bounds(const XrSceneBoundsMSFT& in, std::uint64_t session, Worl
   return XR_SUCCESS;
 }
 
-void run_compute(std::stop_token stop, std::shared_ptr<ComputeJob> job, ComputeRequest request, int delay_ms) {
+void run_compute(std::shared_ptr<ComputeJob> job, ComputeRequest request, int delay_ms) {
   {
     std::unique_lock lock(job->mutex);
-    if (faults::pending(XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME)) job->wake.wait(lock, stop, [] { return false; });  // UPDATING until the observer goes
-    else job->wake.wait_for(lock, stop, std::chrono::milliseconds(delay_ms), [] { return false; });
-    if (stop.stop_requested()) return;
+    const auto ending = [&] { return job->ending; };
+    if (faults::pending(XR_MSFT_SCENE_UNDERSTANDING_EXTENSION_NAME)) job->wake.wait(lock, ending);  // UPDATING until the observer goes
+    else job->wake.wait_for(lock, std::chrono::milliseconds(delay_ms), ending);
+    if (job->ending) return;
   }
   std::shared_ptr<const SceneData> data;
   if (!request.scanned) {

@@ -1,5 +1,5 @@
 // The thesis-compatible C API (thesis §3.8): six functions over two global jobs, room understanding and
-// room bounds. The globals are function-local statics, created on first use and joined at exit; they are
+// room bounds. The globals are function-local statics, created on first use and ended at exit (platform::ProcessWide); they are
 // the only globals of the library (the handle API has none). Semantics and the frame are documented in
 // RoomCreatorLibrary.h.
 #include "roomsense/RoomCreatorLibrary.h"
@@ -7,6 +7,7 @@
 #include "job.h"
 #include "roomsense/analysis.h"
 #include "roomsense/error.h"
+#include "roomsense/platform.h"
 #include "roomsense/scan.h"
 
 #include <climits>
@@ -37,13 +38,13 @@ struct ThesisOutput {
 };
 
 Job<ThesisOutput>& understanding_job() {
-  static Job<ThesisOutput> job;
-  return job;
+  static platform::ProcessWide<Job<ThesisOutput>> held;  // ended at exit, not on Windows: ProcessWide says why
+  return held.value;
 }
 
 Job<ThesisOutput>& bounds_job() {
-  static Job<ThesisOutput> job;
-  return job;
+  static platform::ProcessWide<Job<ThesisOutput>> held;  // ended at exit, not on Windows: ProcessWide says why
+  return held.value;
 }
 
 // The 11 floats of one area, in the thesis's order (§3.8). Coordinates pass through: see "Frame" in

@@ -5,12 +5,15 @@
 #include "spatial/spatial_api.h"
 #include "spatial/spatial_service.h"
 
+#include "roomsense/platform.h"
+
 namespace roomsense::layer {
 
 Registry& registry() {
-  // Destroyed when the loader unloads the layer (after the last instance is gone) or at exit.
-  static Registry r;
-  return r;
+  // Destroyed when the loader unloads the layer (after the last instance is gone) or at exit; on Windows never,
+  // as its sessions' and analyzers' threads may have been ended mid-way by then (platform::ProcessWide).
+  static platform::ProcessWide<Registry> r;
+  return r.value;
 }
 
 std::shared_ptr<InstanceState> Registry::instance(XrInstance handle) {

@@ -43,6 +43,8 @@
  * CleanUp*(): frees the job's array and makes the job idle; returns 0. Called while the job runs, it
  *   stops the worker (within about 100 ms) and discards its result. Calling
  *   it with no job is harmless. Without it the array stays allocated and Start keeps returning 4.
+ *   A process may exit without it, a job running or not. A program that unloads the library while it stays
+ *   (dlclose, FreeLibrary) calls both CleanUps first: on Windows a job's thread left behind outlives the code.
  *
  * RetrieveRoomUnderstanding: *OutArraySize floats, 11 per area (a multiple of 11), in the thesis's order:
  *   [0..2]  centre x, y, z

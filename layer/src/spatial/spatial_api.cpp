@@ -12,6 +12,7 @@
 #include "spatial_instance.h"
 #include "spatial_service.h"
 
+#include "roomsense/platform.h"
 #include "roomsense/xr/spatial_query.h"
 
 #include <algorithm>
@@ -108,8 +109,8 @@ struct Objects {
 };
 
 Objects& objects() {
-  static Objects o;
-  return o;
+  static platform::ProcessWide<Objects> o;  // its contexts' services own threads: platform::ProcessWide says why
+  return o.value;
 }
 
 template <typename H>

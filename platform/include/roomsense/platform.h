@@ -38,6 +38,25 @@ class SharedLibrary {
   std::string error_;
 };
 
+// A library's process-wide object (a function-local static) whose destructor joins threads. Where exit() destroys
+// statics while other threads still run (POSIX), it is destroyed, and its destructor stops and joins them before
+// the statics they use go. A Windows DLL's statics are destroyed at its DLL_PROCESS_DETACH, which at a process's
+// exit comes after ExitProcess ended every other thread in whatever it was doing: a join there never returned (the
+// thesis API's jobs, capi.c.thesis_exit_without_cleanup, hung in every run under Wine). There it is never
+// destroyed: the system ends the threads, and a DLL unloaded while they live leaves them waiting.
+template <class T>
+union ProcessWide {
+  T value;
+  ProcessWide() : value() {}
+  ProcessWide(const ProcessWide&) = delete;
+  ProcessWide& operator=(const ProcessWide&) = delete;
+  ~ProcessWide() {
+#if !defined(_WIN32)
+    value.~T();
+#endif
+  }
+};
+
 // The Vulkan loader's file name: libvulkan.so.1 (Linux), libvulkan.so (Android), vulkan-1.dll (Windows).
 const char* vulkan_loader_name();
 

@@ -125,15 +125,20 @@ Analyzer::Analyzer(std::shared_ptr<SessionState> session, Settings settings)
     : session_(std::move(session)), settings_(settings) {}
 
 Analyzer::~Analyzer() {
+  end_worker();  // the worker it returns ends here: ~jthread requests stop (a running compute returns) and joins
+}
+
+std::optional<std::jthread> Analyzer::end_worker() {
   std::jthread worker;
   {
     std::lock_guard lock(mutex_);
+    if (shut_) return std::nullopt;
     shut_ = true;
     worker = std::move(worker_);
   }
   work_.notify_all();
   done_.notify_all();
-  // ~jthread requests stop (a running compute returns) and joins.
+  return worker;
 }
 
 XrResult Analyzer::submit(MeshPiece mesh) {
@@ -199,19 +204,9 @@ std::shared_ptr<const RoomResult> Analyzer::latest() {
 }
 
 void Analyzer::shut_down() {
-  std::jthread worker;
-  {
-    std::lock_guard lock(mutex_);
-    if (shut_) return;
-    shut_ = true;
-    worker = std::move(worker_);
-  }
-  work_.notify_all();
-  done_.notify_all();
-  if (worker.joinable()) {
-    worker.request_stop();
-    worker.join();
-  }
+  std::optional<std::jthread> worker = end_worker();
+  if (!worker) return;
+  worker.reset();  // requests stop and joins
   if (settings_.base_space != XR_NULL_HANDLE) {
     session_->instance->next.xrDestroySpace(settings_.base_space);
     settings_.base_space = XR_NULL_HANDLE;

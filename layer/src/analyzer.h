@@ -68,6 +68,8 @@ class Analyzer {
     std::optional<std::uint64_t> skip_hash;  // the latest result's input_hash
   };
   void run(std::stop_token stop, Job job);
+  // Sets shut_ and wakes the worker and wait(); returns the worker to join (none when already shut).
+  std::optional<std::jthread> end_worker();
   // The worker: each job compute() leaves in pending_, until the analyzer shuts down.
   void serve(std::stop_token stop);
 

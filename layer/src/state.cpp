@@ -44,11 +44,18 @@ std::vector<std::shared_ptr<Analyzer>> forget_session_locked(Registry& r, XrSess
 }
 
 SessionState::~SessionState() {
+  end_export();  // the worker it returns ends here: ~jthread requests stop and joins
+}
+
+std::jthread SessionState::end_export() {
+  std::jthread worker;
   {
     std::lock_guard lock(mutex);
     export_ending = true;
+    worker = std::move(export_worker);
   }
   export_wake.notify_all();
+  return worker;
 }
 
 void shut_down_session(SessionState& session, const std::vector<std::shared_ptr<Analyzer>>& analyzers) {
@@ -62,17 +69,7 @@ void shut_down_session(SessionState& session, const std::vector<std::shared_ptr<
   if (spatial) spatial->shut_down();
   for (const auto& a : analyzers) a->shut_down();
   for (const EnabledSource& s : session.instance->sources) s.source->end_session(session.handle);
-  std::jthread exporter;
-  {
-    std::lock_guard lock(session.mutex);
-    session.export_ending = true;
-    exporter = std::move(session.export_worker);
-  }
-  session.export_wake.notify_all();
-  if (exporter.joinable()) {
-    exporter.request_stop();
-    exporter.join();
-  }
+  session.end_export();  // joins the export worker before the last export below
   // Whatever the application read and no export-only analysis has seen yet.
   if (!session.instance->extx && !session.instance->config.export_dir.empty()) export_captured(session);
   XrSpace space;

@@ -71,7 +71,10 @@ struct SessionState {
   SessionState() = default;
   SessionState(const SessionState&) = delete;
   SessionState& operator=(const SessionState&) = delete;
-  ~SessionState();  // ends an export worker that shut_down_session did not (sets export_ending; the member joins)
+  ~SessionState();  // ends an export worker that shut_down_session did not
+
+  // Sets export_ending and wakes the export worker; returns it to join (its destructor requests stop and joins).
+  std::jthread end_export();
 
   XrSession handle = XR_NULL_HANDLE;
   std::shared_ptr<InstanceState> instance;

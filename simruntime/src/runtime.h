@@ -96,7 +96,7 @@ struct SpaceState {
 struct ComputeJob {
   std::mutex mutex;
   // The compute's pause ends on `ending`, not on a stop token: a wait on one registers a std::stop_callback,
-  // whose removal can hang in MinGW-w64's GCC 12 libstdc++ (layer/src/analyzer.h says why).
+  // whose removal can hang in MinGW-w64's GCC 12 libstdc++ (tests/windows/check_no_atomic_waits.cmake says why).
   std::condition_variable wake;
   bool ending = false;  // set when the observer goes
   XrSceneComputeStateMSFT state = XR_SCENE_COMPUTE_STATE_NONE_MSFT;

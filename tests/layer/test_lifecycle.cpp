@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -157,6 +159,45 @@ TEST(LayerLifecycle, AnalyzerDestroyedWhileItComputes) {
   }
   const XrRoomAnalyzerEXTX b = app.analyzer();
   EXPECT_EQ(app.compute(b, true), XR_ROOM_COMPUTE_STATE_COMPLETED_EXTX);
+}
+
+// An application that exits without destroying anything, its analyzer computing from the runtime's meshes and its
+// application meshes: exit() ends the layer's statics (the analyzer's worker is stopped and joined) and the
+// runtime's, in whatever order, and the process ends cleanly. Each round is a child process (a hang is killed
+// after 60 s and fails), with a different delay into the compute.
+TEST(LayerLifecycle, AProcessExitingMidComputeEndsCleanly) {
+  if constexpr (!roomsense::test::kPosix) GTEST_SKIP() << "fork() is POSIX";
+#if !defined(_WIN32)
+  const Room room("synthetic:thesis-room1");
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:default"));
+  for (int round = 0; round < 6; ++round) {
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      {
+        App* app = new App;  // never destroyed: the application exits with everything open
+        const XrRoomAnalyzerEXTX a = app->analyzer();
+        app->submit(a, room.vertices, room.indices);
+        app->start(a, true);
+        std::this_thread::sleep_for(std::chrono::milliseconds(4 * round));
+      }
+      std::exit(0);
+    }
+    int status = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    pid_t done = 0;
+    while ((done = waitpid(child, &status, WNOHANG)) == 0 && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (done == 0) {
+      kill(child, SIGKILL);
+      waitpid(child, &status, 0);
+      FAIL() << "round " << round << ": the process still had not ended 60 s after exit()";
+    }
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
+        << "round " << round << ": " << (WIFSIGNALED(status) ? "killed by signal " + std::to_string(WTERMSIG(status))
+                                                               : "exit status " + std::to_string(WEXITSTATUS(status)));
+  }
+#endif
 }
 
 // Whatever the pipeline is doing, destroying the analyzer, the session or the instance gives the app its

@@ -1,5 +1,6 @@
 // ROOMSENSE_SIM_FAULTS: parsing and the decisions (faults.h; the grammar is in ../README.md, "Faults").
 #include "faults.h"
+#include "process_state.h"
 
 #include "extensions/served_extension.h"
 #include "functions.h"
@@ -162,8 +163,7 @@ struct Active {
 };
 
 Active& active() {
-  static Active a;
-  return a;
+  return process_wide<Active>();
 }
 
 std::atomic<bool> g_installed{false};  // a plan with faults: the fast path of every call when false

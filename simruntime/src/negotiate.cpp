@@ -1,5 +1,6 @@
 // Loader negotiation (the library's only exported symbol) and xrGetInstanceProcAddr.
 #include "extensions/served_extension.h"
+#include "process_state.h"
 #include "functions.h"
 #include "roomsense/platform.h"
 #include "roomsense/xr/loader_interface.h"
@@ -88,6 +89,7 @@ xrNegotiateLoaderRuntimeInterface(const XrNegotiateLoaderInfo* loaderInfo, XrNeg
   const XrVersion api = XR_MAKE_VERSION(1, 0, XR_VERSION_PATCH(XR_CURRENT_API_VERSION));
   if (XR_VERSION_MAJOR(loaderInfo->minApiVersion) > 1 || XR_VERSION_MAJOR(loaderInfo->maxApiVersion) < 1)
     return XR_ERROR_INITIALIZATION_FAILED;
+  roomsense::sim::ProcessState::holder();  // made before any API layer's first call: process_state.h says why
   runtimeRequest->runtimeInterfaceVersion = kInterface;
   runtimeRequest->runtimeApiVersion = api;
   runtimeRequest->getInstanceProcAddr = &roomsense::sim::xrGetInstanceProcAddr;

@@ -1,5 +1,6 @@
 // Turns a room file into what the runtime serves; see room_source.h.
 #include "room_source.h"
+#include "process_state.h"
 
 #include "roomsense/error.h"
 #include "roomsense/quest_capture.h"
@@ -64,19 +65,23 @@ XrSceneObjectTypeMSFT object_kind_for_label(const std::string& label) {
 }
 
 std::shared_ptr<const Room> load_room(const std::string& path) {
-  static std::mutex mutex;
-  static std::map<std::string, std::pair<std::filesystem::file_time_type, std::shared_ptr<const Room>>> cache;
+  struct Cache {
+    std::mutex mutex;
+    std::map<std::string, std::pair<std::filesystem::file_time_type, std::shared_ptr<const Room>>> rooms;
+  };
+  Cache& kept = process_wide<Cache>();
+  auto& cache = kept.rooms;
   std::error_code ec;
   // A built-in room never changes: it gets the epoch as its stamp.
   const bool builtin = synth::is_builtin_source(path);
   const auto stamp = builtin ? std::filesystem::file_time_type{} : std::filesystem::last_write_time(path, ec);
   if (ec) throw Error(ErrorCode::Io, "cannot read '" + path + "': no such file");
   {
-    std::lock_guard lock(mutex);
+    std::lock_guard lock(kept.mutex);
     if (auto it = cache.find(path); it != cache.end() && it->second.first == stamp) return it->second.second;
   }
   auto room = read_room(path);  // outside the lock: loading a large scan takes a while
-  std::lock_guard lock(mutex);
+  std::lock_guard lock(kept.mutex);
   cache[path] = {stamp, room};
   return room;
 }

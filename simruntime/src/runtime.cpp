@@ -1,5 +1,6 @@
 // The global state and the destruction cascades (instance -> sessions -> spaces, observers -> scenes).
 #include "runtime.h"
+#include "process_state.h"
 
 #include "extensions/served_extension.h"
 
@@ -8,8 +9,7 @@
 namespace roomsense::sim {
 
 Runtime& runtime() {
-  static Runtime instance;  // lives until the library is unloaded
-  return instance;
+  return process_wide<Runtime>();  // lives until the library is unloaded, or exit's end (process_state.h)
 }
 
 XrTime now_time() { return platform::monotonic_nanoseconds(); }

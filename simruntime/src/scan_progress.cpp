@@ -1,4 +1,5 @@
 #include "scan_progress.h"
+#include "process_state.h"
 
 #include <glm/geometric.hpp>
 
@@ -14,9 +15,13 @@ XrTime ScanStep::update_time(const ChunkCell& cell, XrTime otherwise) const {
 }
 
 std::shared_ptr<const ScanStep> whole_room(const std::shared_ptr<const Room>& room, double chunk_size) {
-  static std::mutex mutex;
-  static std::map<std::pair<const Room*, double>, std::weak_ptr<const ScanStep>> kept;
-  std::lock_guard lock(mutex);
+  struct Kept {
+    std::mutex mutex;
+    std::map<std::pair<const Room*, double>, std::weak_ptr<const ScanStep>> steps;
+  };
+  Kept& k = process_wide<Kept>();
+  auto& kept = k.steps;
+  std::lock_guard lock(k.mutex);
   std::erase_if(kept, [](const auto& entry) { return entry.second.expired(); });
   std::weak_ptr<const ScanStep>& entry = kept[{room.get(), chunk_size}];
   if (std::shared_ptr<const ScanStep> step = entry.lock()) return step;

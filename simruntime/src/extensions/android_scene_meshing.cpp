@@ -7,6 +7,7 @@
 // floor, down-facing at the top: ceiling, vertical: wall, the rest: other). A vertex takes the label most of its
 // triangles in the submesh have.
 #include "android_scene_meshing.h"
+#include "../process_state.h"
 
 #include "stable_uuid.h"
 
@@ -74,8 +75,7 @@ struct State {
 };
 
 State& state() {
-  static State s;
-  return s;
+  return process_wide<State>();
 }
 
 

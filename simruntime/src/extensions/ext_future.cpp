@@ -1,4 +1,5 @@
 #include "ext_future.h"
+#include "../process_state.h"
 
 #include "../runtime.h"
 #include "../validate.h"
@@ -25,8 +26,7 @@ struct Futures {
 };
 
 Futures& futures() {
-  static Futures f;
-  return f;
+  return process_wide<Futures>();
 }
 
 std::uint64_t id_of_future(XrFutureEXT f) { return id_of(f); }

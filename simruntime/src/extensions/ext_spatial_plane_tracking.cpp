@@ -5,6 +5,7 @@
 // indices) and are valid in the snapshots that hold that plane and component. Everything here is guarded by
 // runtime().mutex.
 #include "ext_spatial_plane_tracking.h"
+#include "../process_state.h"
 
 #include "../faults.h"
 #include "../functions.h"
@@ -82,8 +83,7 @@ struct State {
 };
 
 State& state() {
-  static State s;
-  return s;
+  return process_wide<State>();
 }
 
 bool contains(const std::vector<Component>& list, Component c) { return std::find(list.begin(), list.end(), c) != list.end(); }

@@ -4,6 +4,7 @@
 // retrievable from then on. Components start enabled, except the triangle mesh, which an application (or the
 // layer) enables first, as on a device.
 #include "meta_spatial_entity_mesh.h"
+#include "../process_state.h"
 
 #include "stable_uuid.h"
 
@@ -90,8 +91,7 @@ struct State {
 };
 
 State& state() {
-  static State s;
-  return s;
+  return process_wide<State>();
 }
 
 // ---- the model

@@ -5,6 +5,7 @@
 // xrRequestWorldMeshStateCompleteML follows the two-call idiom: a call with no capacity (or too little) leaves
 // the result with the future's detector until a call takes every state.
 #include "ml_world_mesh_detection.h"
+#include "../process_state.h"
 
 #include "stable_uuid.h"
 
@@ -82,8 +83,7 @@ struct State {
 };
 
 State& state() {
-  static State s;
-  return s;
+  return process_wide<State>();
 }
 
 

@@ -56,6 +56,8 @@ class Analyzer {
   // Stops a running compute, waits for the worker, destroys the layer's base space. Idempotent. Call before
   // the session is destroyed down the chain, and without the registry lock.
   void shut_down();
+  // The same without calling down the chain (the base space is left to the session): at exit (~Registry).
+  void end() { end_worker(); }
 
  private:
   struct Job {

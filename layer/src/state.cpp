@@ -16,6 +16,24 @@ Registry& registry() {
   return r.value;
 }
 
+Registry::~Registry() {
+  // An application that exits with a session open leaves it in a cycle with its spatial service (session.spatial
+  // holds the service, the service its session): no destructor ends either, and the service's threads would run
+  // on into the runtime's and the layer's destruction (every round of
+  // LayerSpatialServed.AProcessExitingMidDiscoveryEndsCleanly died of SIGSEGV). They end here, calling nothing
+  // down the chain, as the analyzers' destructors do; so does the export worker.
+  for (const auto& entry : sessions) {
+    SessionState& session = *entry.second;
+    std::shared_ptr<SpatialService> spatial;
+    {
+      std::lock_guard lock(session.mutex);
+      spatial = std::move(session.spatial);
+    }
+    if (spatial) spatial->end();
+    session.end_export();
+  }
+}
+
 std::shared_ptr<InstanceState> Registry::instance(XrInstance handle) {
   std::lock_guard lock(mutex);
   const auto it = instances.find(handle);

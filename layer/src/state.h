@@ -116,6 +116,11 @@ struct Registry {
   std::unordered_map<XrRoomAnalyzerEXTX, std::shared_ptr<Analyzer>> analyzers;
   std::uint64_t serial = 0;  // analyzer handles
 
+  Registry() = default;
+  Registry(const Registry&) = delete;
+  Registry& operator=(const Registry&) = delete;
+  ~Registry();  // ends the threads of the sessions an application left open (state.cpp)
+
   std::shared_ptr<InstanceState> instance(XrInstance handle);
   std::shared_ptr<SessionState> session(XrSession handle);
 };

@@ -10,6 +10,7 @@
 #include "compare.h"
 #include "rooms.h"
 #include "roomsense/synthetic.h"
+#include "test_process.h"
 
 #include <nlohmann/json.hpp>
 
@@ -379,6 +380,27 @@ TEST(LayerSpatialServed, DestroyMidDiscovery) {
       EXPECT_EQ(pending.complete, XR_ERROR_HANDLE_INVALID);
     }
     // ~SpatialClient destroys the session and the instance here, the analysis still running.
+  }
+}
+
+// An application of the standard API that exits with its discovery pending and the layer's analysis running, having
+// destroyed nothing: the process ends cleanly (the layer's service is stopped and joined at exit, the runtime's
+// state still whole). Each round is a child process, a different delay into the discovery.
+TEST(LayerSpatialServed, AProcessExitingMidDiscoveryEndsCleanly) {
+  if constexpr (!roomsense::test::kPosix) GTEST_SKIP() << "fork() is POSIX";
+  ScopedEnv only("ROOMSENSE_SIM_EXTENSIONS", kMeshOnly);
+  ScopedEnv scene("ROOMSENSE_SIM_SCENE", std::string("synthetic:thesis-room1"));
+  for (int round = 0; round < 6; ++round) {
+    const std::string ended = roomsense::test::exit_of_child(
+        [&] {
+          // Never destroyed: the application exits with it open (a static keeps it reachable for LSan).
+          static const SpatialClient& app = *new SpatialClient;
+          const XrSpatialContextEXT ctx = app.context(XR_SPATIAL_CAPABILITY_PLANE_TRACKING_EXT, kPlaneComponents);
+          LT_CHECK(app.start_discovery(ctx, {}).start);
+          std::this_thread::sleep_for(std::chrono::milliseconds(4 * round));
+        },
+        std::chrono::seconds(60));
+    EXPECT_EQ(ended, "") << "round " << round;
   }
 }
 

@@ -1,15 +1,19 @@
 // What the tests need of the OS, on POSIX systems and on Windows (the MinGW-w64 build, run under Wine): a temporary
-// folder per process, removed as it exits; running a program with its stderr in a file; FIFOs (POSIX only); the
-// process's threads (Linux only).
+// folder per process, removed as it exits; running a program with its stderr in a file; FIFOs and a forked child's
+// exit (POSIX only); the process's threads (Linux only).
 #pragma once
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <set>
 #include <string>
 #include <system_error>
+#include <thread>
 
 #if defined(_WIN32)
 #  include <process.h>
@@ -86,6 +90,35 @@ inline bool make_fifo(const std::string& path) {
   return false;
 #else
   return mkfifo(path.c_str(), 0600) == 0;
+#endif
+}
+
+// Runs `body` in a forked child that then calls exit(0), as an application that ends with everything open
+// (POSIX only: call where kPosix). Returns "" when the child exited with status 0 within `limit`; otherwise what
+// happened (a hang is killed at the limit).
+inline std::string exit_of_child(const std::function<void()>& body, std::chrono::seconds limit) {
+#if defined(_WIN32)
+  (void)body, (void)limit;
+  return "fork() is POSIX";
+#else
+  const pid_t child = fork();
+  if (child < 0) return "fork failed";
+  if (child == 0) {
+    body();
+    std::exit(0);
+  }
+  int status = 0;
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  pid_t done = 0;
+  while ((done = waitpid(child, &status, WNOHANG)) == 0 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  if (done == 0) {
+    kill(child, SIGKILL);
+    waitpid(child, &status, 0);
+    return "still running " + std::to_string(limit.count()) + " s after exit()";
+  }
+  if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
+  return WEXITSTATUS(status) == 0 ? "" : "exit status " + std::to_string(WEXITSTATUS(status));
 #endif
 }
 

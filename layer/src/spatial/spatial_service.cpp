@@ -67,7 +67,7 @@ XrSpace SpatialService::space() {
   return space_;
 }
 
-void SpatialService::shut_down() {
+void SpatialService::stop(bool release_handles) {
   std::jthread worker;
   std::shared_ptr<Analyzer> analyzer;
   {
@@ -81,7 +81,7 @@ void SpatialService::shut_down() {
   wake_.notify_all();
   // The analyzer's shut-down ends a compute the worker waits for (Analyzer::wait), and releases the space (its
   // base_space); the worker, its stop requested, touches neither after that wait.
-  if (analyzer) analyzer->shut_down();
+  if (analyzer) release_handles ? analyzer->shut_down() : analyzer->end();
   if (worker.joinable()) worker.join();
 }
 

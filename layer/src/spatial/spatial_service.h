@@ -40,9 +40,12 @@ class SpatialService {
 
   // Stops and joins the worker and destroys the layer's space. Idempotent; call without the registry lock,
   // before the session is destroyed down the chain.
-  void shut_down();
+  void shut_down() { stop(true); }
+  // The same without calling down the chain (the space is left to the session): at exit (~Registry).
+  void end() { stop(false); }
 
  private:
+  void stop(bool release_handles);
   void run(std::stop_token stop);
   XrTime now() const;
 

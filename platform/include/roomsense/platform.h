@@ -42,7 +42,7 @@ class SharedLibrary {
 // statics while other threads still run (POSIX), it is destroyed, and its destructor stops and joins them before
 // the statics they use go. A Windows DLL's statics are destroyed at its DLL_PROCESS_DETACH, which at a process's
 // exit comes after ExitProcess ended every other thread in whatever it was doing: a join there never returned (the
-// thesis API's jobs, capi.c.thesis_exit_without_cleanup, hung in every run under Wine). There it is never
+// thesis API's jobs, capi.c.exit_without_cleanup, hung in every run under Wine). There it is never
 // destroyed: the system ends the threads, and a DLL unloaded while they live leaves them waiting.
 template <class T>
 union ProcessWide {

@@ -1,7 +1,7 @@
 // The thesis-compatible C API (thesis §3.8): six functions over two global jobs, room understanding and
-// room bounds. The globals are function-local statics, created on first use and ended at exit (platform::ProcessWide); they are
-// the only globals of the library (the handle API has none). Semantics and the frame are documented in
-// RoomCreatorLibrary.h.
+// room bounds. The globals are function-local statics, created on first use and ended at exit
+// (platform::ProcessWide); they are the only globals of the library (the handle API has none). Semantics and the
+// frame are documented in RoomCreatorLibrary.h.
 #include "roomsense/RoomCreatorLibrary.h"
 
 #include "job.h"

@@ -19,9 +19,9 @@ std::shared_ptr<const ScanStep> whole_room(const std::shared_ptr<const Room>& ro
     std::mutex mutex;
     std::map<std::pair<const Room*, double>, std::weak_ptr<const ScanStep>> steps;
   };
-  Kept& k = process_wide<Kept>();
-  auto& kept = k.steps;
-  std::lock_guard lock(k.mutex);
+  Kept& held = process_wide<Kept>();
+  auto& kept = held.steps;
+  std::lock_guard lock(held.mutex);
   std::erase_if(kept, [](const auto& entry) { return entry.second.expired(); });
   std::weak_ptr<const ScanStep>& entry = kept[{room.get(), chunk_size}];
   if (std::shared_ptr<const ScanStep> step = entry.lock()) return step;

@@ -81,7 +81,8 @@ void SpatialService::stop(bool release_handles) {
   wake_.notify_all();
   // The analyzer's shut-down ends a compute the worker waits for (Analyzer::wait), and releases the space (its
   // base_space); the worker, its stop requested, touches neither after that wait.
-  if (analyzer) release_handles ? analyzer->shut_down() : analyzer->end();
+  if (analyzer && release_handles) analyzer->shut_down();
+  else if (analyzer) analyzer->end();
   if (worker.joinable()) worker.join();
 }
 

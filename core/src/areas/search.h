@@ -169,6 +169,13 @@ struct BandedSearch {
   const std::vector<std::uint8_t>* levels_changed = nullptr;
 };
 
+// Bits [from, to] of a word, those of them in [0, 63]: the searches' masks of a row's centres or a ring's offsets.
+inline std::uint64_t bits_between(int from, int to) {
+  from = from < 0 ? 0 : from, to = to > 63 ? 63 : to;
+  if (from > to) return 0;
+  return (~std::uint64_t{0} >> (63 - to)) & (~std::uint64_t{0} << from);
+}
+
 // Alg. 2 (Eq. 3.20-3.27). Returns the first valid rectangle for each distinct centre, in search order: a
 // later rectangle with the same centre would always be dropped by Eq. 3.44, so this changes nothing.
 Candidates search_walls(const GridSpec& spec, const RoomFeatures& features, const NormalCounts& normals,

@@ -117,13 +117,6 @@ class CentreSet {
   std::optional<BitSet> bits_;
 };
 
-// Bits [from, to] of a word, those of them in [0, 63].
-std::uint64_t bits_between(int from, int to) {
-  from = std::max(from, 0), to = std::min(to, 63);
-  if (from > to) return 0;
-  return (~std::uint64_t{0} >> (63 - to)) & (~std::uint64_t{0} << from);
-}
-
 // A centre is at most d / √2 from each corner, so corner 1 lies in this box around it (in voxels).
 int corner_reach(const SizeRange& size) { return int(std::ceil(size.max_d * 0.7072)) + 1; }
 

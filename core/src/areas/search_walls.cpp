@@ -81,6 +81,13 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   return n;
 }
 
+namespace {
+
+// floor(v / 2) for any sign.
+int floor_half(int v) { return v >= 0 ? v / 2 : -((1 - v) / 2); }
+
+}  // namespace
+
 // A rectangle's cells lie between its corners, |dz| <= max_d, and may touch one more row each way.
 int wall_search_reach(const SizeRange& size) { return int(std::floor(size.max_d)) + 2; }
 
@@ -250,6 +257,41 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   KeyTable previous_centres;  // centre -> its first rectangle in `before`
   const std::vector<Candidates::Item>* before = nullptr;
   int previous_band = -1;
+  // Only the centres a changed column may reach are searched again. Rectangle r with twice its centre at (sx, sz)
+  // has 2 x1 = sx - dx and reads the columns x1 + box_lo.x to x1 + box_hi.x (z alike), so it reads the changed box
+  // only where sx lies in [2 changed_lo.x + min(dx - 2 box_hi.x), 2 changed_hi.x + max(dx - 2 box_lo.x)] (over the
+  // ring) and sz alike: the affected box. Every rectangle of a centre outside it is as valid as it was, so that
+  // centre's first valid one is the one `before` holds: copied from there into `out` in search order, between the
+  // rectangles found (take_before). The search tries the rectangles of affected centres alone.
+  glm::ivec2 affected_lo(std::numeric_limits<int>::min()), affected_hi(std::numeric_limits<int>::max());
+  if (from_previous) {
+    glm::ivec2 below(std::numeric_limits<int>::max()), above(std::numeric_limits<int>::min());
+    for (const RingOffset& o : ring) {
+      const glm::ivec2 d(o.dx, o.dz);
+      below = glm::min(below, d - 2 * o.box_hi), above = glm::max(above, d - 2 * o.box_lo);
+    }
+    affected_lo = 2 * changed_lo + below, affected_hi = 2 * changed_hi + above;
+  }
+  const auto affected = [&](int sx, int sz) {
+    return sx >= affected_lo.x && sx <= affected_hi.x && sz >= affected_lo.y && sz <= affected_hi.y;
+  };
+  int dx_least = 0, dx_most = 0;
+  for (const RingOffset& o : ring) dx_least = std::min(dx_least, o.dx), dx_most = std::max(dx_most, o.dx);
+  // The previous rectangles of the band searched whose centres are not affected, into `out` in search order up to
+  // (not including) `key`: those of corners 1 in the band's columns (the others replace() keeps).
+  std::size_t before_next = 0;
+  glm::ivec2 band_columns(0, -1);
+  const auto search_order = [](const glm::ivec3& c, std::size_t r) { return std::tuple(c.z, c.x, c.y, r); };
+  const auto take_before = [&](const std::tuple<int, int, int, std::size_t>& key) {
+    for (; before_next < before->size(); ++before_next) {
+      const Candidates::Item& item = (*before)[before_next];
+      const glm::ivec3 c = out.decode(item).corner(0);
+      if (!(search_order(c, item.shape) < key)) return;
+      const RingOffset& o = ring[item.shape];
+      if (c.x >= band_columns.x && c.x <= band_columns.y && !affected(2 * c.x + o.dx, 2 * c.z + o.dz)) out.push_item(item);
+    }
+  };
+  constexpr auto kBandEnd = std::tuple(std::numeric_limits<int>::max(), 0, 0, std::size_t{0});
   const auto valid_now = [&](int x1, int y1, int z1, std::size_t r) {
     const RingOffset& o = ring[r];
     if (from_previous && (x1 + o.box_hi.x < changed_lo.x || x1 + o.box_lo.x > changed_hi.x ||
@@ -273,9 +315,11 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     if (centres.test(bit) || !valid_now(x1, y1, z1, r)) return;
     centres.set(bit);
     if constexpr (kBanded) band_bits.push_back(bit);
+    if (from_previous) take_before(search_order(glm::ivec3(x1, y1, z1), r));
     out.push_back(glm::ivec3(x1, y1, z1), std::uint32_t(r));
   };
   const auto end_band = [&](int band) {
+    if (from_previous) take_before(kBandEnd);
     banded.pieces->push_back({0, band, out.size()});
     for (const std::size_t bit : band_bits) centres.reset(bit);
     band_bits.clear();
@@ -291,18 +335,25 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       if (from_previous && b.band(z1) != previous_band) {
         previous_band = b.band(z1);
         before = &(*banded.previous)[std::size_t(previous_band)];
-        previous_centres = KeyTable();
-        previous_centres.reserve(before->size());
+        before_next = 0, band_columns = glm::ivec2(x_first, x_last);
+        previous_centres = KeyTable();  // read for the rectangles the search tries: those of affected centres
         for (std::size_t j = 0; j < before->size(); ++j) {
           const Candidates::Item& item = (*before)[j];
           const glm::ivec3 c = out.decode(item).corner(0);
-          previous_centres.insert(centre_key(c.x, c.y, c.z, item.shape), std::uint32_t(j));
+          if (affected(2 * c.x + ring[item.shape].dx, 2 * c.z + ring[item.shape].dz))
+            previous_centres.insert(centre_key(c.x, c.y, c.z, item.shape), std::uint32_t(j));
         }
       }
     }
     first_row = std::size_t(2 * z1 + int(rows) - reach) % rows;  // 2 z1 - reach, kept non-negative
     for (const int dz : {reach - 1, reach})
       if (dz >= -reach) centres.reset(ring_row(dz) * row_bits, (ring_row(dz) + 1) * row_bits);
+    // The first corners of rectangles of affected centres: 2 z1 + dz and 2 x1 + dx in the affected box.
+    if (from_previous) {
+      if (2 * z1 < affected_lo.y - reach || 2 * z1 > affected_hi.y + reach) continue;
+      x_first = std::max(x_first, floor_half(affected_lo.x - dx_most));
+      x_last = std::min(x_last, floor_half(affected_hi.x - dx_least));
+    }
     for (int x1 = x_first; x1 <= x_last; ++x1) {
       if (!normals.has_normal(spec.column(x1, z1))) continue;  // most of an open floor
       for (int y1 = std::max(y_first, floor); y1 <= ceiling; ++y1) {
@@ -312,7 +363,8 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
           const std::uint8_t compatible = compatible_normals(f1);
           for (std::size_t r = 0; r < ring.size(); ++r) {
             const int x2 = x1 + ring[r].dx, z2 = z1 + ring[r].dz;
-            if (x2 < spec.nx && z2 >= 0 && z2 < spec.nz && (f[spec.index(x2, y1, z2)] & compatible) != 0)
+            if (x2 < spec.nx && z2 >= 0 && z2 < spec.nz && (f[spec.index(x2, y1, z2)] & compatible) != 0 &&
+                affected(x1 + x2, z1 + z2))
               try_rectangle(x1, y1, z1, r);
           }
           continue;
@@ -321,9 +373,12 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
         if (rows.count == 0) continue;  // no normal a second corner may carry
         const std::uint64_t* rows_here = normals.z_rows_at(spec.nx, x1, y1, rows);
         for (const RingWord& word : ring_words) {
-          if (x1 + word.dx >= spec.nx) break;  // dx only grows
+          if (x1 + word.dx >= spec.nx || 2 * x1 + word.dx > affected_hi.x) break;  // dx only grows
+          if (2 * x1 + word.dx < affected_lo.x) continue;
           const std::uint64_t* rows_there = rows_here + std::size_t(word.dx) * normals.column_words();
           std::uint64_t seconds = word.offsets & normals.z_window(rows_there, rows, z1 + word.dz_from);
+          if (from_previous)  // dz with 2 z1 + dz in the affected box
+            seconds &= bits_between(affected_lo.y - 2 * z1 - word.dz_from, affected_hi.y - 2 * z1 - word.dz_from);
           for (; seconds != 0; seconds &= seconds - 1)
             try_rectangle(x1, y1, z1, word.first + word.rank[std::size_t(std::countr_zero(seconds))]);
         }

@@ -5,6 +5,7 @@
 
 #include <bit>
 #include <stop_token>
+#include <tuple>
 
 namespace roomsense::detail {
 
@@ -174,6 +175,11 @@ inline std::uint64_t bits_between(int from, int to) {
   from = from < 0 ? 0 : from, to = to > 63 ? 63 : to;
   if (from > to) return 0;
   return (~std::uint64_t{0} >> (63 - to)) & (~std::uint64_t{0} << from);
+}
+
+// A wall rectangle's place in search_walls's order: corner 1's z, x and y, then its ring offset (its shape).
+inline std::tuple<int, int, int, std::uint32_t> wall_search_order(const glm::ivec3& corner1, std::uint32_t shape) {
+  return {corner1.z, corner1.x, corner1.y, shape};
 }
 
 // Alg. 2 (Eq. 3.20-3.27). Returns the first valid rectangle for each distinct centre, in search order: a

@@ -452,8 +452,7 @@ Candidates SearchCache::assemble(Kept& kept, const Candidates& found, std::vecto
       matched[r.slot].assign(r.items.size(), 0);
     }
     const auto search_order = [&](const Candidates::Item& item) {
-      const glm::ivec3 c = found.decode(item).corner(0);
-      return std::tuple(c.z, c.x, c.y, item.shape);
+      return wall_search_order(found.decode(item).corner(0), item.shape);
     };
     std::size_t next = 0;  // the slot's first replaced rectangle not before the current one
     const auto previous_state = [&](std::size_t slot, std::size_t k) -> std::int8_t {

@@ -81,13 +81,6 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   return n;
 }
 
-namespace {
-
-// floor(v / 2) for any sign.
-int floor_half(int v) { return v >= 0 ? v / 2 : -((1 - v) / 2); }
-
-}  // namespace
-
 // A rectangle's cells lie between its corners, |dz| <= max_d, and may touch one more row each way.
 int wall_search_reach(const SizeRange& size) { return int(std::floor(size.max_d)) + 2; }
 
@@ -275,23 +268,20 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   const auto affected = [&](int sx, int sz) {
     return sx >= affected_lo.x && sx <= affected_hi.x && sz >= affected_lo.y && sz <= affected_hi.y;
   };
-  int dx_least = 0, dx_most = 0;
-  for (const RingOffset& o : ring) dx_least = std::min(dx_least, o.dx), dx_most = std::max(dx_most, o.dx);
   // The previous rectangles of the band searched whose centres are not affected, into `out` in search order up to
   // (not including) `key`: those of corners 1 in the band's columns (the others replace() keeps).
   std::size_t before_next = 0;
   glm::ivec2 band_columns(0, -1);
-  const auto search_order = [](const glm::ivec3& c, std::size_t r) { return std::tuple(c.z, c.x, c.y, r); };
-  const auto take_before = [&](const std::tuple<int, int, int, std::size_t>& key) {
+  const auto take_before = [&](const std::tuple<int, int, int, std::uint32_t>& key) {
     for (; before_next < before->size(); ++before_next) {
       const Candidates::Item& item = (*before)[before_next];
       const glm::ivec3 c = out.decode(item).corner(0);
-      if (!(search_order(c, item.shape) < key)) return;
+      if (!(wall_search_order(c, item.shape) < key)) return;
       const RingOffset& o = ring[item.shape];
       if (c.x >= band_columns.x && c.x <= band_columns.y && !affected(2 * c.x + o.dx, 2 * c.z + o.dz)) out.push_item(item);
     }
   };
-  constexpr auto kBandEnd = std::tuple(std::numeric_limits<int>::max(), 0, 0, std::size_t{0});
+  constexpr auto kBandEnd = std::tuple(std::numeric_limits<int>::max(), 0, 0, std::uint32_t{0});
   const auto valid_now = [&](int x1, int y1, int z1, std::size_t r) {
     const RingOffset& o = ring[r];
     if (from_previous && (x1 + o.box_hi.x < changed_lo.x || x1 + o.box_lo.x > changed_hi.x ||
@@ -301,7 +291,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       const Candidates::Item& item = (*before)[j];
       const glm::ivec3 c = out.decode(item).corner(0);
       if (c == glm::ivec3(x1, y1, z1) && item.shape == r) return true;
-      if (std::tie(c.z, c.x, c.y, item.shape) > std::tie(z1, x1, y1, r)) return false;
+      if (wall_search_order(c, item.shape) > wall_search_order({x1, y1, z1}, std::uint32_t(r))) return false;
     }
     return valid(x1, z1, r, y1);
   };
@@ -315,7 +305,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     if (centres.test(bit) || !valid_now(x1, y1, z1, r)) return;
     centres.set(bit);
     if constexpr (kBanded) band_bits.push_back(bit);
-    if (from_previous) take_before(search_order(glm::ivec3(x1, y1, z1), r));
+    if (from_previous) take_before(wall_search_order({x1, y1, z1}, std::uint32_t(r)));
     out.push_back(glm::ivec3(x1, y1, z1), std::uint32_t(r));
   };
   const auto end_band = [&](int band) {
@@ -348,11 +338,12 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     first_row = std::size_t(2 * z1 + int(rows) - reach) % rows;  // 2 z1 - reach, kept non-negative
     for (const int dz : {reach - 1, reach})
       if (dz >= -reach) centres.reset(ring_row(dz) * row_bits, (ring_row(dz) + 1) * row_bits);
-    // The first corners of rectangles of affected centres: 2 z1 + dz and 2 x1 + dx in the affected box.
+    // The first corners of rectangles of affected centres: 2 z1 + dz and 2 x1 + dx in the affected box, with
+    // |dz| <= reach and 0 <= dx <= reach (ring_offsets); >> 1 is floor(v / 2) for either sign.
     if (from_previous) {
       if (2 * z1 < affected_lo.y - reach || 2 * z1 > affected_hi.y + reach) continue;
-      x_first = std::max(x_first, floor_half(affected_lo.x - dx_most));
-      x_last = std::min(x_last, floor_half(affected_hi.x - dx_least));
+      x_first = std::max(x_first, (affected_lo.x - reach) >> 1);
+      x_last = std::min(x_last, affected_hi.x >> 1);
     }
     for (int x1 = x_first; x1 <= x_last; ++x1) {
       if (!normals.has_normal(spec.column(x1, z1))) continue;  // most of an open floor

@@ -44,15 +44,18 @@ int sample_count(float length, float step) {
   return length > 0.0f ? int(std::ceil(double(length) / double(step) - 0.5 - 1e-6)) : 0;
 }
 
-// The sample positions (u, v) of the strip one step beyond `edge` (0 bottom, 1 right, 2 top, 3 left).
+// The sample positions (u, v) of the strip one step beyond `edge` (0 bottom, 1 right, 2 top, 3 left), in order,
+// until f returns false (a refused strip: most of growth's tests end at their first samples).
 template <class F>
 void strip_samples(const Extent& e, int edge, float step, F f) {
   if (edge == 0 || edge == 2) {
     const float v = edge == 0 ? e.v0 - 0.5f * step : e.v1 + 0.5f * step;
-    for (int i = 0, n = sample_count(e.u1 - e.u0, step); i < n; ++i) f(e.u0 + (float(i) + 0.5f) * step, v);
+    for (int i = 0, n = sample_count(e.u1 - e.u0, step); i < n; ++i)
+      if (!f(e.u0 + (float(i) + 0.5f) * step, v)) return;
   } else {
     const float u = edge == 3 ? e.u0 - 0.5f * step : e.u1 + 0.5f * step;
-    for (int j = 0, n = sample_count(e.v1 - e.v0, step); j < n; ++j) f(u, e.v0 + (float(j) + 0.5f) * step);
+    for (int j = 0, n = sample_count(e.v1 - e.v0, step); j < n; ++j)
+      if (!f(u, e.v0 + (float(j) + 0.5f) * step)) return;
   }
 }
 
@@ -465,15 +468,18 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
     owner.reserve(samples / (horizontal ? 64 : 16) + 1);
     for (std::uint32_t k = 0; k < extents.size(); ++k) mark_area(k);
   }
-  const auto owner_of = [&](glm::ivec3 cell) {
-    if (!lazy) return owner.find(cell);
+  // Per conflict depth, the tiles its last find read, in the owners and the strips.
+  std::vector<std::array<SampleOwners::Cursor, 2>> cursors(rule.conflict_depths.size());
+  const auto owner_of = [&](glm::ivec3 cell, std::array<SampleOwners::Cursor, 2>& at) {
+    if (!lazy) return owner.find(cell, at[0]);
     lazy->cover(cell, mark_area);
-    const std::uint32_t own = owner.find(cell);
-    return own != SampleOwners::kAbsent ? own : strips->find(cell);
+    const std::uint32_t own = owner.find(cell, at[0]);
+    return own != SampleOwners::kAbsent ? own : strips->find(cell, at[1]);
   };
   const auto conflicts = [&](std::uint32_t k, const glm::vec3& p) {
-    for (const float depth : rule.conflict_depths) {
-      const std::uint32_t other = owner_of(sample_cell(p + depth * areas[k].normal, h));
+    for (std::size_t d = 0; d < rule.conflict_depths.size(); ++d) {
+      const float depth = rule.conflict_depths[d];
+      const std::uint32_t other = owner_of(sample_cell(p + depth * areas[k].normal, h), cursors[d]);
       if (other != SampleOwners::kAbsent && other != k && glm::dot(areas[other].normal, areas[k].normal) > 0.0f)
         return true;
     }
@@ -515,12 +521,12 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
         bool refused = false;
         const glm::vec3 outward = edge == 0 ? -e.y : edge == 1 ? e.x : edge == 2 ? e.y : -e.x;
         strip_samples(e, edge, h, [&](float u, float v) {
-          if (refused) return;
           const glm::vec3 p = e.at(u, v);
           const SurfaceCell cell = rule.cell_at(p + rule.lookahead * outward, areas[k]);
           refused = cell == SurfaceCell::Forbidden || conflicts(k, p);
           usable += cell == SurfaceCell::Usable ? 1 : 0;
           ++total;
+          return !refused;
         });
         if (refused) refusals[std::size_t(edge)] = {true, line, start, total - 1};
         if (refused || total == 0 || double(usable) < double(rule.strip_fill) * double(total)) continue;
@@ -544,7 +550,10 @@ void grow_areas(std::span<Area> areas, const GrowthRule& rule, const AreaParams&
     Extent& e = extents[k];
     moves.clear();
     const auto move = [&](int edge) {  // the strip beyond `edge` becomes the area's
-      if (!every_area_replayed) strip_samples(e, edge, h, [&](float u, float v) { mark(k, e.at(u, v)); });
+      if (!every_area_replayed) strip_samples(e, edge, h, [&](float u, float v) {
+        mark(k, e.at(u, v));
+        return true;
+      });
       (edge == 0 ? e.v0 : edge == 1 ? e.u1 : edge == 2 ? e.v1 : e.u0) += (edge == 0 || edge == 3 ? -h : h);
       moves.push_back(std::uint8_t(edge));
     };

@@ -40,6 +40,19 @@ class SampleOwners {
     const std::uint32_t tile = tile_of(tile_key(cell));
     return tile == KeyTable::kAbsent ? kAbsent : owners(tile)[offset(cell)];
   }
+  // The tile a caller's run of finds last read (find(cell, cursor)): growth reads a strip's samples at several
+  // depths in turn, each depth's cells mostly in the tile of its sample before, which the one tile tile_of
+  // remembers missed at every read (three table probes a wall's sample).
+  struct Cursor {
+    std::uint64_t key = ~std::uint64_t{0};  // no tile's (pack_key uses 63 bits)
+    std::uint32_t tile = KeyTable::kAbsent;
+    std::uint32_t tiles = 0;  // tile_count_ when a missing tile was remembered: a tile made since may be it
+  };
+  std::uint32_t find(glm::ivec3 cell, Cursor& at) const {
+    const std::uint64_t key = tile_key(cell);
+    if (key != at.key || (at.tile == KeyTable::kAbsent && at.tiles != tile_count_)) at = {key, tiles_.find(key), tile_count_};
+    return at.tile == KeyTable::kAbsent ? kAbsent : owners(at.tile)[offset(cell)];
+  }
 
   // Makes value the owner of cell unless it has one (as KeyTable::insert).
   void insert(glm::ivec3 cell, std::uint32_t value) {

@@ -2,11 +2,13 @@
 // blocks that are added, never moved, as the areas grow past the tiles reserved for them. Checked against a
 // plain map on cells spread over many more tiles than were reserved, on both tile shapes; `lower`, which a replay's
 // growth uses to mark areas out of order, against the lowest value per cell; `lower_box` against `lower` of each
-// of its cells.
+// of its cells; finds through cursors (one per run of reads, as growth keeps one per depth) against plain finds
+// while tiles are made between and among them.
 #include "../../core/src/areas/sample_owners.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <map>
 #include <random>
 #include <tuple>
@@ -76,6 +78,35 @@ TEST(SampleOwners, LowerBoxIsLowerOfEachOfItsCells) {
         for (int z = -45; z <= 65; ++z)
           ASSERT_EQ(boxes.find(glm::ivec3(x, y, z)), cells.find(glm::ivec3(x, y, z))) << x << " " << y << " " << z;
   }
+}
+
+TEST(SampleOwners, CursorsFindWhatPlainFindsDoWhileTilesAreMade) {
+  // Three cursors, each reading its own run of cells (as growth's depths do), each run near its cursor's last
+  // cell; between reads cells are owned, some in tiles a cursor last found missing.
+  SampleOwners owners(glm::ivec3(2, 2, 2));
+  std::array<SampleOwners::Cursor, 3> cursors;
+  std::array<glm::ivec3, 3> at = {glm::ivec3(0), glm::ivec3(0, 8, 0), glm::ivec3(0, -8, 0)};
+  std::mt19937 random(17);
+  std::uniform_int_distribution<int> step(-1, 2), which(0, 2), coin(0, 3);
+  std::size_t missing_then_owned = 0;
+  for (std::uint32_t value = 0; value < 20000; ++value) {
+    const std::size_t d = std::size_t(which(random));
+    at[d] += glm::ivec3(step(random), 0, step(random) / 2);
+    const std::uint32_t found = owners.find(at[d], cursors[d]);
+    ASSERT_EQ(found, owners.find(at[d])) << value;
+    if (coin(random) == 0) {  // a cell ahead of some cursor: often in a tile that cursor found missing
+      const glm::ivec3 ahead = at[std::size_t(which(random))] + glm::ivec3(1, 0, 0);
+      const bool was_missing = owners.find(ahead) == SampleOwners::kAbsent;
+      owners.insert(ahead, value);
+      for (std::size_t k = 0; k < cursors.size(); ++k) {
+        const std::uint32_t seen = owners.find(ahead, cursors[k]);
+        ASSERT_EQ(seen, owners.find(ahead)) << value << " cursor " << k;
+        missing_then_owned += was_missing && seen == value;
+        ASSERT_EQ(owners.find(at[k], cursors[k]), owners.find(at[k])) << value << " cursor " << k;
+      }
+    }
+  }
+  EXPECT_GT(missing_then_owned, 100u);  // the case a cursor's memory of a missing tile must not hide
 }
 
 }  // namespace

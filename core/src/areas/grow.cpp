@@ -45,7 +45,7 @@ int sample_count(float length, float step) {
 }
 
 // The sample positions (u, v) of the strip one step beyond `edge` (0 bottom, 1 right, 2 top, 3 left), in order,
-// until f returns false (a refused strip: most of growth's tests end at their first samples).
+// until f returns false (a refused strip: the samples after the refusing one are not read).
 template <class F>
 void strip_samples(const Extent& e, int edge, float step, F f) {
   if (edge == 0 || edge == 2) {

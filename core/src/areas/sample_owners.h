@@ -35,23 +35,20 @@ class SampleOwners {
     tiles_.reserve(tiles);
   }
 
-  // The owner of cell, or kAbsent.
-  std::uint32_t find(glm::ivec3 cell) const {
-    const std::uint32_t tile = tile_of(tile_key(cell));
-    return tile == KeyTable::kAbsent ? kAbsent : owners(tile)[offset(cell)];
-  }
-  // The tile a caller's run of finds last read (find(cell, cursor)): growth reads a strip's samples at several
-  // depths in turn, each depth's cells mostly in the tile of its sample before, which the one tile tile_of
-  // remembers missed at every read (three table probes a wall's sample).
+  // The tile a run of reads last read: a strip's samples mostly share their tile. Growth reads a strip's samples at
+  // several depths in turn and keeps one cursor per depth (find(cell, cursor)); one remembered tile for all of them
+  // missed at every read (three table probes a wall's sample).
   struct Cursor {
     std::uint64_t key = ~std::uint64_t{0};  // no tile's (pack_key uses 63 bits)
     std::uint32_t tile = KeyTable::kAbsent;
     std::uint32_t tiles = 0;  // tile_count_ when a missing tile was remembered: a tile made since may be it
   };
+
+  // The owner of cell, or kAbsent: through this SampleOwners' own cursor, or the caller's.
+  std::uint32_t find(glm::ivec3 cell) const { return find(cell, last_); }
   std::uint32_t find(glm::ivec3 cell, Cursor& at) const {
-    const std::uint64_t key = tile_key(cell);
-    if (key != at.key || (at.tile == KeyTable::kAbsent && at.tiles != tile_count_)) at = {key, tiles_.find(key), tile_count_};
-    return at.tile == KeyTable::kAbsent ? kAbsent : owners(at.tile)[offset(cell)];
+    const std::uint32_t tile = tile_of(tile_key(cell), at);
+    return tile == KeyTable::kAbsent ? kAbsent : owners(tile)[offset(cell)];
   }
 
   // Makes value the owner of cell unless it has one (as KeyTable::insert).
@@ -90,13 +87,13 @@ class SampleOwners {
   // The first of the owners of cell's tile, made where it has none.
   std::uint32_t* tile_owners(glm::ivec3 cell) {
     const std::uint64_t key = tile_key(cell);
-    std::uint32_t tile = tile_of(key);
+    std::uint32_t tile = tile_of(key, last_);
     if (tile == KeyTable::kAbsent) {
       tile = tile_count_++;
       if ((tile & block_mask()) == 0) blocks_.push_back(std::make_unique_for_overwrite<std::uint32_t[]>(cells_ << block_shift_));
       tiles_.insert(key, tile);
       std::fill_n(owners(tile), cells_, kAbsent);
-      last_tile_ = tile;
+      last_ = {key, tile, tile_count_};
     }
     return owners(tile);
   }
@@ -118,17 +115,15 @@ class SampleOwners {
     return blocks_[tile >> block_shift_].get() + std::size_t(tile & block_mask()) * cells_;
   }
 
-  // The tile of a key, the last one asked for remembered (so one thread at a time reads a SampleOwners): a
-  // strip's samples mostly share their tile.
-  std::uint32_t tile_of(std::uint64_t key) const {
-    if (key != last_key_) last_key_ = key, last_tile_ = tiles_.find(key);
-    return last_tile_;
+  // The tile of a key (kAbsent: none), remembered in `at`; a missing one is looked up again once tiles were made.
+  std::uint32_t tile_of(std::uint64_t key, Cursor& at) const {
+    if (key != at.key || (at.tile == KeyTable::kAbsent && at.tiles != tile_count_)) at = {key, tiles_.find(key), tile_count_};
+    return at.tile;
   }
 
   glm::ivec3 shift_, mask_;
   std::size_t cells_;
-  mutable std::uint64_t last_key_ = ~std::uint64_t{0};  // no tile's: pack_key uses 63 bits
-  mutable std::uint32_t last_tile_ = KeyTable::kAbsent;
+  mutable Cursor last_;  // find's and insert's own (so one thread at a time reads a SampleOwners)
   KeyTable tiles_;
   int block_shift_ = 4;  // 2^block_shift_ tiles a block
   std::uint32_t tile_count_ = 0;

@@ -178,7 +178,8 @@ inline std::uint64_t bits_between(int from, int to) {
 }
 
 // A wall rectangle's place in search_walls's order: corner 1's z, x and y, then its ring offset (its shape).
-inline std::tuple<int, int, int, std::uint32_t> wall_search_order(const glm::ivec3& corner1, std::uint32_t shape) {
+using WallSearchOrder = std::tuple<int, int, int, std::uint32_t>;
+inline WallSearchOrder wall_search_order(const glm::ivec3& corner1, std::uint32_t shape) {
   return {corner1.z, corner1.x, corner1.y, shape};
 }
 

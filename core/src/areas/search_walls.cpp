@@ -272,7 +272,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   // (not including) `key`: those of corners 1 in the band's columns (the others replace() keeps).
   std::size_t before_next = 0;
   glm::ivec2 band_columns(0, -1);
-  const auto take_before = [&](const std::tuple<int, int, int, std::uint32_t>& key) {
+  const auto take_before = [&](const WallSearchOrder& key) {
     for (; before_next < before->size(); ++before_next) {
       const Candidates::Item& item = (*before)[before_next];
       const glm::ivec3 c = out.decode(item).corner(0);
@@ -281,7 +281,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       if (c.x >= band_columns.x && c.x <= band_columns.y && !affected(2 * c.x + o.dx, 2 * c.z + o.dz)) out.push_item(item);
     }
   };
-  constexpr auto kBandEnd = std::tuple(std::numeric_limits<int>::max(), 0, 0, std::uint32_t{0});
+  constexpr WallSearchOrder kBandEnd{std::numeric_limits<int>::max(), 0, 0, 0};
   const auto valid_now = [&](int x1, int y1, int z1, std::size_t r) {
     const RingOffset& o = ring[r];
     if (from_previous && (x1 + o.box_hi.x < changed_lo.x || x1 + o.box_lo.x > changed_hi.x ||

@@ -137,4 +137,18 @@ inline std::set<std::string> process_threads() {
   return ids;
 }
 
+// process_threads() once it equals `expected`, or after `limit` as it then is. A joined thread's entry leaves
+// /proc/self/task a moment after its join returns (the join waits for the thread's id to be cleared, which the kernel
+// does before it reaps the thread), so a list read at once may still hold it on a busy machine.
+inline std::set<std::string> process_threads_settled(const std::set<std::string>& expected,
+                                                     std::chrono::milliseconds limit = std::chrono::seconds(2)) {
+  const auto until = std::chrono::steady_clock::now() + limit;
+  std::set<std::string> now = process_threads();
+  while (now != expected && std::chrono::steady_clock::now() < until) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    now = process_threads();
+  }
+  return now;
+}
+
 }  // namespace roomsense::test

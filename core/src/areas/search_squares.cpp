@@ -14,6 +14,7 @@
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <vector>
 
 namespace roomsense::detail {
 namespace {
@@ -53,6 +54,34 @@ class BoxCounts {
   Count at(int x, int z) const { return sums_[std::size_t(z) * std::size_t(nx_ + 1) + std::size_t(x)]; }
   int nx_, nz_;
   std::unique_ptr<Count[]> sums_;
+};
+
+// Counts over runs of cells along z in one column in O(1), over a region of the grid: a prefix sum per column,
+// its cells one after another. A rotated square's cells are runs of its columns (RingOffset::runs), and a run's
+// count reads two entries of one column here where BoxCounts reads four from two rows apart.
+template <class Count>
+class ColumnCounts {
+ public:
+  template <class Value>
+  void fill(const CellBox& region, Value value) {
+    lo_ = region.lo, height_ = std::size_t(region.hi.y - region.lo.y) + 2;
+    sums_.resize(std::size_t(region.hi.x - region.lo.x + 1) * height_);
+    for (int x = region.lo.x; x <= region.hi.x; ++x) {
+      Count* column = sums_.data() + std::size_t(x - lo_.x) * height_;
+      Count sum = column[0] = 0;
+      for (int z = region.lo.y; z <= region.hi.y; ++z) column[z - region.lo.y + 1] = sum += Count(value(x, z));
+    }
+  }
+  // Cells (x, z_lo) to (x, z_hi), inclusive, inside the region filled.
+  Count sum(int x, int z_lo, int z_hi) const {
+    const Count* column = sums_.data() + std::size_t(x - lo_.x) * height_;
+    return column[z_hi - lo_.y + 1] - column[z_lo - lo_.y];
+  }
+
+ private:
+  glm::ivec2 lo_{0};
+  std::size_t height_ = 0;
+  std::vector<Count> sums_;
 };
 
 // Eq. 3.30-3.38 read a box's wall cells and unsuitable cells together: both counts in one table, walls in the
@@ -178,6 +207,8 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
   Candidates out(spec, std::max(top, 0) + 2, std::move(shapes));
   BoxCounts<std::uint64_t> box_bad(spec);  // BadCells
   BoxCounts<int> box_raised(spec), box_first(spec);
+  ColumnCounts<std::uint64_t> runs_bad;  // BadCells, as box_bad
+  ColumnCounts<int> runs_raised;
   // Every orientation's square holds the disk of radius d_min / 2 around its centre, and so the cells inside
   // the box inscribed in that disk: if those alone hold a wall or too many unsuitable cells, no orientation
   // can be valid.
@@ -447,12 +478,18 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
         if (first || raised) tile_bits.set(x + pad, z + pad);
         if (first) first_bits.set(x + pad, z + pad);
       }
-    box_bad.fill(region, [&](int x, int z) {  // walls are never tiles
+    const auto bad_cell = [&](int x, int z) {  // walls are never tiles
       const std::uint8_t k = kind(x, z);
       return BadCells::of((k & kWall) != 0, (k & kTile) == 0);
-    });
+    };
+    box_bad.fill(region, bad_cell);
+    runs_bad.fill(region, bad_cell);
     box_first.fill(region, [&](int x, int z) { return (kind(x, z) & kFirst) != 0; });
-    if (surface == Surface::Furniture) box_raised.fill(region, [&](int x, int z) { return (kind(x, z) & kRaised) != 0; });
+    if (surface == Surface::Furniture) {
+      const auto raised_cell = [&](int x, int z) { return (kind(x, z) & kRaised) != 0; };
+      box_raised.fill(region, raised_cell);
+      runs_raised.fill(region, raised_cell);
+    }
     CentreSet& here = centres[std::size_t(layer)];
     CentreSet& above = centres[std::size_t(layer + 1)];
     const bool may_rise = surface == Surface::Furniture;
@@ -485,7 +522,7 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       const auto rises_in_runs = [&] {
         if (may_rise && box_raised.sum(box_lo, box_hi) > 0)
           for (const CellRun& run : o.runs)
-            rises = rises || box_raised.sum({x1 + run.dx, z1 + run.dz_lo}, {x1 + run.dx, z1 + run.dz_hi}) > 0;
+            rises = rises || runs_raised.sum(x1 + run.dx, z1 + run.dz_lo, z1 + run.dz_hi) > 0;
         return true;
       };
       const std::uint64_t bad_in_box = box_inside ? box_bad.sum(box_lo, box_hi) : 0;
@@ -499,9 +536,9 @@ Candidates squares_search(const GridSpec& spec, const RoomFeatures& features, Su
       std::uint64_t bad = 0;  // the runs' so far, both counts (BadCells)
       for (const CellRun& run : o.runs) {
         const int x = x1 + run.dx, lo = z1 + run.dz_lo, hi = z1 + run.dz_hi;  // inside: the corners are
-        bad += box_bad.sum({x, lo}, {x, hi});
+        bad += runs_bad.sum(x, lo, hi);
         if (bad > most_bad) return false;
-        if (may_rise && !rises) rises = box_raised.sum({x, lo}, {x, hi}) > 0;
+        if (may_rise && !rises) rises = runs_raised.sum(x, lo, hi) > 0;
       }
       return true;
     };

@@ -33,6 +33,19 @@ struct NormalCounts {
   // would outweigh the normals themselves, and rooms without normals.
   std::size_t z_words = 0;
   std::vector<std::uint64_t> z_bits;  // ((y - y0) * nx + x) * 4 + k, then z / 64
+  // A rectangle's cells as runs of consecutive columns, counted a run at a time rather than a cell at a time (a
+  // wall's top covers some ten cells in one or two runs). Per order of the columns (`along_x`: the columns'
+  // own order, x fastest; `along_z`: z fastest, index x * nz + z), the listed columns (those with a normal, and
+  // the flagged ones: a wall column, or one with a blocked voxel) ranked in that order, and per rank the counts of
+  // the listed columns before it summed level by level, one more slot counting the flagged ones among them. The
+  // voxels with a normal of the columns [i, j) of an order in a span are then two ranks and four sums apart; a
+  // run holding a flagged column is read cell by cell (usable()). Empty where the sums would outweigh twice the
+  // grid's voxels (a room whose every column has a normal).
+  struct RunSums {
+    std::vector<std::uint32_t> rank;  // per column in the order, and one past the last: listed columns before it
+    std::vector<std::uint32_t> sums;  // rank * (levels + 2) + level offset (Levels), then + levels + 1: flagged
+  };
+  RunSums along_x, along_z;
   bool has_normal(std::size_t column) const { return (start[column] & kStartBits) != kNoNormal; }
   int count(std::size_t column, int y_from, int y_to) const;  // voxels with a normal in [y_from, y_to]
   // A span of levels [y_from, y_to], found once per rectangle.

@@ -78,6 +78,34 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   }
   for (std::size_t col = 0; col < std::min(spec.column_count(), features.walls.size()); ++col)
     if (features.walls[col]) n.start[col] |= NormalCounts::kWallColumn;
+  // The run sums of both orders, where the listed columns' sums stay within twice the grid's voxels.
+  const auto listed = [&](std::size_t col) { return n.has_normal(col) || (n.start[col] & ~NormalCounts::kStartBits) != 0; };
+  std::size_t listed_columns = 0;
+  for (std::size_t col = 0; col < spec.column_count(); ++col) listed_columns += listed(col) ? 1 : 0;
+  const std::size_t sums_stride = std::size_t(n.levels) + 2;
+  if (n.levels > 0 && 2 * 4 * (listed_columns + 1) * sums_stride <= 2 * spec.voxel_count()) {
+    const auto run_sums = [&]<class Count>(const std::vector<Count>& prefix, NormalCounts::RunSums& out, bool z_fastest) {
+      out.rank.resize(spec.column_count() + 1);
+      out.sums.assign((listed_columns + 1) * sums_stride, 0);
+      std::uint32_t rank = 0;
+      for (std::size_t i = 0; i < spec.column_count(); ++i) {
+        const std::size_t col = z_fastest ? spec.column(int(i / std::size_t(spec.nz)), int(i % std::size_t(spec.nz))) : i;
+        out.rank[i] = rank;
+        if (!listed(col)) continue;
+        const std::uint32_t* before = out.sums.data() + std::size_t(rank) * sums_stride;
+        std::uint32_t* after = out.sums.data() + std::size_t(++rank) * sums_stride;
+        const Count* counts = prefix.data() + (n.start[col] & NormalCounts::kStartBits);
+        for (std::size_t l = 0; l <= std::size_t(n.levels); ++l) after[l] = before[l] + counts[l];
+        after[sums_stride - 1] = before[sums_stride - 1] + ((n.start[col] & ~NormalCounts::kStartBits) != 0 ? 1 : 0);
+      }
+      out.rank[spec.column_count()] = rank;
+    };
+    for (const bool z_fastest : {false, true}) {
+      NormalCounts::RunSums& out = z_fastest ? n.along_z : n.along_x;
+      if (n.levels < 256) run_sums(n.prefix8, out, z_fastest);
+      else run_sums(n.prefix16, out, z_fastest);
+    }
+  }
   return n;
 }
 
@@ -137,6 +165,8 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   // segment touches, and enough voxels with a normal in the rows [y1 - h, y1]. Gives up once too many voxels lack
   // one; as no cell lowers the count of those, the cells may be read in any order. Beyond the thesis: no voxel
   // before an opening (RoomFeatures::wall_blocked). `prefix`: the counts' (NormalCounts::usable).
+  const std::size_t sums_stride = std::size_t(normals.levels) + 2;  // NormalCounts::RunSums
+  constexpr int kCellsAtOnce = 3;  // shorter runs cost less cell by cell
   const auto valid_in = [&]<class Count>(const Count* prefix, int x1, int z1, std::size_t r, int y_top) {
     const RingOffset& o = ring[r];
     const int y_bottom = std::max(y_top - shapes[r].side, floor);
@@ -162,13 +192,26 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       missing += rows * long(cells) - with_normal;
       return true;
     };
+    // add_run at once from `order`'s sums (NormalCounts::RunSums), the run's columns being [i, i + cells) there; cell
+    // by cell where it holds a flagged column, is too short to gain, or there are no sums.
+    const auto add_run_sums = [&](const NormalCounts::RunSums& order, std::size_t i, std::size_t col, int cells,
+                                  std::size_t step) {
+      if (cells < kCellsAtOnce || order.rank.empty()) return add_run(col, cells, step);
+      const std::uint32_t* lo = order.sums.data() + std::size_t(order.rank[i]) * sums_stride;
+      const std::uint32_t* hi = order.sums.data() + std::size_t(order.rank[i + std::size_t(cells)]) * sums_stride;
+      if (hi[sums_stride - 1] != lo[sums_stride - 1]) return add_run(col, cells, step);
+      // Unsigned differences: exact, as each true difference is a count below 2^32.
+      missing += rows * long(cells) - long((hi[span.to] - lo[span.to]) - (hi[span.from] - lo[span.from]));
+      return true;
+    };
     const std::size_t rows_begin = r == 0 ? 0 : row_runs_end[r - 1], rows_end = row_runs_end[r];
     if (rows_begin < rows_end) {  // row by row; a row past the grid's edge lacks every voxel
       for (std::size_t k = rows_begin; k < rows_end; ++k) {
         const RowRun& run = row_runs[k];
         const int z = z1 + run.dz, cells = run.dx_hi - run.dx_lo + 1;
         if (z < 0 || z >= spec.nz) missing += rows * long(cells);
-        else if (!add_run(spec.column(x1 + run.dx_lo, z), cells, 1)) return false;
+        else if (const std::size_t col = spec.column(x1 + run.dx_lo, z); !add_run_sums(normals.along_x, col, col, cells, 1))
+          return false;
         if (double(missing) > may_miss) return false;
       }
       return true;
@@ -183,7 +226,8 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
         in_lo = std::max(z_lo, 0), in_hi = std::min(z_hi, spec.nz - 1);
         missing += rows * long((z_hi - z_lo + 1) - std::max(in_hi - in_lo + 1, 0));
       }
-      if (in_lo <= in_hi && !add_run(spec.column(x1 + run.dx, in_lo), in_hi - in_lo + 1, std::size_t(spec.nx)))
+      if (in_lo <= in_hi && !add_run_sums(normals.along_z, std::size_t(x1 + run.dx) * std::size_t(spec.nz) + std::size_t(in_lo),
+                                          spec.column(x1 + run.dx, in_lo), in_hi - in_lo + 1, std::size_t(spec.nx)))
         return false;
       if (double(missing) > may_miss) return false;
     }

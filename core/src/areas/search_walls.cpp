@@ -284,6 +284,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   // previous rectangle; not valid where its centre had none before it (were it valid, that centre's first valid
   // one, at it or before it, would be there); tested only where an earlier one had its centre (a rectangle reads
   // its offset's box, RingOffset::box_lo). The band's previous rectangles by centre.
+  // (Tested as `kBanded && from_previous` in the loops: a whole search's then carry no test of it.)
   bool from_previous = false;
   glm::ivec2 changed_lo(0), changed_hi(-1);
   if constexpr (kBanded)
@@ -328,7 +329,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   constexpr WallSearchOrder kBandEnd{std::numeric_limits<int>::max(), 0, 0, 0};
   const auto valid_now = [&](int x1, int y1, int z1, std::size_t r) {
     const RingOffset& o = ring[r];
-    if (from_previous && (x1 + o.box_hi.x < changed_lo.x || x1 + o.box_lo.x > changed_hi.x ||
+    if (kBanded && from_previous && (x1 + o.box_hi.x < changed_lo.x || x1 + o.box_lo.x > changed_hi.x ||
                           z1 + o.box_hi.y < changed_lo.y || z1 + o.box_lo.y > changed_hi.y)) {
       const std::uint32_t j = previous_centres.find(centre_key(x1, y1, z1, r));
       if (j == KeyTable::kAbsent) return false;
@@ -349,7 +350,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     if (centres.test(bit) || !valid_now(x1, y1, z1, r)) return;
     centres.set(bit);
     if constexpr (kBanded) band_bits.push_back(bit);
-    if (from_previous) take_before(wall_search_order({x1, y1, z1}, std::uint32_t(r)));
+    if (kBanded && from_previous) take_before(wall_search_order({x1, y1, z1}, std::uint32_t(r)));
     out.push_back(glm::ivec3(x1, y1, z1), std::uint32_t(r));
   };
   const auto end_band = [&](int band) {
@@ -408,11 +409,11 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
         if (rows.count == 0) continue;  // no normal a second corner may carry
         const std::uint64_t* rows_here = normals.z_rows_at(spec.nx, x1, y1, rows);
         for (const RingWord& word : ring_words) {
-          if (x1 + word.dx >= spec.nx || 2 * x1 + word.dx > affected_hi.x) break;  // dx only grows
-          if (2 * x1 + word.dx < affected_lo.x) continue;
+          if (x1 + word.dx >= spec.nx || (kBanded && 2 * x1 + word.dx > affected_hi.x)) break;  // dx only grows
+          if (kBanded && 2 * x1 + word.dx < affected_lo.x) continue;
           const std::uint64_t* rows_there = rows_here + std::size_t(word.dx) * normals.column_words();
           std::uint64_t seconds = word.offsets & normals.z_window(rows_there, rows, z1 + word.dz_from);
-          if (from_previous)  // dz with 2 z1 + dz in the affected box
+          if (kBanded && from_previous)  // dz with 2 z1 + dz in the affected box
             seconds &= bits_between(affected_lo.y - 2 * z1 - word.dz_from, affected_hi.y - 2 * z1 - word.dz_from);
           for (; seconds != 0; seconds &= seconds - 1)
             try_rectangle(x1, y1, z1, word.first + word.rank[std::size_t(std::countr_zero(seconds))]);

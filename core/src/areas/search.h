@@ -4,6 +4,7 @@
 #include "roomsense/features.h"
 
 #include <bit>
+#include <memory>
 #include <stop_token>
 #include <tuple>
 
@@ -43,7 +44,7 @@ struct NormalCounts {
   // grid's voxels (a room whose every column has a normal).
   struct RunSums {
     std::vector<std::uint32_t> rank;  // per column in the order, and one past the last: listed columns before it
-    std::vector<std::uint32_t> sums;  // rank * (levels + 2) + level offset (Levels), then + levels + 1: flagged
+    std::unique_ptr<std::uint32_t[]> sums;  // rank * (levels + 2) + level offset (Levels), then + levels + 1: flagged
   };
   RunSums along_x, along_z;
   bool has_normal(std::size_t column) const { return (start[column] & kStartBits) != kNoNormal; }

@@ -86,17 +86,24 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   if (n.levels > 0 && 2 * 4 * (listed_columns + 1) * sums_stride <= 2 * spec.voxel_count()) {
     const auto run_sums = [&]<class Count>(const std::vector<Count>& prefix, NormalCounts::RunSums& out, bool z_fastest) {
       out.rank.resize(spec.column_count() + 1);
-      out.sums.assign((listed_columns + 1) * sums_stride, 0);
+      out.sums = std::make_unique_for_overwrite<std::uint32_t[]>((listed_columns + 1) * sums_stride);
+      std::fill_n(out.sums.get(), sums_stride, 0u);  // rank 0: no column before it
       std::uint32_t rank = 0;
-      for (std::size_t i = 0; i < spec.column_count(); ++i) {
-        const std::size_t col = z_fastest ? spec.column(int(i / std::size_t(spec.nz)), int(i % std::size_t(spec.nz))) : i;
-        out.rank[i] = rank;
-        if (!listed(col)) continue;
-        const std::uint32_t* before = out.sums.data() + std::size_t(rank) * sums_stride;
-        std::uint32_t* after = out.sums.data() + std::size_t(++rank) * sums_stride;
+      std::size_t i = 0;  // the column's index in the order
+      const auto add = [&](std::size_t col) {
+        out.rank[i++] = rank;
+        if (!listed(col)) return;
+        const std::uint32_t* before = out.sums.get() + std::size_t(rank) * sums_stride;
+        std::uint32_t* after = out.sums.get() + std::size_t(++rank) * sums_stride;
         const Count* counts = prefix.data() + (n.start[col] & NormalCounts::kStartBits);
         for (std::size_t l = 0; l <= std::size_t(n.levels); ++l) after[l] = before[l] + counts[l];
         after[sums_stride - 1] = before[sums_stride - 1] + ((n.start[col] & ~NormalCounts::kStartBits) != 0 ? 1 : 0);
+      };
+      if (z_fastest) {
+        for (int x = 0; x < spec.nx; ++x)
+          for (int z = 0; z < spec.nz; ++z) add(spec.column(x, z));
+      } else {
+        for (std::size_t col = 0; col < spec.column_count(); ++col) add(col);
       }
       out.rank[spec.column_count()] = rank;
     };
@@ -197,8 +204,8 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     const auto add_run_sums = [&](const NormalCounts::RunSums& order, std::size_t i, std::size_t col, int cells,
                                   std::size_t step) {
       if (cells < kCellsAtOnce || order.rank.empty()) return add_run(col, cells, step);
-      const std::uint32_t* lo = order.sums.data() + std::size_t(order.rank[i]) * sums_stride;
-      const std::uint32_t* hi = order.sums.data() + std::size_t(order.rank[i + std::size_t(cells)]) * sums_stride;
+      const std::uint32_t* lo = order.sums.get() + std::size_t(order.rank[i]) * sums_stride;
+      const std::uint32_t* hi = order.sums.get() + std::size_t(order.rank[i + std::size_t(cells)]) * sums_stride;
       if (hi[sums_stride - 1] != lo[sums_stride - 1]) return add_run(col, cells, step);
       // Unsigned differences: exact, as each true difference is a count below 2^32.
       missing += rows * long(cells) - long((hi[span.to] - lo[span.to]) - (hi[span.from] - lo[span.from]));

@@ -40,8 +40,8 @@ struct NormalCounts {
   // the flagged ones: a wall column, or one with a blocked voxel) ranked in that order, and per rank the counts of
   // the listed columns before it summed level by level, one more slot counting the flagged ones among them. The
   // voxels with a normal of the columns [i, j) of an order in a span are then two ranks and four sums apart; a
-  // run holding a flagged column is read cell by cell (usable()). Empty where the sums would outweigh twice the
-  // grid's voxels (a room whose every column has a normal).
+  // run holding a flagged column is read cell by cell (usable()). Empty where the two orders' sums would take more
+  // bytes than twice the grid's voxels (a room whose every column has a normal): the runs are then read cell by cell.
   struct RunSums {
     std::vector<std::uint32_t> rank;  // per column in the order, and one past the last: listed columns before it
     std::unique_ptr<std::uint32_t[]> sums;  // rank * (levels + 2) + level offset (Levels), then + levels + 1: flagged

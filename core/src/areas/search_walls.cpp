@@ -78,7 +78,7 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   }
   for (std::size_t col = 0; col < std::min(spec.column_count(), features.walls.size()); ++col)
     if (features.walls[col]) n.start[col] |= NormalCounts::kWallColumn;
-  // The run sums of both orders, where the listed columns' sums stay within twice the grid's voxels.
+  // The run sums of both orders, where their sums' bytes stay within twice the grid's voxels.
   const auto listed = [&](std::size_t col) { return n.has_normal(col) || (n.start[col] & ~NormalCounts::kStartBits) != 0; };
   std::size_t listed_columns = 0;
   for (std::size_t col = 0; col < spec.column_count(); ++col) listed_columns += listed(col) ? 1 : 0;
@@ -337,7 +337,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   const auto valid_now = [&](int x1, int y1, int z1, std::size_t r) {
     const RingOffset& o = ring[r];
     if (kBanded && from_previous && (x1 + o.box_hi.x < changed_lo.x || x1 + o.box_lo.x > changed_hi.x ||
-                          z1 + o.box_hi.y < changed_lo.y || z1 + o.box_lo.y > changed_hi.y)) {
+                                     z1 + o.box_hi.y < changed_lo.y || z1 + o.box_lo.y > changed_hi.y)) {
       const std::uint32_t j = previous_centres.find(centre_key(x1, y1, z1, r));
       if (j == KeyTable::kAbsent) return false;
       const Candidates::Item& item = (*before)[j];

@@ -106,7 +106,9 @@ TEST(WallSearch, EqualsALiteralReadingOfAlgorithm2) {
     s.voxel_size = 0.1f;
     const RoomFeatures f = random_room(s, rng);
     const NormalCounts normals = count_normals(s, f);
-    for (const SizeRange& size : {SizeRange{4.0, 6.0, 0.5}, SizeRange{8.0, 12.0, 0.5}, SizeRange{14.5, 21.5, 0.45}}) {
+    // The last size's ring spans over 64 z: its second corners are read from two windows a column.
+    for (const SizeRange& size : {SizeRange{4.0, 6.0, 0.5}, SizeRange{8.0, 12.0, 0.5}, SizeRange{14.5, 21.5, 0.45},
+                                  SizeRange{30.0, 34.0, 0.2}}) {
       const Candidates got = search_walls(s, f, normals, size, 0.8f);
       const Candidates want = literal_walls(s, f, size, 0.8f);
       ASSERT_EQ(got.size(), want.size()) << "room " << room << ", sizes from " << size.min_d;

@@ -72,9 +72,17 @@ struct NormalCounts {
     return z_bits.data() + ((std::size_t(y - y0) * std::size_t(nx) + std::size_t(x)) * 4 + rows.k) * z_words;
   }
   std::size_t column_words() const { return 4 * z_words; }
-  // Bits z in [z_from, z_from + 64) of the voxels whose rows start at `first_row` (z_rows_at) and whose normal
-  // Alg. 2 pairs with a first corner whose rows are `rows`; 0 outside the grid.
-  std::uint64_t z_window(const std::uint64_t* first_row, ZRows rows, int z_from) const;
+  // Where bits z in [z_from, z_from + 64) lie in a bit row: found once for every second corner of a row of first
+  // corners where the ring's words start at one dz (a ring under 64 voxels across), not once per word.
+  struct ZWindow {
+    enum class Kind : std::uint8_t { None, Below, OneWord, TwoWords } kind = Kind::None;  // None: outside the grid
+    std::size_t word = 0;
+    unsigned shift = 0;
+  };
+  ZWindow z_window_at(int z_from) const;
+  // The window's bits of the voxels whose rows start at `first_row` (z_rows_at) and whose normal Alg. 2 pairs
+  // with a first corner whose rows are `rows` (one or two of them).
+  std::uint64_t z_window(const std::uint64_t* first_row, ZRows rows, const ZWindow& at) const;
 };
 NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features);
 // Normals the second corner of a wall rectangle may carry (Alg. 2) when the first carries `first`: the first
@@ -131,14 +139,23 @@ inline NormalCounts::ZRows NormalCounts::z_rows(std::uint8_t first) {
   return {1, std::size_t(std::countr_zero(unsigned(kAll & ~compatible)))};
 }
 
-inline std::uint64_t NormalCounts::z_window(const std::uint64_t* first_row, ZRows rows, int z_from) const {
-  const int total = int(64 * z_words);
-  if (rows.count == 0 || z_from >= total || z_from <= -64) return 0;
-  const auto window = [&](const std::uint64_t* row) {
-    if (z_from < 0) return row[0] << -z_from;
-    const std::size_t w = std::size_t(z_from / 64);
-    const int shift = z_from % 64;
-    return shift != 0 && w + 1 < z_words ? (row[w] >> shift) | (row[w + 1] << (64 - shift)) : row[w] >> shift;
+inline NormalCounts::ZWindow NormalCounts::z_window_at(int z_from) const {
+  if (z_from >= int(64 * z_words) || z_from <= -64) return {};
+  if (z_from < 0) return {ZWindow::Kind::Below, 0, unsigned(-z_from)};
+  const std::size_t w = std::size_t(z_from / 64);
+  const unsigned shift = unsigned(z_from % 64);
+  return {shift != 0 && w + 1 < z_words ? ZWindow::Kind::TwoWords : ZWindow::Kind::OneWord, w, shift};
+}
+
+inline std::uint64_t NormalCounts::z_window(const std::uint64_t* first_row, ZRows rows, const ZWindow& at) const {
+  const auto window = [&](const std::uint64_t* row) -> std::uint64_t {
+    switch (at.kind) {
+      case ZWindow::Kind::None: return 0;
+      case ZWindow::Kind::Below: return row[0] << at.shift;
+      case ZWindow::Kind::OneWord: return row[at.word] >> at.shift;
+      case ZWindow::Kind::TwoWords: return (row[at.word] >> at.shift) | (row[at.word + 1] << (64 - at.shift));
+    }
+    return 0;
   };
   return rows.count == 2 ? window(first_row) | window(first_row + z_words) : window(first_row);
 }

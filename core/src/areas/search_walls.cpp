@@ -285,6 +285,11 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
     word.offsets |= std::uint64_t{1} << bit;
     word.rank[std::size_t(bit)] = std::uint8_t(r - word.first);
   }
+  // Whether every word starts at the same dz (a ring under 64 voxels across: one word per dx), so that a row's
+  // second corners share one window (NormalCounts::z_window_at); the bit rows' words a column apart.
+  const bool one_start = std::all_of(ring_words.begin(), ring_words.end(),
+                                     [&](const RingWord& w) { return w.dz_from == ring_words.front().dz_from; });
+  const std::size_t column_words = normals.column_words();
   // Beyond the thesis (issue 19), a band searched again after a change, from its previous rectangles
   // (BandedSearch::previous): every one of them valid, and among them the first valid one of each centre in search
   // order. A rectangle that reads no changed column is as valid as it was: valid where it is its centre's first
@@ -397,6 +402,8 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       x_first = std::max(x_first, (affected_lo.x - reach) >> 1);
       x_last = std::min(x_last, affected_hi.x >> 1);
     }
+    // The window of second corners' z, the same for every word of the ring (one_start) and every first corner of the row.
+    const NormalCounts::ZWindow row_window = normals.z_window_at(z1 + (ring_words.empty() ? 0 : ring_words.front().dz_from));
     for (int x1 = x_first; x1 <= x_last; ++x1) {
       if (!normals.has_normal(spec.column(x1, z1))) continue;  // most of an open floor
       for (int y1 = std::max(y_first, floor); y1 <= ceiling; ++y1) {
@@ -418,8 +425,9 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
         for (const RingWord& word : ring_words) {
           if (x1 + word.dx >= spec.nx || (kBanded && 2 * x1 + word.dx > affected_hi.x)) break;  // dx only grows
           if (kBanded && 2 * x1 + word.dx < affected_lo.x) continue;
-          const std::uint64_t* rows_there = rows_here + std::size_t(word.dx) * normals.column_words();
-          std::uint64_t seconds = word.offsets & normals.z_window(rows_there, rows, z1 + word.dz_from);
+          const std::uint64_t* rows_there = rows_here + std::size_t(word.dx) * column_words;
+          std::uint64_t seconds =
+              word.offsets & normals.z_window(rows_there, rows, one_start ? row_window : normals.z_window_at(z1 + word.dz_from));
           if (kBanded && from_previous)  // dz with 2 z1 + dz in the affected box
             seconds &= bits_between(affected_lo.y - 2 * z1 - word.dz_from, affected_hi.y - 2 * z1 - word.dz_from);
           for (; seconds != 0; seconds &= seconds - 1)

@@ -79,12 +79,15 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   for (std::size_t col = 0; col < std::min(spec.column_count(), features.walls.size()); ++col)
     if (features.walls[col]) n.start[col] |= NormalCounts::kWallColumn;
   // The run sums of both orders, where their sums' bytes stay within twice the grid's voxels.
-  const auto listed = [&](std::size_t col) { return n.has_normal(col) || (n.start[col] & ~NormalCounts::kStartBits) != 0; };
+  const auto listed = [&](std::size_t col) {
+    return n.has_normal(col) || (n.start[col] & ~NormalCounts::kStartBits) != 0;
+  };
   std::size_t listed_columns = 0;
   for (std::size_t col = 0; col < spec.column_count(); ++col) listed_columns += listed(col) ? 1 : 0;
   const std::size_t sums_stride = std::size_t(n.levels) + 2;
   if (n.levels > 0 && 2 * 4 * (listed_columns + 1) * sums_stride <= 2 * spec.voxel_count()) {
-    const auto run_sums = [&]<class Count>(const std::vector<Count>& prefix, NormalCounts::RunSums& out, bool z_fastest) {
+    const auto run_sums = [&]<class Count>(const std::vector<Count>& prefix, NormalCounts::RunSums& out,
+                                           bool z_fastest) {
       out.rank.resize(spec.column_count() + 1);
       out.sums = std::make_unique_for_overwrite<std::uint32_t[]>((listed_columns + 1) * sums_stride);
       std::fill_n(out.sums.get(), sums_stride, 0u);  // rank 0: no column before it
@@ -217,7 +220,8 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
         const RowRun& run = row_runs[k];
         const int z = z1 + run.dz, cells = run.dx_hi - run.dx_lo + 1;
         if (z < 0 || z >= spec.nz) missing += rows * long(cells);
-        else if (const std::size_t col = spec.column(x1 + run.dx_lo, z); !add_run_sums(normals.along_x, col, col, cells, 1))
+        else if (const std::size_t col = spec.column(x1 + run.dx_lo, z);
+                 !add_run_sums(normals.along_x, col, col, cells, 1))
           return false;
         if (double(missing) > may_miss) return false;
       }
@@ -233,8 +237,9 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
         in_lo = std::max(z_lo, 0), in_hi = std::min(z_hi, spec.nz - 1);
         missing += rows * long((z_hi - z_lo + 1) - std::max(in_hi - in_lo + 1, 0));
       }
-      if (in_lo <= in_hi && !add_run_sums(normals.along_z, std::size_t(x1 + run.dx) * std::size_t(spec.nz) + std::size_t(in_lo),
-                                          spec.column(x1 + run.dx, in_lo), in_hi - in_lo + 1, std::size_t(spec.nx)))
+      const std::size_t along_z = std::size_t(x1 + run.dx) * std::size_t(spec.nz) + std::size_t(in_lo);
+      if (in_lo <= in_hi && !add_run_sums(normals.along_z, along_z, spec.column(x1 + run.dx, in_lo), in_hi - in_lo + 1,
+                                          std::size_t(spec.nx)))
         return false;
       if (double(missing) > may_miss) return false;
     }
@@ -402,8 +407,9 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
       x_first = std::max(x_first, (affected_lo.x - reach) >> 1);
       x_last = std::min(x_last, affected_hi.x >> 1);
     }
-    // The window of second corners' z, the same for every word of the ring (one_start) and every first corner of the row.
-    const NormalCounts::ZWindow row_window = normals.z_window_at(z1 + (ring_words.empty() ? 0 : ring_words.front().dz_from));
+    // The window of second corners' z: every word's (one_start) for every first corner of the row.
+    const NormalCounts::ZWindow row_window =
+        normals.z_window_at(z1 + (ring_words.empty() ? 0 : ring_words.front().dz_from));
     for (int x1 = x_first; x1 <= x_last; ++x1) {
       if (!normals.has_normal(spec.column(x1, z1))) continue;  // most of an open floor
       for (int y1 = std::max(y_first, floor); y1 <= ceiling; ++y1) {
@@ -426,8 +432,8 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
           if (x1 + word.dx >= spec.nx || (kBanded && 2 * x1 + word.dx > affected_hi.x)) break;  // dx only grows
           if (kBanded && 2 * x1 + word.dx < affected_lo.x) continue;
           const std::uint64_t* rows_there = rows_here + std::size_t(word.dx) * column_words;
-          std::uint64_t seconds =
-              word.offsets & normals.z_window(rows_there, rows, one_start ? row_window : normals.z_window_at(z1 + word.dz_from));
+          const NormalCounts::ZWindow window = one_start ? row_window : normals.z_window_at(z1 + word.dz_from);
+          std::uint64_t seconds = word.offsets & normals.z_window(rows_there, rows, window);
           if (kBanded && from_previous)  // dz with 2 z1 + dz in the affected box
             seconds &= bits_between(affected_lo.y - 2 * z1 - word.dz_from, affected_hi.y - 2 * z1 - word.dz_from);
           for (; seconds != 0; seconds &= seconds - 1)

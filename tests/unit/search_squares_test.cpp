@@ -30,6 +30,25 @@ namespace {
 using namespace roomsense;
 using namespace roomsense::detail;
 
+// An empty room of nx x ny x nz voxels at 0.1 m: no wall, normal, tile or top; levels as given.
+struct Room {
+  GridSpec spec;
+  RoomFeatures features;
+};
+Room empty_room(int nx, int ny, int nz, int floor, int ceiling, int y_end) {
+  GridSpec s;
+  s.nx = nx, s.ny = ny, s.nz = nz;
+  s.voxel_size = 0.1f;
+  RoomFeatures f;
+  f.levels.floor = floor, f.levels.ceiling = ceiling, f.y_end = y_end;
+  f.walls.assign(s.column_count(), 0);
+  f.normals.assign(s.voxel_count(), 0);
+  f.free_floor.assign(s.column_count(), 0);
+  f.free_ceiling.assign(s.column_count(), 0);
+  f.furniture.assign(s.column_count(), kNoFurniture);
+  return {s, f};
+}
+
 // Each square found: its first corner and its offset (dx, dz), in the order found.
 using Found = std::vector<std::tuple<glm::ivec3, int, int>>;
 Found listed(const Candidates& c) {
@@ -90,16 +109,11 @@ TEST(SquareSearch, EqualsALiteralReadingOfAlgorithm3OnAFloor) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::size_t compared = 0;
   for (int room = 0; room < 10; ++room) {
-    GridSpec s;
-    s.nx = 24 + int(rng() % 40), s.ny = 8, s.nz = 24 + int(rng() % 40);
-    s.voxel_size = 0.1f;
-    RoomFeatures f;
-    f.levels.floor = 1, f.levels.ceiling = 6, f.y_end = 1;
-    f.walls.assign(s.column_count(), 0);
-    f.normals.assign(s.voxel_count(), 0);
-    f.free_floor.assign(s.column_count(), 1);
-    f.free_ceiling.assign(s.column_count(), 0);
-    f.furniture.assign(s.column_count(), kNoFurniture);
+    const int nx = 24 + int(rng() % 40), nz = 24 + int(rng() % 40);
+    Room made = empty_room(nx, 8, nz, 1, 6, 1);
+    const GridSpec& s = made.spec;
+    RoomFeatures& f = made.features;
+    std::fill(f.free_floor.begin(), f.free_floor.end(), std::uint8_t{1});
     // Walls round the room and a few inside, some cells missed by the scan, and a block of furniture: squares
     // beside walls and across gaps, the cases the search's boxes and runs decide.
     for (int z = 0; z < s.nz; ++z)
@@ -126,15 +140,9 @@ TEST(SquareSearch, EqualsALiteralReadingOfAlgorithm3OnAFloor) {
 }
 
 TEST(SquareSearch, ALayerIsSkippedOnlyWhereItHoldsNoSquare) {
-  GridSpec s;
-  s.nx = 96, s.ny = 16, s.nz = 96;
-  s.voxel_size = 0.1f;
-  RoomFeatures f;
-  f.levels.floor = 1, f.levels.ceiling = 14, f.y_end = 9;
-  f.walls.assign(s.column_count(), 0);
-  f.normals.assign(s.voxel_count(), 0);
-  f.free_floor.assign(s.column_count(), 0);
-  f.furniture.assign(s.column_count(), kNoFurniture);
+  Room made = empty_room(96, 16, 96, 1, 14, 9);
+  const GridSpec& s = made.spec;
+  RoomFeatures& f = made.features;
   const auto paint = [&](glm::ivec2 lo, glm::ivec2 hi, int level) {
     for (int z = lo.y; z <= hi.y; ++z)
       for (int x = lo.x; x <= hi.x; ++x) f.furniture[s.column(x, z)] = level;

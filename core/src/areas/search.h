@@ -47,7 +47,9 @@ struct NormalCounts {
     std::unique_ptr<std::uint32_t[]> sums;  // rank * (levels + 2) + level offset (Levels), then + levels + 1: flagged
   };
   RunSums along_x, along_z;
+  std::size_t run_sums_stride() const { return std::size_t(levels) + 2; }  // a rank's sums: levels 0..levels, flagged
   bool has_normal(std::size_t column) const { return (start[column] & kStartBits) != kNoNormal; }
+  bool flagged(std::size_t column) const { return (start[column] & ~kStartBits) != 0; }  // a wall column, or blocked
   int count(std::size_t column, int y_from, int y_to) const;  // voxels with a normal in [y_from, y_to]
   // A span of levels [y_from, y_to], found once per rectangle.
   struct Levels {

@@ -79,12 +79,10 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
   for (std::size_t col = 0; col < std::min(spec.column_count(), features.walls.size()); ++col)
     if (features.walls[col]) n.start[col] |= NormalCounts::kWallColumn;
   // The run sums of both orders, where their sums' bytes stay within twice the grid's voxels.
-  const auto listed = [&](std::size_t col) {
-    return n.has_normal(col) || (n.start[col] & ~NormalCounts::kStartBits) != 0;
-  };
+  const auto listed = [&](std::size_t col) { return n.has_normal(col) || n.flagged(col); };
   std::size_t listed_columns = 0;
   for (std::size_t col = 0; col < spec.column_count(); ++col) listed_columns += listed(col) ? 1 : 0;
-  const std::size_t sums_stride = std::size_t(n.levels) + 2;
+  const std::size_t sums_stride = n.run_sums_stride();
   if (n.levels > 0 && 2 * 4 * (listed_columns + 1) * sums_stride <= 2 * spec.voxel_count()) {
     const auto run_sums = [&]<class Count>(const std::vector<Count>& prefix, NormalCounts::RunSums& out,
                                            bool z_fastest) {
@@ -100,7 +98,7 @@ NormalCounts count_normals(const GridSpec& spec, const RoomFeatures& features) {
         std::uint32_t* after = out.sums.get() + std::size_t(++rank) * sums_stride;
         const Count* counts = prefix.data() + (n.start[col] & NormalCounts::kStartBits);
         for (std::size_t l = 0; l <= std::size_t(n.levels); ++l) after[l] = before[l] + counts[l];
-        after[sums_stride - 1] = before[sums_stride - 1] + ((n.start[col] & ~NormalCounts::kStartBits) != 0 ? 1 : 0);
+        after[sums_stride - 1] = before[sums_stride - 1] + (n.flagged(col) ? 1 : 0);
       };
       if (z_fastest) {
         for (int x = 0; x < spec.nx; ++x)
@@ -175,7 +173,7 @@ Candidates walls_search(const GridSpec& spec, const RoomFeatures& features, cons
   // segment touches, and enough voxels with a normal in the rows [y1 - h, y1]. Gives up once too many voxels lack
   // one; as no cell lowers the count of those, the cells may be read in any order. Beyond the thesis: no voxel
   // before an opening (RoomFeatures::wall_blocked). `prefix`: the counts' (NormalCounts::usable).
-  const std::size_t sums_stride = std::size_t(normals.levels) + 2;  // NormalCounts::RunSums
+  const std::size_t sums_stride = normals.run_sums_stride();
   constexpr int kCellsAtOnce = 3;  // shorter runs cost less cell by cell
   const auto valid_in = [&]<class Count>(const Count* prefix, int x1, int z1, std::size_t r, int y_top) {
     const RingOffset& o = ring[r];
